@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# The main job: install what is missing, build, and run the built-in default scene.
+# Output goes to runs/default (summary.json, time series, figures, final state).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh
+cargo build --release --bin pressridge
+out=${1:-runs/default}
+./target/release/pressridge simulate --out "$out"
+echo "results in $out"
