@@ -14,3 +14,4 @@
 //!   the time step.
 
 pub mod dem;
+pub mod plot;

@@ -1,0 +1,57 @@
+//! Figures (PNG/SVG). Plotting lives here and only here: no physics module depends on it.
+//!
+//! Text needs a TrueType font. [`ensure_font`] registers DejaVu Sans once, looked up in the
+//! environment variable `PRESSRIDGE_FONT` (a path to a `.ttf`) and then in Debian's
+//! `fonts-dejavu-core` locations (`scripts/setup.sh` installs it).
+
+use std::sync::OnceLock;
+
+/// An error while drawing or writing a figure.
+#[derive(Debug, thiserror::Error)]
+pub enum PlotError {
+    /// No usable font was found.
+    #[error(
+        "no TrueType font found: install fonts-dejavu-core or set PRESSRIDGE_FONT to a .ttf file"
+    )]
+    NoFont,
+    /// The drawing backend failed (message from plotters).
+    #[error("drawing failed: {0}")]
+    Draw(String),
+}
+
+const FONT_PATHS: &[&str] = &[
+    "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
+    "/usr/share/fonts/dejavu/DejaVuSans.ttf",
+    "/usr/share/fonts/TTF/DejaVuSans.ttf",
+];
+
+/// Registers a sans-serif font with plotters under the family name `"sans-serif"`.
+/// Safe to call many times and from several threads; the font file is read once.
+pub fn ensure_font() -> Result<(), PlotError> {
+    static FONT: OnceLock<bool> = OnceLock::new();
+    let ok = *FONT.get_or_init(|| {
+        let env = std::env::var("PRESSRIDGE_FONT").ok();
+        let candidates = env.iter().map(String::as_str).chain(FONT_PATHS.iter().copied());
+        for path in candidates {
+            if let Ok(bytes) = std::fs::read(path) {
+                let bytes: &'static [u8] = Box::leak(bytes.into_boxed_slice());
+                if plotters::style::register_font(
+                    "sans-serif",
+                    plotters::style::FontStyle::Normal,
+                    bytes,
+                )
+                .is_ok()
+                {
+                    return true;
+                }
+            }
+        }
+        false
+    });
+    if ok { Ok(()) } else { Err(PlotError::NoFont) }
+}
+
+/// Converts any plotters drawing error into a [`PlotError`].
+pub(crate) fn draw_err<E: std::fmt::Display>(e: E) -> PlotError {
+    PlotError::Draw(e.to_string())
+}
