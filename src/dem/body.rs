@@ -1,0 +1,347 @@
+//! Rigid blocks: shapes, mass properties and the state arrays of the time step.
+//!
+//! State is kept as a structure of arrays (positions, velocities, forces each in their own
+//! `Vec`) so that the integrator and the force loops stream through memory. A body's
+//! position is its centroid; its outline is stored relative to the centroid.
+
+use super::geometry::{Aabb, MAX_VERTS, Outline, V2, area_centroid, polar_moment};
+use serde::{Deserialize, Serialize};
+
+/// An error in a body's definition.
+#[derive(Debug, thiserror::Error, PartialEq)]
+pub enum ShapeError {
+    /// Fewer than 3 or more than [`MAX_VERTS`] vertices.
+    #[error("a block outline needs 3 to {MAX_VERTS} vertices, got {0}")]
+    VertexCount(usize),
+    /// A coordinate is NaN or infinite.
+    #[error("a block outline has a non-finite coordinate")]
+    NonFinite,
+    /// The outline is not convex and counter-clockwise with positive area.
+    #[error("a block outline must be convex, counter-clockwise and of positive area")]
+    NotConvex,
+    /// A dimension is not positive, or a bevel does not fit.
+    #[error("invalid block dimensions: {0}")]
+    Dimensions(String),
+}
+
+/// The outline of a block relative to its centroid, with its geometric properties.
+#[derive(Clone, Copy, Debug, Serialize, Deserialize)]
+#[serde(try_from = "ShapeDef", into = "ShapeDef")]
+pub struct Shape {
+    outline: Outline,
+    area: f64,
+    polar: f64,
+    radius: f64,
+}
+
+/// Serialised form of a [`Shape`]: its vertices (m, relative to the centroid).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct ShapeDef {
+    /// Counter-clockwise vertices (m).
+    pub vertices: Vec<[f64; 2]>,
+}
+
+impl TryFrom<ShapeDef> for Shape {
+    type Error = ShapeError;
+    fn try_from(d: ShapeDef) -> Result<Self, ShapeError> {
+        let v: Vec<V2> = d.vertices.iter().map(|p| V2::new(p[0], p[1])).collect();
+        Shape::convex(&v)
+    }
+}
+
+impl From<Shape> for ShapeDef {
+    fn from(s: Shape) -> Self {
+        ShapeDef {
+            vertices: s.outline.verts().iter().map(|p| [p.x, p.y]).collect(),
+        }
+    }
+}
+
+impl Shape {
+    /// A convex polygon from counter-clockwise vertices (m) in any frame; it is recentred on
+    /// its centroid (the offset is lost: place the body with its centroid).
+    pub fn convex(v: &[V2]) -> Result<Shape, ShapeError> {
+        if v.len() < 3 || v.len() > MAX_VERTS {
+            return Err(ShapeError::VertexCount(v.len()));
+        }
+        if v.iter().any(|p| !p.x.is_finite() || !p.y.is_finite()) {
+            return Err(ShapeError::NonFinite);
+        }
+        let n = v.len();
+        for i in 0..n {
+            let e0 = v[(i + 1) % n] - v[i];
+            let e1 = v[(i + 2) % n] - v[(i + 1) % n];
+            if e0.cross(e1) < -1e-12 * e0.norm() * e1.norm() || e0.norm() == 0.0 {
+                return Err(ShapeError::NotConvex);
+            }
+        }
+        let (area, c) = area_centroid(v);
+        if area <= 0.0 {
+            return Err(ShapeError::NotConvex);
+        }
+        let local: Vec<V2> = v.iter().map(|&p| p - c).collect();
+        let outline = Outline::from_slice(&local);
+        let polar = polar_moment(outline.verts());
+        let radius = local.iter().map(|p| p.norm()).fold(0.0, f64::max);
+        Ok(Shape {
+            outline,
+            area,
+            polar,
+            radius,
+        })
+    }
+
+    /// A rectangle `width × thickness` (m), sides parallel to the body axes.
+    pub fn rectangle(width: f64, thickness: f64) -> Result<Shape, ShapeError> {
+        Self::bevelled_rectangle(width, thickness, [0.0; 4])
+    }
+
+    /// A rectangle `width × thickness` (m) whose corners are cut at 45° with legs
+    /// `bevel[k]` (m), corners ordered bottom-left, bottom-right, top-right, top-left
+    /// (Hopkins 1994, Figure 1: the sheet tip, the floe nose, and 2 cm on the corners of a
+    /// block broken from the sheet). A leg of 0 leaves the corner square.
+    pub fn bevelled_rectangle(
+        width: f64,
+        thickness: f64,
+        bevel: [f64; 4],
+    ) -> Result<Shape, ShapeError> {
+        if !(width > 0.0 && thickness > 0.0) || !width.is_finite() || !thickness.is_finite() {
+            return Err(ShapeError::Dimensions(format!(
+                "width {width} m and thickness {thickness} m must be positive"
+            )));
+        }
+        for (k, &b) in bevel.iter().enumerate() {
+            if !(0.0..=0.5 * width.min(thickness)).contains(&b) {
+                return Err(ShapeError::Dimensions(format!(
+                    "bevel {k} of {b} m must lie in [0, {}] m",
+                    0.5 * width.min(thickness)
+                )));
+            }
+        }
+        let (w, h) = (0.5 * width, 0.5 * thickness);
+        let corners = [
+            (V2::new(-w, -h), V2::new(0.0, 1.0), V2::new(1.0, 0.0)),
+            (V2::new(w, -h), V2::new(-1.0, 0.0), V2::new(0.0, 1.0)),
+            (V2::new(w, h), V2::new(0.0, -1.0), V2::new(-1.0, 0.0)),
+            (V2::new(-w, h), V2::new(1.0, 0.0), V2::new(0.0, -1.0)),
+        ];
+        let mut v = Vec::with_capacity(8);
+        for (k, &(c, into_prev, into_next)) in corners.iter().enumerate() {
+            if bevel[k] > 0.0 {
+                v.push(c + into_prev * bevel[k]);
+                v.push(c + into_next * bevel[k]);
+            } else {
+                v.push(c);
+            }
+        }
+        Self::convex(&v)
+    }
+
+    /// Vertices relative to the centroid (m).
+    #[inline]
+    pub fn outline(&self) -> &Outline {
+        &self.outline
+    }
+    /// Area (m², i.e. volume per metre of depth, m³/m).
+    #[inline]
+    pub fn area(&self) -> f64 {
+        self.area
+    }
+    /// Polar second moment of area about the centroid (m⁴).
+    #[inline]
+    pub fn polar_moment(&self) -> f64 {
+        self.polar
+    }
+    /// Largest distance from the centroid to a vertex (m).
+    #[inline]
+    pub fn radius(&self) -> f64 {
+        self.radius
+    }
+    /// Largest distance between two vertices (m).
+    pub fn diameter(&self) -> f64 {
+        let v = self.outline.verts();
+        let mut d: f64 = 0.0;
+        for i in 0..v.len() {
+            for j in i + 1..v.len() {
+                d = d.max((v[i] - v[j]).norm());
+            }
+        }
+        d
+    }
+}
+
+/// Which degrees of freedom of a body are prescribed rather than integrated.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Drive {
+    /// Prescribed horizontal velocity (m/s), or free when `None`.
+    pub u: Option<f64>,
+    /// Prescribed vertical velocity (m/s), or free when `None`.
+    pub v: Option<f64>,
+    /// Prescribed angular velocity (rad/s), or free when `None`.
+    pub omega: Option<f64>,
+}
+
+impl Drive {
+    /// All three degrees of freedom free: an ordinary dynamic body.
+    pub const FREE: Drive = Drive {
+        u: None,
+        v: None,
+        omega: None,
+    };
+    /// Held in place: a fixed wall or support.
+    pub const FIXED: Drive = Drive {
+        u: Some(0.0),
+        v: Some(0.0),
+        omega: Some(0.0),
+    };
+    /// True when every degree of freedom is prescribed.
+    pub fn is_kinematic(&self) -> bool {
+        self.u.is_some() && self.v.is_some() && self.omega.is_some()
+    }
+    /// True when no degree of freedom is prescribed.
+    pub fn is_free(&self) -> bool {
+        self.u.is_none() && self.v.is_none() && self.omega.is_none()
+    }
+}
+
+/// Index of a body in [`Bodies`].
+pub type BodyId = u32;
+
+/// The state of all bodies, one entry per body in each array.
+#[derive(Clone, Debug, Default)]
+pub struct Bodies {
+    /// Centroid position (m).
+    pub pos: Vec<V2>,
+    /// Orientation (rad, counter-clockwise).
+    pub theta: Vec<f64>,
+    /// Centroid velocity (m/s), at the half step n − ½ before a step and n + ½ after it.
+    pub vel: Vec<V2>,
+    /// Angular velocity (rad/s), staggered like `vel`.
+    pub omega: Vec<f64>,
+    /// Mass per metre of depth (kg/m).
+    pub mass: Vec<f64>,
+    /// Moment of inertia about the centroid per metre of depth (kg·m²/m).
+    pub inertia: Vec<f64>,
+    /// Shape relative to the centroid.
+    pub shape: Vec<Shape>,
+    /// Prescribed degrees of freedom.
+    pub drive: Vec<Drive>,
+    /// Outline in world coordinates at the current positions (m).
+    pub world: Vec<Outline>,
+    /// Bounding box of `world` (m).
+    pub aabb: Vec<Aabb>,
+    /// Resultant force of the current step (N/m).
+    pub force: Vec<V2>,
+    /// Resultant moment of the current step about the centroid (N·m/m).
+    pub torque: Vec<f64>,
+}
+
+impl Bodies {
+    /// Number of bodies.
+    pub fn len(&self) -> usize {
+        self.pos.len()
+    }
+    /// True when there is no body.
+    pub fn is_empty(&self) -> bool {
+        self.pos.is_empty()
+    }
+
+    /// Adds a body of the given shape and density (kg/m³) at centroid `pos` (m) with
+    /// orientation `theta` (rad), at rest. Returns its index.
+    pub fn push(
+        &mut self,
+        shape: Shape,
+        density: f64,
+        pos: V2,
+        theta: f64,
+        drive: Drive,
+    ) -> BodyId {
+        let id = self.pos.len() as BodyId;
+        self.pos.push(pos);
+        self.theta.push(theta);
+        self.vel
+            .push(V2::new(drive.u.unwrap_or(0.0), drive.v.unwrap_or(0.0)));
+        self.omega.push(drive.omega.unwrap_or(0.0));
+        self.mass.push(density * shape.area());
+        self.inertia.push(density * shape.polar_moment());
+        self.shape.push(shape);
+        self.drive.push(drive);
+        self.world.push(Outline::default());
+        self.aabb.push(Aabb::default());
+        self.force.push(V2::default());
+        self.torque.push(0.0);
+        self.update_world(id as usize);
+        id
+    }
+
+    /// Recomputes the world outline and bounding box of body `i` from its pose.
+    #[inline]
+    pub fn update_world(&mut self, i: usize) {
+        let (s, c) = self.theta[i].sin_cos();
+        let p = self.pos[i];
+        let local = self.shape[i].outline();
+        let mut w = [V2::default(); MAX_VERTS];
+        let n = local.len();
+        for (k, q) in local.verts().iter().enumerate() {
+            w[k] = q.rotate(c, s) + p;
+        }
+        self.world[i] = Outline::from_slice(&w[..n]);
+        self.aabb[i] = Aabb::of(&w[..n]);
+    }
+
+    /// Velocity (m/s) of the material point at `p` (m) of body `i`, from the stored
+    /// (half-step) velocities.
+    #[inline]
+    pub fn point_velocity(&self, i: usize, p: V2) -> V2 {
+        self.vel[i] + (p - self.pos[i]).perp() * self.omega[i]
+    }
+
+    /// Adds force `f` (N/m) acting at point `p` (m) to body `i`.
+    #[inline]
+    pub fn apply(&mut self, i: usize, f: V2, p: V2) {
+        self.force[i] = self.force[i] + f;
+        self.torque[i] += (p - self.pos[i]).cross(f);
+    }
+
+    /// Kinetic energy (J/m) of all bodies at the stored velocities.
+    pub fn kinetic_energy(&self) -> f64 {
+        let mut e = 0.0;
+        for i in 0..self.len() {
+            e += 0.5 * self.mass[i] * self.vel[i].dot(self.vel[i])
+                + 0.5 * self.inertia[i] * self.omega[i] * self.omega[i];
+        }
+        e
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bevelled_rectangle_area_and_vertices() {
+        let b = 0.02;
+        let s = Shape::bevelled_rectangle(0.25, 0.3, [b; 4]).unwrap();
+        assert_eq!(s.outline().len(), 8);
+        assert!((s.area() - (0.25 * 0.3 - 4.0 * 0.5 * b * b)).abs() < 1e-15);
+        let r = Shape::rectangle(0.25, 0.3).unwrap();
+        assert!((r.polar_moment() - 0.075 * (0.0625 + 0.09) / 12.0).abs() < 1e-15);
+        assert!((r.diameter() - 0.25f64.hypot(0.3)).abs() < 1e-15);
+    }
+
+    #[test]
+    fn bad_shapes_are_rejected() {
+        assert!(Shape::rectangle(0.0, 1.0).is_err());
+        assert!(Shape::rectangle(f64::NAN, 1.0).is_err());
+        assert!(Shape::bevelled_rectangle(1.0, 1.0, [0.6, 0.0, 0.0, 0.0]).is_err());
+        let cw = [V2::new(0.0, 0.0), V2::new(0.0, 1.0), V2::new(1.0, 0.0)];
+        assert_eq!(Shape::convex(&cw).unwrap_err(), ShapeError::NotConvex);
+        let dart = [
+            V2::new(0.0, 0.0),
+            V2::new(2.0, 0.0),
+            V2::new(1.0, 0.2),
+            V2::new(1.0, 1.0),
+        ];
+        assert_eq!(Shape::convex(&dart).unwrap_err(), ShapeError::NotConvex);
+    }
+}

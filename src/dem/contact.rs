@@ -1,0 +1,243 @@
+//! Rubble contacts, Hopkins (1994) eqs (2)–(4): an elastic normal force proportional to the
+//! overlap area, a viscous normal force from its rate of change, and a Coulomb-capped
+//! tangential spring driven by incremental slip (Walton 1980). Contacts never pull.
+//!
+//! Forces are per metre of depth (N/m); they act at the centroid of the overlap polygon
+//! along the contact normal `n` (from body `a` to body `b`) and tangent `t = n⊥`.
+
+use super::body::Bodies;
+use super::broadphase::{pair_key, unpack};
+use super::geometry::{V2, overlap};
+use serde::{Deserialize, Serialize};
+
+/// Parameters of the contact law. Defaults follow Hopkins (1994), Table 1 and the text of
+/// "Numerical Ridge Growth Experiments".
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct ContactParams {
+    /// Normal elastic stiffness k_ne (N/m³): force per metre of depth per m² of overlap,
+    /// eq (2). Default 1e8 (Table 1).
+    pub normal_stiffness: f64,
+    /// Fraction of the critical damping 2·sqrt(k_ne·h·ρ_i) used for k_nv, eq (3).
+    /// Default 0.5 ("50% of the critical damping value").
+    pub damping_fraction: f64,
+    /// Tangential stiffness k_te as a fraction of the normal stiffness k_ne·h (see
+    /// [`ContactParams::tangential_stiffness`]). Default 0.6 ("60% of the normal value").
+    pub tangential_fraction: f64,
+    /// Thickness h of the parent sheet (m) in k_nv = f·2·sqrt(k_ne·h·ρ_i) and in the normal
+    /// stiffness k_ne·h. Default 0.30 m, the sheet of the paper's Figure 5.
+    pub reference_thickness: f64,
+    /// Friction coefficient μ for contacts whose overlap centroid is above the water line
+    /// (dimensionless). Default 1.0 (the value the paper adopts after its friction study).
+    pub mu: f64,
+    /// Friction coefficient μ_w for contacts whose overlap centroid is below the water line
+    /// (dimensionless). Default 0.6.
+    pub mu_water: f64,
+}
+
+impl Default for ContactParams {
+    fn default() -> Self {
+        Self {
+            normal_stiffness: 1e8,
+            damping_fraction: 0.5,
+            tangential_fraction: 0.6,
+            reference_thickness: 0.30,
+            mu: 1.0,
+            mu_water: 0.6,
+        }
+    }
+}
+
+impl ContactParams {
+    /// Viscous normal coefficient k_nv (kg/(m²·s)): `damping_fraction · 2·sqrt(k_ne·h·ρ_i)`
+    /// for ice density `rho_i` (kg/m³), eq (3).
+    pub fn viscous_coefficient(&self, rho_i: f64) -> f64 {
+        self.damping_fraction
+            * 2.0
+            * (self.normal_stiffness * self.reference_thickness * rho_i).sqrt()
+    }
+    /// Tangential stiffness k_te (N/m² : force per metre of depth per metre of slip),
+    /// eq (4). The paper gives k_te as "60% of the normal value"; the normal value is read
+    /// as the normal stiffness of a contact along a face of the parent sheet's thickness,
+    /// k_ne·h — the same product the paper uses in its critical damping 2·sqrt(k_ne·h·ρ_i).
+    pub fn tangential_stiffness(&self) -> f64 {
+        self.tangential_fraction * self.normal_stiffness * self.reference_thickness
+    }
+}
+
+/// One active contact: its persistent state and the forces of the current step.
+#[derive(Clone, Copy, Debug, Default, Serialize, Deserialize)]
+pub struct Contact {
+    /// Key of the pair `(a, b)`, `a < b`.
+    pub key: u64,
+    /// Overlap area of the current step (m²), eq (2); the previous step's value drives
+    /// eq (3).
+    pub area: f64,
+    /// Tangential force on `b` along `t` (N/m), eq (4), kept between steps.
+    pub ft: f64,
+    /// Elastic normal work absorbed while this contact has been active (J/m): the energy it
+    /// holds as a compressed spring.
+    pub stored: f64,
+    /// Point of action: the overlap centroid (m).
+    pub point: V2,
+    /// Unit normal from `a` to `b`.
+    pub normal: V2,
+    /// Elastic normal force applied on `b` (N/m, ≥ 0).
+    pub fn_elastic: f64,
+    /// Viscous normal force applied on `b` (N/m); negative only as much as keeps the total
+    /// normal force from pulling.
+    pub fn_viscous: f64,
+}
+
+/// Totals of the work absorbed by all contacts, for the energy ledger (J/m).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct ContactWork {
+    /// Work absorbed by elastic normal forces, eq (12) elastic part.
+    pub normal_elastic: f64,
+    /// Work absorbed by viscous normal forces: the inelastic dissipation Φ_i, eq (12).
+    pub normal_viscous: f64,
+    /// Work absorbed by tangential forces, eq (11) (slip dissipation plus what the
+    /// tangential springs hold).
+    pub tangential: f64,
+    /// Elastic work left in contacts when they separated (J/m): zero for a conservative
+    /// normal law; what remains measures the non-conservative part of the area law.
+    pub released: f64,
+}
+
+/// All active contacts, sorted by pair key, with a swap buffer for the next step.
+#[derive(Clone, Debug, Default)]
+pub struct ContactSet {
+    cur: Vec<Contact>,
+    prev: Vec<Contact>,
+}
+
+impl ContactSet {
+    /// The active contacts of the last step, sorted by key.
+    pub fn contacts(&self) -> &[Contact] {
+        &self.cur
+    }
+    /// Replaces the active contacts (restoring a saved state).
+    pub fn restore(&mut self, mut c: Vec<Contact>) {
+        c.sort_by_key(|c| c.key);
+        self.cur = c;
+    }
+
+    /// Tests the candidate `pairs`, updates every contact's force from eqs (2)–(4) with the
+    /// half-step velocities stored in `bodies`, and adds the forces to the bodies.
+    /// `water_level` (m) selects μ_w for contacts centred below it.
+    #[allow(clippy::too_many_arguments)]
+    pub fn update(
+        &mut self,
+        bodies: &mut Bodies,
+        pairs: &[u64],
+        p: &ContactParams,
+        k_nv: f64,
+        dt: f64,
+        water_level: Option<f64>,
+        work: &mut ContactWork,
+    ) {
+        std::mem::swap(&mut self.cur, &mut self.prev);
+        self.cur.clear();
+        let k_ne = p.normal_stiffness;
+        let k_te = p.tangential_stiffness();
+        let mut j = 0;
+        for &key in pairs {
+            while j < self.prev.len() && self.prev[j].key < key {
+                work.released += self.prev[j].stored;
+                j += 1;
+            }
+            let old = if j < self.prev.len() && self.prev[j].key == key {
+                j += 1;
+                Some(self.prev[j - 1])
+            } else {
+                None
+            };
+            let (a, b) = unpack(key);
+            let (a, b) = (a as usize, b as usize);
+            let Some(ov) = overlap(
+                &bodies.world[a],
+                &bodies.world[b],
+                bodies.pos[a],
+                bodies.pos[b],
+            ) else {
+                if let Some(o) = old {
+                    work.released += o.stored;
+                }
+                continue;
+            };
+            let (area0, ft0, stored) = old.map_or((0.0, 0.0, 0.0), |o| (o.area, o.ft, o.stored));
+            let n = ov.normal;
+            let t = n.perp();
+            // Eq (2) and (3); the sum never pulls.
+            let fe = k_ne * ov.area;
+            let fv_raw = k_nv * (ov.area - area0) / dt;
+            let fv = if fe + fv_raw < 0.0 { -fe } else { fv_raw };
+            let fnorm = fe + fv;
+            // Eq (4) with the relative velocity at the overlap centroid at n − ½.
+            let vrel =
+                bodies.point_velocity(b, ov.centroid) - bodies.point_velocity(a, ov.centroid);
+            let mu = match water_level {
+                Some(l) if ov.centroid.y < l => p.mu_water,
+                _ => p.mu,
+            };
+            let cap = mu * fnorm;
+            let ft = (ft0 - k_te * dt * vrel.dot(t)).clamp(-cap, cap);
+            let f = n * fnorm + t * ft;
+            bodies.apply(b, f, ov.centroid);
+            bodies.apply(a, -f, ov.centroid);
+            self.cur.push(Contact {
+                key: pair_key(a as u32, b as u32),
+                area: ov.area,
+                ft,
+                stored,
+                point: ov.centroid,
+                normal: n,
+                fn_elastic: fe,
+                fn_viscous: fv,
+            });
+        }
+        while j < self.prev.len() {
+            work.released += self.prev[j].stored;
+            j += 1;
+        }
+    }
+
+    /// Books the work of this step's contact forces with the mid-step velocities
+    /// `vbar`, `wbar` (average of the velocities before and after the step), so that the
+    /// ledger and the kinetic energy agree exactly (see [`crate::dem::ledger`]).
+    pub fn book_work(
+        &mut self,
+        bodies: &Bodies,
+        vbar: &[V2],
+        wbar: &[f64],
+        dt: f64,
+        work: &mut ContactWork,
+    ) {
+        for c in self.cur.iter_mut() {
+            let (a, b) = unpack(c.key);
+            let (a, b) = (a as usize, b as usize);
+            let va = vbar[a] + (c.point - bodies.pos[a]).perp() * wbar[a];
+            let vb = vbar[b] + (c.point - bodies.pos[b]).perp() * wbar[b];
+            let v = vb - va;
+            let vn = v.dot(c.normal);
+            let vt = v.dot(c.normal.perp());
+            let de = -c.fn_elastic * vn * dt;
+            c.stored += de;
+            work.normal_elastic += de;
+            work.normal_viscous += -c.fn_viscous * vn * dt;
+            work.tangential += -c.ft * vt * dt;
+        }
+    }
+
+    /// Energy held by the active contacts (J/m): elastic normal work not yet returned, plus
+    /// the tangential springs, F_t²/(2·k_te).
+    pub fn stored_energy(&self, k_te: f64) -> (f64, f64) {
+        let mut en = 0.0;
+        let mut et = 0.0;
+        for c in &self.cur {
+            en += c.stored;
+            et += c.ft * c.ft / (2.0 * k_te);
+        }
+        (en, et)
+    }
+}

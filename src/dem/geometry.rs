@@ -1,0 +1,537 @@
+//! Plane geometry of convex polygons: intersection (overlap) polygons, area and centroid,
+//! the points where two boundaries cross, and the part of a polygon below the water line.
+//!
+//! Everything here works on fixed-capacity, stack-allocated polygons so that the contact
+//! loop never touches the heap. Why hand-written rather than `parry2d-f64`: see
+//! `docs/model.md` ("Geometry") and `benches/dem.rs`; parry is kept as the test oracle.
+//!
+//! Lengths are in metres, areas in m² (per metre of depth these are volumes, m³/m).
+
+use serde::{Deserialize, Serialize};
+use std::ops::{Add, Mul, Neg, Sub};
+
+/// A point or vector in the vertical plane: `x` horizontal (m), `y` up (m).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct V2 {
+    /// Horizontal component (m).
+    pub x: f64,
+    /// Vertical component, positive up (m).
+    pub y: f64,
+}
+
+impl V2 {
+    /// The vector `(x, y)`.
+    #[inline]
+    pub const fn new(x: f64, y: f64) -> Self {
+        Self { x, y }
+    }
+    /// Dot product.
+    #[inline]
+    pub fn dot(self, o: V2) -> f64 {
+        self.x * o.x + self.y * o.y
+    }
+    /// z-component of the cross product `self × o`.
+    #[inline]
+    pub fn cross(self, o: V2) -> f64 {
+        self.x * o.y - self.y * o.x
+    }
+    /// Euclidean length.
+    #[inline]
+    pub fn norm(self) -> f64 {
+        self.x.hypot(self.y)
+    }
+    /// The vector rotated by +90° (counter-clockwise).
+    #[inline]
+    pub fn perp(self) -> V2 {
+        V2::new(-self.y, self.x)
+    }
+    /// The vector rotated by the angle whose cosine and sine are given.
+    #[inline]
+    pub fn rotate(self, c: f64, s: f64) -> V2 {
+        V2::new(c * self.x - s * self.y, s * self.x + c * self.y)
+    }
+}
+
+impl Add for V2 {
+    type Output = V2;
+    #[inline]
+    fn add(self, o: V2) -> V2 {
+        V2::new(self.x + o.x, self.y + o.y)
+    }
+}
+impl Sub for V2 {
+    type Output = V2;
+    #[inline]
+    fn sub(self, o: V2) -> V2 {
+        V2::new(self.x - o.x, self.y - o.y)
+    }
+}
+impl Mul<f64> for V2 {
+    type Output = V2;
+    #[inline]
+    fn mul(self, k: f64) -> V2 {
+        V2::new(self.x * k, self.y * k)
+    }
+}
+impl Neg for V2 {
+    type Output = V2;
+    #[inline]
+    fn neg(self) -> V2 {
+        V2::new(-self.x, -self.y)
+    }
+}
+
+/// Capacity of a body outline: a rectangle with all four corners bevelled has 8 vertices.
+pub const MAX_VERTS: usize = 8;
+/// Capacity of a clipping buffer: the intersection of two convex `MAX_VERTS`-gons has at
+/// most `2 · MAX_VERTS` vertices; a few extra slots absorb duplicated points in degenerate
+/// (touching, collinear) configurations.
+pub const CLIP_VERTS: usize = 2 * MAX_VERTS + 4;
+
+/// A convex polygon with at most `N` vertices in counter-clockwise order, stored inline.
+#[derive(Clone, Copy, Debug)]
+pub struct Poly<const N: usize> {
+    n: usize,
+    p: [V2; N],
+}
+
+impl<const N: usize> Default for Poly<N> {
+    fn default() -> Self {
+        Self {
+            n: 0,
+            p: [V2::default(); N],
+        }
+    }
+}
+
+impl<const N: usize> Poly<N> {
+    /// A polygon from vertices in counter-clockwise order. Extra vertices beyond `N` are
+    /// an error of the caller and are dropped (debug builds panic).
+    pub fn from_slice(v: &[V2]) -> Self {
+        debug_assert!(v.len() <= N, "polygon has {} > {N} vertices", v.len());
+        let mut out = Self::default();
+        for &q in v.iter().take(N) {
+            out.push(q);
+        }
+        out
+    }
+    /// The vertices.
+    #[inline]
+    pub fn verts(&self) -> &[V2] {
+        &self.p[..self.n]
+    }
+    /// Number of vertices.
+    #[inline]
+    pub fn len(&self) -> usize {
+        self.n
+    }
+    /// True when the polygon has no vertex.
+    #[inline]
+    pub fn is_empty(&self) -> bool {
+        self.n == 0
+    }
+    #[inline]
+    fn push(&mut self, q: V2) {
+        if self.n < N {
+            self.p[self.n] = q;
+            self.n += 1;
+        } else {
+            debug_assert!(false, "polygon capacity {N} exceeded");
+        }
+    }
+    #[inline]
+    fn clear(&mut self) {
+        self.n = 0;
+    }
+    /// Area (m²) and centroid (m); see [`area_centroid`].
+    pub fn area_centroid(&self) -> (f64, V2) {
+        area_centroid(self.verts())
+    }
+}
+
+/// A body outline in world or body coordinates.
+pub type Outline = Poly<MAX_VERTS>;
+/// A clipping result (intersection polygon, submerged part).
+pub type ClipPoly = Poly<CLIP_VERTS>;
+
+/// Area (m², positive for counter-clockwise order) and centroid (m) of a simple polygon, by
+/// the shoelace formula. Degenerate polygons (area below 1e-18 m²) report their area as
+/// computed and the mean of their vertices as centroid, so the result is always finite.
+pub fn area_centroid(v: &[V2]) -> (f64, V2) {
+    let n = v.len();
+    if n == 0 {
+        return (0.0, V2::default());
+    }
+    // Work relative to the first vertex: keeps round-off small far from the origin.
+    let o = v[0];
+    let mut a2 = 0.0;
+    let mut cx = 0.0;
+    let mut cy = 0.0;
+    for i in 1..n.saturating_sub(1) {
+        let p = v[i] - o;
+        let q = v[i + 1] - o;
+        let c = p.cross(q);
+        a2 += c;
+        cx += (p.x + q.x) * c;
+        cy += (p.y + q.y) * c;
+    }
+    let area = 0.5 * a2;
+    if area.abs() < 1e-18 {
+        let mut m = V2::default();
+        for &p in v {
+            m = m + p;
+        }
+        return (area, m * (1.0 / n as f64));
+    }
+    let k = 1.0 / (3.0 * a2);
+    (area, V2::new(o.x + cx * k, o.y + cy * k))
+}
+
+/// Second moment of area about the centroid (polar, m⁴) of a counter-clockwise polygon
+/// whose vertices are given relative to its centroid. Multiply by density (kg/m³) for the
+/// moment of inertia per metre of depth (kg·m²/m).
+pub fn polar_moment(v: &[V2]) -> f64 {
+    let n = v.len();
+    let mut s = 0.0;
+    for i in 0..n {
+        let p = v[i];
+        let q = v[(i + 1) % n];
+        let c = p.cross(q);
+        s += c * (p.dot(p) + p.dot(q) + q.dot(q));
+    }
+    s / 12.0
+}
+
+/// Clips `subject` to the half-plane to the left of the directed line `a → b`
+/// (Sutherland–Hodgman step), writing into `out`.
+#[inline]
+fn clip_left<const N: usize, const M: usize>(subject: &Poly<N>, a: V2, b: V2, out: &mut Poly<M>) {
+    out.clear();
+    let n = subject.n;
+    if n == 0 {
+        return;
+    }
+    let d = b - a;
+    let mut s = subject.p[n - 1];
+    let mut ds = d.cross(s - a);
+    for i in 0..n {
+        let e = subject.p[i];
+        let de = d.cross(e - a);
+        if de >= 0.0 {
+            if ds < 0.0 {
+                out.push(s + (e - s) * (ds / (ds - de)));
+            }
+            out.push(e);
+        } else if ds >= 0.0 {
+            out.push(s + (e - s) * (ds / (ds - de)));
+        }
+        s = e;
+        ds = de;
+    }
+}
+
+/// The intersection of two convex counter-clockwise polygons. Allocation-free.
+/// Touching polygons give a degenerate (zero-area) result, never NaN.
+pub fn intersect(a: &Outline, b: &Outline) -> ClipPoly {
+    let mut cur = ClipPoly::default();
+    let mut next = ClipPoly::default();
+    for &q in a.verts() {
+        cur.push(q);
+    }
+    let m = b.n;
+    for i in 0..m {
+        let p0 = b.p[i];
+        let p1 = b.p[(i + 1) % m];
+        clip_left(&cur, p0, p1, &mut next);
+        std::mem::swap(&mut cur, &mut next);
+        if cur.n == 0 {
+            break;
+        }
+    }
+    cur
+}
+
+/// The part of a polygon below the horizontal line `y = level` (m), as a polygon.
+pub fn clip_below(poly: &Outline, level: f64) -> ClipPoly {
+    let mut out = ClipPoly::default();
+    // Left of the directed line from (1, level) to (0, level) is the half-plane below it.
+    clip_left(poly, V2::new(1.0, level), V2::new(0.0, level), &mut out);
+    out
+}
+
+/// The part of a polygon below the horizontal line `y = level` (m): its area (m²) and
+/// centroid (m). Returns zero area when the polygon is entirely above.
+pub fn below_line(poly: &Outline, level: f64) -> (f64, V2) {
+    let mut lo = f64::INFINITY;
+    let mut hi = f64::NEG_INFINITY;
+    for &p in poly.verts() {
+        lo = lo.min(p.y);
+        hi = hi.max(p.y);
+    }
+    if lo >= level {
+        return (0.0, V2::default());
+    }
+    if hi <= level {
+        return area_centroid(poly.verts());
+    }
+    clip_below(poly, level).area_centroid()
+}
+
+/// The points where the boundaries of two convex polygons cross. For two overlapping
+/// convex polygons in general position there are exactly two; vertex-on-edge contacts may
+/// report a point twice. Returns how many were written to `out` (at most `out.len()`).
+pub fn boundary_crossings(a: &Outline, b: &Outline, out: &mut [V2]) -> usize {
+    let mut k = 0;
+    let na = a.n;
+    let nb = b.n;
+    for i in 0..na {
+        let p = a.p[i];
+        let r = a.p[(i + 1) % na] - p;
+        for j in 0..nb {
+            let q = b.p[j];
+            let s = b.p[(j + 1) % nb] - q;
+            let den = r.cross(s);
+            // Parallel (or collinear) edges have no isolated crossing point; the ends of a
+            // collinear overlap are found where the neighbouring edges cross.
+            if den.abs() <= 1e-12 * (r.norm() * s.norm()) {
+                continue;
+            }
+            let qp = q - p;
+            let t = qp.cross(s) / den;
+            let u = qp.cross(r) / den;
+            const TOL: f64 = 1e-12;
+            if (-TOL..=1.0 + TOL).contains(&t) && (-TOL..=1.0 + TOL).contains(&u) {
+                if k < out.len() {
+                    out[k] = p + r * t;
+                    k += 1;
+                } else {
+                    return k;
+                }
+            }
+        }
+    }
+    k
+}
+
+/// The geometry of a contact between two convex polygons `a` and `b`.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Overlap {
+    /// Area of the intersection polygon (m²).
+    pub area: f64,
+    /// Centroid of the intersection polygon (m): the point where contact forces act.
+    pub centroid: V2,
+    /// Unit normal pointing from `a` towards `b`, perpendicular to the line through the
+    /// two boundary crossing points (Hopkins 1994, "Dynamic Ridge Model").
+    pub normal: V2,
+    /// Distance between the two crossing points (m): the length of the contact surface.
+    pub chord: f64,
+}
+
+/// Overlap of two convex polygons whose centroids are `ca` and `cb` (m). `None` when they
+/// do not overlap with positive area.
+///
+/// The normal is perpendicular to the chord through the two boundary crossing points.
+/// When there are more than two (flush, collinear edges give four; vertex-on-edge contacts
+/// repeat a point) the chord is the principal axis of the crossing points, which is the
+/// line through them when there are two. Its sign is chosen
+/// so that it points from `a`'s centroid side to `b`'s. When the chord is undefined
+/// (one polygon inside the other, or a touch of zero length) the normal falls back to the
+/// direction between the centroids, and to `+y` if those coincide.
+pub fn overlap(a: &Outline, b: &Outline, ca: V2, cb: V2) -> Option<Overlap> {
+    let poly = intersect(a, b);
+    if poly.n < 3 {
+        return None;
+    }
+    let (area, centroid) = poly.area_centroid();
+    if area <= 0.0 {
+        return None;
+    }
+    let mut pts = [V2::default(); CLIP_VERTS];
+    let k = boundary_crossings(a, b, &mut pts);
+    let ab = cb - ca;
+    let scale = a_scale(a).max(a_scale(b));
+    let (dir, chord) = chord_direction(&pts[..k]);
+    let normal = if chord > 1e-9 * scale {
+        let n = dir.perp();
+        if n.dot(ab) < 0.0 { -n } else { n }
+    } else {
+        let d = ab.norm();
+        if d > 0.0 {
+            ab * (1.0 / d)
+        } else {
+            V2::new(0.0, 1.0)
+        }
+    };
+    Some(Overlap {
+        area,
+        centroid,
+        normal,
+        chord,
+    })
+}
+
+/// Unit direction and length (m) of the line through a set of crossing points: their
+/// principal axis and their extent along it. The length is 0 when the direction is
+/// undefined (fewer than two distinct points, or points spread evenly in all directions,
+/// as when two squares overlap in an octagon).
+fn chord_direction(pts: &[V2]) -> (V2, f64) {
+    let k = pts.len();
+    if k < 2 {
+        return (V2::new(1.0, 0.0), 0.0);
+    }
+    let mut m = V2::default();
+    for &p in pts {
+        m = m + p;
+    }
+    m = m * (1.0 / k as f64);
+    let (mut sxx, mut sxy, mut syy) = (0.0, 0.0, 0.0);
+    for &p in pts {
+        let d = p - m;
+        sxx += d.x * d.x;
+        sxy += d.x * d.y;
+        syy += d.y * d.y;
+    }
+    let tr = sxx + syy;
+    let disc = ((sxx - syy).powi(2) + 4.0 * sxy * sxy).sqrt();
+    // Eigenvalues (tr ± disc)/2: insist on a clearly dominant axis.
+    if tr <= 0.0 || disc < 0.5 * tr {
+        return (V2::new(1.0, 0.0), 0.0);
+    }
+    let phi = 0.5 * (2.0 * sxy).atan2(sxx - syy);
+    let dir = V2::new(phi.cos(), phi.sin());
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for &p in pts {
+        let s = (p - m).dot(dir);
+        lo = lo.min(s);
+        hi = hi.max(s);
+    }
+    (dir, hi - lo)
+}
+
+#[inline]
+fn a_scale(p: &Outline) -> f64 {
+    let mut s: f64 = 0.0;
+    for &q in p.verts() {
+        s = s.max(q.x.abs()).max(q.y.abs());
+    }
+    s.max(1.0)
+}
+
+/// Axis-aligned bounding box (m).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Aabb {
+    /// Lower-left corner (m).
+    pub min: V2,
+    /// Upper-right corner (m).
+    pub max: V2,
+}
+
+impl Aabb {
+    /// The bounding box of a set of points.
+    pub fn of(v: &[V2]) -> Aabb {
+        let mut min = V2::new(f64::INFINITY, f64::INFINITY);
+        let mut max = V2::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
+        for &p in v {
+            min.x = min.x.min(p.x);
+            min.y = min.y.min(p.y);
+            max.x = max.x.max(p.x);
+            max.y = max.y.max(p.y);
+        }
+        Aabb { min, max }
+    }
+    /// True when the boxes overlap (touching counts).
+    #[inline]
+    pub fn overlaps(&self, o: &Aabb) -> bool {
+        self.min.x <= o.max.x
+            && o.min.x <= self.max.x
+            && self.min.y <= o.max.y
+            && o.min.y <= self.max.y
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rect(x0: f64, y0: f64, x1: f64, y1: f64) -> Outline {
+        Outline::from_slice(&[
+            V2::new(x0, y0),
+            V2::new(x1, y0),
+            V2::new(x1, y1),
+            V2::new(x0, y1),
+        ])
+    }
+
+    #[test]
+    fn unit_square_area_and_centroid() {
+        let (a, c) = rect(1.0, 2.0, 3.0, 3.0).area_centroid();
+        assert!((a - 2.0).abs() < 1e-15);
+        assert!((c.x - 2.0).abs() < 1e-15 && (c.y - 2.5).abs() < 1e-15);
+    }
+
+    #[test]
+    fn overlapping_rectangles() {
+        let a = rect(0.0, 0.0, 2.0, 1.0);
+        let b = rect(1.5, 0.9, 3.0, 2.0);
+        let o = overlap(&a, &b, V2::new(1.0, 0.5), V2::new(2.25, 1.45)).unwrap();
+        assert!((o.area - 0.5 * 0.1).abs() < 1e-14);
+        assert!((o.centroid.x - 1.75).abs() < 1e-12 && (o.centroid.y - 0.95).abs() < 1e-12);
+        // Crossings at (1.5, 1.0) and (2.0, 0.9): the chord is a diagonal of the overlap.
+        let t = V2::new(0.5, -0.1);
+        assert!(o.normal.dot(t).abs() < 1e-12);
+        assert!(o.normal.dot(V2::new(1.25, 0.95)) > 0.0);
+    }
+
+    #[test]
+    fn contained_polygon_uses_centroid_direction() {
+        let a = rect(0.0, 0.0, 4.0, 4.0);
+        let b = rect(1.0, 2.0, 2.0, 3.0);
+        let o = overlap(&a, &b, V2::new(2.0, 2.0), V2::new(1.5, 2.5)).unwrap();
+        assert!((o.area - 1.0).abs() < 1e-14);
+        let d = V2::new(-0.5, 0.5) * (1.0 / 0.5f64.hypot(0.5));
+        assert!((o.normal - d).norm() < 1e-12);
+    }
+
+    #[test]
+    fn touching_and_separated_have_no_overlap() {
+        let a = rect(0.0, 0.0, 1.0, 1.0);
+        assert!(overlap(&a, &rect(1.0, 0.0, 2.0, 1.0), V2::default(), V2::default()).is_none());
+        assert!(overlap(&a, &rect(1.0, 1.0, 2.0, 2.0), V2::default(), V2::default()).is_none());
+        assert!(overlap(&a, &rect(3.0, 0.0, 4.0, 1.0), V2::default(), V2::default()).is_none());
+    }
+
+    #[test]
+    fn shared_collinear_edges_give_vertical_normal() {
+        // b sits on a, sunk 1 mm, with both vertical edges flush (collinear edges).
+        let a = rect(0.0, 0.0, 1.0, 1.0);
+        let b = rect(0.0, 0.999, 1.0, 2.0);
+        let o = overlap(&a, &b, V2::new(0.5, 0.5), V2::new(0.5, 1.5)).unwrap();
+        assert!((o.area - 1e-3).abs() < 1e-12);
+        assert!((o.normal.y - 1.0).abs() < 1e-9, "{:?}", o.normal);
+        assert!(o.area.is_finite() && o.centroid.x.is_finite());
+    }
+
+    #[test]
+    fn submerged_part_of_a_tilted_square() {
+        // A diamond with its lowest vertex at y = -1 and water line at y = 0.
+        let d = Outline::from_slice(&[
+            V2::new(0.0, -1.0),
+            V2::new(1.0, 0.0),
+            V2::new(0.0, 1.0),
+            V2::new(-1.0, 0.0),
+        ]);
+        let (a, cen) = below_line(&d, 0.0);
+        assert!((a - 1.0).abs() < 1e-14);
+        assert!((cen.y + 1.0 / 3.0).abs() < 1e-14 && cen.x.abs() < 1e-14);
+        assert_eq!(below_line(&d, -2.0).0, 0.0);
+        assert!((below_line(&d, 5.0).0 - 2.0).abs() < 1e-14);
+    }
+
+    #[test]
+    fn rectangle_polar_moment() {
+        let (w, h) = (0.25, 0.3);
+        let r = rect(-w / 2.0, -h / 2.0, w / 2.0, h / 2.0);
+        let j = polar_moment(r.verts());
+        assert!((j - w * h * (w * w + h * h) / 12.0).abs() < 1e-15);
+    }
+}

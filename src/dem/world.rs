@@ -1,0 +1,484 @@
+//! The time step: gather forces, integrate with the leapfrog scheme of eqs (5)–(6), book
+//! the energy ledger.
+//!
+//! One step from tⁿ to tⁿ⁺¹:
+//! 1. outlines and bounding boxes at the positions xⁿ;
+//! 2. gravity, buoyancy and drag; candidate pairs by sort-and-sweep; contact forces from
+//!    eqs (2)–(4) with the half-step velocities vⁿ⁻½;
+//! 3. vⁿ⁺½ = vⁿ⁻½ + Δt·Fⁿ/m (eq 5; likewise v and ω), prescribed velocities where a
+//!    degree of freedom is driven;
+//! 4. the ledger books every force with v̄ⁿ = (vⁿ⁻½ + vⁿ⁺½)/2;
+//! 5. xⁿ⁺¹ = xⁿ + Δt·vⁿ⁺½ (eq 6; likewise y and θ).
+//!
+//! Everything is sequential and in a fixed order, so the same world stepped the same number
+//! of times gives bit-identical states.
+
+use super::body::{Bodies, BodyId, Drive, Shape};
+use super::broadphase::SweepAndPrune;
+use super::contact::{Contact, ContactParams, ContactSet};
+use super::geometry::{V2, below_line};
+use super::ledger::{Accumulators, EnergyBudget};
+use super::water::{WaterForces, WaterParams};
+use serde::{Deserialize, Serialize};
+
+/// Physical and numerical parameters of a world.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct WorldParams {
+    /// Acceleration of gravity g (m/s²). Default 9.81.
+    pub gravity: f64,
+    /// Ice density ρ_i (kg/m³). Default 920 (Hopkins 1994, Table 1).
+    pub ice_density: f64,
+    /// Contact law, eqs (2)–(4).
+    pub contact: ContactParams,
+    /// The water, or `None` for a dry scene (no buoyancy, no drag, μ everywhere).
+    pub water: Option<WaterParams>,
+    /// Safety factor on the critical time step (dimensionless). Default 0.5: the critical
+    /// step below is already a bound, and half of it keeps the explicit viscous terms well
+    /// damped (docs/model.md, "Time step").
+    pub time_step_safety: f64,
+    /// A fixed time step (s) overriding the derived one, or `None`.
+    pub time_step: Option<f64>,
+}
+
+impl Default for WorldParams {
+    fn default() -> Self {
+        Self {
+            gravity: 9.81,
+            ice_density: 920.0,
+            contact: ContactParams::default(),
+            water: Some(WaterParams::default()),
+            time_step_safety: 0.5,
+            time_step: None,
+        }
+    }
+}
+
+/// An error in a world's parameters or bodies.
+#[derive(Debug, thiserror::Error, PartialEq)]
+pub enum WorldError {
+    /// A parameter is out of its physical range.
+    #[error("parameter `{name}` = {value} is invalid: {why}")]
+    Param {
+        /// Parameter name.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+        /// What is required.
+        why: &'static str,
+    },
+    /// A saved state does not fit this build.
+    #[error("invalid saved state: {0}")]
+    State(String),
+}
+
+impl WorldParams {
+    /// Checks every parameter; the message names the first offending one.
+    pub fn validate(&self) -> Result<(), WorldError> {
+        let pos = |name, value: f64| {
+            if value > 0.0 && value.is_finite() {
+                Ok(())
+            } else {
+                Err(WorldError::Param {
+                    name,
+                    value,
+                    why: "must be positive and finite",
+                })
+            }
+        };
+        let nonneg = |name, value: f64| {
+            if value >= 0.0 && value.is_finite() {
+                Ok(())
+            } else {
+                Err(WorldError::Param {
+                    name,
+                    value,
+                    why: "must be non-negative and finite",
+                })
+            }
+        };
+        nonneg("gravity", self.gravity)?;
+        pos("ice_density", self.ice_density)?;
+        let c = &self.contact;
+        pos("contact.normal_stiffness", c.normal_stiffness)?;
+        nonneg("contact.damping_fraction", c.damping_fraction)?;
+        pos("contact.tangential_fraction", c.tangential_fraction)?;
+        pos("contact.reference_thickness", c.reference_thickness)?;
+        nonneg("contact.mu", c.mu)?;
+        nonneg("contact.mu_water", c.mu_water)?;
+        if let Some(w) = &self.water {
+            pos("water.density", w.density)?;
+            nonneg("water.drag_coefficient", w.drag_coefficient)?;
+            nonneg("water.linear_drag", w.linear_drag)?;
+            if !w.level.is_finite() {
+                return Err(WorldError::Param {
+                    name: "water.level",
+                    value: w.level,
+                    why: "must be finite",
+                });
+            }
+        }
+        pos("time_step_safety", self.time_step_safety)?;
+        if let Some(dt) = self.time_step {
+            pos("time_step", dt)?;
+        }
+        Ok(())
+    }
+}
+
+/// A set of blocks in a vertical plane with water, stepping in time.
+#[derive(Clone, Debug)]
+pub struct World {
+    /// Body state arrays.
+    pub bodies: Bodies,
+    params: WorldParams,
+    k_nv: f64,
+    contacts: ContactSet,
+    broad: SweepAndPrune,
+    water: WaterForces,
+    acc: Accumulators,
+    dt: f64,
+    time: f64,
+    steps: u64,
+    // Scratch, reused every step.
+    vel_old: Vec<V2>,
+    omega_old: Vec<f64>,
+    vbar: Vec<V2>,
+    wbar: Vec<f64>,
+}
+
+impl World {
+    /// An empty world.
+    pub fn new(params: WorldParams) -> Result<World, WorldError> {
+        params.validate()?;
+        let k_nv = params.contact.viscous_coefficient(params.ice_density);
+        Ok(World {
+            bodies: Bodies::default(),
+            params,
+            k_nv,
+            contacts: ContactSet::default(),
+            broad: SweepAndPrune::default(),
+            water: WaterForces::default(),
+            acc: Accumulators::default(),
+            dt: 0.0,
+            time: 0.0,
+            steps: 0,
+            vel_old: Vec::new(),
+            omega_old: Vec::new(),
+            vbar: Vec::new(),
+            wbar: Vec::new(),
+        })
+    }
+
+    /// Adds an ice block of the given shape with its centroid at `pos` (m), orientation
+    /// `theta` (rad), at rest (or moving as `drive` prescribes). The time step is
+    /// re-derived.
+    pub fn add_block(&mut self, shape: Shape, pos: V2, theta: f64, drive: Drive) -> BodyId {
+        let id = self
+            .bodies
+            .push(shape, self.params.ice_density, pos, theta, drive);
+        self.refresh_time_step();
+        self.acc.kinetic_start = self.bodies.kinetic_energy();
+        id
+    }
+
+    /// The parameters.
+    pub fn params(&self) -> &WorldParams {
+        &self.params
+    }
+    /// The time step Δt (s).
+    pub fn dt(&self) -> f64 {
+        self.dt
+    }
+    /// Simulated time (s).
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+    /// Steps taken.
+    pub fn steps(&self) -> u64 {
+        self.steps
+    }
+    /// Active contacts of the last step.
+    pub fn contacts(&self) -> &[Contact] {
+        self.contacts.contacts()
+    }
+    /// The ledger's running integrals.
+    pub fn accumulators(&self) -> &Accumulators {
+        &self.acc
+    }
+
+    fn refresh_time_step(&mut self) {
+        self.dt = match self.params.time_step {
+            Some(dt) => dt,
+            None => self.params.time_step_safety * self.critical_time_step(),
+        };
+    }
+
+    /// The critical time step of the contact law (s), a bound from the stiffest possible
+    /// contact between the bodies present.
+    ///
+    /// A contact along a chord of length L has normal stiffness k_ne·L (N/m²) and damping
+    /// k_nv·L. For bodies a and b, with inverse effective masses cᵢ = (1 + rᵢ²mᵢ/Iᵢ)/mᵢ at a
+    /// point a distance rᵢ from the centroid and L ≤ min(dₐ, d_b) (d a body's diameter),
+    /// ω² ≤ 2·k_ne·max(d·c) and the damping ratio ζ ≤ ½·k_nv·sqrt(2·max(d·c)/k_ne). The
+    /// explicit scheme with this damping is stable for Δt < (2/ω)·(sqrt(1 + ζ²) − ζ).
+    pub fn critical_time_step(&self) -> f64 {
+        let b = &self.bodies;
+        let mut dc: f64 = 0.0;
+        for i in 0..b.len() {
+            if b.drive[i].is_kinematic() {
+                continue;
+            }
+            let s = &b.shape[i];
+            let c = (1.0 + s.radius().powi(2) * b.mass[i] / b.inertia[i]) / b.mass[i];
+            dc = dc.max(s.diameter() * c);
+        }
+        if dc == 0.0 {
+            return f64::INFINITY;
+        }
+        let k_ne = self.params.contact.normal_stiffness;
+        let omega = (2.0 * k_ne * dc).sqrt();
+        let zeta = 0.5 * self.k_nv * (2.0 * dc / k_ne).sqrt();
+        2.0 / omega * ((1.0 + zeta * zeta).sqrt() - zeta)
+    }
+
+    /// Sets the time step (s) explicitly, e.g. for convergence studies.
+    pub fn set_time_step(&mut self, dt: f64) -> Result<(), WorldError> {
+        if !(dt > 0.0 && dt.is_finite()) {
+            return Err(WorldError::Param {
+                name: "time_step",
+                value: dt,
+                why: "must be positive and finite",
+            });
+        }
+        self.params.time_step = Some(dt);
+        self.dt = dt;
+        Ok(())
+    }
+
+    /// Advances the world by one time step.
+    pub fn step(&mut self) {
+        let dt = self.dt;
+        let n = self.bodies.len();
+        let g = self.params.gravity;
+        let b = &mut self.bodies;
+        for i in 0..n {
+            b.update_world(i);
+            b.force[i] = V2::default();
+            b.torque[i] = 0.0;
+        }
+        // Body forces: gravity at the centroid, then buoyancy and drag.
+        for i in 0..n {
+            if !b.drive[i].is_kinematic() {
+                b.force[i].y -= b.mass[i] * g;
+            }
+        }
+        if let Some(w) = &self.params.water {
+            self.water.apply(b, w, g);
+        }
+        // Contacts.
+        let drive = &b.drive;
+        let pairs = self.broad.pairs(&b.aabb, |i, j| {
+            drive[i as usize].is_kinematic() && drive[j as usize].is_kinematic()
+        });
+        let level = self.params.water.as_ref().map(|w| w.level);
+        self.contacts.update(
+            b,
+            pairs,
+            &self.params.contact,
+            self.k_nv,
+            dt,
+            level,
+            &mut self.acc.contact,
+        );
+        // Leapfrog velocities, eq (5); prescribed degrees of freedom take their value and
+        // the driver supplies whatever force that takes.
+        self.vel_old.clear();
+        self.vel_old.extend_from_slice(&b.vel);
+        self.omega_old.clear();
+        self.omega_old.extend_from_slice(&b.omega);
+        self.vbar.resize(n, V2::default());
+        self.wbar.resize(n, 0.0);
+        let mut driver = 0.0;
+        for i in 0..n {
+            let d = b.drive[i];
+            let (m, inertia) = (b.mass[i], b.inertia[i]);
+            let f = b.force[i];
+            let v0 = b.vel[i];
+            let w0 = b.omega[i];
+            let u1 = d.u.unwrap_or(v0.x + dt * f.x / m);
+            let v1 = d.v.unwrap_or(v0.y + dt * f.y / m);
+            let w1 = d.omega.unwrap_or(w0 + dt * b.torque[i] / inertia);
+            let vbar = V2::new(0.5 * (v0.x + u1), 0.5 * (v0.y + v1));
+            let wbar = 0.5 * (w0 + w1);
+            if d.u.is_some() {
+                driver += (m * (u1 - v0.x) - dt * f.x) * vbar.x;
+            }
+            if d.v.is_some() {
+                driver += (m * (v1 - v0.y) - dt * f.y) * vbar.y;
+            }
+            if d.omega.is_some() {
+                driver += (inertia * (w1 - w0) - dt * b.torque[i]) * wbar;
+            }
+            b.vel[i] = V2::new(u1, v1);
+            b.omega[i] = w1;
+            self.vbar[i] = vbar;
+            self.wbar[i] = wbar;
+        }
+        // Ledger, eqs (9)–(12), with the mid-step velocities.
+        self.acc.work += driver;
+        let mut grav = 0.0;
+        for i in 0..n {
+            if !b.drive[i].is_kinematic() {
+                grav += b.mass[i] * g * self.vbar[i].y;
+            }
+        }
+        self.acc.gravity += grav * dt;
+        if self.params.water.is_some() {
+            self.water
+                .book_work(b, &self.vbar, &self.wbar, dt, &mut self.acc.water);
+        }
+        self.contacts
+            .book_work(b, &self.vbar, &self.wbar, dt, &mut self.acc.contact);
+        // Positions, eq (6).
+        for i in 0..n {
+            b.pos[i] = b.pos[i] + b.vel[i] * dt;
+            b.theta[i] += b.omega[i] * dt;
+        }
+        self.time += dt;
+        self.steps += 1;
+    }
+
+    /// The energy budget now (J/m).
+    pub fn energy(&self) -> EnergyBudget {
+        let (sn, st) = self
+            .contacts
+            .stored_energy(self.params.contact.tangential_stiffness());
+        EnergyBudget::from_parts(self.time, &self.acc, self.bodies.kinetic_energy(), sn, st)
+    }
+
+    /// Potential energy of the current state (J/m): Σ ρ_i·g·A·y_c − ρ_w·g·A_s·y_s over the
+    /// bodies that are not held, with y_s the depth of the submerged centroid (the work to
+    /// lift each block and to displace its water). Its change between two instants equals
+    /// the ΔPE booked by eq (10) up to the discretisation error of the step.
+    pub fn potential_energy(&self) -> f64 {
+        let b = &self.bodies;
+        let g = self.params.gravity;
+        let mut pe = 0.0;
+        for i in 0..b.len() {
+            if b.drive[i].is_kinematic() {
+                continue;
+            }
+            pe += b.mass[i] * g * b.pos[i].y;
+            if let Some(w) = &self.params.water {
+                let mut o = b.shape[i].outline().verts().to_vec();
+                let (s, c) = b.theta[i].sin_cos();
+                for q in o.iter_mut() {
+                    *q = q.rotate(c, s) + b.pos[i];
+                }
+                let (a, cen) = below_line(&super::geometry::Outline::from_slice(&o), w.level);
+                pe -= w.density * g * a * (cen.y - w.level);
+            }
+        }
+        pe
+    }
+
+    /// A complete, serialisable copy of the state: restoring it and stepping gives the
+    /// same results bit for bit as stepping this world.
+    pub fn snapshot(&self) -> Snapshot {
+        let b = &self.bodies;
+        Snapshot {
+            format: SNAPSHOT_FORMAT,
+            time: self.time,
+            steps: self.steps,
+            dt: self.dt,
+            params: self.params.clone(),
+            bodies: (0..b.len())
+                .map(|i| BodyState {
+                    shape: b.shape[i],
+                    pos: b.pos[i],
+                    theta: b.theta[i],
+                    vel: b.vel[i],
+                    omega: b.omega[i],
+                    drive: b.drive[i],
+                })
+                .collect(),
+            contacts: self.contacts.contacts().to_vec(),
+            ledger: self.acc,
+        }
+    }
+
+    /// Rebuilds a world from a [`Snapshot`].
+    pub fn from_snapshot(s: &Snapshot) -> Result<World, WorldError> {
+        if s.format != SNAPSHOT_FORMAT {
+            return Err(WorldError::State(format!(
+                "format {} is not the supported {SNAPSHOT_FORMAT}",
+                s.format
+            )));
+        }
+        let mut w = World::new(s.params.clone())?;
+        for bs in &s.bodies {
+            let i = w
+                .bodies
+                .push(bs.shape, w.params.ice_density, bs.pos, bs.theta, bs.drive);
+            w.bodies.vel[i as usize] = bs.vel;
+            w.bodies.omega[i as usize] = bs.omega;
+        }
+        let nb = w.bodies.len() as u64;
+        if s.contacts
+            .iter()
+            .any(|c| (c.key >> 32) >= nb || (c.key & 0xffff_ffff) >= nb)
+        {
+            return Err(WorldError::State("a contact names a missing body".into()));
+        }
+        w.contacts.restore(s.contacts.clone());
+        w.acc = s.ledger;
+        w.time = s.time;
+        w.steps = s.steps;
+        w.dt = s.dt;
+        Ok(w)
+    }
+}
+
+/// Version of the [`Snapshot`] layout.
+pub const SNAPSHOT_FORMAT: u32 = 1;
+
+/// One body in a [`Snapshot`].
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BodyState {
+    /// Outline relative to the centroid.
+    pub shape: Shape,
+    /// Centroid (m).
+    pub pos: V2,
+    /// Orientation (rad).
+    pub theta: f64,
+    /// Velocity at the last half step (m/s).
+    pub vel: V2,
+    /// Angular velocity at the last half step (rad/s).
+    pub omega: f64,
+    /// Prescribed degrees of freedom.
+    pub drive: Drive,
+}
+
+/// The complete state of a [`World`], serialisable (JSON via [`crate::io`]).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Snapshot {
+    /// Layout version, [`SNAPSHOT_FORMAT`].
+    pub format: u32,
+    /// Simulated time (s).
+    pub time: f64,
+    /// Steps taken.
+    pub steps: u64,
+    /// Time step (s).
+    pub dt: f64,
+    /// Parameters.
+    pub params: WorldParams,
+    /// Bodies.
+    pub bodies: Vec<BodyState>,
+    /// Active contacts with their history.
+    pub contacts: Vec<Contact>,
+    /// Ledger integrals.
+    pub ledger: Accumulators,
+}
