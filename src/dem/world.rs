@@ -182,6 +182,16 @@ impl World {
         id
     }
 
+    /// Sets the velocity (m/s) and angular velocity (rad/s) of body `id` as an initial
+    /// condition: the ledger's starting kinetic energy is adjusted, so the change is not
+    /// counted as work. Call it before stepping.
+    pub fn set_velocity(&mut self, id: BodyId, vel: V2, omega: f64) {
+        let i = id as usize;
+        self.bodies.vel[i] = vel;
+        self.bodies.omega[i] = omega;
+        self.acc.kinetic_start = self.bodies.kinetic_energy();
+    }
+
     /// The parameters.
     pub fn params(&self) -> &WorldParams {
         &self.params

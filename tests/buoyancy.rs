@@ -1,0 +1,106 @@
+//! Verification of buoyancy and the leapfrog integrator against floating-body theory.
+
+use pressridge::dem::{Drive, Shape, V2, WaterParams, World, WorldParams};
+
+const RHO_I: f64 = 920.0;
+const RHO_W: f64 = 1010.0;
+const G: f64 = 9.81;
+
+fn floating_block(h: f64, drag: WaterParams, y0: f64) -> World {
+    let params = WorldParams {
+        water: Some(drag),
+        ..WorldParams::default()
+    };
+    let mut w = World::new(params).unwrap();
+    w.add_block(
+        Shape::rectangle(1.0, h).unwrap(),
+        V2::new(0.0, y0),
+        0.0,
+        Drive::FREE,
+    );
+    w
+}
+
+/// A block settles to the draft d = h·ρ_i/ρ_w (Archimedes) within 0.1 %.
+#[test]
+fn floating_block_settles_to_archimedes_draft() {
+    let h = 0.3;
+    let water = WaterParams {
+        drag_coefficient: 0.0,
+        // Strong linear drag: settles in a few heave periods; equilibrium is unaffected.
+        linear_drag: 2.0e3,
+        ..WaterParams::default()
+    };
+    // Dropped from 5 cm above its floating position.
+    let draft = h * RHO_I / RHO_W;
+    let mut w = floating_block(h, water, h / 2.0 - draft + 0.05);
+    while w.time() < 20.0 {
+        w.step();
+    }
+    let bottom = w.bodies.pos[0].y - h / 2.0;
+    let got = -bottom;
+    assert!(
+        ((got - draft) / draft).abs() < 1e-3,
+        "draft {got} m, Archimedes {draft} m"
+    );
+    assert!(w.bodies.vel[0].norm() < 1e-6);
+}
+
+/// The undamped heave period of a floating block is 2π·sqrt(ρ_i·h/(ρ_w·g)) within 2 %.
+#[test]
+fn heave_period_matches_theory() {
+    let h = 0.3;
+    let water = WaterParams {
+        drag_coefficient: 0.0,
+        linear_drag: 0.0,
+        ..WaterParams::default()
+    };
+    let draft = h * RHO_I / RHO_W;
+    let y_eq = h / 2.0 - draft;
+    let mut w = floating_block(h, water, y_eq + 0.01);
+    // Upward crossings of the equilibrium level.
+    let mut crossings = Vec::new();
+    let mut prev = w.bodies.pos[0].y - y_eq;
+    while w.time() < 10.0 {
+        w.step();
+        let cur = w.bodies.pos[0].y - y_eq;
+        if prev < 0.0 && cur >= 0.0 {
+            // Linear interpolation of the crossing time.
+            crossings.push(w.time() - w.dt() * cur / (cur - prev));
+        }
+        prev = cur;
+    }
+    assert!(crossings.len() >= 5, "only {} periods", crossings.len());
+    let period = (crossings[crossings.len() - 1] - crossings[0]) / (crossings.len() - 1) as f64;
+    let theory = 2.0 * std::f64::consts::PI * (RHO_I * h / (RHO_W * G)).sqrt();
+    assert!(
+        ((period - theory) / theory).abs() < 0.02,
+        "period {period} s, theory {theory} s"
+    );
+    // Undamped: the amplitude is kept and the budget closes (work = 0).
+    let e = w.energy();
+    assert!(e.residual.abs() < 1e-9 * e.largest_term().max(1.0));
+}
+
+/// ΔPE booked from eq (10) agrees with the potential energy of the state.
+#[test]
+fn booked_potential_energy_matches_state_function() {
+    let h = 0.3;
+    let water = WaterParams {
+        drag_coefficient: 1.0,
+        linear_drag: 50.0,
+        ..WaterParams::default()
+    };
+    let mut w = floating_block(h, water, 1.0);
+    let pe0 = w.potential_energy();
+    while w.time() < 5.0 {
+        w.step();
+    }
+    let booked = w.energy().potential_energy;
+    let state = w.potential_energy() - pe0;
+    assert!(
+        (booked - state).abs() < 1e-3 * state.abs(),
+        "booked {booked} J/m, state {state} J/m"
+    );
+    assert!(w.energy().drag_dissipation > 0.0);
+}
