@@ -10,12 +10,13 @@
 //! and its energies are J/m.
 //!
 //! Layout (data flows one way, no module reaches back up):
-//! - [`dem`]: the simulator core — geometry, bodies, contacts, water, the energy ledger and
+//! - [`dem`] — the simulator core — geometry, bodies, contacts, water, the energy ledger and
 //!   the time step;
-//! - [`scene`]: every parameter of a run, from TOML, with defaults and validation;
-//! - [`simulation`]: running a scene and summarising it;
-//! - [`io`]: files (JSON states and summaries, CSV time series);
-//! - [`plot`]: figures.
+//! - [`scene`] — every parameter of a run, from TOML, with defaults and validation;
+//! - [`simulation`] — running a scene and summarising it;
+//! - [`io`] — files (JSON states and summaries, CSV time series);
+//! - [`plot`] — figures.
+//!
 
 pub mod dem;
 pub mod io;

@@ -290,7 +290,7 @@ impl Scene {
             gravity: self.ice.gravity,
             ice_density: self.ice.density,
             contact: self.contact.clone(),
-            water: self.water.enabled.then(|| WaterParams {
+            water: self.water.enabled.then_some(WaterParams {
                 level: self.water.level,
                 density: self.water.density,
                 drag_coefficient: self.water.drag_coefficient,

@@ -116,7 +116,7 @@ pub fn run_world(
         residual: e.residual,
         max_relative_residual: max_rel,
         ratio_work_to_pe: if e.potential_energy != 0.0 {
-            e.work / e.potential_energy
+            e.work / e.potential_energy + 0.0
         } else {
             0.0
         },

@@ -105,7 +105,7 @@ impl Shape {
         thickness: f64,
         bevel: [f64; 4],
     ) -> Result<Shape, ShapeError> {
-        if !(width > 0.0 && thickness > 0.0) || !width.is_finite() || !thickness.is_finite() {
+        if !(width > 0.0 && thickness > 0.0 && width.is_finite() && thickness.is_finite()) {
             return Err(ShapeError::Dimensions(format!(
                 "width {width} m and thickness {thickness} m must be positive"
             )));

@@ -4,6 +4,9 @@
 //! environment variable `PRESSRIDGE_FONT` (a path to a `.ttf`) and then in Debian's
 //! `fonts-dejavu-core` locations (`scripts/setup.sh` installs it).
 
+pub mod render;
+pub mod series;
+
 use std::sync::OnceLock;
 
 /// An error while drawing or writing a figure.

@@ -6,6 +6,9 @@
 
 use clap::{Parser, Subcommand};
 
+mod render;
+mod simulate;
+
 /// Error type of the subcommands: any error with a readable message.
 pub type BoxError = Box<dyn std::error::Error + Send + Sync>;
 
@@ -21,11 +24,19 @@ struct Cli {
 }
 
 #[derive(Subcommand)]
-enum Command {}
+enum Command {
+    /// Run a scene (the built-in default unless --scene is given) and write its results.
+    Simulate(simulate::Args),
+    /// Draw a saved state as a PNG or SVG.
+    Render(render::Args),
+}
 
 fn main() {
     let cli = Cli::parse();
-    let result: Result<(), BoxError> = match cli.command {};
+    let result = match cli.command {
+        Command::Simulate(a) => simulate::run(a),
+        Command::Render(a) => render::run(a),
+    };
     if let Err(e) = result {
         eprintln!("pressridge: error: {e}");
         std::process::exit(1);

@@ -1,0 +1,158 @@
+//! Ridge snapshots: blocks, the water, axes in metres (cf. Hopkins 1994, Figure 5).
+
+use super::{PlotError, draw_err, ensure_font};
+use crate::dem::{Snapshot, V2};
+use plotters::prelude::*;
+use std::path::Path;
+
+/// A window of the plane to draw (m).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Window {
+    /// Left edge (m).
+    pub x0: f64,
+    /// Right edge (m).
+    pub x1: f64,
+    /// Bottom edge (m).
+    pub y0: f64,
+    /// Top edge (m).
+    pub y1: f64,
+}
+
+impl Window {
+    /// The smallest window holding every free (not held) body, with a margin (m).
+    /// Held bodies (walls, supports) are drawn but do not set the window.
+    pub fn fit(s: &Snapshot, margin: f64) -> Window {
+        let mut w = Window {
+            x0: f64::INFINITY,
+            x1: f64::NEG_INFINITY,
+            y0: f64::INFINITY,
+            y1: f64::NEG_INFINITY,
+        };
+        for b in s.bodies.iter().filter(|b| !b.drive.is_kinematic()) {
+            for p in world_vertices(b) {
+                w.x0 = w.x0.min(p.x);
+                w.x1 = w.x1.max(p.x);
+                w.y0 = w.y0.min(p.y);
+                w.y1 = w.y1.max(p.y);
+            }
+        }
+        if !w.x0.is_finite() {
+            return Window {
+                x0: -5.0,
+                x1: 5.0,
+                y0: -5.0,
+                y1: 5.0,
+            };
+        }
+        Window {
+            x0: w.x0 - margin,
+            x1: w.x1 + margin,
+            y0: w.y0 - margin,
+            y1: w.y1 + margin,
+        }
+    }
+}
+
+fn world_vertices(b: &crate::dem::world::BodyState) -> Vec<V2> {
+    let (s, c) = b.theta.sin_cos();
+    b.shape
+        .outline()
+        .verts()
+        .iter()
+        .map(|q| q.rotate(c, s) + b.pos)
+        .collect()
+}
+
+/// Draws a saved state into a PNG (or SVG, by the file extension) of `width_px` pixels
+/// wide, height from the window's aspect ratio so that metres are square.
+pub fn render_state(
+    s: &Snapshot,
+    path: &Path,
+    window: Window,
+    width_px: u32,
+    title: &str,
+) -> Result<(), PlotError> {
+    ensure_font()?;
+    let aspect = (window.y1 - window.y0) / (window.x1 - window.x0);
+    // Room for labels: the plot area keeps metres square.
+    let (ml, mb, mt, mr) = (70u32, 50u32, 40u32, 20u32);
+    let plot_w = width_px.saturating_sub(ml + mr).max(100);
+    let height_px = (plot_w as f64 * aspect).round() as u32 + mb + mt;
+    let svg = path.extension().is_some_and(|e| e == "svg");
+    if svg {
+        let root = SVGBackend::new(path, (width_px, height_px)).into_drawing_area();
+        draw(root, s, window, title, (ml, mb, mt, mr))
+    } else {
+        let root = BitMapBackend::new(path, (width_px, height_px)).into_drawing_area();
+        draw(root, s, window, title, (ml, mb, mt, mr))
+    }
+}
+
+fn draw<DB: DrawingBackend>(
+    root: DrawingArea<DB, plotters::coord::Shift>,
+    s: &Snapshot,
+    win: Window,
+    title: &str,
+    (ml, mb, mt, mr): (u32, u32, u32, u32),
+) -> Result<(), PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    root.fill(&WHITE).map_err(draw_err)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 18))
+        .margin_top(mt.saturating_sub(30))
+        .margin_right(mr)
+        .x_label_area_size(mb)
+        .y_label_area_size(ml)
+        .build_cartesian_2d(win.x0..win.x1, win.y0..win.y1)
+        .map_err(draw_err)?;
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .x_desc("x (m)")
+        .y_desc("y (m)")
+        .label_style(("sans-serif", 14))
+        .draw()
+        .map_err(draw_err)?;
+    if let Some(w) = &s.params.water {
+        let water = RGBColor(198, 226, 245);
+        chart
+            .draw_series(std::iter::once(Rectangle::new(
+                [(win.x0, win.y0), (win.x1, w.level.min(win.y1))],
+                water.filled(),
+            )))
+            .map_err(draw_err)?;
+    }
+    let held = RGBColor(150, 150, 150);
+    let ice = RGBColor(250, 250, 252);
+    for b in &s.bodies {
+        let v = world_vertices(b);
+        let pts: Vec<(f64, f64)> = v
+            .iter()
+            .map(|p| (p.x.clamp(win.x0, win.x1), p.y.clamp(win.y0, win.y1)))
+            .collect();
+        let fill = if b.drive.is_kinematic() { held } else { ice };
+        chart
+            .draw_series(std::iter::once(Polygon::new(pts.clone(), fill.filled())))
+            .map_err(draw_err)?;
+        let mut outline = pts;
+        outline.push(outline[0]);
+        chart
+            .draw_series(std::iter::once(PathElement::new(
+                outline,
+                BLACK.stroke_width(1),
+            )))
+            .map_err(draw_err)?;
+    }
+    if let Some(w) = &s.params.water {
+        chart
+            .draw_series(LineSeries::new(
+                [(win.x0, w.level), (win.x1, w.level)],
+                RGBColor(30, 90, 160).stroke_width(2),
+            ))
+            .map_err(draw_err)?;
+    }
+    root.present().map_err(draw_err)?;
+    Ok(())
+}

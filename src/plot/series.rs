@@ -1,0 +1,79 @@
+//! Energy budget against time (cf. Hopkins 1994, Figure 7).
+
+use super::{PlotError, draw_err, ensure_font};
+use crate::dem::EnergyBudget;
+use plotters::prelude::*;
+use std::path::Path;
+
+/// Draws every ledger term against time into a PNG, in kJ per metre.
+pub fn plot_energy(series: &[EnergyBudget], path: &Path, title: &str) -> Result<(), PlotError> {
+    ensure_font()?;
+    type Getter = fn(&EnergyBudget) -> f64;
+    let lines: [(&str, Getter, RGBColor); 8] = [
+        ("work", |e| e.work, RGBColor(0, 0, 0)),
+        ("ΔPE", |e| e.potential_energy, RGBColor(31, 119, 180)),
+        (
+            "friction Φ_f",
+            |e| e.friction_dissipation,
+            RGBColor(214, 39, 40),
+        ),
+        (
+            "viscous Φ_i",
+            |e| e.viscous_dissipation,
+            RGBColor(44, 160, 44),
+        ),
+        ("drag", |e| e.drag_dissipation, RGBColor(148, 103, 189)),
+        ("ΔKE", |e| e.kinetic_energy, RGBColor(255, 127, 14)),
+        (
+            "other",
+            |e| e.other_dissipation + e.elastic_energy,
+            RGBColor(140, 86, 75),
+        ),
+        ("residual", |e| e.residual, RGBColor(127, 127, 127)),
+    ];
+    let t1 = series.last().map_or(1.0, |e| e.time).max(1e-9);
+    let (mut lo, mut hi) = (0.0f64, 0.0f64);
+    for e in series {
+        for (_, f, _) in &lines {
+            lo = lo.min(f(e) / 1e3);
+            hi = hi.max(f(e) / 1e3);
+        }
+    }
+    let pad = 0.05 * (hi - lo).max(1e-9);
+    let root = BitMapBackend::new(path, (900, 560)).into_drawing_area();
+    root.fill(&WHITE).map_err(draw_err)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 18))
+        .margin(12)
+        .x_label_area_size(45)
+        .y_label_area_size(70)
+        .build_cartesian_2d(0.0..t1, (lo - pad)..(hi + pad))
+        .map_err(draw_err)?;
+    chart
+        .configure_mesh()
+        .x_desc("time (s)")
+        .y_desc("energy (kJ/m)")
+        .label_style(("sans-serif", 14))
+        .draw()
+        .map_err(draw_err)?;
+    for (name, f, color) in lines {
+        chart
+            .draw_series(LineSeries::new(
+                series.iter().map(|e| (e.time, f(e) / 1e3)),
+                color.stroke_width(2),
+            ))
+            .map_err(draw_err)?
+            .label(name)
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + 18, y)], color.stroke_width(2)));
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 14))
+        .position(SeriesLabelPosition::UpperLeft)
+        .draw()
+        .map_err(draw_err)?;
+    root.present().map_err(draw_err)?;
+    Ok(())
+}
