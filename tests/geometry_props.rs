@@ -4,7 +4,9 @@ use parry2d_f64::mass_properties::details::convex_polygon_area_and_center_of_mas
 use parry2d_f64::na::Point2;
 use parry2d_f64::transformation::convex_polygons_intersection_points;
 use pressridge::dem::Shape;
-use pressridge::dem::geometry::{Outline, V2, area_centroid, below_line, intersect, overlap};
+use pressridge::dem::geometry::{
+    Outline, V2, area_centroid, below_line, boundary_crossings, intersect, overlap,
+};
 use proptest::prelude::*;
 
 /// A block as the simulator makes them: a bevelled rectangle, rotated and placed.
@@ -51,6 +53,22 @@ proptest! {
         prop_assert!((ab.0 - ba.0).abs() <= 1e-10 * small.max(1e-3));
         if ab.0 > 1e-9 {
             prop_assert!((ab.1 - ba.1).norm() < 1e-7);
+        }
+    }
+
+    #[test]
+    fn clipper_crossings_are_true_boundary_crossings(a in block(), b in block()) {
+        let poly = intersect(&a, &b);
+        let mut tagged = [V2::default(); 24];
+        let k = poly.crossings(&a, &b, &mut tagged);
+        let mut brute = [V2::default(); 128];
+        let m = boundary_crossings(&a, &b, &mut brute);
+        for p in &tagged[..k] {
+            prop_assert!(brute[..m].iter().any(|q| (*p - *q).norm() < 1e-7),
+                "{:?} is not a crossing of the two boundaries", p);
+        }
+        if poly.area_centroid().0 > 1e-6 {
+            prop_assert!(k >= 2 || m < 2, "{} crossings found of {}", k, m);
         }
     }
 
