@@ -65,7 +65,8 @@ fn geometry(c: &mut Criterion) {
             acc
         })
     });
-    let pp: Vec<(Vec<Point2<f64>>, Vec<Point2<f64>>)> = ps
+    type Pts = Vec<Point2<f64>>;
+    let pp: Vec<(Pts, Pts)> = ps
         .iter()
         .map(|(a, q, _, _)| {
             let f = |o: &Outline| o.verts().iter().map(|p| Point2::new(p.x, p.y)).collect();
