@@ -4,11 +4,17 @@
 //! no buoyancy or drag work, a scene without walls has no wall bodies. Unknown keys are
 //! rejected with the key's name, so a misspelt parameter never silently takes its default.
 //!
-//! The built-in default scene ([`Scene::default`]) is a rubble pile of 200 blocks dropped
-//! into water between two walls: the verification scene of the contact, buoyancy and
-//! ledger mechanics.
+//! The built-in default scene ([`Scene::default`]) is the experiment of the paper's
+//! Figure 5: a 0.30 m lead-ice sheet pushed at 0.25 m/s against a 2 m floe for 400 s, with
+//! μ = 1.0 and μ_w = 0.6. Scenes compose: sheet against floe, sheet against a fixed wall
+//! (`[wall]` instead of `[floe]`), a rubble pile alone (`[pile]`, see
+//! [`Scene::rubble_pile`]). A section that is absent is not in the scene.
 
-use crate::dem::{ContactParams, Drive, Shape, V2, WaterParams, World, WorldError, WorldParams};
+use crate::dem::boundary::{FloeSupport, SheetBoundary};
+use crate::dem::{
+    Block, ContactParams, Drive, JointMaterial, Role, Shape, V2, WaterParams, World, WorldError,
+    WorldParams,
+};
 use rand_xoshiro::Xoshiro256PlusPlus;
 use rand_xoshiro::rand_core::{Rng, SeedableRng};
 use serde::{Deserialize, Serialize};
@@ -144,6 +150,230 @@ impl Default for PileSection {
     }
 }
 
+/// The lead-ice sheet pushed into the ridge (Table 1; Figure 1).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct SheetSection {
+    /// Thickness h (m). Default 0.30.
+    pub thickness: f64,
+    /// Component block width W (m). Default 0.25 (Table 1: 0.20 for h = 0.20, 0.30 for
+    /// h = 0.45).
+    pub block_width: f64,
+    /// Length of the sheet, kept constant as blocks break off (m). Default 25 m (100
+    /// blocks): ten times the distance π/(4β) ≈ 2.5 m at which a 0.30 m sheet breaks, so
+    /// the driven end is far from the failure zone. The paper does not give it.
+    pub length: f64,
+    /// Pushing speed U (m/s). Default 0.25 (Table 1).
+    pub speed: f64,
+    /// Young's modulus at the top (Pa). Default 1e8 (Table 1, lead top 0.1 GPa).
+    pub e_top: f64,
+    /// Young's modulus at the bottom (Pa). Default 6.7e7 (Table 1, 0.067 GPa).
+    pub e_bottom: f64,
+    /// Poisson's ratio (dimensionless). Default 0.3 (Table 1).
+    pub poisson: f64,
+    /// Tensile strength at the top surface (Pa). Default 750e3 (Table 1).
+    pub strength_top: f64,
+    /// Tensile strength at the bottom surface (Pa). Default 350e3 (Table 1).
+    pub strength_bottom: f64,
+    /// Skeletal layer as a fraction of h (dimensionless). Default 0.2 (Table 1).
+    pub skeletal_fraction: f64,
+    /// Largest skeletal layer (m). Default 0.06 (Table 1).
+    pub skeletal_max: f64,
+    /// Relative random variation of E at each sheet joint. Default 0.01 (±1 %).
+    pub modulus_variation: f64,
+    /// Bevel leg under the sheet tip, point B of Figure 1, as a fraction of h
+    /// (dimensionless). Default 1/3 (0.10 m for h = 0.30 m): the paper shows the bevel but
+    /// not its size; a third of h lets the tip ride onto a 45° slope and scales with the
+    /// sheet.
+    pub tip_bevel_fraction: f64,
+    /// Bevel leg at the corners of broken faces (m). Default 0.02 ("beveled 2 cm at a 45°
+    /// angle").
+    pub corner_bevel: f64,
+    /// Decay constant of eq (8) (dimensionless). Default 4.
+    pub viscous_decay: f64,
+    /// Gap between the sheet tip and the floe nose or wall at the start (m). Default 0.05.
+    pub gap: f64,
+    /// Hold the driven (leftmost) block at its floating height and orientation while it
+    /// moves at U. Default true: the paper's "the first (leftmost) block of the sheet moves
+    /// with constant speed U in the positive x direction" read as a prescribed motion, the
+    /// far-field ice at the water line. With false only its x velocity is prescribed, and
+    /// a long sheet under compression can tilt and sink its far end (a fully submerged
+    /// block has only (ρ_w − ρ_i)·g·A of buoyancy left to pull it back).
+    pub clamp_driven_end: bool,
+}
+
+impl Default for SheetSection {
+    fn default() -> Self {
+        Self {
+            thickness: 0.30,
+            block_width: 0.25,
+            length: 25.0,
+            speed: 0.25,
+            e_top: 1.0e8,
+            e_bottom: 6.7e7,
+            poisson: 0.3,
+            strength_top: 750e3,
+            strength_bottom: 350e3,
+            skeletal_fraction: 0.2,
+            skeletal_max: 0.06,
+            modulus_variation: 0.01,
+            tip_bevel_fraction: 1.0 / 3.0,
+            corner_bevel: 0.02,
+            viscous_decay: 4.0,
+            gap: 0.05,
+            clamp_driven_end: true,
+        }
+    }
+}
+
+impl SheetSection {
+    /// The prescribed motion of the driven block.
+    pub fn drive(&self) -> Drive {
+        Drive {
+            u: Some(self.speed),
+            v: self.clamp_driven_end.then_some(0.0),
+            omega: self.clamp_driven_end.then_some(0.0),
+        }
+    }
+
+    /// Bevel leg under the sheet tip (m).
+    pub fn tip_bevel(&self) -> f64 {
+        self.tip_bevel_fraction * self.thickness
+    }
+
+    /// Skeletal layer (m): `skeletal_fraction·h`, at most `skeletal_max`.
+    pub fn skeletal(&self) -> f64 {
+        (self.skeletal_fraction * self.thickness).min(self.skeletal_max)
+    }
+}
+
+/// The thick floe the sheet is pushed against (Table 1; Figure 1).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct FloeSection {
+    /// Thickness (m). Default 2.0 (Table 1).
+    pub thickness: f64,
+    /// Length (m). Default 20 m, room for the sail; the paper does not give it.
+    pub length: f64,
+    /// Component block width (m). Default 1.0: the paper does not give it; 1 m keeps the
+    /// floe's joints no stiffer (per unit mass) than the sheet's, so they do not set Δt.
+    pub block_width: f64,
+    /// Young's modulus at the top (Pa). Default 1e9 (Table 1).
+    pub e_top: f64,
+    /// Young's modulus at the bottom (Pa). Default 6.7e8 (Table 1).
+    pub e_bottom: f64,
+    /// Poisson's ratio. Default 0.3.
+    pub poisson: f64,
+    /// Tensile strength at the top (Pa). Default 750e3, the sheet's (the paper gives none
+    /// for the floe).
+    pub strength_top: f64,
+    /// Tensile strength at the bottom (Pa). Default 350e3, the sheet's.
+    pub strength_bottom: f64,
+    /// Stiffness of the vertical support spring per metre of floe (N/m per m of depth,
+    /// i.e. N/m²). Default 3e4: with buoyancy (ρ_w·g ≈ 1e4 N/m²) a floe piece carrying a
+    /// 70 kN/m sail over 5 m subsides ≈ 0.35 m, inside the paper's "half a meter or less".
+    pub support_stiffness: f64,
+    /// Damping of the support as a fraction of critical for spring plus buoyancy. Default
+    /// 0.5.
+    pub support_damping_fraction: f64,
+    /// Bevel leg of the floe nose, its top corner facing the sheet (m). Default 0.5: a 45°
+    /// ramp from the floe top (0.18 m above water) to 0.32 m below, spanning the waterline
+    /// where the sheet arrives.
+    pub nose_bevel: f64,
+    /// Bevel leg at the corners of broken floe faces (m). Default 0.02.
+    pub corner_bevel: f64,
+    /// Pin the far (rightmost) floe block in x and y, point C of Figure 1. Default true.
+    pub pin: bool,
+}
+
+impl Default for FloeSection {
+    fn default() -> Self {
+        Self {
+            thickness: 2.0,
+            length: 20.0,
+            block_width: 1.0,
+            e_top: 1.0e9,
+            e_bottom: 6.7e8,
+            poisson: 0.3,
+            strength_top: 750e3,
+            strength_bottom: 350e3,
+            support_stiffness: 3.0e4,
+            support_damping_fraction: 0.5,
+            nose_bevel: 0.5,
+            corner_bevel: 0.02,
+            pin: true,
+        }
+    }
+}
+
+/// A fixed vertical wall in place of the floe.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct WallSection {
+    /// x of the wall face towards the sheet (m). Default 0.
+    pub x: f64,
+    /// Top of the wall (m). Default 5.
+    pub top: f64,
+    /// Bottom of the wall (m). Default −15.
+    pub bottom: f64,
+    /// Thickness of the wall (m). Default 1.
+    pub thickness: f64,
+}
+
+impl Default for WallSection {
+    fn default() -> Self {
+        Self {
+            x: 0.0,
+            top: 5.0,
+            bottom: -15.0,
+            thickness: 1.0,
+        }
+    }
+}
+
+/// Joint viscosity and crack growth, shared by the sheet, floe and rubble.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct JointSection {
+    /// Joint viscosity as a fraction of critical, η = f·2·sqrt(ρ_i·E). Default 0.1 (the
+    /// paper's 10 %).
+    pub damping_fraction: f64,
+    /// Crack speed across a joint (m/s). Default 50: the paper says only that a crack
+    /// takes many steps; 50 m/s crosses a 0.24 m joint in 4.8 ms, about 40 steps of the
+    /// default Δt, and is of the order of measured crack speeds in sea ice (tens to hundreds
+    /// of m/s) while staying slow against the ~0.1 s flexural response of the sheet.
+    pub crack_speed: f64,
+}
+
+impl Default for JointSection {
+    fn default() -> Self {
+        Self {
+            damping_fraction: 0.1,
+            crack_speed: 50.0,
+        }
+    }
+}
+
+/// What a run writes besides its summary.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct OutputSection {
+    /// Interval between snapshots (s); 0 for none. Default 50.
+    pub snapshot_interval: f64,
+    /// Snapshot frame [x0, x1, y0, y1] (m). Default [−14, 6, −8, 4]: 20 m × 12 m as in
+    /// Figure 5, the floe nose at x = 0.
+    pub frame: [f64; 4],
+}
+
+impl Default for OutputSection {
+    fn default() -> Self {
+        Self {
+            snapshot_interval: 50.0,
+            frame: [-14.0, 6.0, -8.0, 4.0],
+        }
+    }
+}
+
 /// A complete scene.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
@@ -162,26 +392,60 @@ pub struct Scene {
     pub water: WaterSection,
     /// Numerics.
     pub numerics: NumericsSection,
+    /// Joints and cracks.
+    pub joint: JointSection,
+    /// Outputs.
+    pub output: OutputSection,
+    /// The pushed sheet, if any.
+    #[serde(default)]
+    pub sheet: Option<SheetSection>,
+    /// The floe, if any.
+    #[serde(default)]
+    pub floe: Option<FloeSection>,
+    /// A fixed wall, if any.
+    #[serde(default)]
+    pub wall: Option<WallSection>,
     /// A rubble pile, if any.
+    #[serde(default)]
     pub pile: Option<PileSection>,
 }
 
 impl Default for Scene {
+    /// The Figure 5 experiment: h = 0.30 m, W = 0.25 m, 2 m floe, U = 0.25 m/s,
+    /// E = 0.1 GPa top / 0.067 GPa bottom, μ = 1.0, μ_w = 0.6, 400 s (100 m of sheet).
     fn default() -> Self {
         Self {
-            name: "rubble-pile".into(),
+            name: "figure5".into(),
             seed: 1,
-            duration: 10.0,
+            duration: 400.0,
             ice: IceSection::default(),
             contact: ContactParams::default(),
             water: WaterSection::default(),
             numerics: NumericsSection::default(),
-            pile: Some(PileSection::default()),
+            joint: JointSection::default(),
+            output: OutputSection::default(),
+            sheet: Some(SheetSection::default()),
+            floe: Some(FloeSection::default()),
+            wall: None,
+            pile: None,
         }
     }
 }
 
 impl Scene {
+    /// A pile of 200 blocks 0.25 m × 0.30 m dropped into water between two walls, 10 s:
+    /// the verification scene of contacts, buoyancy and the ledger.
+    pub fn rubble_pile() -> Scene {
+        Scene {
+            name: "rubble-pile".into(),
+            duration: 10.0,
+            sheet: None,
+            floe: None,
+            pile: Some(PileSection::default()),
+            ..Scene::default()
+        }
+    }
+
     /// Parses a scene from TOML text; missing keys take their defaults, unknown keys are
     /// an error naming them.
     pub fn from_toml(text: &str) -> Result<Scene, SceneError> {
@@ -248,6 +512,105 @@ impl Scene {
         if !(self.numerics.time_step >= 0.0 && self.numerics.time_step.is_finite()) {
             return bad("numerics.time_step", "must be 0 (derived) or positive (s)");
         }
+        if let Some(sh) = &self.sheet {
+            for (k, v) in [
+                ("sheet.thickness", sh.thickness),
+                ("sheet.block_width", sh.block_width),
+                ("sheet.length", sh.length),
+                ("sheet.speed", sh.speed),
+                ("sheet.e_top", sh.e_top),
+                ("sheet.e_bottom", sh.e_bottom),
+                ("sheet.strength_top", sh.strength_top),
+                ("sheet.strength_bottom", sh.strength_bottom),
+            ] {
+                if !(v > 0.0 && v.is_finite()) {
+                    return bad(k, "must be positive");
+                }
+            }
+            for (k, v) in [
+                ("sheet.skeletal_fraction", sh.skeletal_fraction),
+                ("sheet.skeletal_max", sh.skeletal_max),
+                ("sheet.modulus_variation", sh.modulus_variation),
+                ("sheet.tip_bevel_fraction", sh.tip_bevel_fraction),
+                ("sheet.corner_bevel", sh.corner_bevel),
+                ("sheet.viscous_decay", sh.viscous_decay),
+                ("sheet.gap", sh.gap),
+            ] {
+                if !(v >= 0.0 && v.is_finite()) {
+                    return bad(k, "must be non-negative");
+                }
+            }
+            if !(0.0..0.5).contains(&sh.poisson) {
+                return bad("sheet.poisson", "must lie in [0, 0.5)");
+            }
+            if sh.skeletal() >= sh.thickness {
+                return bad("sheet.skeletal_fraction", "leaves no joint");
+            }
+            if sh.tip_bevel_fraction >= 1.0 || sh.tip_bevel() >= sh.block_width {
+                return bad(
+                    "sheet.tip_bevel_fraction",
+                    "makes a bevel as large as the block",
+                );
+            }
+            if sh.modulus_variation >= 1.0 {
+                return bad("sheet.modulus_variation", "must be below 1");
+            }
+            if sh.length < 2.0 * sh.block_width {
+                return bad("sheet.length", "must hold at least two blocks");
+            }
+        }
+        if let Some(f) = &self.floe {
+            for (k, v) in [
+                ("floe.thickness", f.thickness),
+                ("floe.length", f.length),
+                ("floe.block_width", f.block_width),
+                ("floe.e_top", f.e_top),
+                ("floe.e_bottom", f.e_bottom),
+                ("floe.strength_top", f.strength_top),
+                ("floe.strength_bottom", f.strength_bottom),
+            ] {
+                if !(v > 0.0 && v.is_finite()) {
+                    return bad(k, "must be positive");
+                }
+            }
+            for (k, v) in [
+                ("floe.support_stiffness", f.support_stiffness),
+                ("floe.support_damping_fraction", f.support_damping_fraction),
+                ("floe.nose_bevel", f.nose_bevel),
+                ("floe.corner_bevel", f.corner_bevel),
+            ] {
+                if !(v >= 0.0 && v.is_finite()) {
+                    return bad(k, "must be non-negative");
+                }
+            }
+            if !(0.0..0.5).contains(&f.poisson) {
+                return bad("floe.poisson", "must lie in [0, 0.5)");
+            }
+        }
+        if self.floe.is_some() && self.wall.is_some() {
+            return bad("wall", "a scene has a floe or a wall, not both");
+        }
+        if let Some(w) = &self.wall
+            && !(w.top > w.bottom && w.thickness > 0.0 && w.x.is_finite())
+        {
+            return bad("wall", "needs top > bottom and a positive thickness");
+        }
+        if !(self.joint.damping_fraction >= 0.0 && self.joint.damping_fraction.is_finite()) {
+            return bad("joint.damping_fraction", "must be non-negative");
+        }
+        if !(self.joint.crack_speed > 0.0 && self.joint.crack_speed.is_finite()) {
+            return bad("joint.crack_speed", "must be positive (m/s)");
+        }
+        if self.output.snapshot_interval.is_nan() || self.output.snapshot_interval < 0.0 {
+            return bad("output.snapshot_interval", "must be non-negative (s)");
+        }
+        let f = self.output.frame;
+        if !(f[1] > f[0] && f[3] > f[2]) {
+            return bad(
+                "output.frame",
+                "must be [x0, x1, y0, y1] with x1 > x0 and y1 > y0",
+            );
+        }
         if let Some(p) = &self.pile {
             if p.columns == 0 {
                 return bad("pile.columns", "must be at least 1");
@@ -286,10 +649,17 @@ impl Scene {
 
     /// The world parameters of this scene.
     pub fn world_params(&self) -> WorldParams {
+        let mut contact = self.contact.clone();
+        if contact.reference_thickness.is_none()
+            && let Some(sh) = &self.sheet
+        {
+            contact.reference_thickness = Some(sh.thickness);
+        }
         WorldParams {
             gravity: self.ice.gravity,
             ice_density: self.ice.density,
-            contact: self.contact.clone(),
+            contact,
+            crack_speed: self.joint.crack_speed,
             water: self.water.enabled.then_some(WaterParams {
                 level: self.water.level,
                 density: self.water.density,
@@ -298,6 +668,7 @@ impl Scene {
             }),
             time_step_safety: self.numerics.time_step_safety,
             time_step: (self.numerics.time_step > 0.0).then_some(self.numerics.time_step),
+            ..WorldParams::default()
         }
     }
 
@@ -310,7 +681,168 @@ impl Scene {
         if let Some(p) = &self.pile {
             build_pile(&mut world, p, level, &mut rng)?;
         }
+        if let Some(f) = &self.floe {
+            self.build_floe(&mut world, f)?;
+        }
+        if let Some(w) = &self.wall {
+            let shape = Shape::rectangle(w.thickness, w.top - w.bottom)
+                .map_err(|e| SceneError::Invalid("wall".into(), e.to_string()))?;
+            let id = world.add_block(
+                shape,
+                V2::new(w.x + 0.5 * w.thickness, 0.5 * (w.top + w.bottom)),
+                0.0,
+                Drive::FIXED,
+            );
+            world.bodies.role[id as usize] = Role::Wall;
+        }
+        if let Some(sh) = &self.sheet {
+            self.build_sheet(&mut world, sh)?;
+        }
+        world.refresh_time_step();
         Ok(world)
+    }
+
+    /// Height of the centre of a floating slab of thickness `h` (m) at rest.
+    fn floating_centre(&self, h: f64) -> f64 {
+        let level = self.water.level;
+        if self.water.enabled {
+            level + 0.5 * h - h * self.ice.density / self.water.density
+        } else {
+            level + 0.5 * h
+        }
+    }
+
+    fn build_sheet(&self, world: &mut World, sh: &SheetSection) -> Result<(), SceneError> {
+        let n = (sh.length / sh.block_width).round().max(2.0) as usize;
+        let yc = self.floating_centre(sh.thickness);
+        let mat = JointMaterial {
+            e_top: sh.e_top,
+            e_bottom: sh.e_bottom,
+            poisson: sh.poisson,
+            damping_fraction: self.joint.damping_fraction,
+            strength_top: sh.strength_top,
+            strength_bottom: sh.strength_bottom,
+        };
+        let front = self
+            .floe
+            .as_ref()
+            .map(|_| 0.0)
+            .or(self.wall.as_ref().map(|w| w.x))
+            .unwrap_or(0.0)
+            - sh.gap;
+        let mut boundary = SheetBoundary {
+            speed: sh.speed,
+            clamp: sh.clamp_driven_end,
+            width: sh.block_width,
+            thickness: sh.thickness,
+            skeletal: sh.skeletal(),
+            material: mat,
+            modulus_variation: sh.modulus_variation,
+            seed: self.seed,
+            joints_made: 0,
+            tip_bevel: sh.tip_bevel(),
+            corner_bevel: sh.corner_bevel,
+            decay: sh.viscous_decay,
+            viscosity: self
+                .contact
+                .viscous_coefficient_for(sh.thickness, self.ice.density)
+                * sh.thickness,
+            blocks: Vec::with_capacity(n),
+        };
+        for k in 0..n {
+            let bevel = if k + 1 == n {
+                [0.0, sh.tip_bevel(), 0.0, 0.0]
+            } else {
+                [0.0; 4]
+            };
+            let block = Block {
+                width: sh.block_width,
+                thickness: sh.thickness,
+                bevel,
+            };
+            let drive = if k == 0 { sh.drive() } else { Drive::FREE };
+            let x = front - (n - k) as f64 * sh.block_width + 0.5 * sh.block_width;
+            let id = world.add_rect(block, V2::new(x, yc), 0.0, drive, Role::Sheet)?;
+            if let Some(&prev) = boundary.blocks.last() {
+                let f = boundary.modulus_factor(boundary.joints_made);
+                let m = JointMaterial {
+                    e_top: mat.e_top * f,
+                    e_bottom: mat.e_bottom * f,
+                    ..mat
+                };
+                world.join(prev, id, sh.skeletal(), m)?;
+                boundary.joints_made += 1;
+            }
+            boundary.blocks.push(id);
+        }
+        world.boundary.sheet = Some(boundary);
+        Ok(())
+    }
+
+    fn build_floe(&self, world: &mut World, f: &FloeSection) -> Result<(), SceneError> {
+        let n = (f.length / f.block_width).round().max(1.0) as usize;
+        let yc = self.floating_centre(f.thickness);
+        let skeletal = f.thickness.min(0.3) * 0.2;
+        let skeletal = skeletal.min(0.06);
+        let mat = JointMaterial {
+            e_top: f.e_top,
+            e_bottom: f.e_bottom,
+            poisson: f.poisson,
+            damping_fraction: self.joint.damping_fraction,
+            strength_top: f.strength_top,
+            strength_bottom: f.strength_bottom,
+        };
+        let g = self.ice.gravity;
+        let rho_w = if self.water.enabled {
+            self.water.density
+        } else {
+            0.0
+        };
+        let mut support = FloeSupport {
+            blocks: Vec::with_capacity(n),
+            stiffness: Vec::with_capacity(n),
+            damping: Vec::with_capacity(n),
+            corner_bevel: f.corner_bevel,
+        };
+        let mut prev = None;
+        for k in 0..n {
+            let bevel = if k == 0 {
+                [0.0, 0.0, 0.0, f.nose_bevel]
+            } else {
+                [0.0; 4]
+            };
+            let block = Block {
+                width: f.block_width,
+                thickness: f.thickness,
+                bevel,
+            };
+            let drive = if f.pin && k + 1 == n {
+                Drive {
+                    u: Some(0.0),
+                    v: Some(0.0),
+                    omega: None,
+                }
+            } else {
+                Drive::FREE
+            };
+            let x = (k as f64 + 0.5) * f.block_width;
+            let id = world.add_rect(block, V2::new(x, yc), 0.0, drive, Role::Floe)?;
+            if let Some(p) = prev {
+                world.join(p, id, skeletal, mat)?;
+            }
+            prev = Some(id);
+            let i = id as usize;
+            let k_s = f.support_stiffness * f.block_width;
+            let m = world.bodies.mass[i];
+            let k_total = k_s + rho_w * g * f.block_width;
+            support.blocks.push((id, world.bodies.pos[i].y));
+            support.stiffness.push(k_s);
+            support
+                .damping
+                .push(f.support_damping_fraction * 2.0 * (k_total * m).sqrt());
+        }
+        world.boundary.floe = Some(support);
+        Ok(())
     }
 }
 

@@ -1,7 +1,8 @@
-//! Running a scene: step the world to the scene's duration, sample the energy budget at the
-//! scene's interval, and summarise. No file formats here (see [`crate::io`]).
+//! Running a scene: step the world to the scene's duration, sample the energy budget and the
+//! ridging force at the scene's interval, and summarise. No file formats here (see
+//! [`crate::io`]).
 
-use crate::dem::{EnergyBudget, Snapshot, World};
+use crate::dem::{EnergyBudget, Role, Snapshot, World};
 use crate::scene::{Scene, SceneError};
 use serde::{Deserialize, Serialize};
 
@@ -23,10 +24,15 @@ pub struct Summary {
     pub dt: f64,
     /// Wall-clock time of the stepping (s).
     pub wall_seconds: f64,
-    /// Number of bodies.
+    /// Number of bodies at the end.
     pub bodies: usize,
-    /// Work done by prescribed motions, eq (9) (J/m).
+    /// Work done by the pushed sheet (the force that holds its end block at U) and external
+    /// loads, eq (9) (J/m).
     pub work: f64,
+    /// Work by eq (9) as the paper writes it: U·Δt·Σ F_x of the contact forces that other
+    /// bodies exert on the sheet (J/m). It leaves out the sheet's own inertia, buoyancy and
+    /// boundary forces, so it differs from `work` by those.
+    pub work_eq9: f64,
     /// Change of potential energy, eq (10) (J/m).
     pub potential_energy: f64,
     /// Change of kinetic energy (J/m).
@@ -37,17 +43,41 @@ pub struct Summary {
     pub viscous_dissipation: f64,
     /// Drag dissipation (J/m).
     pub drag_dissipation: f64,
-    /// Elastic energy held in contacts at the end (J/m).
+    /// Joint viscous dissipation (J/m).
+    pub joint_dissipation: f64,
+    /// Dissipation by the boundary forces, eqs (7)–(8) and floe supports (J/m).
+    pub boundary_dissipation: f64,
+    /// Elastic energy released by cracks (J/m).
+    pub fracture_dissipation: f64,
+    /// Elastic energy held at the end (J/m).
     pub elastic_energy: f64,
-    /// Other dissipation (J/m).
+    /// All dissipation other than Φ_f, Φ_i and drag (J/m).
     pub other_dissipation: f64,
-    /// Work minus all sinks (J/m).
+    /// Work minus all sinks at the end (J/m).
     pub residual: f64,
     /// Largest |residual| over all samples divided by the largest ledger term at that
     /// sample (dimensionless).
     pub max_relative_residual: f64,
-    /// Work divided by ΔPE (dimensionless); NaN-free: 0 when ΔPE is 0.
+    /// Work divided by ΔPE (dimensionless); 0 when ΔPE is 0.
     pub ratio_work_to_pe: f64,
+    /// Ridged-ice volume V = U·h·t per metre of ridge (m³/m); 0 without a sheet.
+    pub ridged_volume: f64,
+    /// Number of joints severed (blocks broken from the sheet, floe or rubble).
+    pub blocks_broken: u64,
+    /// Length of every rubble piece at the end (m).
+    pub rubble_block_lengths: Vec<f64>,
+}
+
+/// One sample of a run.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Sample {
+    /// The energy budget (its `time` is the sample time, s).
+    pub energy: EnergyBudget,
+    /// The ridging force of eq (9) at that instant (N/m).
+    pub ridging_force: f64,
+    /// The mean force the driver exerted since the previous sample, Δwork/(U·Δt) (N/m);
+    /// 0 without a sheet.
+    pub mean_force: f64,
 }
 
 /// Everything a run produces.
@@ -55,47 +85,72 @@ pub struct Summary {
 pub struct RunOutput {
     /// Headline numbers.
     pub summary: Summary,
-    /// The energy budget at every sample, starting at t = 0.
-    pub series: Vec<EnergyBudget>,
+    /// Samples at the scene's interval, starting at t = 0.
+    pub series: Vec<Sample>,
     /// The final state.
     pub final_state: Snapshot,
 }
 
-/// Builds the scene's world and runs it for the scene's duration. `progress` is called at
-/// every sample with the simulated time (s); it returns `false` to stop early (the output
-/// then covers the time reached).
-pub fn run(scene: &Scene, progress: &mut dyn FnMut(f64) -> bool) -> Result<RunOutput, SceneError> {
+/// Builds the scene's world and runs it for the scene's duration. `observe` is called at
+/// every sample with the world; it returns `false` to stop early (the output then covers
+/// the time reached).
+pub fn run(
+    scene: &Scene,
+    observe: &mut dyn FnMut(&World) -> bool,
+) -> Result<RunOutput, SceneError> {
     let mut world = scene.build()?;
-    Ok(run_world(&mut world, scene, progress))
+    Ok(run_world(&mut world, scene, observe))
 }
 
 /// Runs an already built world to the scene's duration (see [`run`]).
 pub fn run_world(
     world: &mut World,
     scene: &Scene,
-    progress: &mut dyn FnMut(f64) -> bool,
+    observe: &mut dyn FnMut(&World) -> bool,
 ) -> RunOutput {
     let start = std::time::Instant::now();
     let interval = scene.numerics.sample_interval;
-    let mut series = vec![world.energy()];
-    let mut next = world.time() + interval;
+    let speed = scene.sheet.as_ref().map_or(0.0, |s| s.speed);
+    let thickness = scene.sheet.as_ref().map_or(0.0, |s| s.thickness);
+    let t0 = world.time();
+    let sample = |w: &World, prev: Option<&Sample>| {
+        let e = w.energy();
+        let mean_force = match prev {
+            Some(p) if speed > 0.0 && e.time > p.energy.time => {
+                (e.work - p.energy.work) / (speed * (e.time - p.energy.time))
+            }
+            _ => 0.0,
+        };
+        Sample {
+            energy: e,
+            ridging_force: w.ridging_force(),
+            mean_force,
+        }
+    };
+    let mut series = vec![sample(world, None)];
+    let mut next = t0 + interval;
     let mut max_rel: f64 = 0.0;
-    let mut keep_going = progress(world.time());
+    let mut work_eq9 = 0.0;
+    let mut keep_going = observe(world);
     while keep_going && world.time() < scene.duration - 0.5 * world.dt() {
         world.step();
+        if speed > 0.0 {
+            work_eq9 += speed * world.dt() * world.ridging_force();
+        }
         if world.time() >= next - 0.5 * world.dt() {
-            let e = world.energy();
-            max_rel = max_rel.max(relative_residual(&e));
-            series.push(e);
+            let s = sample(world, series.last());
+            max_rel = max_rel.max(relative_residual(&s.energy));
+            series.push(s);
             next += interval;
-            keep_going = progress(world.time());
+            keep_going = observe(world);
         }
     }
-    let e = world.energy();
-    max_rel = max_rel.max(relative_residual(&e));
-    if series.last().map(|s| s.time) != Some(e.time) {
-        series.push(e);
+    if series.last().map(|s| s.energy.time) != Some(world.time()) {
+        let s = sample(world, series.last());
+        series.push(s);
     }
+    let e = series.last().expect("at least one sample").energy;
+    max_rel = max_rel.max(relative_residual(&e));
     let summary = Summary {
         scene: scene.name.clone(),
         seed: scene.seed,
@@ -106,11 +161,15 @@ pub fn run_world(
         wall_seconds: start.elapsed().as_secs_f64(),
         bodies: world.bodies.len(),
         work: e.work,
+        work_eq9,
         potential_energy: e.potential_energy,
         kinetic_energy: e.kinetic_energy,
         friction_dissipation: e.friction_dissipation,
         viscous_dissipation: e.viscous_dissipation,
         drag_dissipation: e.drag_dissipation,
+        joint_dissipation: e.joint_dissipation,
+        boundary_dissipation: e.boundary_dissipation,
+        fracture_dissipation: e.fracture_dissipation,
         elastic_energy: e.elastic_energy,
         other_dissipation: e.other_dissipation,
         residual: e.residual,
@@ -120,12 +179,53 @@ pub fn run_world(
         } else {
             0.0
         },
+        ridged_volume: speed * thickness * (world.time() - t0),
+        blocks_broken: world.blocks_broken(),
+        rubble_block_lengths: rubble_lengths(world),
     };
     RunOutput {
         summary,
         series,
         final_state: world.snapshot(),
     }
+}
+
+/// Lengths (m) of the rubble pieces: blocks of role rubble joined by intact joints, the
+/// length of a piece being the sum of its blocks' widths. Sorted by the piece's leftmost
+/// block index, so the order is reproducible.
+pub fn rubble_lengths(world: &World) -> Vec<f64> {
+    let b = &world.bodies;
+    let n = b.len();
+    let mut parent: Vec<usize> = (0..n).collect();
+    fn find(p: &mut [usize], mut i: usize) -> usize {
+        while p[i] != i {
+            p[i] = p[p[i]];
+            i = p[i];
+        }
+        i
+    }
+    for j in world.joints() {
+        let (a, c) = (j.a as usize, j.b as usize);
+        if j.is_intact() && b.role[a] == Role::Rubble && b.role[c] == Role::Rubble {
+            let (ra, rc) = (find(&mut parent, a), find(&mut parent, c));
+            if ra != rc {
+                parent[ra.max(rc)] = ra.min(rc);
+            }
+        }
+    }
+    let mut len = vec![0.0; n];
+    let mut roots = Vec::new();
+    for i in 0..n {
+        if b.role[i] == Role::Rubble {
+            let r = find(&mut parent, i);
+            if len[r] == 0.0 {
+                roots.push(r);
+            }
+            len[r] += b.block[i].map_or(0.0, |x| x.width);
+        }
+    }
+    roots.sort_unstable();
+    roots.iter().map(|&r| len[r]).collect()
 }
 
 fn relative_residual(e: &EnergyBudget) -> f64 {

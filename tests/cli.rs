@@ -10,13 +10,8 @@ fn bin() -> Command {
 fn simulate_then_render() {
     let dir = std::env::temp_dir().join(format!("pressridge-cli-{}", std::process::id()));
     let out = bin()
-        .args([
-            "simulate",
-            "--set",
-            "duration=0.5",
-            "--set",
-            "pile.blocks=30",
-        ])
+        .args(["simulate", "--set", "duration=0.5"])
+        .args(["--set", "output.snapshot_interval=0.25"])
         .arg("--out")
         .arg(&dir)
         .output()
@@ -28,11 +23,14 @@ fn simulate_then_render() {
     );
     for f in [
         "summary.json",
-        "energy.csv",
+        "series.csv",
         "state.json",
         "scene.toml",
         "final.png",
         "energy.png",
+        "force.png",
+        "snapshots/t00000.png",
+        "snapshots/t00000.json",
     ] {
         assert!(dir.join(f).is_file(), "missing {f}");
     }
@@ -47,15 +45,25 @@ fn simulate_then_render() {
         "drag_dissipation",
         "other_dissipation",
         "residual",
+        "ratio_work_to_pe",
+        "ridged_volume",
         "steps",
         "dt",
         "wall_seconds",
         "seed",
+        "blocks_broken",
+        "rubble_block_lengths",
     ] {
         assert!(summary.get(key).is_some(), "summary lacks {key}");
     }
-    let csv = std::fs::read_to_string(dir.join("energy.csv")).unwrap();
-    assert!(csv.starts_with("time [s],work [J/m]"));
+    let v = summary["ridged_volume"].as_f64().unwrap();
+    assert!((v - 0.25 * 0.30 * 0.5).abs() < 1e-3, "ridged volume {v}");
+    let csv = std::fs::read_to_string(dir.join("series.csv")).unwrap();
+    let header = csv.lines().next().unwrap();
+    assert!(header.starts_with("time [s],work [J/m]"));
+    assert!(header.contains("ridging_force [N/m]"));
+    // 0.5 s at 0.2 s intervals: t = 0, 0.2, 0.4 and the end.
+    assert_eq!(csv.lines().count(), 1 + 4);
     let png = dir.join("again.png");
     let out = bin()
         .arg("render")
@@ -84,6 +92,18 @@ fn bad_input_gives_a_clear_error_and_nonzero_exit() {
     assert!(!out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("muu"), "{err}");
+    let out = bin()
+        .args([
+            "simulate",
+            "--set",
+            "sheet.thickness=-0.3",
+            "--out",
+            "/tmp/never",
+        ])
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("sheet.thickness"));
     let out = bin()
         .args(["render", "/nonexistent/state.json"])
         .output()

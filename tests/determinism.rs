@@ -6,7 +6,7 @@ use pressridge::scene::Scene;
 use pressridge::simulation;
 
 fn small_pile(seed: u64) -> Scene {
-    Scene::default()
+    Scene::rubble_pile()
         .with_overrides(&[
             "duration=1.5".to_string(),
             "pile.blocks=60".into(),

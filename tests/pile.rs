@@ -27,7 +27,9 @@ fn worst_interpenetration(w: &World) -> (f64, bool) {
 
 #[test]
 fn pile_of_200_blocks_settles_in_water_with_a_closed_budget() {
-    let scene = Scene::default().with_overrides(&["duration=8.0"]).unwrap();
+    let scene = Scene::rubble_pile()
+        .with_overrides(&["duration=8.0"])
+        .unwrap();
     assert!(scene.pile.as_ref().unwrap().blocks >= 200);
     let mut world = scene.build().unwrap();
     let n = world.bodies.len();

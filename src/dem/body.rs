@@ -111,10 +111,21 @@ impl Shape {
             )));
         }
         for (k, &b) in bevel.iter().enumerate() {
-            if !(0.0..=0.5 * width.min(thickness)).contains(&b) {
+            if !(b >= 0.0 && b < width.min(thickness)) {
                 return Err(ShapeError::Dimensions(format!(
-                    "bevel {k} of {b} m must lie in [0, {}] m",
-                    0.5 * width.min(thickness)
+                    "bevel {k} of {b} m must lie in [0, {}) m",
+                    width.min(thickness)
+                )));
+            }
+        }
+        // Neighbouring bevels must not meet: bottom, right, top and left sides in turn.
+        for (k, side) in [width, thickness, width, thickness].iter().enumerate() {
+            if bevel[k] + bevel[(k + 1) % 4] >= *side {
+                return Err(ShapeError::Dimensions(format!(
+                    "bevels {k} and {} ({} m, {} m) overlap on a side of {side} m",
+                    (k + 1) % 4,
+                    bevel[k],
+                    bevel[(k + 1) % 4]
                 )));
             }
         }
@@ -135,6 +146,31 @@ impl Shape {
             }
         }
         Self::convex(&v)
+    }
+
+    /// Centroid of a bevelled rectangle relative to the rectangle's centre (m).
+    pub fn bevel_centroid(width: f64, thickness: f64, bevel: [f64; 4]) -> V2 {
+        // Each cut removes a right triangle of legs b at a corner; its centroid lies b/3
+        // in from the corner along both sides.
+        let (w, h) = (0.5 * width, 0.5 * thickness);
+        let corners = [
+            V2::new(-w, -h),
+            V2::new(w, -h),
+            V2::new(w, h),
+            V2::new(-w, h),
+        ];
+        let mut m = V2::default();
+        let mut a = width * thickness;
+        for (k, c) in corners.iter().enumerate() {
+            let b = bevel[k];
+            if b > 0.0 {
+                let tri = 0.5 * b * b;
+                let inward = V2::new(-c.x.signum(), -c.y.signum()) * (b / 3.0);
+                m = m - (*c + inward) * tri;
+                a -= tri;
+            }
+        }
+        m * (1.0 / a)
     }
 
     /// Vertices relative to the centroid (m).
@@ -204,6 +240,46 @@ impl Drive {
     }
 }
 
+/// What a body is in a ridging scene: it decides which boundary conditions act on it and
+/// how it is drawn and counted.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Role {
+    /// A free block (rubble pile, test body).
+    #[default]
+    Block,
+    /// A component block of the pushed lead-ice sheet.
+    Sheet,
+    /// A component block of the thick floe.
+    Floe,
+    /// A block broken from the sheet or floe.
+    Rubble,
+    /// A held wall or support.
+    Wall,
+}
+
+/// The nominal rectangle of a block and its bevels, kept so that corners can be bevelled
+/// again after a fracture.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Block {
+    /// Width W (m).
+    pub width: f64,
+    /// Thickness h (m).
+    pub thickness: f64,
+    /// Bevel legs (m): bottom-left, bottom-right, top-right, top-left.
+    pub bevel: [f64; 4],
+}
+
+impl Block {
+    /// The rectangle's centre relative to the body's centroid, in the body frame (m).
+    pub fn rect_centre(&self) -> V2 {
+        -Shape::bevel_centroid(self.width, self.thickness, self.bevel)
+    }
+    /// The shape of this block.
+    pub fn shape(&self) -> Result<Shape, ShapeError> {
+        Shape::bevelled_rectangle(self.width, self.thickness, self.bevel)
+    }
+}
+
 /// Index of a body in [`Bodies`].
 pub type BodyId = u32;
 
@@ -226,6 +302,10 @@ pub struct Bodies {
     pub shape: Vec<Shape>,
     /// Prescribed degrees of freedom.
     pub drive: Vec<Drive>,
+    /// Role in the scene.
+    pub role: Vec<Role>,
+    /// Nominal rectangle and bevels, for blocks made as rectangles.
+    pub block: Vec<Option<Block>>,
     /// Outline in world coordinates at the current positions (m).
     pub world: Vec<Outline>,
     /// Bounding box of `world` (m).
@@ -266,12 +346,34 @@ impl Bodies {
         self.inertia.push(density * shape.polar_moment());
         self.shape.push(shape);
         self.drive.push(drive);
+        self.role.push(Role::Block);
+        self.block.push(None);
         self.world.push(Outline::default());
         self.aabb.push(Aabb::default());
         self.force.push(V2::default());
         self.torque.push(0.0);
         self.update_world(id as usize);
         id
+    }
+
+    /// Replaces the shape of body `i` by `shape`, whose centroid lies at `shift` (m, body
+    /// frame) from the old one: the pose and velocity move to the new centroid and the mass
+    /// properties follow the new area. Returns the change of kinetic energy (J/m), which the
+    /// caller books (material cut away takes its kinetic energy with it).
+    pub fn reshape(&mut self, i: usize, shape: Shape, shift: V2, density: f64) -> f64 {
+        let ke = |b: &Bodies| {
+            0.5 * b.mass[i] * b.vel[i].dot(b.vel[i]) + 0.5 * b.inertia[i] * b.omega[i] * b.omega[i]
+        };
+        let before = ke(self);
+        let (s, c) = self.theta[i].sin_cos();
+        let r = shift.rotate(c, s);
+        self.pos[i] = self.pos[i] + r;
+        self.vel[i] = self.vel[i] + r.perp() * self.omega[i];
+        self.mass[i] = density * shape.area();
+        self.inertia[i] = density * shape.polar_moment();
+        self.shape[i] = shape;
+        self.update_world(i);
+        ke(self) - before
     }
 
     /// Recomputes the world outline and bounding box of body `i` from its pose.
@@ -330,10 +432,35 @@ mod tests {
     }
 
     #[test]
+    fn bevel_centroid_matches_the_polygon() {
+        let bev = [0.05, 0.0, 0.12, 0.02];
+        let c = Shape::bevel_centroid(0.25, 0.3, bev);
+        let (w, h) = (0.125, 0.15);
+        let mut v = vec![];
+        let corners = [(-w, -h), (w, -h), (w, h), (-w, h)];
+        let (ip, inx) = (
+            [(0., 1.), (-1., 0.), (0., -1.), (1., 0.)],
+            [(1., 0.), (0., 1.), (-1., 0.), (0., -1.)],
+        );
+        for k in 0..4 {
+            let (x, y) = corners[k];
+            if bev[k] > 0.0 {
+                v.push(V2::new(x + ip[k].0 * bev[k], y + ip[k].1 * bev[k]));
+                v.push(V2::new(x + inx[k].0 * bev[k], y + inx[k].1 * bev[k]));
+            } else {
+                v.push(V2::new(x, y));
+            }
+        }
+        let (_, want) = area_centroid(&v);
+        assert!((c - want).norm() < 1e-15, "{c:?} {want:?}");
+    }
+
+    #[test]
     fn bad_shapes_are_rejected() {
         assert!(Shape::rectangle(0.0, 1.0).is_err());
         assert!(Shape::rectangle(f64::NAN, 1.0).is_err());
-        assert!(Shape::bevelled_rectangle(1.0, 1.0, [0.6, 0.0, 0.0, 0.0]).is_err());
+        assert!(Shape::bevelled_rectangle(1.0, 1.0, [0.6, 0.5, 0.0, 0.0]).is_err());
+        assert!(Shape::bevelled_rectangle(1.0, 1.0, [0.6, 0.0, 0.0, 0.0]).is_ok());
         let cw = [V2::new(0.0, 0.0), V2::new(0.0, 1.0), V2::new(1.0, 0.0)];
         assert_eq!(Shape::convex(&cw).unwrap_err(), ShapeError::NotConvex);
         let dart = [

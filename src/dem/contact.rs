@@ -25,8 +25,9 @@ pub struct ContactParams {
     /// [`ContactParams::tangential_stiffness`]). Default 0.6 ("60% of the normal value").
     pub tangential_fraction: f64,
     /// Thickness h of the parent sheet (m) in k_nv = f·2·sqrt(k_ne·h·ρ_i) and in the normal
-    /// stiffness k_ne·h. Default 0.30 m, the sheet of the paper's Figure 5.
-    pub reference_thickness: f64,
+    /// stiffness k_ne·h. Unset (the default), scenes take their sheet's thickness, or
+    /// [`DEFAULT_REFERENCE_THICKNESS`] when they have no sheet.
+    pub reference_thickness: Option<f64>,
     /// Friction coefficient μ for contacts whose overlap centroid is above the water line
     /// (dimensionless). Default 1.0 (the value the paper adopts after its friction study).
     pub mu: f64,
@@ -41,27 +42,37 @@ impl Default for ContactParams {
             normal_stiffness: 1e8,
             damping_fraction: 0.5,
             tangential_fraction: 0.6,
-            reference_thickness: 0.30,
+            reference_thickness: None,
             mu: 1.0,
             mu_water: 0.6,
         }
     }
 }
 
+/// Reference thickness of scenes without a sheet: 0.30 m, the sheet of the paper's Figure 5.
+pub const DEFAULT_REFERENCE_THICKNESS: f64 = 0.30;
+
 impl ContactParams {
+    /// The reference thickness h in use (m).
+    pub fn thickness(&self) -> f64 {
+        self.reference_thickness
+            .unwrap_or(DEFAULT_REFERENCE_THICKNESS)
+    }
     /// Viscous normal coefficient k_nv (kg/(m²·s)): `damping_fraction · 2·sqrt(k_ne·h·ρ_i)`
     /// for ice density `rho_i` (kg/m³), eq (3).
     pub fn viscous_coefficient(&self, rho_i: f64) -> f64 {
-        self.damping_fraction
-            * 2.0
-            * (self.normal_stiffness * self.reference_thickness * rho_i).sqrt()
+        self.damping_fraction * 2.0 * (self.normal_stiffness * self.thickness() * rho_i).sqrt()
+    }
+    /// k_nv for a parent sheet of thickness `h` (m) (kg/(m²·s)).
+    pub fn viscous_coefficient_for(&self, h: f64, rho_i: f64) -> f64 {
+        self.damping_fraction * 2.0 * (self.normal_stiffness * h * rho_i).sqrt()
     }
     /// Tangential stiffness k_te (N/m² : force per metre of depth per metre of slip),
     /// eq (4). The paper gives k_te as "60% of the normal value"; the normal value is read
     /// as the normal stiffness of a contact along a face of the parent sheet's thickness,
     /// k_ne·h — the same product the paper uses in its critical damping 2·sqrt(k_ne·h·ρ_i).
     pub fn tangential_stiffness(&self) -> f64 {
-        self.tangential_fraction * self.normal_stiffness * self.reference_thickness
+        self.tangential_fraction * self.normal_stiffness * self.thickness()
     }
 }
 

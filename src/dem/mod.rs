@@ -5,21 +5,28 @@
 //! - [`body`] — block shapes and the state arrays;
 //! - [`broadphase`] — candidate pairs by sort-and-sweep;
 //! - [`contact`] — the rubble contact law, eqs (2)–(4);
+//! - [`joint`] — viscous-elastic joints, eq (1);
+//! - [`fracture`] — crack initiation and growth, splitting pieces;
+//! - [`boundary`] — the pushed sheet, eqs (7)–(8), floe supports;
 //! - [`water`] — buoyancy and drag;
 //! - [`ledger`] — the energy budget, eqs (9)–(12);
 //! - [`world`] — the leapfrog step, eqs (5)–(6).
 
 pub mod body;
+pub mod boundary;
 pub mod broadphase;
 pub mod contact;
+pub mod fracture;
 pub mod geometry;
+pub mod joint;
 pub mod ledger;
 pub mod water;
 pub mod world;
 
-pub use body::{Bodies, BodyId, Drive, Shape, ShapeError};
+pub use body::{Block, Bodies, BodyId, Drive, Role, Shape, ShapeError};
 pub use contact::{Contact, ContactParams};
 pub use geometry::V2;
+pub use joint::{Joint, JointMaterial};
 pub use ledger::EnergyBudget;
 pub use water::WaterParams;
 pub use world::{Snapshot, World, WorldError, WorldParams};

@@ -13,11 +13,14 @@
 //! Everything is sequential and in a fixed order, so the same world stepped the same number
 //! of times gives bit-identical states.
 
-use super::body::{Bodies, BodyId, Drive, Shape};
+use super::body::{Block, Bodies, BodyId, Drive, Role, Shape, ShapeError};
+use super::boundary::Boundary;
 use super::broadphase::SweepAndPrune;
 use super::contact::{Contact, ContactParams, ContactSet};
+use super::fracture::JointSet;
 use super::geometry::{V2, below_line};
-use super::ledger::{Accumulators, EnergyBudget};
+use super::joint::{Joint, JointMaterial};
+use super::ledger::{Accumulators, EnergyBudget, Stored};
 use super::water::{WaterForces, WaterParams};
 use serde::{Deserialize, Serialize};
 
@@ -39,6 +42,12 @@ pub struct WorldParams {
     pub time_step_safety: f64,
     /// A fixed time step (s) overriding the derived one, or `None`.
     pub time_step: Option<f64>,
+    /// Speed at which a crack crosses a joint (m/s). Default 50 m/s; see
+    /// [`crate::dem::fracture`] and docs/model.md ("Fracture").
+    pub crack_speed: f64,
+    /// Mass-proportional numerical damping γ (1/s): F = −γ·m·v, M = −γ·I·ω. Default 0;
+    /// used only to relax verification scenes to their static state.
+    pub global_damping: f64,
 }
 
 impl Default for WorldParams {
@@ -50,6 +59,8 @@ impl Default for WorldParams {
             water: Some(WaterParams::default()),
             time_step_safety: 0.5,
             time_step: None,
+            crack_speed: 50.0,
+            global_damping: 0.0,
         }
     }
 }
@@ -70,6 +81,9 @@ pub enum WorldError {
     /// A saved state does not fit this build.
     #[error("invalid saved state: {0}")]
     State(String),
+    /// A block could not be made.
+    #[error("block: {0}")]
+    Shape(#[from] ShapeError),
 }
 
 impl WorldParams {
@@ -103,7 +117,7 @@ impl WorldParams {
         pos("contact.normal_stiffness", c.normal_stiffness)?;
         nonneg("contact.damping_fraction", c.damping_fraction)?;
         pos("contact.tangential_fraction", c.tangential_fraction)?;
-        pos("contact.reference_thickness", c.reference_thickness)?;
+        pos("contact.reference_thickness", c.thickness())?;
         nonneg("contact.mu", c.mu)?;
         nonneg("contact.mu_water", c.mu_water)?;
         if let Some(w) = &self.water {
@@ -119,6 +133,8 @@ impl WorldParams {
             }
         }
         pos("time_step_safety", self.time_step_safety)?;
+        pos("crack_speed", self.crack_speed)?;
+        nonneg("global_damping", self.global_damping)?;
         if let Some(dt) = self.time_step {
             pos("time_step", dt)?;
         }
@@ -134,9 +150,14 @@ pub struct World {
     params: WorldParams,
     k_nv: f64,
     contacts: ContactSet,
+    joints: JointSet,
+    /// Boundary conditions of the ridging experiment.
+    pub boundary: Boundary,
+    loads: Vec<(BodyId, V2)>,
     broad: SweepAndPrune,
     water: WaterForces,
     acc: Accumulators,
+    blocks_broken: u64,
     dt: f64,
     time: f64,
     steps: u64,
@@ -157,9 +178,13 @@ impl World {
             params,
             k_nv,
             contacts: ContactSet::default(),
+            joints: JointSet::default(),
+            boundary: Boundary::default(),
+            loads: Vec::new(),
             broad: SweepAndPrune::default(),
             water: WaterForces::default(),
             acc: Accumulators::default(),
+            blocks_broken: 0,
             dt: 0.0,
             time: 0.0,
             steps: 0,
@@ -178,8 +203,80 @@ impl World {
             .bodies
             .push(shape, self.params.ice_density, pos, theta, drive);
         self.refresh_time_step();
-        self.acc.kinetic_start = self.bodies.kinetic_energy();
+        self.acc.kinetic_start += self.body_kinetic_energy(id as usize);
         id
+    }
+
+    /// Adds a rectangular block `b` (with its bevels) whose rectangle is centred at `centre`
+    /// (m), rotated by `theta` (rad). Returns its index.
+    pub fn add_rect(
+        &mut self,
+        b: Block,
+        centre: V2,
+        theta: f64,
+        drive: Drive,
+        role: Role,
+    ) -> Result<BodyId, WorldError> {
+        let shape = b.shape()?;
+        let (s, c) = theta.sin_cos();
+        let pos = centre - b.rect_centre().rotate(c, s);
+        let id = self
+            .bodies
+            .push(shape, self.params.ice_density, pos, theta, drive);
+        self.bodies.role[id as usize] = role;
+        self.bodies.block[id as usize] = Some(b);
+        self.acc.kinetic_start += self.body_kinetic_energy(id as usize);
+        Ok(id)
+    }
+
+    /// Joins the right face of rectangular block `a` to the left face of rectangular block
+    /// `b` (eq 1), with a skeletal layer of `skeletal` (m) at the bottom.
+    pub fn join(
+        &mut self,
+        a: BodyId,
+        b: BodyId,
+        skeletal: f64,
+        mat: JointMaterial,
+    ) -> Result<usize, WorldError> {
+        let (ba, bb) = match (self.bodies.block[a as usize], self.bodies.block[b as usize]) {
+            (Some(x), Some(y)) => (x, y),
+            _ => {
+                return Err(WorldError::State(format!(
+                    "bodies {a} and {b} must both be rectangular blocks to be joined"
+                )));
+            }
+        };
+        let pa = ba.rect_centre() + V2::new(0.5 * ba.width, 0.0);
+        let pb = bb.rect_centre() + V2::new(-0.5 * bb.width, 0.0);
+        let h = ba.thickness.min(bb.thickness);
+        let gauge = 0.5 * (ba.width + bb.width);
+        Ok(self
+            .joints
+            .push(Joint::new(a, b, pa, pb, h, skeletal, gauge, mat)))
+    }
+
+    /// The joints.
+    pub fn joints(&self) -> &[Joint] {
+        self.joints.joints()
+    }
+
+    /// Number of joints severed so far.
+    pub fn blocks_broken(&self) -> u64 {
+        self.blocks_broken
+    }
+
+    /// Applies a constant external force `f` (N/m) at the centroid of body `id` from now
+    /// on (replacing any earlier load on it); its work is counted in `work`.
+    pub fn set_load(&mut self, id: BodyId, f: V2) {
+        self.loads.retain(|&(i, _)| i != id);
+        if f != V2::default() {
+            self.loads.push((id, f));
+        }
+    }
+
+    fn body_kinetic_energy(&self, i: usize) -> f64 {
+        let b = &self.bodies;
+        0.5 * b.mass[i] * b.vel[i].dot(b.vel[i]) + 0.5 * b.inertia[i] * b.omega[i] * b.omega[i]
     }
 
     /// Sets the velocity (m/s) and angular velocity (rad/s) of body `id` as an initial
@@ -187,9 +284,10 @@ impl World {
     /// counted as work. Call it before stepping.
     pub fn set_velocity(&mut self, id: BodyId, vel: V2, omega: f64) {
         let i = id as usize;
+        let before = self.body_kinetic_energy(i);
         self.bodies.vel[i] = vel;
         self.bodies.omega[i] = omega;
-        self.acc.kinetic_start = self.bodies.kinetic_energy();
+        self.acc.kinetic_start += self.body_kinetic_energy(i) - before;
     }
 
     /// The parameters.
@@ -217,7 +315,8 @@ impl World {
         &self.acc
     }
 
-    fn refresh_time_step(&mut self) {
+    /// Re-derives the time step from the bodies and joints present (unless fixed).
+    pub fn refresh_time_step(&mut self) {
         self.dt = match self.params.time_step {
             Some(dt) => dt,
             None => self.params.time_step_safety * self.critical_time_step(),
@@ -234,22 +333,40 @@ impl World {
     /// explicit scheme with this damping is stable for Δt < (2/ω)·(sqrt(1 + ζ²) − ζ).
     pub fn critical_time_step(&self) -> f64 {
         let b = &self.bodies;
+        let inv = |i: usize| {
+            if b.drive[i].is_kinematic() {
+                0.0
+            } else {
+                let s = &b.shape[i];
+                (1.0 + s.radius().powi(2) * b.mass[i] / b.inertia[i]) / b.mass[i]
+            }
+        };
+        let stable = |omega: f64, zeta: f64| 2.0 / omega * ((1.0 + zeta * zeta).sqrt() - zeta);
+        let mut dt = f64::INFINITY;
         let mut dc: f64 = 0.0;
         for i in 0..b.len() {
-            if b.drive[i].is_kinematic() {
+            dc = dc.max(b.shape[i].diameter() * inv(i));
+        }
+        if dc > 0.0 {
+            let k_ne = self.params.contact.normal_stiffness;
+            let omega = (2.0 * k_ne * dc).sqrt();
+            let zeta = 0.5 * self.k_nv * (2.0 * dc / k_ne).sqrt();
+            dt = dt.min(stable(omega, zeta));
+        }
+        // Joints: the normal and shear springs of the face act at points whose inverse
+        // effective mass is at most c = (1 + r²m/I)/m on each side (a Gershgorin bound).
+        for j in self.joints.joints() {
+            let (kn, kt) = j.stiffness();
+            let (ca, cb) = (inv(j.a as usize), inv(j.b as usize));
+            if kn + kt <= 0.0 || ca + cb <= 0.0 {
                 continue;
             }
-            let s = &b.shape[i];
-            let c = (1.0 + s.radius().powi(2) * b.mass[i] / b.inertia[i]) / b.mass[i];
-            dc = dc.max(s.diameter() * c);
+            let omega = ((kn + kt) * (ca + cb)).sqrt();
+            let cm = ca * b.mass[j.a as usize] + cb * b.mass[j.b as usize];
+            let zeta = j.mat.damping_fraction * cm.sqrt();
+            dt = dt.min(stable(omega, zeta));
         }
-        if dc == 0.0 {
-            return f64::INFINITY;
-        }
-        let k_ne = self.params.contact.normal_stiffness;
-        let omega = (2.0 * k_ne * dc).sqrt();
-        let zeta = 0.5 * self.k_nv * (2.0 * dc / k_ne).sqrt();
-        2.0 / omega * ((1.0 + zeta * zeta).sqrt() - zeta)
+        dt
     }
 
     /// Sets the time step (s) explicitly, e.g. for convergence studies.
@@ -286,10 +403,25 @@ impl World {
         if let Some(w) = &self.params.water {
             self.water.apply(b, w, g);
         }
-        // Contacts.
+        // Joints (eq 1) and boundary conditions (eqs 7–8, floe supports).
+        self.joints.apply(b, self.params.ice_density);
+        self.boundary.apply(b);
+        for &(id, f) in &self.loads {
+            b.force[id as usize] = b.force[id as usize] + f;
+        }
+        let gamma = self.params.global_damping;
+        if gamma > 0.0 {
+            for i in 0..n {
+                b.force[i] = b.force[i] - b.vel[i] * (gamma * b.mass[i]);
+                b.torque[i] -= gamma * b.inertia[i] * b.omega[i];
+            }
+        }
+        // Contacts, except between blocks still joined.
         let drive = &b.drive;
+        let joints = &self.joints;
         let pairs = self.broad.pairs(&b.aabb, |i, j| {
-            drive[i as usize].is_kinematic() && drive[j as usize].is_kinematic()
+            (drive[i as usize].is_kinematic() && drive[j as usize].is_kinematic())
+                || joints.joined(i, j)
         });
         let level = self.params.water.as_ref().map(|w| w.level);
         self.contacts.update(
@@ -350,6 +482,21 @@ impl World {
         }
         self.contacts
             .book_work(b, &self.vbar, &self.wbar, dt, &mut self.acc.contact);
+        self.joints
+            .book_work(&self.vbar, &self.wbar, dt, &mut self.acc.joints);
+        self.boundary
+            .book_work(&self.vbar, dt, &mut self.acc.boundary);
+        for &(id, f) in &self.loads {
+            self.acc.loads += f.dot(self.vbar[id as usize]) * dt;
+        }
+        if gamma > 0.0 {
+            for i in 0..n {
+                // The damping force used the velocity before the step.
+                let f = self.vel_old[i] * (gamma * b.mass[i]);
+                let m = gamma * b.inertia[i] * self.omega_old[i];
+                self.acc.global_damping += (f.dot(self.vbar[i]) + m * self.wbar[i]) * dt;
+            }
+        }
         // Positions, eq (6).
         for i in 0..n {
             b.pos[i] = b.pos[i] + b.vel[i] * dt;
@@ -357,6 +504,141 @@ impl World {
         }
         self.time += dt;
         self.steps += 1;
+        // Fracture: new cracks at the new poses, running cracks advance.
+        if !self.joints.is_empty() {
+            self.joints
+                .advance(&self.bodies, self.params.crack_speed, self.time, dt);
+            if !self.joints.severed().is_empty() {
+                self.after_fracture();
+            }
+        }
+    }
+
+    /// Handles joints severed in the last step: bevels the corners of the broken faces,
+    /// turns what broke off the sheet into rubble, and grows the sheet at its left end.
+    fn after_fracture(&mut self) {
+        let severed: Vec<usize> = self.joints.severed().to_vec();
+        for k in severed {
+            self.blocks_broken += 1;
+            let j = self.joints.joints()[k];
+            let (a, b) = (j.a as usize, j.b as usize);
+            let mut on_sheet = None;
+            if let Some(sh) = &self.boundary.sheet
+                && self.bodies.role[a] == Role::Sheet
+                && self.bodies.role[b] == Role::Sheet
+            {
+                on_sheet = sh.blocks.iter().position(|&x| x == j.a);
+            }
+            let (corner, tip) = if let Some(sh) = &self.boundary.sheet {
+                (sh.corner_bevel, sh.tip_bevel)
+            } else if let Some(fl) = &self.boundary.floe {
+                (fl.corner_bevel, 0.0)
+            } else {
+                (0.0, 0.0)
+            };
+            match on_sheet {
+                Some(pos) => {
+                    // The new sheet tip gets the tip bevel underneath (point B); the piece
+                    // that broke off becomes rubble with bevelled corners.
+                    self.bevel(a, [0.0, tip.max(corner), corner, 0.0]);
+                    self.bevel(b, [corner, 0.0, 0.0, corner]);
+                    let sh = self.boundary.sheet.as_mut().expect("sheet present");
+                    let lost: Vec<BodyId> = sh.blocks.drain(pos + 1..).collect();
+                    for &id in &lost {
+                        self.bodies.role[id as usize] = Role::Rubble;
+                    }
+                    for _ in 0..lost.len() {
+                        self.grow_sheet();
+                    }
+                }
+                None => {
+                    self.bevel(a, [0.0, corner, corner, 0.0]);
+                    self.bevel(b, [corner, 0.0, 0.0, corner]);
+                }
+            }
+        }
+    }
+
+    /// Raises the bevel legs of block `i` to at least `legs` (m), re-cutting its shape.
+    fn bevel(&mut self, i: usize, legs: [f64; 4]) {
+        let Some(old) = self.bodies.block[i] else {
+            return;
+        };
+        let mut new = old;
+        for (b, l) in new.bevel.iter_mut().zip(legs) {
+            *b = b.max(l);
+        }
+        if new == old {
+            return;
+        }
+        let Ok(shape) = new.shape() else {
+            // A block too small for the bevel keeps its corners.
+            return;
+        };
+        let shift = old.rect_centre() - new.rect_centre();
+        let dke = self
+            .bodies
+            .reshape(i, shape, shift, self.params.ice_density);
+        self.acc.cut_away -= dke;
+        self.bodies.block[i] = Some(new);
+        for j in self.joints.joints_mut() {
+            if j.a as usize == i {
+                j.pa = j.pa - shift;
+            }
+            if j.b as usize == i {
+                j.pb = j.pb - shift;
+            }
+        }
+    }
+
+    /// Adds a block at the left end of the sheet, joined to the current leftmost block, and
+    /// hands it the drive. Its kinetic energy enters the ledger as inflow, not work.
+    fn grow_sheet(&mut self) {
+        let Some(sh) = self.boundary.sheet.as_ref() else {
+            return;
+        };
+        let first = sh.blocks[0] as usize;
+        let (w, h, u, clamp) = (sh.width, sh.thickness, sh.speed, sh.clamp);
+        let k = sh.joints_made;
+        let mut mat = sh.material;
+        let f = sh.modulus_factor(k);
+        mat.e_top *= f;
+        mat.e_bottom *= f;
+        let skeletal = sh.skeletal;
+        let b = &self.bodies;
+        let th = b.theta[first];
+        let (s, c) = th.sin_cos();
+        let rect_first = b.pos[first]
+            + b.block[first]
+                .map_or(V2::default(), |x| x.rect_centre())
+                .rotate(c, s);
+        let centre = rect_first - V2::new(w, 0.0).rotate(c, s);
+        let v = b.vel[first] + (centre - b.pos[first]).perp() * b.omega[first];
+        let omega = b.omega[first];
+        let block = Block {
+            width: w,
+            thickness: h,
+            bevel: [0.0; 4],
+        };
+        let drive = Drive {
+            u: Some(u),
+            v: clamp.then_some(0.0),
+            omega: clamp.then_some(0.0),
+        };
+        let Ok(id) = self.add_rect(block, centre, th, drive, Role::Sheet) else {
+            return;
+        };
+        // The new block's kinetic energy is inflow, not work.
+        let ke0 = self.body_kinetic_energy(id as usize);
+        let (vy, om) = if clamp { (0.0, 0.0) } else { (v.y, omega) };
+        self.bodies.vel[id as usize] = V2::new(u, vy);
+        self.bodies.omega[id as usize] = om;
+        self.acc.kinetic_start += self.body_kinetic_energy(id as usize) - ke0;
+        self.bodies.drive[first] = Drive::FREE;
+        let _ = self.join(id, first as BodyId, skeletal, mat);
+        let sh = self.boundary.sheet.as_mut().expect("sheet present");
+        sh.joints_made += 1;
+        sh.blocks.insert(0, id);
     }
 
     /// The energy budget now (J/m).
@@ -364,7 +646,31 @@ impl World {
         let (sn, st) = self
             .contacts
             .stored_energy(self.params.contact.tangential_stiffness());
-        EnergyBudget::from_parts(self.time, &self.acc, self.bodies.kinetic_energy(), sn, st)
+        let stored = Stored {
+            contact_normal: sn,
+            contact_tangential: st,
+            joints: self.joints.stored_energy(&self.bodies),
+            springs: self.boundary.stored_energy(&self.bodies),
+        };
+        EnergyBudget::from_parts(self.time, &self.acc, self.bodies.kinetic_energy(), &stored)
+    }
+
+    /// The ridging force of eq (9) (N/m): minus the x component of the contact forces
+    /// that bodies of other roles exert on the sheet, i.e. the resistance the sheet pushes
+    /// against (positive when the ridge resists the push).
+    pub fn ridging_force(&self) -> f64 {
+        let r = &self.bodies.role;
+        let mut fx = 0.0;
+        for c in self.contacts.contacts() {
+            let (a, b) = ((c.key >> 32) as usize, (c.key & 0xffff_ffff) as usize);
+            let (sa, sb) = (r[a] == Role::Sheet, r[b] == Role::Sheet);
+            if sa == sb {
+                continue;
+            }
+            let f = c.normal * (c.fn_elastic + c.fn_viscous) + c.normal.perp() * c.ft;
+            fx += if sb { f.x } else { -f.x };
+        }
+        -fx
     }
 
     /// Potential energy of the current state (J/m): Σ ρ_i·g·A·y_c − ρ_w·g·A_s·y_s over the
@@ -411,9 +717,15 @@ impl World {
                     vel: b.vel[i],
                     omega: b.omega[i],
                     drive: b.drive[i],
+                    role: b.role[i],
+                    block: b.block[i],
                 })
                 .collect(),
             contacts: self.contacts.contacts().to_vec(),
+            joints: self.joints.joints().to_vec(),
+            boundary: self.boundary.clone(),
+            loads: self.loads.clone(),
+            blocks_broken: self.blocks_broken,
             ledger: self.acc,
         }
     }
@@ -433,7 +745,19 @@ impl World {
                 .push(bs.shape, w.params.ice_density, bs.pos, bs.theta, bs.drive);
             w.bodies.vel[i as usize] = bs.vel;
             w.bodies.omega[i as usize] = bs.omega;
+            w.bodies.role[i as usize] = bs.role;
+            w.bodies.block[i as usize] = bs.block;
         }
+        if s.joints
+            .iter()
+            .any(|j| j.a as u64 >= nb_of(s) || j.b as u64 >= nb_of(s))
+        {
+            return Err(WorldError::State("a joint names a missing body".into()));
+        }
+        w.joints.restore(s.joints.clone());
+        w.boundary = s.boundary.clone();
+        w.loads = s.loads.clone();
+        w.blocks_broken = s.blocks_broken;
         let nb = w.bodies.len() as u64;
         if s.contacts
             .iter()
@@ -451,7 +775,11 @@ impl World {
 }
 
 /// Version of the [`Snapshot`] layout.
-pub const SNAPSHOT_FORMAT: u32 = 1;
+pub const SNAPSHOT_FORMAT: u32 = 2;
+
+fn nb_of(s: &Snapshot) -> u64 {
+    s.bodies.len() as u64
+}
 
 /// One body in a [`Snapshot`].
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -469,6 +797,12 @@ pub struct BodyState {
     pub omega: f64,
     /// Prescribed degrees of freedom.
     pub drive: Drive,
+    /// Role in the scene.
+    #[serde(default)]
+    pub role: Role,
+    /// Nominal rectangle and bevels, for rectangular blocks.
+    #[serde(default)]
+    pub block: Option<Block>,
 }
 
 /// The complete state of a [`World`], serialisable (JSON via [`crate::io`]).
@@ -489,6 +823,14 @@ pub struct Snapshot {
     pub bodies: Vec<BodyState>,
     /// Active contacts with their history.
     pub contacts: Vec<Contact>,
+    /// Joints with their cracks.
+    pub joints: Vec<Joint>,
+    /// Boundary conditions.
+    pub boundary: Boundary,
+    /// External loads.
+    pub loads: Vec<(BodyId, V2)>,
+    /// Joints severed so far.
+    pub blocks_broken: u64,
     /// Ledger integrals.
     pub ledger: Accumulators,
 }

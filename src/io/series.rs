@@ -1,11 +1,11 @@
 //! CSV time series of the energy budget, with units in the header.
 
 use super::{IoError, write_atomic};
-use crate::dem::EnergyBudget;
+use crate::simulation::Sample;
 use std::fmt::Write;
 use std::path::Path;
 
-/// Column names and units of [`write_energy_csv`].
+/// Column names and units of [`write_series_csv`].
 pub const ENERGY_COLUMNS: &[(&str, &str)] = &[
     ("time", "s"),
     ("work", "J/m"),
@@ -17,11 +17,13 @@ pub const ENERGY_COLUMNS: &[(&str, &str)] = &[
     ("elastic_energy", "J/m"),
     ("other_dissipation", "J/m"),
     ("residual", "J/m"),
+    ("ridging_force", "N/m"),
+    ("mean_force", "N/m"),
 ];
 
-/// Writes the energy budget samples as CSV. The header names each column with its unit,
-/// e.g. `work [J/m]`.
-pub fn write_energy_csv(path: &Path, series: &[EnergyBudget]) -> Result<(), IoError> {
+/// Writes the samples of a run (energy budget, ridging force of eq (9) and mean driver
+/// force) as CSV. The header names each column with its unit, e.g. `work [J/m]`.
+pub fn write_series_csv(path: &Path, series: &[Sample]) -> Result<(), IoError> {
     let mut s = String::new();
     let header: Vec<String> = ENERGY_COLUMNS
         .iter()
@@ -29,10 +31,11 @@ pub fn write_energy_csv(path: &Path, series: &[EnergyBudget]) -> Result<(), IoEr
         .collect();
     s.push_str(&header.join(","));
     s.push('\n');
-    for e in series {
+    for x in series {
+        let e = &x.energy;
         let _ = writeln!(
             s,
-            "{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{}",
             e.time,
             e.work,
             e.potential_energy,
@@ -42,7 +45,9 @@ pub fn write_energy_csv(path: &Path, series: &[EnergyBudget]) -> Result<(), IoEr
             e.drag_dissipation,
             e.elastic_energy,
             e.other_dissipation,
-            e.residual
+            e.residual,
+            x.ridging_force,
+            x.mean_force
         );
     }
     write_atomic(path, s.as_bytes())

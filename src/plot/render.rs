@@ -1,7 +1,7 @@
 //! Ridge snapshots: blocks, the water, axes in metres (cf. Hopkins 1994, Figure 5).
 
 use super::{PlotError, draw_err, ensure_font};
-use crate::dem::{Snapshot, V2};
+use crate::dem::{Role, Snapshot, V2};
 use plotters::prelude::*;
 use std::path::Path;
 
@@ -126,13 +126,21 @@ where
     }
     let held = RGBColor(150, 150, 150);
     let ice = RGBColor(250, 250, 252);
+    let sheet = RGBColor(214, 236, 250);
+    let floe = RGBColor(205, 205, 215);
     for b in &s.bodies {
         let v = world_vertices(b);
         let pts: Vec<(f64, f64)> = v
             .iter()
             .map(|p| (p.x.clamp(win.x0, win.x1), p.y.clamp(win.y0, win.y1)))
             .collect();
-        let fill = if b.drive.is_kinematic() { held } else { ice };
+        let fill = match b.role {
+            Role::Wall => held,
+            Role::Sheet => sheet,
+            Role::Floe => floe,
+            _ if b.drive.is_kinematic() => held,
+            _ => ice,
+        };
         chart
             .draw_series(std::iter::once(Polygon::new(pts.clone(), fill.filled())))
             .map_err(draw_err)?;

@@ -2,14 +2,17 @@
 
 use super::{PlotError, draw_err, ensure_font};
 use crate::dem::EnergyBudget;
+use crate::simulation::Sample;
 use plotters::prelude::*;
 use std::path::Path;
 
 /// Draws every ledger term against time into a PNG, in kJ per metre.
-pub fn plot_energy(series: &[EnergyBudget], path: &Path, title: &str) -> Result<(), PlotError> {
+pub fn plot_energy(samples: &[Sample], path: &Path, title: &str) -> Result<(), PlotError> {
     ensure_font()?;
+    let series: Vec<EnergyBudget> = samples.iter().map(|s| s.energy).collect();
+    let series = &series[..];
     type Getter = fn(&EnergyBudget) -> f64;
-    let lines: [(&str, Getter, RGBColor); 8] = [
+    let lines: [(&str, Getter, RGBColor); 10] = [
         ("work", |e| e.work, RGBColor(0, 0, 0)),
         ("ΔPE", |e| e.potential_energy, RGBColor(31, 119, 180)),
         (
@@ -25,10 +28,16 @@ pub fn plot_energy(series: &[EnergyBudget], path: &Path, title: &str) -> Result<
         ("drag", |e| e.drag_dissipation, RGBColor(148, 103, 189)),
         ("ΔKE", |e| e.kinetic_energy, RGBColor(255, 127, 14)),
         (
-            "other",
-            |e| e.other_dissipation + e.elastic_energy,
-            RGBColor(140, 86, 75),
+            "joints+fracture",
+            |e| e.joint_dissipation + e.fracture_dissipation,
+            RGBColor(23, 190, 207),
         ),
+        (
+            "boundary",
+            |e| e.boundary_dissipation,
+            RGBColor(188, 189, 34),
+        ),
+        ("elastic held", |e| e.elastic_energy, RGBColor(140, 86, 75)),
         ("residual", |e| e.residual, RGBColor(127, 127, 127)),
     ];
     let t1 = series.last().map_or(1.0, |e| e.time).max(1e-9);
@@ -73,6 +82,44 @@ pub fn plot_energy(series: &[EnergyBudget], path: &Path, title: &str) -> Result<
         .label_font(("sans-serif", 14))
         .position(SeriesLabelPosition::UpperLeft)
         .draw()
+        .map_err(draw_err)?;
+    root.present().map_err(draw_err)?;
+    Ok(())
+}
+
+/// Draws the ridging force of eq (9) against time (cf. Hopkins 1994, Figure 6) in kN per
+/// metre, sampled at the scene's interval (0.2 s by default, as in the paper).
+pub fn plot_force(samples: &[Sample], path: &Path, title: &str) -> Result<(), PlotError> {
+    ensure_font()?;
+    let t1 = samples.last().map_or(1.0, |s| s.energy.time).max(1e-9);
+    let (mut lo, mut hi) = (0.0f64, 1.0f64);
+    for s in samples {
+        lo = lo.min(s.ridging_force / 1e3);
+        hi = hi.max(s.ridging_force / 1e3);
+    }
+    let root = BitMapBackend::new(path, (900, 420)).into_drawing_area();
+    root.fill(&WHITE).map_err(draw_err)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 18))
+        .margin(12)
+        .x_label_area_size(45)
+        .y_label_area_size(70)
+        .build_cartesian_2d(0.0..t1, lo..(hi * 1.05))
+        .map_err(draw_err)?;
+    chart
+        .configure_mesh()
+        .x_desc("time (s)")
+        .y_desc("ridging force (kN/m)")
+        .label_style(("sans-serif", 14))
+        .draw()
+        .map_err(draw_err)?;
+    chart
+        .draw_series(LineSeries::new(
+            samples
+                .iter()
+                .map(|s| (s.energy.time, s.ridging_force / 1e3)),
+            RGBColor(31, 119, 180).stroke_width(1),
+        ))
         .map_err(draw_err)?;
     root.present().map_err(draw_err)?;
     Ok(())

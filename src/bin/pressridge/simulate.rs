@@ -1,16 +1,18 @@
 //! `pressridge simulate`: run a scene and write its results.
 
 use crate::BoxError;
-use indicatif::{ProgressBar, ProgressStyle};
-use pressridge::io::{series::write_energy_csv, state, write_atomic};
-use pressridge::plot::{render, series::plot_energy};
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use pressridge::dem::World;
+use pressridge::io::{series::write_series_csv, state, write_atomic};
+use pressridge::plot::{render, series};
 use pressridge::scene::Scene;
 use pressridge::simulation;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// Scene file (TOML); the built-in default scene when omitted.
+    /// Scene file (TOML); the built-in default scene (the paper's Figure 5 experiment) when
+    /// omitted.
     #[arg(long)]
     scene: Option<PathBuf>,
     /// Override a scene parameter, e.g. --set contact.mu=0.4 (repeatable).
@@ -27,15 +29,20 @@ pub struct Args {
     no_figures: bool,
 }
 
-pub fn run(a: Args) -> Result<(), BoxError> {
-    let base = match &a.scene {
+/// Loads a scene file (or the default) and applies the overrides.
+pub fn load_scene(path: Option<&Path>, sets: &[String]) -> Result<Scene, BoxError> {
+    let base = match path {
         Some(p) => Scene::from_toml(
             &std::fs::read_to_string(p).map_err(|e| format!("{}: {e}", p.display()))?,
         )
         .map_err(|e| format!("{}: {e}", p.display()))?,
         None => Scene::default(),
     };
-    let scene = base.with_overrides(&a.sets)?;
+    Ok(base.with_overrides(sets)?)
+}
+
+pub fn run(a: Args) -> Result<(), BoxError> {
+    let scene = load_scene(a.scene.as_deref(), &a.sets)?;
     if a.print_scene {
         print!("{}", scene.to_toml());
         return Ok(());
@@ -43,56 +50,110 @@ pub fn run(a: Args) -> Result<(), BoxError> {
     std::fs::create_dir_all(&a.out).map_err(|e| format!("{}: {e}", a.out.display()))?;
     write_atomic(&a.out.join("scene.toml"), scene.to_toml().as_bytes())?;
 
-    let bar = ProgressBar::new((scene.duration * 1000.0).round() as u64);
+    let bar = ProgressBar::with_draw_target(
+        Some((scene.duration * 1000.0).round() as u64),
+        ProgressDrawTarget::stderr(),
+    );
     bar.set_style(
         ProgressStyle::with_template(
             "{spinner} [{elapsed_precise}] {bar:40} {msg} simulated, ETA {eta}",
         )?
         .progress_chars("=> "),
     );
-    let out = simulation::run(&scene, &mut |t| {
+    let snap_dir = a.out.join("snapshots");
+    let interval = scene.output.snapshot_interval;
+    let mut next_snap = 0.0;
+    let mut snap_err: Option<BoxError> = None;
+    let frame = scene.output.frame;
+    let window = render::Window {
+        x0: frame[0],
+        x1: frame[1],
+        y0: frame[2],
+        y1: frame[3],
+    };
+    let figures = !a.no_figures;
+    let mut observe = |w: &World| {
+        let t = w.time();
         bar.set_position((t * 1000.0) as u64);
         bar.set_message(format!("{t:.1} s"));
+        if interval > 0.0 && t >= next_snap - 0.5 * w.dt() {
+            next_snap += interval;
+            let s = w.snapshot();
+            let stem = format!("t{:05.0}", t);
+            let r = state::save_state(&snap_dir.join(format!("{stem}.json")), &s)
+                .map_err(BoxError::from)
+                .and_then(|_| {
+                    if figures {
+                        render::render_state(
+                            &s,
+                            &snap_dir.join(format!("{stem}.png")),
+                            window,
+                            800,
+                            &format!("t = {t:.0} s"),
+                        )
+                        .map_err(BoxError::from)
+                    } else {
+                        Ok(())
+                    }
+                });
+            if let Err(e) = r {
+                snap_err = Some(e);
+                return false;
+            }
+        }
         true
-    })?;
+    };
+    let out = simulation::run(&scene, &mut observe)?;
     bar.finish_and_clear();
+    if let Some(e) = snap_err {
+        return Err(e);
+    }
 
     state::write_json(&a.out.join("summary.json"), &out.summary)?;
-    write_energy_csv(&a.out.join("energy.csv"), &out.series)?;
+    write_series_csv(&a.out.join("series.csv"), &out.series)?;
     state::save_state(&a.out.join("state.json"), &out.final_state)?;
-    if !a.no_figures {
+    if figures {
         let s = &out.final_state;
         let title = format!("{} at t = {:.1} s", scene.name, s.time);
-        render::render_state(
-            s,
-            &a.out.join("final.png"),
-            render::Window::fit(s, 1.0),
-            1000,
-            &title,
-        )?;
-        plot_energy(
+        let win = if scene.sheet.is_some() {
+            window
+        } else {
+            render::Window::fit(s, 1.0)
+        };
+        render::render_state(s, &a.out.join("final.png"), win, 1000, &title)?;
+        series::plot_energy(
             &out.series,
             &a.out.join("energy.png"),
             &format!("{}: energy budget", scene.name),
         )?;
+        if scene.sheet.is_some() {
+            series::plot_force(
+                &out.series,
+                &a.out.join("force.png"),
+                &format!("{}: ridging force", scene.name),
+            )?;
+        }
     }
     let sm = &out.summary;
     println!(
-        "{}: {:.1} s simulated in {} steps of {:.3e} s ({:.1} s wall, {:.0} steps/s)",
+        "{}: {:.1} s simulated in {} steps of {:.3e} s ({:.1} s wall, {:.0} steps/s), {} blocks broken",
         sm.scene,
         sm.time,
         sm.steps,
         sm.dt,
         sm.wall_seconds,
-        sm.steps as f64 / sm.wall_seconds.max(1e-9)
+        sm.steps as f64 / sm.wall_seconds.max(1e-9),
+        sm.blocks_broken
     );
     println!(
-        "work {:.4e} J/m, ΔPE {:.4e} J/m, friction {:.4e}, viscous {:.4e}, drag {:.4e}, residual {:.2e} J/m (max relative {:.1e})",
+        "work {:.4e} J/m, ΔPE {:.4e} J/m (ratio {:.2}), friction {:.4e}, viscous {:.4e}, drag {:.4e}, other {:.4e}, residual {:.2e} J/m (max relative {:.1e})",
         sm.work,
         sm.potential_energy,
+        sm.ratio_work_to_pe,
         sm.friction_dissipation,
         sm.viscous_dissipation,
         sm.drag_dissipation,
+        sm.other_dissipation,
         sm.residual,
         sm.max_relative_residual
     );

@@ -1,0 +1,281 @@
+//! Viscous-elastic joints between the component blocks of the sheet, the floe and every
+//! rubble piece, Hopkins (1994) eq (1) and Figure 2.
+//!
+//! Two blocks a (left) and b (right) meet at a face of height h. A point at height s on the
+//! face (s from −h/2 at the bottom to +h/2 at the top, in the blocks' own frames) is
+//! stretched by the fibre δ(s) = P_b(s) − P_a(s), the vector from the material point on a to
+//! the point on b that coincided with it in the undeformed state. In the joint frame (n along
+//! the mean axis of the two blocks, t = n⊥) the stresses are
+//!
+//! - normal σ(s) = E(s)·δ_n(s)/W + η(s)·δ̇_n(s), eq (1), with E linear from E_bottom at
+//!   s = −h/2 to E_top at s = +h/2 and η = f·2·sqrt(ρ_i·E(s)) (f = 0.1);
+//! - shear τ(s) = G(s)·δ_t(s)/W + η_G(s)·δ̇_t(s) with G = E/(2(1 + ν)) (k_te = G/W) and
+//!   η_G = f·2·sqrt(ρ_i·G(s)),
+//!
+//! integrated over the intact span [s_lo, s_hi]: the skeletal layer (the bottom 20 % of h, at
+//! most 6 cm) carries nothing, and cracks eat into the span from the top and the bottom
+//! ([`crate::dem::fracture`]). W is the distance between the two block centres (the width of a
+//! block for equal blocks). The fibre force acts on each block at its own face point, so the
+//! work it absorbs is exactly ∫(σ·δ̇_n + τ·δ̇_t) ds in the limit of small rotations.
+
+use super::body::{Bodies, BodyId};
+use super::geometry::V2;
+use serde::{Deserialize, Serialize};
+
+/// Gauss–Legendre nodes and weights on [−1, 1], 3 points (exact to degree 5).
+const GAUSS_X: [f64; 3] = [-0.774_596_669_241_483_4, 0.0, 0.774_596_669_241_483_4];
+const GAUSS_W: [f64; 3] = [5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0];
+
+/// Material of a joint.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct JointMaterial {
+    /// Young's modulus at the top surface (Pa).
+    pub e_top: f64,
+    /// Young's modulus at the bottom surface (Pa).
+    pub e_bottom: f64,
+    /// Poisson's ratio ν (dimensionless).
+    pub poisson: f64,
+    /// Fraction of the critical damping 2·sqrt(ρ_i·E) used for η (dimensionless).
+    pub damping_fraction: f64,
+    /// Tensile strength at the top surface (Pa).
+    pub strength_top: f64,
+    /// Tensile strength at the bottom surface (Pa).
+    pub strength_bottom: f64,
+}
+
+/// A joint between the right face of body `a` and the left face of body `b`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Joint {
+    /// Left body.
+    pub a: BodyId,
+    /// Right body.
+    pub b: BodyId,
+    /// Centre of the joint face in a's frame, relative to a's centroid (m).
+    pub pa: V2,
+    /// Centre of the joint face in b's frame, relative to b's centroid (m).
+    pub pb: V2,
+    /// Face height h (m).
+    pub h: f64,
+    /// Gauge length W (m): the distance between the block centres at rest.
+    pub gauge: f64,
+    /// Material.
+    pub mat: JointMaterial,
+    /// Bottom of the intact span (m, face coordinate).
+    pub s_lo: f64,
+    /// Top of the intact span (m, face coordinate).
+    pub s_hi: f64,
+    /// A crack is running down from the top.
+    pub crack_top: bool,
+    /// A crack is running up from the bottom.
+    pub crack_bottom: bool,
+    /// Time at which the first crack started (s), or negative.
+    pub crack_started: f64,
+    /// Elastic work absorbed by the joint so far (J/m).
+    pub elastic_work: f64,
+    /// Forces of the current step for the ledger: elastic (on a, moment on a, on b, moment
+    /// on b) and viscous.
+    #[serde(skip)]
+    pub forces: [JointForces; 2],
+}
+
+/// The resultant of a joint's stresses on its two blocks (N/m and N·m/m about each
+/// centroid).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct JointForces {
+    /// Force on a.
+    pub fa: V2,
+    /// Moment on a.
+    pub ma: f64,
+    /// Force on b.
+    pub fb: V2,
+    /// Moment on b.
+    pub mb: f64,
+}
+
+/// Elastic stresses at the two ends of the intact span, for the fracture test (Pa, tension
+/// positive).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct SurfaceStress {
+    /// Normal stress at the top of the intact span.
+    pub top: f64,
+    /// Normal stress at the bottom of the intact span.
+    pub bottom: f64,
+}
+
+impl Joint {
+    /// A joint at rest between the right face of `a` and the left face of `b`, whose centres
+    /// are `pa`, `pb` in the bodies' frames (m); face height `h` (m), skeletal layer
+    /// `skeletal` (m) without joint at the bottom, gauge length `gauge` (m).
+    #[allow(clippy::too_many_arguments)]
+    pub fn new(
+        a: BodyId,
+        b: BodyId,
+        pa: V2,
+        pb: V2,
+        h: f64,
+        skeletal: f64,
+        gauge: f64,
+        mat: JointMaterial,
+    ) -> Joint {
+        Joint {
+            a,
+            b,
+            pa,
+            pb,
+            h,
+            gauge,
+            mat,
+            s_lo: -0.5 * h + skeletal,
+            s_hi: 0.5 * h,
+            crack_top: false,
+            crack_bottom: false,
+            crack_started: -1.0,
+            elastic_work: 0.0,
+            forces: [JointForces::default(); 2],
+        }
+    }
+
+    /// True while any part of the joint is intact.
+    #[inline]
+    pub fn is_intact(&self) -> bool {
+        self.s_hi > self.s_lo
+    }
+
+    /// Young's modulus at face height s (Pa).
+    #[inline]
+    pub fn modulus(&self, s: f64) -> f64 {
+        let f = (s + 0.5 * self.h) / self.h;
+        self.mat.e_bottom + (self.mat.e_top - self.mat.e_bottom) * f
+    }
+
+    /// Normal and shear stiffness of the intact span, ∫E/W ds and ∫G/W ds (N/m per m of
+    /// depth), for the time-step bound.
+    pub fn stiffness(&self) -> (f64, f64) {
+        if !self.is_intact() {
+            return (0.0, 0.0);
+        }
+        let e_mid = self.modulus(0.5 * (self.s_lo + self.s_hi));
+        let kn = e_mid * (self.s_hi - self.s_lo) / self.gauge;
+        (kn, kn / (2.0 * (1.0 + self.mat.poisson)))
+    }
+
+    /// Frame of the joint and the fibre geometry: returns (n, t, face direction of a, face
+    /// direction of b, face centre of a, face centre of b) in world coordinates.
+    #[inline]
+    fn frame(&self, b: &Bodies) -> (V2, V2, V2, V2, V2, V2) {
+        let (ia, ib) = (self.a as usize, self.b as usize);
+        let (sa, ca) = b.theta[ia].sin_cos();
+        let (sb, cb) = b.theta[ib].sin_cos();
+        let tm = 0.5 * (b.theta[ia] + b.theta[ib]);
+        let (s, c) = tm.sin_cos();
+        let n = V2::new(c, s);
+        let t = n.perp();
+        let ua = V2::new(-sa, ca);
+        let ub = V2::new(-sb, cb);
+        let oa = b.pos[ia] + self.pa.rotate(ca, sa);
+        let ob = b.pos[ib] + self.pb.rotate(cb, sb);
+        (n, t, ua, ub, oa, ob)
+    }
+
+    /// Elastic normal stress at the ends of the intact span (Pa).
+    pub fn surface_stress(&self, b: &Bodies) -> SurfaceStress {
+        let (n, _, ua, ub, oa, ob) = self.frame(b);
+        let d0 = ob - oa;
+        let d1 = ub - ua;
+        let sig = |s: f64| self.modulus(s) * (d0 + d1 * s).dot(n) / self.gauge;
+        SurfaceStress {
+            top: sig(self.s_hi),
+            bottom: sig(self.s_lo),
+        }
+    }
+
+    /// Elastic energy held by the intact span (J/m): ∫(E·δ_n² + G·δ_t²)/(2W) ds.
+    pub fn stored_energy(&self, b: &Bodies) -> f64 {
+        if !self.is_intact() {
+            return 0.0;
+        }
+        let (n, t, ua, ub, oa, ob) = self.frame(b);
+        let d0 = ob - oa;
+        let d1 = ub - ua;
+        let half = 0.5 * (self.s_hi - self.s_lo);
+        let mid = 0.5 * (self.s_hi + self.s_lo);
+        let g_ratio = 1.0 / (2.0 * (1.0 + self.mat.poisson));
+        let mut e = 0.0;
+        for k in 0..3 {
+            let s = mid + half * GAUSS_X[k];
+            let d = d0 + d1 * s;
+            let (dn, dt) = (d.dot(n), d.dot(t));
+            let em = self.modulus(s);
+            e += GAUSS_W[k] * half * em * (dn * dn + g_ratio * dt * dt) / (2.0 * self.gauge);
+        }
+        e
+    }
+
+    /// Computes the joint's forces from the current poses and half-step velocities, adds
+    /// them to the bodies and keeps them for the ledger.
+    pub fn apply(&mut self, bodies: &mut Bodies, rho_i: f64) {
+        self.forces = [JointForces::default(); 2];
+        if !self.is_intact() {
+            return;
+        }
+        let (ia, ib) = (self.a as usize, self.b as usize);
+        let (n, t, ua, ub, oa, ob) = self.frame(bodies);
+        let (xa, xb) = (bodies.pos[ia], bodies.pos[ib]);
+        let (va, vb) = (bodies.vel[ia], bodies.vel[ib]);
+        let (wa, wb) = (bodies.omega[ia], bodies.omega[ib]);
+        let d0 = ob - oa;
+        let d1 = ub - ua;
+        let half = 0.5 * (self.s_hi - self.s_lo);
+        let mid = 0.5 * (self.s_hi + self.s_lo);
+        let g_ratio = 1.0 / (2.0 * (1.0 + self.mat.poisson));
+        let f2 = self.mat.damping_fraction * 2.0;
+        let mut el = JointForces::default();
+        let mut vi = JointForces::default();
+        for k in 0..3 {
+            let s = mid + half * GAUSS_X[k];
+            let w = GAUSS_W[k] * half;
+            let pa = oa + ua * s;
+            let pb = ob + ub * s;
+            let d = d0 + d1 * s;
+            let ddot = (vb + (pb - xb).perp() * wb) - (va + (pa - xa).perp() * wa);
+            let e = self.modulus(s);
+            let g = e * g_ratio;
+            // Stresses (Pa) times the Gauss weight (m): force per metre of depth.
+            let sig_e = e * d.dot(n) / self.gauge;
+            let tau_e = g * d.dot(t) / self.gauge;
+            let sig_v = f2 * (rho_i * e).sqrt() * ddot.dot(n);
+            let tau_v = f2 * (rho_i * g).sqrt() * ddot.dot(t);
+            // Tension (δ_n > 0) pulls b back towards a.
+            let fe = (n * sig_e + t * tau_e) * (-w);
+            let fv = (n * sig_v + t * tau_v) * (-w);
+            el.fb = el.fb + fe;
+            el.mb += (pb - xb).cross(fe);
+            el.fa = el.fa - fe;
+            el.ma -= (pa - xa).cross(fe);
+            vi.fb = vi.fb + fv;
+            vi.mb += (pb - xb).cross(fv);
+            vi.fa = vi.fa - fv;
+            vi.ma -= (pa - xa).cross(fv);
+        }
+        for f in [&el, &vi] {
+            bodies.force[ia] = bodies.force[ia] + f.fa;
+            bodies.torque[ia] += f.ma;
+            bodies.force[ib] = bodies.force[ib] + f.fb;
+            bodies.torque[ib] += f.mb;
+        }
+        self.forces = [el, vi];
+    }
+
+    /// Work absorbed by the joint in this step with mid-step velocities: (elastic, viscous)
+    /// (J/m). The elastic part is also added to the joint's own running total.
+    pub fn book_work(&mut self, vbar: &[V2], wbar: &[f64], dt: f64) -> (f64, f64) {
+        let (ia, ib) = (self.a as usize, self.b as usize);
+        let p = |f: &JointForces| {
+            -(f.fa.dot(vbar[ia]) + f.ma * wbar[ia] + f.fb.dot(vbar[ib]) + f.mb * wbar[ib]) * dt
+        };
+        let e = p(&self.forces[0]);
+        let v = p(&self.forces[1]);
+        self.elastic_work += e;
+        (e, v)
+    }
+}
