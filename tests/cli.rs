@@ -111,3 +111,25 @@ fn bad_input_gives_a_clear_error_and_nonzero_exit() {
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("/nonexistent/state.json"));
 }
+
+#[test]
+fn shipped_scene_files_load_and_compose() {
+    use pressridge::scene::Scene;
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data/scenes");
+    let load = |f: &str| Scene::from_toml(&std::fs::read_to_string(dir.join(f)).unwrap()).unwrap();
+    let fig5 = load("figure5.toml");
+    assert_eq!(
+        fig5,
+        Scene::default(),
+        "figure5.toml must be the built-in default"
+    );
+    let wall = load("sheet-wall.toml");
+    assert!(wall.sheet.is_some() && wall.wall.is_some() && wall.floe.is_none());
+    let pile = load("rubble-pile.toml");
+    assert!(pile.pile.is_some() && pile.sheet.is_none() && pile.floe.is_none());
+    assert_eq!(pile, Scene::rubble_pile());
+    // A wall scene builds and runs.
+    let w = wall.with_overrides(&["duration=2"]).unwrap();
+    let out = pressridge::simulation::run(&w, &mut |_| true).unwrap();
+    assert!(out.summary.work > 0.0);
+}
