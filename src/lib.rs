@@ -14,12 +14,16 @@
 //!   the time step;
 //! - [`scene`] — every parameter of a run, from TOML, with defaults and validation;
 //! - [`simulation`] — running a scene and summarising it;
+//! - [`observe`] — ridge profiles and metrics from a state;
+//! - [`campaign`] — seeded ensembles over parameter grids, resumable;
 //! - [`io`] — files (JSON states and summaries, CSV time series);
 //! - [`plot`] — figures.
 //!
 
+pub mod campaign;
 pub mod dem;
 pub mod io;
+pub mod observe;
 pub mod plot;
 pub mod scene;
 pub mod simulation;

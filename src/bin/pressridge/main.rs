@@ -6,6 +6,7 @@
 
 use clap::{Parser, Subcommand};
 
+mod campaign;
 mod render;
 mod simulate;
 
@@ -29,6 +30,8 @@ enum Command {
     Simulate(simulate::Args),
     /// Draw a saved state as a PNG or SVG.
     Render(render::Args),
+    /// Run a seeded ensemble over a parameter grid (resumable).
+    Campaign(campaign::Args),
 }
 
 fn main() {
@@ -36,6 +39,7 @@ fn main() {
     let result = match cli.command {
         Command::Simulate(a) => simulate::run(a),
         Command::Render(a) => render::run(a),
+        Command::Campaign(a) => campaign::run(a),
     };
     if let Err(e) = result {
         eprintln!("pressridge: error: {e}");

@@ -1,0 +1,64 @@
+//! `pressridge campaign`: a seeded ensemble over a parameter grid, resumable.
+
+use crate::BoxError;
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use pressridge::campaign::{CampaignSpec, run_campaign};
+use std::path::PathBuf;
+use std::sync::atomic::AtomicBool;
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// Campaign spec (TOML).
+    #[arg(long)]
+    spec: PathBuf,
+    /// Result directory; re-running into the same directory skips finished runs.
+    #[arg(long)]
+    out: PathBuf,
+    /// Worker threads (one run each); all cores by default.
+    #[arg(long)]
+    threads: Option<usize>,
+}
+
+pub fn run(a: Args) -> Result<(), BoxError> {
+    let spec = CampaignSpec::read(&a.spec)?;
+    let base_dir = a.spec.parent().map(|p| p.to_path_buf()).unwrap_or_default();
+    let plan = spec.plan(&base_dir)?;
+    let total_sim: f64 = plan.iter().map(|p| p.scene.duration).sum();
+    let threads = a
+        .threads
+        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
+    let bar = ProgressBar::with_draw_target(
+        Some((total_sim * 10.0) as u64),
+        ProgressDrawTarget::stderr(),
+    );
+    bar.set_style(
+        ProgressStyle::with_template("{spinner} [{elapsed_precise}] {bar:40} {msg} ETA {eta}")?
+            .progress_chars("=> "),
+    );
+    // Runs already on disk count as done for the bar.
+    let skipped_sim = std::sync::Mutex::new(None::<f64>);
+    let stop = AtomicBool::new(false);
+    let (skipped, done) = run_campaign(
+        &spec,
+        &base_dir,
+        &a.out,
+        threads,
+        &|p| {
+            let mut s = skipped_sim.lock().expect("lock");
+            let base = *s.get_or_insert(p.skipped as f64 / p.total.max(1) as f64 * total_sim);
+            bar.set_position(((base + p.simulated) * 10.0) as u64);
+            bar.set_message(format!("{} of {} runs", p.skipped + p.done, p.total));
+        },
+        &stop,
+    )?;
+    bar.finish_and_clear();
+    println!(
+        "{}: {} runs ({} already done, {} run now) in {}",
+        spec.name,
+        plan.len(),
+        skipped,
+        done,
+        a.out.display()
+    );
+    Ok(())
+}

@@ -1,0 +1,536 @@
+//! Seeded ensembles over a parameter grid (Hopkins 1994, "Numerical Ridge Growth
+//! Experiments": sets of seven experiments per parameter combination, differing only in the
+//! ±1 % modulus variation).
+//!
+//! A campaign spec (TOML) names a base scene, overrides, axes and a number of seeds:
+//!
+//! ```toml
+//! name = "thickness"
+//! seeds = 7                 # seeds first_seed .. first_seed + seeds - 1
+//! sample_interval = 25.0    # s, the paper's
+//! scene = "../scenes/figure5.toml"   # optional, relative to the spec file
+//! set = ["duration=400"]    # optional overrides of the base scene
+//!
+//! [[axis]]                  # one key ...
+//! key = "contact.mu"
+//! values = [0.4, 1.0]
+//!
+//! [[axis]]                  # ... or several keys varied together
+//! keys = ["sheet.thickness", "sheet.block_width"]
+//! values = [[0.20, 0.20], [0.45, 0.30]]
+//! ```
+//!
+//! The runs are the Cartesian product of the axes times the seeds. Each finished run is
+//! written atomically to `runs/<point>/seed-NN/run.json` (with its final state beside it), so
+//! an interrupted campaign loses only the runs in flight, and running the same command again
+//! skips every run already written. A run is identified by its full resolved scene: if the
+//! spec changed so that a written run would now mean something else, the campaign stops with
+//! an error rather than mixing the two.
+
+use crate::dem::Snapshot;
+use crate::io::IoError;
+use crate::io::state::{read_json, save_state, write_json};
+use crate::observe::{self, Profile, RidgeMetrics};
+use crate::scene::{Scene, SceneError};
+use crate::simulation::{self, Summary};
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+
+/// An error in a campaign.
+#[derive(Debug, thiserror::Error)]
+pub enum CampaignError {
+    /// The spec is malformed.
+    #[error("campaign spec: {0}")]
+    Spec(String),
+    /// A scene of the grid is invalid.
+    #[error("run {run}: {source}")]
+    Scene {
+        /// The run.
+        run: String,
+        /// The cause.
+        source: SceneError,
+    },
+    /// A file could not be read or written.
+    #[error(transparent)]
+    Io(#[from] IoError),
+    /// A result directory holds runs of another spec.
+    #[error("{0}")]
+    Mismatch(String),
+}
+
+/// A grid axis: one key, or several keys varied together.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Axis {
+    /// A single scene key (dotted path).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub key: Option<String>,
+    /// Several scene keys varied together.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub keys: Option<Vec<String>>,
+    /// The values: scalars for `key`, arrays as long as `keys` for `keys`.
+    pub values: Vec<toml::Value>,
+}
+
+/// Profile strips of a campaign.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct ProfileSpec {
+    /// Left edge of the first strip (m). Default −20 (the floe nose is at x = 0).
+    pub x0: f64,
+    /// Strip width (m). Default 1 (the paper's meter-wide strips).
+    pub dx: f64,
+    /// Number of strips. Default 32.
+    pub strips: usize,
+    /// Vertical lines sampled per strip. Default 10.
+    pub lines_per_strip: usize,
+}
+
+impl Default for ProfileSpec {
+    fn default() -> Self {
+        Self {
+            x0: -20.0,
+            dx: 1.0,
+            strips: 32,
+            lines_per_strip: 10,
+        }
+    }
+}
+
+fn seven() -> u32 {
+    7
+}
+fn one() -> u64 {
+    1
+}
+fn twenty_five() -> f64 {
+    25.0
+}
+
+/// A campaign spec.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CampaignSpec {
+    /// Name for reports and tables.
+    pub name: String,
+    /// Seeds per grid point. Default 7 (the paper's sets of seven).
+    #[serde(default = "seven")]
+    pub seeds: u32,
+    /// First seed. Default 1.
+    #[serde(default = "one")]
+    pub first_seed: u64,
+    /// Sampling interval of the run records (s). Default 25 (the paper's).
+    #[serde(default = "twenty_five")]
+    pub sample_interval: f64,
+    /// Base scene file, relative to the spec file; the built-in default when absent.
+    #[serde(default)]
+    pub scene: Option<String>,
+    /// Overrides of the base scene, `key=value`.
+    #[serde(default)]
+    pub set: Vec<String>,
+    /// Grid axes.
+    #[serde(default)]
+    pub axis: Vec<Axis>,
+    /// Profile strips.
+    #[serde(default)]
+    pub profile: ProfileSpec,
+}
+
+/// One planned run.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlannedRun {
+    /// Directory below `runs/`, e.g. `thickness=0.3__block_width=0.25/seed-01`.
+    pub id: String,
+    /// Index of the grid point.
+    pub point: usize,
+    /// The axis settings of the point, `key=value`.
+    pub settings: Vec<String>,
+    /// The seed.
+    pub seed: u64,
+    /// The resolved scene.
+    pub scene: Scene,
+}
+
+/// A sample of a run at the campaign's interval.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct RunSample {
+    /// Time (s).
+    pub time: f64,
+    /// Ridged-ice volume V = U·h·t (m³/m).
+    pub volume: f64,
+    /// Work W, eq (9) (J/m).
+    pub work: f64,
+    /// ΔPE, eq (10) (J/m).
+    pub potential_energy: f64,
+    /// Frictional dissipation Φ_f, eq (11) (J/m).
+    pub friction_dissipation: f64,
+    /// Viscous contact dissipation Φ_i, eq (12) (J/m).
+    pub viscous_dissipation: f64,
+    /// Mean ridging force over the interval ending here, Δwork/(U·Δt) (N/m).
+    pub mean_force: f64,
+}
+
+/// What one run of a campaign leaves behind (`run.json`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct RunRecord {
+    /// Run id.
+    pub id: String,
+    /// Axis settings, `key=value`.
+    pub settings: Vec<String>,
+    /// Seed.
+    pub seed: u64,
+    /// The resolved scene.
+    pub scene: Scene,
+    /// Summary of the run.
+    pub summary: Summary,
+    /// Samples at the campaign interval.
+    pub samples: Vec<RunSample>,
+    /// Final profile.
+    pub profile: Profile,
+    /// Final ridge metrics.
+    pub metrics: RidgeMetrics,
+}
+
+/// Progress of a campaign, reported as runs finish.
+#[derive(Clone, Copy, Debug)]
+pub struct Progress {
+    /// Runs found already written when the campaign started.
+    pub skipped: usize,
+    /// Runs finished by this invocation so far.
+    pub done: usize,
+    /// Runs in the campaign.
+    pub total: usize,
+    /// Simulated seconds completed in this invocation, across runs in flight (s).
+    pub simulated: f64,
+}
+
+impl CampaignSpec {
+    /// Parses a spec; unknown keys are an error naming them.
+    pub fn from_toml(text: &str) -> Result<CampaignSpec, CampaignError> {
+        let s: CampaignSpec =
+            toml::from_str(text).map_err(|e| CampaignError::Spec(e.to_string()))?;
+        if s.seeds == 0 {
+            return Err(CampaignError::Spec("`seeds` must be at least 1".into()));
+        }
+        if !(s.sample_interval > 0.0 && s.sample_interval.is_finite()) {
+            return Err(CampaignError::Spec(
+                "`sample_interval` must be positive (s)".into(),
+            ));
+        }
+        if s.profile.strips == 0 || s.profile.dx.is_nan() || s.profile.dx <= 0.0 {
+            return Err(CampaignError::Spec(
+                "`profile` needs strips ≥ 1 and dx > 0".into(),
+            ));
+        }
+        Ok(s)
+    }
+
+    /// Reads a spec file.
+    pub fn read(path: &Path) -> Result<CampaignSpec, CampaignError> {
+        let text = std::fs::read_to_string(path).map_err(|e| IoError::Os {
+            path: path.to_path_buf(),
+            source: e,
+        })?;
+        Self::from_toml(&text).map_err(|e| match e {
+            CampaignError::Spec(m) => CampaignError::Spec(format!("{}: {m}", path.display())),
+            other => other,
+        })
+    }
+
+    /// The axes as lists of `key=value` settings per value.
+    fn settings(&self) -> Result<Vec<Vec<Vec<String>>>, CampaignError> {
+        let mut out = Vec::new();
+        for (k, a) in self.axis.iter().enumerate() {
+            let keys: Vec<String> = match (&a.key, &a.keys) {
+                (Some(key), None) => vec![key.clone()],
+                (None, Some(keys)) if !keys.is_empty() => keys.clone(),
+                _ => {
+                    return Err(CampaignError::Spec(format!(
+                        "axis {k}: give either `key` or a non-empty `keys`"
+                    )));
+                }
+            };
+            if a.values.is_empty() {
+                return Err(CampaignError::Spec(format!("axis {k}: no values")));
+            }
+            let mut vals = Vec::new();
+            for v in &a.values {
+                let items: Vec<toml::Value> = match (keys.len(), v) {
+                    (1, toml::Value::Array(x)) if x.len() == 1 => x.clone(),
+                    (1, x) => vec![x.clone()],
+                    (n, toml::Value::Array(x)) if x.len() == n => x.clone(),
+                    (n, x) => {
+                        return Err(CampaignError::Spec(format!(
+                            "axis {k}: value {x} must be an array of {n} values, one per key"
+                        )));
+                    }
+                };
+                vals.push(
+                    keys.iter()
+                        .zip(items)
+                        .map(|(key, x)| format!("{key}={x}"))
+                        .collect(),
+                );
+            }
+            out.push(vals);
+        }
+        Ok(out)
+    }
+
+    /// The planned runs: the grid points in axis order (the first axis slowest), each with
+    /// its seeds. `base_dir` resolves a relative `scene` path.
+    pub fn plan(&self, base_dir: &Path) -> Result<Vec<PlannedRun>, CampaignError> {
+        let base = match &self.scene {
+            Some(p) => {
+                let path = base_dir.join(p);
+                let text = std::fs::read_to_string(&path).map_err(|e| IoError::Os {
+                    path: path.clone(),
+                    source: e,
+                })?;
+                Scene::from_toml(&text).map_err(|e| CampaignError::Scene {
+                    run: path.display().to_string(),
+                    source: e,
+                })?
+            }
+            None => Scene::default(),
+        };
+        let axes = self.settings()?;
+        let mut points: Vec<Vec<String>> = vec![Vec::new()];
+        for axis in &axes {
+            let mut next = Vec::new();
+            for p in &points {
+                for v in axis {
+                    let mut q = p.clone();
+                    q.extend(v.iter().cloned());
+                    next.push(q);
+                }
+            }
+            points = next;
+        }
+        let mut runs = Vec::new();
+        for (pi, settings) in points.iter().enumerate() {
+            let label = if settings.is_empty() {
+                "base".to_string()
+            } else {
+                settings
+                    .iter()
+                    .map(|s| {
+                        let (k, v) = s.split_once('=').expect("key=value");
+                        format!("{}={}", k.rsplit('.').next().unwrap_or(k), v)
+                    })
+                    .collect::<Vec<_>>()
+                    .join("__")
+            };
+            for s in 0..self.seeds as u64 {
+                let seed = self.first_seed + s;
+                let id = format!("{label}/seed-{seed:02}");
+                let mut sets = self.set.clone();
+                sets.extend(settings.iter().cloned());
+                sets.push(format!("seed={seed}"));
+                sets.push(format!("numerics.sample_interval={}", self.sample_interval));
+                sets.push("output.snapshot_interval=0".into());
+                let scene = base
+                    .with_overrides(&sets)
+                    .and_then(|sc| sc.validate().map(|_| sc))
+                    .map_err(|e| CampaignError::Scene {
+                        run: id.clone(),
+                        source: e,
+                    })?;
+                runs.push(PlannedRun {
+                    id,
+                    point: pi,
+                    settings: settings.clone(),
+                    seed,
+                    scene,
+                });
+            }
+        }
+        Ok(runs)
+    }
+}
+
+/// Runs one planned run and makes its record.
+pub fn run_one(
+    plan: &PlannedRun,
+    spec: &CampaignSpec,
+    progress: &dyn Fn(f64),
+) -> Result<(RunRecord, Snapshot), CampaignError> {
+    let mut last = 0.0;
+    let out = simulation::run(&plan.scene, &mut |w| {
+        progress(w.time() - last);
+        last = w.time();
+        true
+    })
+    .map_err(|e| CampaignError::Scene {
+        run: plan.id.clone(),
+        source: e,
+    })?;
+    let (speed, h) = plan
+        .scene
+        .sheet
+        .as_ref()
+        .map_or((0.0, 0.0), |s| (s.speed, s.thickness));
+    let samples = out
+        .series
+        .iter()
+        .map(|x| RunSample {
+            time: x.energy.time,
+            volume: speed * h * x.energy.time,
+            work: x.energy.work,
+            potential_energy: x.energy.potential_energy,
+            friction_dissipation: x.energy.friction_dissipation,
+            viscous_dissipation: x.energy.viscous_dissipation,
+            mean_force: x.mean_force,
+        })
+        .collect();
+    let ps = &spec.profile;
+    let profile = observe::profile(
+        &out.final_state,
+        ps.x0,
+        ps.dx,
+        ps.strips,
+        ps.lines_per_strip,
+    );
+    let metrics = observe::metrics(
+        &profile,
+        Some((&out.final_state, &out.summary.rubble_block_lengths, h)),
+    );
+    Ok((
+        RunRecord {
+            id: plan.id.clone(),
+            settings: plan.settings.clone(),
+            seed: plan.seed,
+            scene: plan.scene.clone(),
+            summary: out.summary,
+            samples,
+            profile,
+            metrics,
+        },
+        out.final_state,
+    ))
+}
+
+/// Path of a run's record in a campaign directory.
+pub fn record_path(out: &Path, id: &str) -> PathBuf {
+    out.join("runs").join(id).join("run.json")
+}
+
+/// Reads every run record of a campaign directory, in plan order. Missing runs are skipped.
+pub fn read_records(out: &Path) -> Result<(CampaignSpec, Vec<RunRecord>), CampaignError> {
+    let spec: CampaignSpec = read_json(&out.join("campaign.json"))?;
+    let mut records = Vec::new();
+    let ids: Vec<String> = read_json(&out.join("plan.json"))?;
+    for id in ids {
+        let p = record_path(out, &id);
+        if p.is_file() {
+            records.push(read_json(&p)?);
+        }
+    }
+    Ok((spec, records))
+}
+
+/// Runs a campaign into `out` on `threads` worker threads, skipping runs already written.
+/// `progress` is called from the workers (it must be cheap and thread-safe). `stop` ends the
+/// campaign after the runs in flight when set. Returns the number of runs (skipped, done).
+pub fn run_campaign(
+    spec: &CampaignSpec,
+    base_dir: &Path,
+    out: &Path,
+    threads: usize,
+    progress: &(dyn Fn(Progress) + Sync),
+    stop: &AtomicBool,
+) -> Result<(usize, usize), CampaignError> {
+    let plan = spec.plan(base_dir)?;
+    let spec_path = out.join("campaign.json");
+    if spec_path.is_file() {
+        let old: CampaignSpec = read_json(&spec_path)?;
+        if old.axis != spec.axis
+            || old.set != spec.set
+            || old.sample_interval != spec.sample_interval
+        {
+            return Err(CampaignError::Mismatch(format!(
+                "{} holds a campaign with another grid; use a new output directory",
+                out.display()
+            )));
+        }
+    }
+    write_json(&spec_path, spec)?;
+    write_json(
+        &out.join("plan.json"),
+        &plan.iter().map(|p| p.id.clone()).collect::<Vec<_>>(),
+    )?;
+    let mut todo = Vec::new();
+    let mut skipped = 0;
+    for p in &plan {
+        let path = record_path(out, &p.id);
+        if path.is_file() {
+            let r: RunRecord = read_json(&path)?;
+            if r.scene != p.scene {
+                return Err(CampaignError::Mismatch(format!(
+                    "{} was made with another scene than the spec now gives; use a new output directory",
+                    path.display()
+                )));
+            }
+            skipped += 1;
+        } else {
+            todo.push(p);
+        }
+    }
+    let total = plan.len();
+    let next = AtomicUsize::new(0);
+    let done = AtomicUsize::new(0);
+    let simulated = Mutex::new(0.0f64);
+    let first_error: Mutex<Option<CampaignError>> = Mutex::new(None);
+    let report = |d: usize| {
+        let s = *simulated.lock().expect("progress lock");
+        progress(Progress {
+            skipped,
+            done: d,
+            total,
+            simulated: s,
+        });
+    };
+    report(0);
+    std::thread::scope(|scope| {
+        for _ in 0..threads.max(1).min(todo.len().max(1)) {
+            scope.spawn(|| {
+                loop {
+                    if stop.load(Ordering::Relaxed) || first_error.lock().expect("lock").is_some() {
+                        return;
+                    }
+                    let k = next.fetch_add(1, Ordering::Relaxed);
+                    let Some(p) = todo.get(k) else {
+                        return;
+                    };
+                    let tick = |dt: f64| {
+                        *simulated.lock().expect("progress lock") += dt;
+                        report(done.load(Ordering::Relaxed));
+                    };
+                    let result = run_one(p, spec, &tick).and_then(|(rec, state)| {
+                        let path = record_path(out, &p.id);
+                        // The state first: a record on disk always has its state.
+                        save_state(&path.with_file_name("state.json"), &state)?;
+                        write_json(&path, &rec)?;
+                        Ok(())
+                    });
+                    match result {
+                        Ok(()) => {
+                            let d = done.fetch_add(1, Ordering::Relaxed) + 1;
+                            report(d);
+                        }
+                        Err(e) => {
+                            first_error.lock().expect("lock").get_or_insert(e);
+                            return;
+                        }
+                    }
+                }
+            });
+        }
+    });
+    if let Some(e) = first_error.into_inner().expect("lock") {
+        return Err(e);
+    }
+    Ok((skipped, done.load(Ordering::Relaxed)))
+}

@@ -1,0 +1,282 @@
+//! Ridge observations from a saved state: profiles in 1-m vertical strips and ridge metrics
+//! (Hopkins 1994, "Effects of Friction", "Block Lengths and Ridge Slopes").
+//!
+//! **Profiles.** Each strip [x, x + Δx) is sampled on `lines_per_strip` vertical lines. On
+//! each line the highest and the lowest point of the ice present (held walls excluded) give
+//! the sail height max(top − level, 0) and the keel depth max(level − bottom, 0); a line
+//! without ice counts 0. The strip value is the mean over its lines ("the mean height and
+//! depth of ice in each strip"). Two profiles are kept: of all ice (sheet, floe, rubble: what
+//! the paper's Figure 8 boxes show) and of rubble alone.
+//!
+//! **Metrics** (from the rubble profile and the rubble blocks):
+//! - maximum sail height and keel depth (m): the largest strip values;
+//! - sail and keel cross-sections (m², per metre of ridge): of the envelope, Σ strip value ·
+//!   Δx, and of solid ice, the rubble area above and below the water line;
+//! - flank slopes (degrees): the paper drew lines "by eye through the major portion of each
+//!   slope". Our rule: on each side of the peak strip, the strips whose value lies between
+//!   20 % and 80 % of the peak, walking outward from the peak until the value first drops
+//!   below 20 %; a least-squares line through their (centre, value) points; the angle is
+//!   atan of its slope's magnitude. Fewer than two such strips give no slope (NaN-free: the
+//!   metric is `None`);
+//! - L/h: mean length of the rubble pieces over the sheet thickness.
+
+use crate::dem::geometry::V2;
+use crate::dem::{Role, Snapshot};
+use serde::{Deserialize, Serialize};
+
+/// Sail and keel profile in vertical strips.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Profile {
+    /// Left edge of the first strip (m).
+    pub x0: f64,
+    /// Strip width (m).
+    pub dx: f64,
+    /// Mean sail height per strip, all ice (m).
+    pub sail: Vec<f64>,
+    /// Mean keel depth per strip, all ice (m).
+    pub keel: Vec<f64>,
+    /// Mean sail height per strip, rubble only (m).
+    pub rubble_sail: Vec<f64>,
+    /// Mean keel depth per strip, rubble only (m).
+    pub rubble_keel: Vec<f64>,
+}
+
+/// Ridge metrics of one state or of an averaged profile.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct RidgeMetrics {
+    /// Largest rubble sail height (strip mean) (m).
+    pub max_sail_height: f64,
+    /// Largest rubble keel depth (strip mean) (m).
+    pub max_keel_depth: f64,
+    /// Sail cross-section of the rubble envelope (m²/m).
+    pub sail_area: f64,
+    /// Keel cross-section of the rubble envelope (m²/m).
+    pub keel_area: f64,
+    /// Solid rubble area above the water line (m²/m).
+    pub sail_ice_area: f64,
+    /// Solid rubble area below the water line (m²/m).
+    pub keel_ice_area: f64,
+    /// Lead-side sail slope θ₁ (degrees).
+    pub sail_slope_lead: Option<f64>,
+    /// Floe-side sail slope θ₂ (degrees).
+    pub sail_slope_floe: Option<f64>,
+    /// Lead-side keel slope φ₁ (degrees).
+    pub keel_slope_lead: Option<f64>,
+    /// Floe-side keel slope φ₂ (degrees).
+    pub keel_slope_floe: Option<f64>,
+    /// Mean rubble piece length over sheet thickness (dimensionless); 0 without rubble.
+    pub length_to_thickness: f64,
+}
+
+fn world_outline(b: &crate::dem::world::BodyState) -> Vec<V2> {
+    let (s, c) = b.theta.sin_cos();
+    b.shape
+        .outline()
+        .verts()
+        .iter()
+        .map(|q| q.rotate(c, s) + b.pos)
+        .collect()
+}
+
+/// Lowest and highest y (m) where the vertical line at `x` meets a convex polygon.
+fn vertical_extent(v: &[V2], x: f64) -> Option<(f64, f64)> {
+    let n = v.len();
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for i in 0..n {
+        let (p, q) = (v[i], v[(i + 1) % n]);
+        if (p.x <= x && x <= q.x) || (q.x <= x && x <= p.x) {
+            let y = if (q.x - p.x).abs() < 1e-12 {
+                lo = lo.min(p.y.min(q.y));
+                hi = hi.max(p.y.max(q.y));
+                continue;
+            } else {
+                p.y + (q.y - p.y) * (x - p.x) / (q.x - p.x)
+            };
+            lo = lo.min(y);
+            hi = hi.max(y);
+        }
+    }
+    (lo <= hi).then_some((lo, hi))
+}
+
+/// The profile of a state over `strips` strips of width `dx` (m) from `x0` (m), sampled on
+/// `lines` vertical lines per strip.
+pub fn profile(s: &Snapshot, x0: f64, dx: f64, strips: usize, lines: usize) -> Profile {
+    let level = s.params.water.as_ref().map_or(0.0, |w| w.level);
+    let outlines: Vec<(Role, Vec<V2>, f64, f64)> = s
+        .bodies
+        .iter()
+        .filter(|b| b.role != Role::Wall && !b.drive.is_kinematic())
+        .map(|b| {
+            let v = world_outline(b);
+            let lo = v.iter().map(|p| p.x).fold(f64::INFINITY, f64::min);
+            let hi = v.iter().map(|p| p.x).fold(f64::NEG_INFINITY, f64::max);
+            (b.role, v, lo, hi)
+        })
+        .collect();
+    let mut p = Profile {
+        x0,
+        dx,
+        sail: vec![0.0; strips],
+        keel: vec![0.0; strips],
+        rubble_sail: vec![0.0; strips],
+        rubble_keel: vec![0.0; strips],
+    };
+    let lines = lines.max(1);
+    for k in 0..strips {
+        for l in 0..lines {
+            let x = x0 + (k as f64 + (l as f64 + 0.5) / lines as f64) * dx;
+            let (mut top, mut bot) = (f64::NEG_INFINITY, f64::INFINITY);
+            let (mut rtop, mut rbot) = (f64::NEG_INFINITY, f64::INFINITY);
+            for (role, v, lo, hi) in &outlines {
+                if x < *lo || x > *hi {
+                    continue;
+                }
+                if let Some((a, b)) = vertical_extent(v, x) {
+                    top = top.max(b);
+                    bot = bot.min(a);
+                    if *role == Role::Rubble {
+                        rtop = rtop.max(b);
+                        rbot = rbot.min(a);
+                    }
+                }
+            }
+            let w = 1.0 / lines as f64;
+            if top.is_finite() {
+                p.sail[k] += w * (top - level).max(0.0);
+                p.keel[k] += w * (level - bot).max(0.0);
+            }
+            if rtop.is_finite() {
+                p.rubble_sail[k] += w * (rtop - level).max(0.0);
+                p.rubble_keel[k] += w * (level - rbot).max(0.0);
+            }
+        }
+    }
+    p
+}
+
+/// The strip-by-strip mean of several profiles on the same strips (the ensemble profile).
+pub fn mean_profile(ps: &[Profile]) -> Option<Profile> {
+    let first = ps.first()?;
+    let n = first.sail.len();
+    if ps
+        .iter()
+        .any(|p| p.sail.len() != n || p.x0 != first.x0 || p.dx != first.dx)
+    {
+        return None;
+    }
+    let k = 1.0 / ps.len() as f64;
+    let avg = |f: fn(&Profile) -> &Vec<f64>| -> Vec<f64> {
+        (0..n)
+            .map(|i| ps.iter().map(|p| f(p)[i]).sum::<f64>() * k)
+            .collect()
+    };
+    Some(Profile {
+        x0: first.x0,
+        dx: first.dx,
+        sail: avg(|p| &p.sail),
+        keel: avg(|p| &p.keel),
+        rubble_sail: avg(|p| &p.rubble_sail),
+        rubble_keel: avg(|p| &p.rubble_keel),
+    })
+}
+
+/// Flank slopes (degrees) of a strip profile: (lead side, floe side); see the module docs.
+pub fn flank_slopes(values: &[f64], x0: f64, dx: f64) -> (Option<f64>, Option<f64>) {
+    let Some((peak_i, &peak)) = values.iter().enumerate().max_by(|a, b| a.1.total_cmp(b.1)) else {
+        return (None, None);
+    };
+    if peak <= 0.0 {
+        return (None, None);
+    }
+    let side = |dir: isize| {
+        let mut pts = Vec::new();
+        let mut i = peak_i as isize;
+        loop {
+            i += dir;
+            if i < 0 || i as usize >= values.len() {
+                break;
+            }
+            let v = values[i as usize];
+            if v < 0.2 * peak {
+                break;
+            }
+            if v <= 0.8 * peak {
+                pts.push((x0 + (i as f64 + 0.5) * dx, v));
+            }
+        }
+        if pts.len() < 2 {
+            return None;
+        }
+        let n = pts.len() as f64;
+        let mx = pts.iter().map(|p| p.0).sum::<f64>() / n;
+        let my = pts.iter().map(|p| p.1).sum::<f64>() / n;
+        let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+        let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
+        (sxx > 0.0).then(|| (sxy / sxx).abs().atan().to_degrees())
+    };
+    (side(-1), side(1))
+}
+
+/// Metrics of a profile, with the solid rubble areas and piece lengths of the state they
+/// came from (`None` for an averaged profile: those fields are then 0 and should be
+/// averaged from the runs).
+pub fn metrics(p: &Profile, state: Option<(&Snapshot, &[f64], f64)>) -> RidgeMetrics {
+    let max = |v: &[f64]| v.iter().copied().fold(0.0, f64::max);
+    let (sail_slope_lead, sail_slope_floe) = flank_slopes(&p.rubble_sail, p.x0, p.dx);
+    let (keel_slope_lead, keel_slope_floe) = flank_slopes(&p.rubble_keel, p.x0, p.dx);
+    let mut m = RidgeMetrics {
+        max_sail_height: max(&p.rubble_sail),
+        max_keel_depth: max(&p.rubble_keel),
+        sail_area: p.rubble_sail.iter().sum::<f64>() * p.dx,
+        keel_area: p.rubble_keel.iter().sum::<f64>() * p.dx,
+        sail_slope_lead,
+        sail_slope_floe,
+        keel_slope_lead,
+        keel_slope_floe,
+        ..RidgeMetrics::default()
+    };
+    if let Some((s, lengths, thickness)) = state {
+        let level = s.params.water.as_ref().map_or(0.0, |w| w.level);
+        for b in s.bodies.iter().filter(|b| b.role == Role::Rubble) {
+            let v = world_outline(b);
+            let o = crate::dem::geometry::Outline::from_slice(&v);
+            let (below, _) = crate::dem::geometry::below_line(&o, level);
+            m.keel_ice_area += below;
+            m.sail_ice_area += b.shape.area() - below;
+        }
+        if !lengths.is_empty() && thickness > 0.0 {
+            m.length_to_thickness = lengths.iter().sum::<f64>() / lengths.len() as f64 / thickness;
+        }
+    }
+    m
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slopes_of_a_triangle() {
+        // A sail rising 1 m per strip (45°) to 5 m, falling 0.5 m per strip (26.6°).
+        let v = [
+            0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 4.5, 4.0, 3.5, 3.0, 2.5, 2.0, 1.5, 1.0, 0.5, 0.0,
+        ];
+        let (lead, floe) = flank_slopes(&v, -8.0, 1.0);
+        assert!((lead.unwrap() - 45.0).abs() < 1e-9);
+        assert!((floe.unwrap() - 0.5f64.atan().to_degrees()).abs() < 1e-9);
+        assert_eq!(flank_slopes(&[0.0; 4], 0.0, 1.0), (None, None));
+    }
+
+    #[test]
+    fn vertical_extent_of_a_square() {
+        let sq = [
+            V2::new(0.0, -1.0),
+            V2::new(1.0, -1.0),
+            V2::new(1.0, 0.5),
+            V2::new(0.0, 0.5),
+        ];
+        assert_eq!(vertical_extent(&sq, 0.5), Some((-1.0, 0.5)));
+        assert_eq!(vertical_extent(&sq, 2.0), None);
+    }
+}

@@ -1,0 +1,164 @@
+//! A tiny campaign end to end: two thicknesses × two seeds of a short run, interrupted after
+//! its first finished run and resumed without redoing anything.
+
+use pressridge::campaign::{CampaignSpec, read_records};
+use std::process::Command;
+use std::time::{Duration, Instant};
+
+const SPEC: &str = r#"
+name = "tiny"
+seeds = 2
+sample_interval = 1.0
+set = ["duration=3.0", "sheet.length=8.0"]
+
+[[axis]]
+keys = ["sheet.thickness", "sheet.block_width"]
+values = [[0.25, 0.25], [0.35, 0.25]]
+"#;
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_pressridge"))
+}
+
+#[test]
+fn tiny_campaign_is_resumable_and_complete() {
+    let dir = std::env::temp_dir().join(format!("pressridge-campaign-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let spec = dir.join("tiny.toml");
+    std::fs::write(&spec, SPEC).unwrap();
+    let out = dir.join("out");
+
+    // Start, wait for the first finished run, kill the process.
+    let mut child = bin()
+        .args(["campaign", "--threads", "1", "--spec"])
+        .arg(&spec)
+        .arg("--out")
+        .arg(&out)
+        .spawn()
+        .unwrap();
+    let t0 = Instant::now();
+    let first = out.join("runs/thickness=0.25__block_width=0.25/seed-01/run.json");
+    while !first.is_file() {
+        assert!(t0.elapsed() < Duration::from_secs(120), "no run finished");
+        assert!(child.try_wait().unwrap().is_none(), "campaign ended early");
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    child.kill().unwrap();
+    child.wait().unwrap();
+    let bytes = std::fs::read(&first).unwrap();
+    let mtime = std::fs::metadata(&first).unwrap().modified().unwrap();
+    // No half-written record is left behind by the kill.
+    let (_, partial) = read_records(&out).unwrap();
+    assert!(!partial.is_empty() && partial.len() < 4);
+
+    // Resume: the finished run is not redone, the others are made.
+    let res = bin()
+        .args(["campaign", "--threads", "2", "--spec"])
+        .arg(&spec)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(
+        res.status.success(),
+        "{}",
+        String::from_utf8_lossy(&res.stderr)
+    );
+    let msg = String::from_utf8_lossy(&res.stdout);
+    assert!(
+        msg.contains(&format!("{} already done", partial.len())),
+        "{msg}"
+    );
+    assert_eq!(std::fs::read(&first).unwrap(), bytes);
+    assert_eq!(
+        std::fs::metadata(&first).unwrap().modified().unwrap(),
+        mtime
+    );
+
+    // Everything is there, with samples every second and profiles.
+    let (spec_back, records) = read_records(&out).unwrap();
+    assert_eq!(spec_back, CampaignSpec::from_toml(SPEC).unwrap());
+    assert_eq!(records.len(), 4);
+    for r in &records {
+        assert_eq!(r.samples.len(), 4, "{}", r.id);
+        let last = r.samples.last().unwrap();
+        let h = r.scene.sheet.as_ref().unwrap().thickness;
+        assert!((last.volume - 0.25 * h * last.time).abs() < 1e-12);
+        assert!((last.time - 3.0).abs() <= r.summary.dt);
+        assert!(last.work > 0.0);
+        assert_eq!(r.profile.sail.len(), 32);
+        assert!(out.join("runs").join(&r.id).join("state.json").is_file());
+    }
+    // Runs are reproducible: a third invocation does nothing.
+    let res = bin()
+        .args(["campaign", "--spec"])
+        .arg(&spec)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(String::from_utf8_lossy(&res.stdout).contains("4 already done, 0 run now"));
+    // A changed grid is refused in the same directory.
+    std::fs::write(&spec, SPEC.replace("0.35", "0.40")).unwrap();
+    let res = bin()
+        .args(["campaign", "--spec"])
+        .arg(&spec)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(!res.status.success());
+    assert!(String::from_utf8_lossy(&res.stderr).contains("another grid"));
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn bad_specs_are_named() {
+    let e = CampaignSpec::from_toml("name = \"x\"\nseedz = 3")
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("seedz"), "{e}");
+    let spec = CampaignSpec::from_toml(
+        "name = \"x\"\n[[axis]]\nkeys = [\"sheet.thickness\", \"sheet.block_width\"]\nvalues = [0.3]",
+    )
+    .unwrap();
+    let e = spec
+        .plan(std::path::Path::new("."))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("axis 0"), "{e}");
+    let spec =
+        CampaignSpec::from_toml("name = \"x\"\n[[axis]]\nkey = \"sheet.thicknes\"\nvalues = [0.3]")
+            .unwrap();
+    let e = spec
+        .plan(std::path::Path::new("."))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("thicknes"), "{e}");
+}
+
+/// Every shipped campaign spec parses and plans the paper's sets.
+#[test]
+fn shipped_specs_plan_the_papers_sets() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data/campaigns");
+    let count = |f: &str| {
+        let spec = CampaignSpec::read(&dir.join(f)).unwrap();
+        let plan = spec.plan(&dir).unwrap();
+        assert!(
+            plan.iter()
+                .all(|p| p.scene.sheet.is_some() && p.scene.floe.is_some())
+        );
+        plan.len()
+    };
+    assert_eq!(count("thickness.toml"), 6 * 7);
+    assert_eq!(count("friction.toml"), 8 * 7);
+    assert_eq!(count("speed.toml"), 2 * 7);
+    assert_eq!(count("modulus.toml"), 3 * 7);
+    assert_eq!(count("floe.toml"), 2 * 7);
+    // 100 m of sheet in every run of the speed set.
+    let spec = CampaignSpec::read(&dir.join("speed.toml")).unwrap();
+    for p in spec.plan(&dir).unwrap() {
+        let u = p.scene.sheet.as_ref().unwrap().speed;
+        assert!((u * p.scene.duration - 100.0).abs() < 1e-9);
+    }
+}
