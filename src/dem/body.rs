@@ -306,6 +306,8 @@ pub struct Bodies {
     pub role: Vec<Role>,
     /// Nominal rectangle and bevels, for blocks made as rectangles.
     pub block: Vec<Option<Block>>,
+    /// Unit x axis of each body, (cos θ, sin θ), at the current orientation.
+    pub axis: Vec<V2>,
     /// Outline in world coordinates at the current positions (m).
     pub world: Vec<Outline>,
     /// Bounding box of `world` (m).
@@ -348,6 +350,7 @@ impl Bodies {
         self.drive.push(drive);
         self.role.push(Role::Block);
         self.block.push(None);
+        self.axis.push(V2::new(1.0, 0.0));
         self.world.push(Outline::default());
         self.aabb.push(Aabb::default());
         self.force.push(V2::default());
@@ -380,15 +383,10 @@ impl Bodies {
     #[inline]
     pub fn update_world(&mut self, i: usize) {
         let (s, c) = self.theta[i].sin_cos();
+        self.axis[i] = V2::new(c, s);
         let p = self.pos[i];
-        let local = self.shape[i].outline();
-        let mut w = [V2::default(); MAX_VERTS];
-        let n = local.len();
-        for (k, q) in local.verts().iter().enumerate() {
-            w[k] = q.rotate(c, s) + p;
-        }
-        self.world[i] = Outline::from_slice(&w[..n]);
-        self.aabb[i] = Aabb::of(&w[..n]);
+        self.world[i].set_transformed(self.shape[i].outline(), c, s, p);
+        self.aabb[i] = Aabb::of(self.world[i].verts());
     }
 
     /// Velocity (m/s) of the material point at `p` (m) of body `i`, from the stored

@@ -102,16 +102,16 @@ impl JointSet {
         }
     }
 
-    /// Tests for new cracks at the current poses and advances running ones by
-    /// `crack_speed·dt` (m). Joints that lose their last intact part are listed in
-    /// [`JointSet::severed`].
-    pub fn advance(&mut self, bodies: &Bodies, crack_speed: f64, time: f64, dt: f64) {
+    /// Tests for new cracks with the stresses of the last [`JointSet::apply`] (the poses at
+    /// the start of the step) and advances running ones by `crack_speed·dt` (m). Joints that
+    /// lose their last intact part are listed in [`JointSet::severed`].
+    pub fn advance(&mut self, crack_speed: f64, time: f64, dt: f64) {
         self.severed.clear();
         for (k, j) in self.joints.iter_mut().enumerate() {
             if !j.is_intact() {
                 continue;
             }
-            let s = j.surface_stress(bodies);
+            let s = j.stress;
             if !j.crack_top && s.top > j.mat.strength_top {
                 j.crack_top = true;
             }

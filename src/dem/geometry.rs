@@ -35,10 +35,10 @@ impl V2 {
     pub fn cross(self, o: V2) -> f64 {
         self.x * o.y - self.y * o.x
     }
-    /// Euclidean length.
+    /// Euclidean length (no overflow guard: coordinates here are metres).
     #[inline]
     pub fn norm(self) -> f64 {
-        self.x.hypot(self.y)
+        (self.x * self.x + self.y * self.y).sqrt()
     }
     /// The vector rotated by +90° (counter-clockwise).
     #[inline]
@@ -123,6 +123,16 @@ impl<const N: usize> Poly<N> {
     #[inline]
     pub fn verts(&self) -> &[V2] {
         &self.p[..self.n]
+    }
+    /// Overwrites this polygon with `src` rotated by the angle of cosine `c` and sine `s`
+    /// and moved by `d`, in place (no temporary copies).
+    #[inline]
+    pub fn set_transformed(&mut self, src: &Poly<N>, c: f64, s: f64, d: V2) {
+        self.n = src.n;
+        for k in 0..src.n {
+            self.p[k] = src.p[k].rotate(c, s) + d;
+            self.tag[k] = k as u8;
+        }
     }
     /// Number of vertices.
     #[inline]
@@ -298,15 +308,20 @@ pub fn intersect(a: &Outline, b: &Outline) -> ClipPoly {
 /// The part of a polygon below the horizontal line `y = level` (m), as a polygon.
 pub fn clip_below(poly: &Outline, level: f64) -> ClipPoly {
     let mut out = ClipPoly::default();
+    clip_below_into(poly, level, &mut out);
+    out
+}
+
+/// [`clip_below`] into a buffer the caller keeps.
+pub fn clip_below_into(poly: &Outline, level: f64, out: &mut ClipPoly) {
     // Left of the directed line from (1, level) to (0, level) is the half-plane below it.
     clip_left(
         poly,
         V2::new(1.0, level),
         V2::new(0.0, level),
         MAX_VERTS as u8,
-        &mut out,
+        out,
     );
-    out
 }
 
 /// The part of a polygon below the horizontal line `y = level` (m): its area (m²) and

@@ -76,6 +76,10 @@ pub struct Joint {
     /// on b) and viscous.
     #[serde(skip)]
     pub forces: [JointForces; 2],
+    /// Elastic stresses at the ends of the intact span in the last [`Joint::apply`] (Pa),
+    /// the input of the fracture test.
+    #[serde(skip)]
+    pub stress: SurfaceStress,
 }
 
 /// The resultant of a joint's stresses on its two blocks (N/m and N·m/m about each
@@ -132,6 +136,7 @@ impl Joint {
             crack_started: -1.0,
             elastic_work: 0.0,
             forces: [JointForces::default(); 2],
+            stress: SurfaceStress::default(),
         }
     }
 
@@ -159,22 +164,26 @@ impl Joint {
         (kn, kn / (2.0 * (1.0 + self.mat.poisson)))
     }
 
-    /// Frame of the joint and the fibre geometry: returns (n, t, face direction of a, face
-    /// direction of b, face centre of a, face centre of b) in world coordinates.
+    /// Frame of the joint and the fibre geometry for block axes `ea`, `eb` ((cos θ, sin θ)
+    /// of each block): returns (n, t, face direction of a, face direction of b, face centre
+    /// of a, face centre of b) in world coordinates. n is the bisector of the two axes: the
+    /// direction of the mean angle, found without trigonometry.
     #[inline]
-    fn frame(&self, b: &Bodies) -> (V2, V2, V2, V2, V2, V2) {
+    fn frame_with(&self, b: &Bodies, ea: V2, eb: V2) -> (V2, V2, V2, V2, V2, V2) {
         let (ia, ib) = (self.a as usize, self.b as usize);
-        let (sa, ca) = b.theta[ia].sin_cos();
-        let (sb, cb) = b.theta[ib].sin_cos();
-        let tm = 0.5 * (b.theta[ia] + b.theta[ib]);
-        let (s, c) = tm.sin_cos();
-        let n = V2::new(c, s);
+        let m = ea + eb;
+        let n = m * (1.0 / m.norm());
         let t = n.perp();
-        let ua = V2::new(-sa, ca);
-        let ub = V2::new(-sb, cb);
-        let oa = b.pos[ia] + self.pa.rotate(ca, sa);
-        let ob = b.pos[ib] + self.pb.rotate(cb, sb);
-        (n, t, ua, ub, oa, ob)
+        let oa = b.pos[ia] + self.pa.rotate(ea.x, ea.y);
+        let ob = b.pos[ib] + self.pb.rotate(eb.x, eb.y);
+        (n, t, ea.perp(), eb.perp(), oa, ob)
+    }
+
+    /// [`Joint::frame_with`] from the bodies' present orientations.
+    fn frame(&self, b: &Bodies) -> (V2, V2, V2, V2, V2, V2) {
+        let (sa, ca) = b.theta[self.a as usize].sin_cos();
+        let (sb, cb) = b.theta[self.b as usize].sin_cos();
+        self.frame_with(b, V2::new(ca, sa), V2::new(cb, sb))
     }
 
     /// Elastic normal stress at the ends of the intact span (Pa).
@@ -211,20 +220,26 @@ impl Joint {
         e
     }
 
-    /// Computes the joint's forces from the current poses and half-step velocities, adds
-    /// them to the bodies and keeps them for the ledger.
+    /// Computes the joint's forces from the current poses (with the block axes cached in
+    /// `bodies.axis`) and half-step velocities, adds them to the bodies and keeps them for
+    /// the ledger, with the elastic surface stresses for the fracture test.
     pub fn apply(&mut self, bodies: &mut Bodies, rho_i: f64) {
         self.forces = [JointForces::default(); 2];
         if !self.is_intact() {
             return;
         }
         let (ia, ib) = (self.a as usize, self.b as usize);
-        let (n, t, ua, ub, oa, ob) = self.frame(bodies);
+        let (n, t, ua, ub, oa, ob) = self.frame_with(bodies, bodies.axis[ia], bodies.axis[ib]);
         let (xa, xb) = (bodies.pos[ia], bodies.pos[ib]);
         let (va, vb) = (bodies.vel[ia], bodies.vel[ib]);
         let (wa, wb) = (bodies.omega[ia], bodies.omega[ib]);
         let d0 = ob - oa;
         let d1 = ub - ua;
+        let sig = |s: f64| self.modulus(s) * (d0 + d1 * s).dot(n) / self.gauge;
+        self.stress = SurfaceStress {
+            top: sig(self.s_hi),
+            bottom: sig(self.s_lo),
+        };
         let half = 0.5 * (self.s_hi - self.s_lo);
         let mid = 0.5 * (self.s_hi + self.s_lo);
         let g_ratio = 1.0 / (2.0 * (1.0 + self.mat.poisson));

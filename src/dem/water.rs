@@ -12,7 +12,7 @@
 //!   spinning about its middle, with D the diagonal of the submerged part's bounding box.
 
 use super::body::Bodies;
-use super::geometry::{ClipPoly, V2, area_centroid};
+use super::geometry::{ClipPoly, V2, area_centroid, clip_below_into};
 use serde::{Deserialize, Serialize};
 
 /// The water: level, density and drag law.
@@ -49,6 +49,7 @@ pub struct WaterForces {
     pub buoyancy: Vec<(f64, V2)>,
     /// Drag force (N/m), its point (m) and drag moment (N·m/m).
     pub drag: Vec<(V2, V2, f64)>,
+    scratch: ClipPoly,
 }
 
 /// Work absorbed from the bodies by water forces (J/m).
@@ -76,11 +77,12 @@ impl WaterForces {
                 self.drag[i] = (V2::default(), V2::default(), 0.0);
                 continue;
             }
-            let mut sub = ClipPoly::default();
-            let (area, c) = if aabb.max.y <= w.level {
-                area_centroid(bodies.world[i].verts())
+            let partly = aabb.max.y > w.level;
+            let (area, c) = if partly {
+                clip_below_into(&bodies.world[i], w.level, &mut self.scratch);
+                self.scratch.area_centroid()
             } else {
-                submerged_into(&bodies.world[i], w.level, &mut sub)
+                area_centroid(bodies.world[i].verts())
             };
             if area <= 0.0 {
                 self.buoyancy[i] = (0.0, V2::default());
@@ -94,10 +96,10 @@ impl WaterForces {
                 self.drag[i] = (V2::default(), V2::default(), 0.0);
                 continue;
             }
-            let verts = if sub.is_empty() {
-                bodies.world[i].verts()
+            let verts = if partly {
+                self.scratch.verts()
             } else {
-                sub.verts()
+                bodies.world[i].verts()
             };
             let vs = bodies.point_velocity(i, c);
             let speed = vs.norm();
@@ -157,9 +159,4 @@ impl WaterForces {
             work.drag -= (f.dot(vd) + m * wbar[i]) * dt;
         }
     }
-}
-
-fn submerged_into(poly: &super::geometry::Outline, level: f64, out: &mut ClipPoly) -> (f64, V2) {
-    *out = super::geometry::clip_below(poly, level);
-    out.area_centroid()
 }

@@ -506,8 +506,7 @@ impl World {
         self.steps += 1;
         // Fracture: new cracks at the new poses, running cracks advance.
         if !self.joints.is_empty() {
-            self.joints
-                .advance(&self.bodies, self.params.crack_speed, self.time, dt);
+            self.joints.advance(self.params.crack_speed, self.time, dt);
             if !self.joints.severed().is_empty() {
                 self.after_fracture();
             }
