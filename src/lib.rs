@@ -12,6 +12,11 @@
 //! Layout (data flows one way, no module reaches back up):
 //! - [`dem`]: the simulator core — geometry, bodies, contacts, water, the energy ledger and
 //!   the time step.
+//! - [`itd`]: thickness-distribution physics (category bounds, participation, ridged-ice
+//!   redistribution, ice strength, the ridging step) on plain per-column slices.
+//! - [`io`]: NetCDF reading and writing of gridded thickness distributions.
 
 pub mod dem;
+pub mod io;
+pub mod itd;
 pub mod plot;

@@ -6,7 +6,6 @@
 
 use clap::{Parser, Subcommand};
 
-
 /// Error type of the subcommands: any error with a readable message.
 pub type BoxError = Box<dyn std::error::Error + Send + Sync>;
 
@@ -22,8 +21,7 @@ struct Cli {
 }
 
 #[derive(Subcommand)]
-enum Command {
-}
+enum Command {}
 
 fn main() {
     let cli = Cli::parse();

@@ -1,0 +1,3 @@
+//! File input and output. Only this module touches NetCDF.
+
+pub mod itd_netcdf;
