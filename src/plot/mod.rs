@@ -6,6 +6,8 @@
 
 use std::sync::OnceLock;
 
+pub mod strength_map;
+
 /// An error while drawing or writing a figure.
 #[derive(Debug, thiserror::Error)]
 pub enum PlotError {

@@ -6,6 +6,10 @@
 
 use clap::{Parser, Subcommand};
 
+mod plot_strength;
+mod ridge_step;
+mod strength;
+
 /// Error type of the subcommands: any error with a readable message.
 pub type BoxError = Box<dyn std::error::Error + Send + Sync>;
 
@@ -21,11 +25,22 @@ struct Cli {
 }
 
 #[derive(Subcommand)]
-enum Command {}
+enum Command {
+    /// Ice strength P (N/m) of a gridded thickness distribution (NetCDF in and out).
+    Strength(strength::Args),
+    /// One ridging step on a gridded thickness distribution (NetCDF in and out).
+    RidgeStep(ridge_step::Args),
+    /// PNG map of ice strength on a 2-D grid.
+    PlotStrength(plot_strength::Args),
+}
 
 fn main() {
     let cli = Cli::parse();
-    let result: Result<(), BoxError> = match cli.command {};
+    let result: Result<(), BoxError> = match cli.command {
+        Command::Strength(a) => strength::run(a),
+        Command::RidgeStep(a) => ridge_step::run(a),
+        Command::PlotStrength(a) => plot_strength::run(a),
+    };
     if let Err(e) = result {
         eprintln!("pressridge: error: {e}");
         std::process::exit(1);
