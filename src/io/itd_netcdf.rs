@@ -265,17 +265,16 @@ pub fn read_cf_table(path: &Path) -> Result<CfTable, NetcdfError> {
     })
 }
 
-/// Writes a C_f table file (`thickness` in m, `cf` dimensionless).
+/// Writes a C_f table file (`thickness` in m, `cf` dimensionless), 64-bit-offset format.
 pub fn write_cf_table(path: &Path, table: &CfTable) -> Result<(), NetcdfError> {
     let e = nc_err(path);
-    let mut f = netcdf::create(path).map_err(&e)?;
+    let mut f = netcdf::create_with(path, netcdf::Options::_64BIT_OFFSET).map_err(&e)?;
     f.add_dimension("node", table.thickness().len())
         .map_err(&e)?;
     let mut v = f.add_variable::<f64>("thickness", &["node"]).map_err(&e)?;
     v.put_attribute("units", "m").map_err(&e)?;
     v.put_attribute("long_name", "thickness of the ridging ice")
         .map_err(&e)?;
-    v.put_values(table.thickness(), ..).map_err(&e)?;
     let mut v = f.add_variable::<f64>("cf", &["node"]).map_err(&e)?;
     v.put_attribute("units", "1").map_err(&e)?;
     v.put_attribute(
@@ -283,8 +282,13 @@ pub fn write_cf_table(path: &Path, table: &CfTable) -> Result<(), NetcdfError> {
         "ratio of ridging work to potential energy change C_f",
     )
     .map_err(&e)?;
-    v.put_values(table.values(), ..).map_err(&e)?;
     f.add_attribute("Conventions", "CF-1.8").map_err(&e)?;
+    f.enddef().map_err(&e)?;
+    for (name, data) in [("thickness", table.thickness()), ("cf", table.values())] {
+        let mut v = f.variable_mut(name).expect("just defined");
+        v.put_values(data, ..).map_err(&e)?;
+    }
+    f.close().map_err(&e)?;
     Ok(())
 }
 
@@ -318,98 +322,14 @@ pub struct Output<'a> {
     pub global: &'a [(String, String)],
 }
 
-/// Writes `out` to a new NetCDF-4 file at `path` (deflate level 4), with CF attributes,
+/// Writes `out` to a new file at `path` in the NetCDF 64-bit-offset format (readable by
+/// every NetCDF tool; netCDF-C 4.9.0 with HDF5 1.10 prints spurious `HDF5-DIAG` messages
+/// when NetCDF-4 files are read from a non-main thread), with CF attributes,
 /// `Conventions = CF-1.8`, `source`/`pressridge_version` and the given global attributes.
 pub fn write_output(path: &Path, out: &Output<'_>) -> Result<(), NetcdfError> {
     let e = nc_err(path);
     let g = out.grid;
-    let mut f = netcdf::create(path).map_err(&e)?;
-    let spatial: Vec<&str> = g.spatial_dims.iter().map(|d| d.0.as_str()).collect();
-    for (n, l) in &g.spatial_dims {
-        f.add_dimension(n, *l).map_err(&e)?;
-    }
     let ncol = g.ncol();
-    let put = |f: &mut netcdf::FileMut,
-               meta: &FieldMeta<'_>,
-               dims: &[&str],
-               data: &[f64]|
-     -> Result<(), netcdf::Error> {
-        let mut v = f.add_variable::<f64>(meta.name, dims)?;
-        if !dims.is_empty() {
-            v.set_compression(4, true)?;
-        }
-        v.put_attribute("units", meta.units)?;
-        v.put_attribute("long_name", meta.long_name)?;
-        if let Some(s) = meta.standard_name {
-            v.put_attribute("standard_name", s)?;
-        }
-        v.put_values(data, ..)?;
-        Ok(())
-    };
-    if out.write_itd {
-        let ncat = g.ncat();
-        f.add_dimension(&g.ncat_dim, ncat).map_err(&e)?;
-        let mut cat_dims: Vec<&str> = vec![g.ncat_dim.as_str()];
-        cat_dims.extend(&spatial);
-        let a = g.aicen.as_standard_layout();
-        let v = g.vicen.as_standard_layout();
-        put(
-            &mut f,
-            &FieldMeta {
-                name: "aicen",
-                units: "1",
-                long_name: "sea ice area fraction in each thickness category",
-                standard_name: Some("sea_ice_area_fraction"),
-            },
-            &cat_dims,
-            a.as_slice().expect("standard layout"),
-        )
-        .map_err(&e)?;
-        put(
-            &mut f,
-            &FieldMeta {
-                name: "vicen",
-                units: "m",
-                long_name: "sea ice volume per unit grid-cell area in each thickness category",
-                standard_name: None,
-            },
-            &cat_dims,
-            v.as_slice().expect("standard layout"),
-        )
-        .map_err(&e)?;
-        let aice0: Vec<f64> = match &g.aice0 {
-            Some(a0) => a0.to_vec(),
-            None => (0..ncol).map(|c| 1.0 - g.aicen.column(c).sum()).collect(),
-        };
-        put(
-            &mut f,
-            &FieldMeta {
-                name: "aice0",
-                units: "1",
-                long_name: "open water fraction",
-                standard_name: None,
-            },
-            &spatial,
-            &aice0,
-        )
-        .map_err(&e)?;
-        if let Some(h) = out.hin_max {
-            let bdim = format!("{}_bounds", g.ncat_dim);
-            f.add_dimension(&bdim, h.len()).map_err(&e)?;
-            put(
-                &mut f,
-                &FieldMeta {
-                    name: "hin_max",
-                    units: "m",
-                    long_name: "thickness category bounds",
-                    standard_name: None,
-                },
-                &[bdim.as_str()],
-                h,
-            )
-            .map_err(&e)?;
-        }
-    }
     for (meta, data) in out.fields {
         if data.len() != ncol {
             return Err(NetcdfError::Shape {
@@ -419,7 +339,86 @@ pub fn write_output(path: &Path, out: &Output<'_>) -> Result<(), NetcdfError> {
                 found: format!("{} values", data.len()),
             });
         }
-        put(&mut f, meta, &spatial, data).map_err(&e)?;
+    }
+    let spatial: Vec<&str> = g.spatial_dims.iter().map(|d| d.0.as_str()).collect();
+    let mut cat_dims: Vec<&str> = vec![g.ncat_dim.as_str()];
+    cat_dims.extend(&spatial);
+    let bdim = format!("{}_bounds", g.ncat_dim);
+
+    // Everything to write: (metadata, dimensions, values). Owned copies of the distribution
+    // in C order (the classic format wants all definitions before any data).
+    let a = g.aicen.as_standard_layout().into_owned();
+    let v = g.vicen.as_standard_layout().into_owned();
+    let aice0: Vec<f64> = match &g.aice0 {
+        Some(a0) => a0.to_vec(),
+        None => (0..ncol).map(|c| 1.0 - g.aicen.column(c).sum()).collect(),
+    };
+    let mut items: Vec<(FieldMeta<'_>, Vec<&str>, &[f64])> = Vec::new();
+    if out.write_itd {
+        items.push((
+            FieldMeta {
+                name: "aicen",
+                units: "1",
+                long_name: "sea ice area fraction in each thickness category",
+                standard_name: Some("sea_ice_area_fraction"),
+            },
+            cat_dims.clone(),
+            a.as_slice().expect("standard layout"),
+        ));
+        items.push((
+            FieldMeta {
+                name: "vicen",
+                units: "m",
+                long_name: "sea ice volume per unit grid-cell area in each thickness category",
+                standard_name: None,
+            },
+            cat_dims.clone(),
+            v.as_slice().expect("standard layout"),
+        ));
+        items.push((
+            FieldMeta {
+                name: "aice0",
+                units: "1",
+                long_name: "open water fraction",
+                standard_name: None,
+            },
+            spatial.clone(),
+            &aice0,
+        ));
+        if let Some(h) = out.hin_max {
+            items.push((
+                FieldMeta {
+                    name: "hin_max",
+                    units: "m",
+                    long_name: "thickness category bounds",
+                    standard_name: None,
+                },
+                vec![bdim.as_str()],
+                h,
+            ));
+        }
+    }
+    for (meta, data) in out.fields {
+        items.push((*meta, spatial.clone(), data));
+    }
+
+    let mut f = netcdf::create_with(path, netcdf::Options::_64BIT_OFFSET).map_err(&e)?;
+    for (n, l) in &g.spatial_dims {
+        f.add_dimension(n, *l).map_err(&e)?;
+    }
+    if out.write_itd {
+        f.add_dimension(&g.ncat_dim, g.ncat()).map_err(&e)?;
+        if let Some(h) = out.hin_max {
+            f.add_dimension(&bdim, h.len()).map_err(&e)?;
+        }
+    }
+    for (meta, dims, _) in &items {
+        let mut var = f.add_variable::<f64>(meta.name, dims).map_err(&e)?;
+        var.put_attribute("units", meta.units).map_err(&e)?;
+        var.put_attribute("long_name", meta.long_name).map_err(&e)?;
+        if let Some(s) = meta.standard_name {
+            var.put_attribute("standard_name", s).map_err(&e)?;
+        }
     }
     f.add_attribute("Conventions", "CF-1.8").map_err(&e)?;
     f.add_attribute(
@@ -429,9 +428,15 @@ pub fn write_output(path: &Path, out: &Output<'_>) -> Result<(), NetcdfError> {
     .map_err(&e)?;
     f.add_attribute("pressridge_version", env!("CARGO_PKG_VERSION"))
         .map_err(&e)?;
-    for (k, v) in out.global {
-        f.add_attribute(k, v.as_str()).map_err(&e)?;
+    for (k, val) in out.global {
+        f.add_attribute(k, val.as_str()).map_err(&e)?;
     }
+    f.enddef().map_err(&e)?;
+    for (meta, _, data) in &items {
+        let mut var = f.variable_mut(meta.name).expect("just defined");
+        var.put_values(data, ..).map_err(&e)?;
+    }
+    f.close().map_err(&e)?;
     Ok(())
 }
 
