@@ -158,6 +158,7 @@ pub struct Workspace {
     pub(crate) apartic: Vec<f64>,
     /// Cumulative area G(n), stored shifted: gsum[k + 1] = G(k), k = −1 ..= ncat.
     pub(crate) gsum: Vec<f64>,
+    pub(crate) hi: Vec<f64>,
     pub(crate) hrmin: Vec<f64>,
     pub(crate) hrmax: Vec<f64>,
     pub(crate) hrexp: Vec<f64>,
@@ -179,6 +180,7 @@ impl Workspace {
             ncat,
             apartic: vec![0.0; ncat + 1],
             gsum: vec![0.0; ncat + 2],
+            hi: vec![0.0; ncat],
             hrmin: vec![0.0; ncat],
             hrmax: vec![0.0; ncat],
             hrexp: vec![0.0; ncat],

@@ -13,6 +13,8 @@ use super::params::{ItdParams, Redistribution};
 /// Ridged-ice distribution from one category.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RidgeGeometry {
+    /// Thickness of the ridging ice h = vicen/aicen (m), before any clamping.
+    pub hi: f64,
     /// Minimum ridge thickness h_min (m).
     pub hrmin: f64,
     /// Maximum ridge thickness h_max (m), uniform form only (0 otherwise).
@@ -26,6 +28,7 @@ pub struct RidgeGeometry {
 impl RidgeGeometry {
     /// Geometry of a category with no (or ≤ `puny`) area: k = 1, thicknesses 0 (as CICE).
     pub const EMPTY: RidgeGeometry = RidgeGeometry {
+        hi: 0.0,
         hrmin: 0.0,
         hrmax: 0.0,
         hrexp: 0.0,
@@ -52,6 +55,7 @@ pub fn ridge_geometry(
             let hrmax = f64::max(2.0 * (params.hstar * hi).sqrt(), hrmin + params.puny);
             let hrmean = 0.5 * (hrmin + hrmax);
             RidgeGeometry {
+                hi,
                 hrmin,
                 hrmax,
                 hrexp: 0.0,
@@ -59,10 +63,12 @@ pub fn ridge_geometry(
             }
         }
         Redistribution::Exponential => {
+            let raw = hi;
             let hi = f64::max(hi, params.puny);
             let hrmin = f64::min(2.0 * hi, hi + params.maxraft);
             let hrexp = params.mu_rdg * hi.sqrt();
             RidgeGeometry {
+                hi: raw,
                 hrmin,
                 hrmax: 0.0,
                 hrexp,

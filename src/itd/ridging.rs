@@ -123,6 +123,7 @@ pub fn ridge_column(
         );
         for n in 0..ncat {
             let g = ridge_geometry(opts.redistribution, p, aicen[n], vicen[n]);
+            ws.hi[n] = g.hi;
             ws.hrmin[n] = g.hrmin;
             ws.hrmax[n] = g.hrmax;
             ws.hrexp[n] = g.hrexp;
@@ -189,6 +190,7 @@ pub fn ridge_column(
             ws.ardg2n[n] += ardg2n;
             ws.virdgn[n] += virdgn;
             let g = RidgeGeometry {
+                hi: ws.hi[n],
                 hrmin: ws.hrmin[n],
                 hrmax: ws.hrmax[n],
                 hrexp: ws.hrexp[n],

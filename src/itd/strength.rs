@@ -118,6 +118,7 @@ pub fn strength_column(
     );
     for n in 0..ncat {
         let g = ridge_geometry(opts.redistribution, p, aicen[n], vicen[n]);
+        ws.hi[n] = g.hi;
         ws.hrmin[n] = g.hrmin;
         ws.hrmax[n] = g.hrmax;
         ws.hrexp[n] = g.hrexp;
@@ -137,8 +138,9 @@ pub fn strength_column(
     for n in 0..ncat {
         let ap = ws.apartic[n + 1];
         if aicen[n] > p.puny && ap > 0.0 {
-            let hi = vicen[n] / aicen[n];
+            let hi = ws.hi[n];
             let g = super::redistribution::RidgeGeometry {
+                hi,
                 hrmin: ws.hrmin[n],
                 hrmax: ws.hrmax[n],
                 hrexp: ws.hrexp[n],
