@@ -25,6 +25,21 @@ pub fn participation(
     gsum: &mut [f64],
     apartic: &mut [f64],
 ) {
+    let mut cache = (f64::NAN, f64::NAN);
+    participation_cached(kind, params, aice0, aicen, gsum, apartic, &mut cache);
+}
+
+/// As [`participation`], with `cache` = (a*, 1/(1 − e^{−1/a*})) kept between calls so the
+/// constant is not recomputed for every column (same numbers).
+pub(crate) fn participation_cached(
+    kind: Participation,
+    params: &ItdParams,
+    aice0: f64,
+    aicen: &[f64],
+    gsum: &mut [f64],
+    apartic: &mut [f64],
+    cache: &mut (f64, f64),
+) {
     let ncat = aicen.len();
     debug_assert!(gsum.len() == ncat + 2 && apartic.len() == ncat + 1);
     let puny = params.puny;
@@ -60,10 +75,19 @@ pub fn participation(
         }
         Participation::Exponential => {
             let astari = 1.0 / params.astar;
-            let xtmp = 1.0 / (1.0 - (-astari).exp());
-            let mut prev = (-gsum[0] * astari).exp() * xtmp;
+            if cache.0 != params.astar {
+                *cache = (params.astar, 1.0 / (1.0 - (-astari).exp()));
+            }
+            let xtmp = cache.1;
+            // G(-1) = 0 and exp(-0) = 1 exactly.
+            let mut prev = xtmp;
             for n in 0..=ncat {
-                let cur = (-gsum[n + 1] * astari).exp() * xtmp;
+                // An empty category has G(n) = G(n-1): the same exponential, zero share.
+                let cur = if gsum[n + 1] == gsum[n] {
+                    prev
+                } else {
+                    (-gsum[n + 1] * astari).exp() * xtmp
+                };
                 apartic[n] = prev - cur;
                 prev = cur;
             }

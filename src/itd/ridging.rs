@@ -14,7 +14,7 @@ use ndarray::{ArrayView1, ArrayViewMut1, ArrayViewMut2, Axis};
 
 use super::bounds::validate_bounds;
 use super::params::{ItdParams, Participation, Redistribution};
-use super::participation::participation;
+use super::participation::participation_cached;
 use super::redistribution::{RidgeGeometry, category_fractions, net_to_gross, ridge_geometry};
 use super::{ColumnError, ItdError, Workspace, check_column, check_len};
 
@@ -113,13 +113,14 @@ pub fn ridge_column(
     loop {
         niter += 1;
         // ridge_itd
-        participation(
+        participation_cached(
             opts.participation,
             p,
             *aice0,
             aicen,
             &mut ws.gsum,
             &mut ws.apartic,
+            &mut ws.exp_cache,
         );
         for n in 0..ncat {
             let g = ridge_geometry(opts.redistribution, p, aicen[n], vicen[n]);

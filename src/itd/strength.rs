@@ -10,7 +10,7 @@ use ndarray::{ArrayView1, ArrayView2, ArrayViewMut1, Axis};
 
 use super::cf::{Cf, CfProvider};
 use super::params::{ItdParams, Participation, Redistribution, StrengthFormula};
-use super::participation::participation;
+use super::participation::participation_cached;
 use super::redistribution::{mean_square_ridge_thickness, net_to_gross, ridge_geometry};
 use super::{ColumnError, ItdError, Workspace, check_column, check_len};
 
@@ -108,13 +108,14 @@ pub fn strength_column(
         });
     }
 
-    participation(
+    participation_cached(
         opts.participation,
         p,
         aice0,
         aicen,
         &mut ws.gsum,
         &mut ws.apartic,
+        &mut ws.exp_cache,
     );
     for n in 0..ncat {
         let g = ridge_geometry(opts.redistribution, p, aicen[n], vicen[n]);
@@ -135,30 +136,37 @@ pub fn strength_column(
 
     let mut total = 0.0;
     let mut clamped = false;
-    for n in 0..ncat {
-        let ap = ws.apartic[n + 1];
-        if aicen[n] > p.puny && ap > 0.0 {
-            let hi = ws.hi[n];
-            let g = super::redistribution::RidgeGeometry {
-                hi,
-                hrmin: ws.hrmin[n],
-                hrmax: ws.hrmax[n],
-                hrexp: ws.hrexp[n],
-                krdg: ws.krdg[n],
-            };
-            let h2rdg = mean_square_ridge_thickness(opts.redistribution, &g);
-            let dh2rdg = -hi * hi + h2rdg / g.krdg;
-            match &opts.cf {
-                Cf::Constant(_) => total += ap * dh2rdg,
-                Cf::Table(t) => {
-                    let l = t.lookup(hi);
-                    clamped |= l.clamped;
-                    total += l.value * ap * dh2rdg;
+    let term = |ws: &Workspace, n: usize| {
+        let g = super::redistribution::RidgeGeometry {
+            hi: ws.hi[n],
+            hrmin: ws.hrmin[n],
+            hrmax: ws.hrmax[n],
+            hrexp: ws.hrexp[n],
+            krdg: ws.krdg[n],
+        };
+        let h2rdg = mean_square_ridge_thickness(opts.redistribution, &g);
+        -g.hi * g.hi + h2rdg / g.krdg
+    };
+    match &opts.cf {
+        Cf::Constant(_) => {
+            for n in 0..ncat {
+                let ap = ws.apartic[n + 1];
+                if aicen[n] > p.puny && ap > 0.0 {
+                    total += ap * term(ws, n);
                 }
-                Cf::Custom(c) => {
-                    let l = c.lookup(hi);
+            }
+        }
+        Cf::Table(_) | Cf::Custom(_) => {
+            for n in 0..ncat {
+                let ap = ws.apartic[n + 1];
+                if aicen[n] > p.puny && ap > 0.0 {
+                    let l = match &opts.cf {
+                        Cf::Table(t) => t.lookup(ws.hi[n]),
+                        Cf::Custom(c) => c.lookup(ws.hi[n]),
+                        Cf::Constant(_) => unreachable!(),
+                    };
                     clamped |= l.clamped;
-                    total += l.value * ap * dh2rdg;
+                    total += l.value * ap * term(ws, n);
                 }
             }
         }
