@@ -511,3 +511,31 @@ fn category_bounds_match_cice() {
     assert!(category_bounds(&CategoryBounds::User(vec![0.0, 1.0, 1.0]), 2).is_err());
     assert!(category_bounds(&CategoryBounds::User(vec![0.0, 1.0, 3.0]), 2).is_ok());
 }
+
+/// An empty middle category with CICE's default options (Icepack's `ridge_itd`: an empty
+/// category adds nothing to G, so its a_Pn is 0):
+/// aice0 = 0.05, aicen = (0.3, 0, 0.65), vicen = (0.3, 0, 1.95) m → h = (1, –, 3) m;
+/// G = (0.05, 0.35, 0.35, 1.0); a_P = (1 − e^{−1})/(1 − e^{−20}) = 0.6321205601314552,
+/// (e^{−1} − e^{−7})/(1 − e^{−20}) = 0.3669675599622644, 0, e^{−7} − e^{−20} = 9.1188e-4;
+/// k = (5, –, 3.0653841409022107); aksum = 0.9263090114550613;
+/// Σ a_Pn (⟨h_r²⟩/k − h²) = 0.36696756·5.8 + 9.1188e-4·27.39648874 = 2.153394155369802.
+/// P = 17 C_p 2.153394155369802 / 0.9263090114550613 = 18877.045148228273 N/m.
+#[test]
+fn empty_middle_category_by_hand() {
+    let mut ws = Workspace::new(3);
+    let s = strength_column(
+        &[0.3, 0.0, 0.65],
+        &[0.3, 0.0, 1.95],
+        Some(0.05),
+        &StrengthOptions::default(),
+        &mut ws,
+    )
+    .unwrap();
+    assert_eq!(ws.apartic()[2], 0.0);
+    assert_relative_eq!(
+        ws.apartic()[3],
+        9.118_799_062_804_184e-4,
+        max_relative = 1e-12
+    );
+    assert_relative_eq!(s.strength, 18_877.045_148_228_273, max_relative = 1e-12);
+}

@@ -14,6 +14,9 @@ use ndarray::{Array1, Array2};
 
 use crate::itd::{CfTable, ItdError};
 
+/// Dimensions of a variable: (name, length) in file order.
+pub type Dims = Vec<(String, usize)>;
+
 /// Errors of NetCDF input and output.
 #[derive(Debug, thiserror::Error)]
 pub enum NetcdfError {
@@ -449,10 +452,7 @@ pub const STRENGTH_META: FieldMeta<'static> = FieldMeta {
 };
 
 /// Reads one variable as `f64` with its dimensions (name, length).
-pub fn read_field(
-    path: &Path,
-    name: &str,
-) -> Result<(Vec<(String, usize)>, Vec<f64>), NetcdfError> {
+pub fn read_field(path: &Path, name: &str) -> Result<(Dims, Vec<f64>), NetcdfError> {
     let file = netcdf::open(path).map_err(nc_err(path))?;
     let v = file
         .variable(name)

@@ -10,6 +10,9 @@
 //!   a_Pn = (ΔG/G*)(2 − (G(n−1) + G(n))/G*) while G(n) < G*, truncated at G*.
 //! - Exponential: b ∝ exp(−G/a*), a_Pn = (e^{−G(n−1)/a*} − e^{−G(n)/a*}) / (1 − e^{−1/a*}).
 
+// Several parallel per-category arrays are indexed by the category number, as in CICE.
+#![allow(clippy::needless_range_loop)]
+
 use super::params::{ItdParams, Participation};
 
 /// Fills `apartic[0..=ncat]` (dimensionless, sums to 1 unless the column holds no area) from

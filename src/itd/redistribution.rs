@@ -8,6 +8,9 @@
 //! The ratio k = ⟨h_r⟩/h is the area lost per unit ridged area (area factor 1/k, volume
 //! factor 1), and 1 − 1/k is the net-to-gross closing contribution of that category.
 
+// Several parallel per-category arrays are indexed by the category number, as in CICE.
+#![allow(clippy::needless_range_loop)]
+
 use super::params::{ItdParams, Redistribution};
 
 /// Ridged-ice distribution from one category.

@@ -10,6 +10,9 @@
 //! and the step repeats (at most `nitermax` times) until the total area is 1 within `puny`.
 //! Area and volume are conserved to round-off; no category becomes negative.
 
+// Several parallel per-category arrays are indexed by the category number, as in CICE.
+#![allow(clippy::needless_range_loop)]
+
 use ndarray::{ArrayView1, ArrayViewMut1, ArrayViewMut2, Axis};
 
 use super::bounds::validate_bounds;

@@ -6,6 +6,9 @@
 //! C_p = g·ρ_i·(ρ_w − ρ_i)/(2ρ_w); with a C_f table, C_f(h_n) moves inside the sum.
 //! Hibler (1979): P = P*·V·exp(−C*(1 − A)), V = Σ vicen, A = Σ aicen.
 
+// Several parallel per-category arrays are indexed by the category number, as in CICE.
+#![allow(clippy::needless_range_loop)]
+
 use ndarray::{ArrayView1, ArrayView2, ArrayViewMut1, Axis};
 
 use super::cf::{Cf, CfProvider};
