@@ -105,6 +105,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         hin_max: Some(bounds.clone()),
         divu: None,
         shear: None,
+        valid: None,
+        fill_value: None,
     };
     let fields = [
         (
@@ -149,6 +151,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             hin_max: Some(&bounds),
             fields: &fields,
             global: &global,
+            fill: None,
         },
     )?;
     println!("wrote {}", out.display());

@@ -36,6 +36,8 @@ fn small_grid(bad: Option<f64>) -> ItdGrid {
         hin_max: None,
         divu: None,
         shear: None,
+        valid: None,
+        fill_value: None,
     }
 }
 
@@ -48,6 +50,7 @@ fn write_grid(path: &Path, g: &ItdGrid) {
             hin_max: Some(&[0.0, 1.0, 3.0]),
             fields: &[],
             global: &[],
+            fill: None,
         },
     )
     .unwrap();
@@ -333,8 +336,99 @@ fn write_output_rejects_wrong_field_length() {
             hin_max: None,
             fields: &[(meta, &data)],
             global: &[],
+            fill: None,
         },
     )
     .unwrap_err();
     assert!(matches!(e, NetcdfError::Shape { .. }));
+}
+
+/// A CICE-history-like file: `aicen(time, nc, nj, ni)` in single precision with
+/// `_FillValue = 1e30` on a land cell. The length-1 time dimension is dropped, the land cell is
+/// masked (fill on output), the other cells are computed.
+#[test]
+fn cice_like_file_with_time_and_land_fill() {
+    let p = tmp("cice_like.nc");
+    {
+        let mut f = netcdf::create_with(&p, netcdf::Options::_64BIT_OFFSET).unwrap();
+        for (n, l) in [("time", 1), ("nc", 2), ("nj", 2), ("ni", 3)] {
+            f.add_dimension(n, l).unwrap();
+        }
+        for n in ["aicen", "vicen"] {
+            let mut v = f
+                .add_variable::<f32>(n, &["time", "nc", "nj", "ni"])
+                .unwrap();
+            v.put_attribute("_FillValue", 1.0e30f32).unwrap();
+        }
+        f.enddef().unwrap();
+        // Category-major, 6 columns; column 1 (nj=0, ni=1) is land.
+        let mut a = vec![0.45f32; 12];
+        let mut v = vec![0.9f32; 12];
+        for k in [1usize, 7] {
+            a[k] = 1.0e30;
+            v[k] = 1.0e30;
+        }
+        f.variable_mut("aicen").unwrap().put_values(&a, ..).unwrap();
+        f.variable_mut("vicen").unwrap().put_values(&v, ..).unwrap();
+    }
+    let g = read_itd(&p).unwrap();
+    assert_eq!(g.ncat(), 2);
+    assert_eq!(
+        g.spatial_dims,
+        vec![("nj".to_string(), 2), ("ni".to_string(), 3)]
+    );
+    let valid = g.valid.clone().unwrap();
+    assert_eq!(valid.to_vec(), vec![true, false, true, true, true, true]);
+    assert_relative_eq!(g.fill_value.unwrap(), 1.0e30f32 as f64);
+
+    let out = tmp("cice_like_strength.nc");
+    let o = cli(&[
+        "strength",
+        "--input",
+        p.to_str().unwrap(),
+        "--output",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (_, s) = read_field(&out, "strength").unwrap();
+    assert_eq!(s[1], 1.0e30f32 as f64);
+    assert!(
+        s.iter()
+            .enumerate()
+            .all(|(c, x)| c == 1 || (x.is_finite() && *x > 0.0))
+    );
+    assert!(s[0] == s[5], "identical columns give identical strength");
+    let f = netcdf::open(&out).unwrap();
+    let fv: f64 = f
+        .variable("strength")
+        .unwrap()
+        .attribute_value("_FillValue")
+        .unwrap()
+        .unwrap()
+        .try_into()
+        .unwrap();
+    assert_eq!(fv, 1.0e30f32 as f64);
+
+    // A time dimension longer than 1 is refused, not mistaken for the categories.
+    let p2 = tmp("two_times.nc");
+    {
+        let mut f = netcdf::create_with(&p2, netcdf::Options::_64BIT_OFFSET).unwrap();
+        for (n, l) in [("time", 2), ("nc", 2), ("ni", 3)] {
+            f.add_dimension(n, l).unwrap();
+        }
+        for n in ["aicen", "vicen"] {
+            f.add_variable::<f64>(n, &["time", "nc", "ni"]).unwrap();
+        }
+        f.enddef().unwrap();
+        f.variable_mut("aicen")
+            .unwrap()
+            .put_values(&[0.4; 12], ..)
+            .unwrap();
+        f.variable_mut("vicen")
+            .unwrap()
+            .put_values(&[0.4; 12], ..)
+            .unwrap();
+    }
+    let e = read_itd(&p2).unwrap_err();
+    assert!(e.to_string().contains("time"), "{e}");
 }

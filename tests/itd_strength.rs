@@ -539,3 +539,25 @@ fn empty_middle_category_by_hand() {
     );
     assert_relative_eq!(s.strength, 18_877.045_148_228_273, max_relative = 1e-12);
 }
+
+#[test]
+fn masked_columns_get_the_fill_value_and_are_not_validated() {
+    let mut aicen = Array2::from_elem((2, 3), 0.5);
+    aicen[[0, 1]] = 1.0e30; // land / missing
+    let vicen = Array2::from_elem((2, 3), 0.5);
+    let valid = Array1::from(vec![true, false, true]);
+    let mut out = Array1::zeros(3);
+    let s = pressridge::itd::strength_batch_masked(
+        aicen.view(),
+        vicen.view(),
+        None,
+        Some(valid.view()),
+        -1.0,
+        &StrengthOptions::default(),
+        out.view_mut(),
+    )
+    .unwrap();
+    assert_eq!(s.columns, 2);
+    assert_eq!(out[1], -1.0);
+    assert!(out[0] > 0.0 && out[0] == out[2]);
+}

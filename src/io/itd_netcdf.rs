@@ -90,6 +90,11 @@ pub struct ItdGrid {
     pub divu: Option<Array1<f64>>,
     /// Shear term of the ridging closing rate (1/s), if present.
     pub shear: Option<Array1<f64>>,
+    /// Columns holding data (false where `aicen`, `vicen` or `aice0` equals its
+    /// `_FillValue`/`missing_value`, e.g. land); `None` when no value is missing.
+    pub valid: Option<Array1<bool>>,
+    /// The fill value of `aicen` in the input (used for masked columns on output), if any.
+    pub fill_value: Option<f64>,
 }
 
 impl ItdGrid {
@@ -140,8 +145,32 @@ fn nc_err(path: &Path) -> impl Fn(netcdf::Error) -> NetcdfError + '_ {
     }
 }
 
+/// Dimensions of `v`, without a leading time dimension of length 1 (named `time` or `t`, or
+/// unlimited), as in CICE history files `aicen(time, nc, nj, ni)`.
 fn dims_of(v: &netcdf::Variable<'_>) -> Vec<(String, usize)> {
-    v.dimensions().iter().map(|d| (d.name(), d.len())).collect()
+    let d = v.dimensions();
+    let skip = usize::from(
+        d.len() > 1
+            && d[0].len() == 1
+            && (d[0].is_unlimited() || d[0].name() == "time" || d[0].name() == "t"),
+    );
+    d[skip..].iter().map(|d| (d.name(), d.len())).collect()
+}
+
+/// The `_FillValue` (else `missing_value`) attribute of `v`, as f64.
+fn fill_of(v: &netcdf::Variable<'_>) -> Option<f64> {
+    ["_FillValue", "missing_value"].iter().find_map(|a| {
+        v.attribute_value(a)
+            .and_then(|r| r.ok())
+            .and_then(|x| f64::try_from(x).ok())
+    })
+}
+
+fn is_fill(x: f64, fill: Option<f64>) -> bool {
+    match fill {
+        Some(f) => x == f || (f.is_nan() && x.is_nan()),
+        None => false,
+    }
 }
 
 fn fmt_dims(d: &[(String, usize)]) -> String {
@@ -204,6 +233,23 @@ pub fn read_itd(path: &Path) -> Result<ItdGrid, NetcdfError> {
             found: fmt_dims(&vd),
         });
     }
+    if let Some(d0) = av.dimensions().first()
+        && (d0.is_unlimited() || d0.name() == "time" || d0.name() == "t")
+        && d0.len() > 1
+    {
+        return Err(NetcdfError::Shape {
+            path: path.to_path_buf(),
+            var: "aicen".into(),
+            expected:
+                "(ncat, spatial dimensions...), optionally after a time dimension of length 1"
+                    .into(),
+            found: format!(
+                "a leading `{}` dimension of length {}: select one time first",
+                d0.name(),
+                d0.len()
+            ),
+        });
+    }
     let ncat = ad[0].1;
     let spatial: Vec<(String, usize)> = ad[1..].to_vec();
     let ncol: usize = spatial.iter().map(|d| d.1).product();
@@ -211,6 +257,8 @@ pub fn read_itd(path: &Path) -> Result<ItdGrid, NetcdfError> {
         .expect("length checked by the library");
     let vicen = Array2::from_shape_vec((ncat, ncol), read_f64(path, &vv)?)
         .expect("length checked by the library");
+    let (afill, vfill) = (fill_of(&av), fill_of(&vv));
+    let a0fill = file.variable("aice0").as_ref().and_then(fill_of);
     let hin_max = match file.variable("hin_max") {
         None => None,
         Some(h) => {
@@ -226,15 +274,29 @@ pub fn read_itd(path: &Path) -> Result<ItdGrid, NetcdfError> {
             Some(vals)
         }
     };
+    let aice0 = read_spatial(path, &file, "aice0", &spatial)?;
+    let valid: Array1<bool> = (0..ncol)
+        .map(|c| {
+            !(aicen.column(c).iter().any(|&x| is_fill(x, afill))
+                || vicen.column(c).iter().any(|&x| is_fill(x, vfill))
+                || aice0.as_ref().is_some_and(|a| is_fill(a[c], a0fill)))
+        })
+        .collect();
     Ok(ItdGrid {
         ncat_dim: ad[0].0.clone(),
-        aice0: read_spatial(path, &file, "aice0", &spatial)?,
+        aice0,
         divu: read_spatial(path, &file, "divu", &spatial)?,
         shear: read_spatial(path, &file, "shear", &spatial)?,
         spatial_dims: spatial,
         aicen,
         vicen,
         hin_max,
+        fill_value: afill.or(vfill).or(a0fill),
+        valid: if valid.iter().all(|&v| v) {
+            None
+        } else {
+            Some(valid)
+        },
     })
 }
 
@@ -323,6 +385,9 @@ pub struct Output<'a> {
     pub fields: &'a [(FieldMeta<'a>, &'a [f64])],
     /// Global attributes (name, value): options used.
     pub global: &'a [(String, String)],
+    /// Fill value for masked columns (`grid.valid` false): written as `_FillValue` of every
+    /// gridded variable and into the computed `aice0` of masked columns.
+    pub fill: Option<f64>,
 }
 
 /// Writes `out` to a new file at `path` in the NetCDF 64-bit-offset format (readable by
@@ -354,7 +419,12 @@ pub fn write_output(path: &Path, out: &Output<'_>) -> Result<(), NetcdfError> {
     let v = g.vicen.as_standard_layout().into_owned();
     let aice0: Vec<f64> = match &g.aice0 {
         Some(a0) => a0.to_vec(),
-        None => (0..ncol).map(|c| 1.0 - g.aicen.column(c).sum()).collect(),
+        None => (0..ncol)
+            .map(|c| match (&g.valid, out.fill) {
+                (Some(v), Some(f)) if !v[c] => f,
+                _ => 1.0 - g.aicen.column(c).sum(),
+            })
+            .collect(),
     };
     let mut items: Vec<(FieldMeta<'_>, Vec<&str>, &[f64])> = Vec::new();
     if out.write_itd {
@@ -422,6 +492,11 @@ pub fn write_output(path: &Path, out: &Output<'_>) -> Result<(), NetcdfError> {
         if let Some(s) = meta.standard_name {
             var.put_attribute("standard_name", s).map_err(&e)?;
         }
+        if let Some(fill) = out.fill
+            && meta.name != "hin_max"
+        {
+            var.put_attribute("_FillValue", fill).map_err(&e)?;
+        }
     }
     f.add_attribute("Conventions", "CF-1.8").map_err(&e)?;
     f.add_attribute(
@@ -442,6 +517,9 @@ pub fn write_output(path: &Path, out: &Output<'_>) -> Result<(), NetcdfError> {
     f.close().map_err(&e)?;
     Ok(())
 }
+
+/// NetCDF's default fill value for doubles (`NC_FILL_DOUBLE`).
+pub const NC_FILL_DOUBLE: f64 = 9.969_209_968_386_869e36;
 
 /// Metadata of the `strength` output field (N/m).
 pub const STRENGTH_META: FieldMeta<'static> = FieldMeta {
@@ -467,4 +545,16 @@ pub fn read_field(path: &Path, name: &str) -> Result<(Dims, Vec<f64>), NetcdfErr
 pub fn has_variable(path: &Path, name: &str) -> Result<bool, NetcdfError> {
     let file = netcdf::open(path).map_err(nc_err(path))?;
     Ok(file.variable(name).is_some())
+}
+
+/// The `_FillValue` (else `missing_value`) of variable `name`, if it has one.
+pub fn read_fill(path: &Path, name: &str) -> Result<Option<f64>, NetcdfError> {
+    let file = netcdf::open(path).map_err(nc_err(path))?;
+    let v = file
+        .variable(name)
+        .ok_or_else(|| NetcdfError::MissingVariable {
+            path: path.to_path_buf(),
+            var: name.into(),
+        })?;
+    Ok(fill_of(&v))
 }

@@ -25,10 +25,12 @@ pub use bounds::{CategoryBounds, category_bounds};
 pub use cf::{Cf, CfLookup, CfPreset, CfProvider, CfTable};
 pub use params::{ItdParams, Participation, Redistribution, StrengthFormula};
 pub use ridging::{
-    RidgeDiagnostics, RidgeForcing, RidgeOptions, RidgeRatesMut, ridge_batch, ridge_column,
+    RidgeDiagnostics, RidgeForcing, RidgeOptions, RidgeRatesMut, ridge_batch, ridge_batch_masked,
+    ridge_column,
 };
 pub use strength::{
-    BatchSummary, ColumnStrength, StrengthOptions, strength_batch, strength_column,
+    BatchSummary, ColumnStrength, StrengthOptions, strength_batch, strength_batch_masked,
+    strength_column,
 };
 
 /// What is wrong with one column (no column index: see [`ItdError::Column`]).

@@ -286,12 +286,43 @@ pub struct RidgeRatesMut<'a> {
 /// it have been updated, the bad one and those after are unchanged.
 #[allow(clippy::too_many_arguments)]
 pub fn ridge_batch(
+    aicen: ArrayViewMut2<f64>,
+    vicen: ArrayViewMut2<f64>,
+    aice0: ArrayViewMut1<f64>,
+    hin_max: &[f64],
+    convergence: ArrayView1<f64>,
+    shear: ArrayView1<f64>,
+    dt: f64,
+    opts: &RidgeOptions,
+    rates: RidgeRatesMut<'_>,
+) -> Result<(), ItdError> {
+    ridge_batch_masked(
+        aicen,
+        vicen,
+        aice0,
+        hin_max,
+        convergence,
+        shear,
+        None,
+        f64::NAN,
+        dt,
+        opts,
+        rates,
+    )
+}
+
+/// As [`ridge_batch`], leaving the columns where `valid[c]` is false (land, missing data)
+/// untouched and unvalidated; their rates are set to `fill`.
+#[allow(clippy::too_many_arguments)]
+pub fn ridge_batch_masked(
     mut aicen: ArrayViewMut2<f64>,
     mut vicen: ArrayViewMut2<f64>,
     mut aice0: ArrayViewMut1<f64>,
     hin_max: &[f64],
     convergence: ArrayView1<f64>,
     shear: ArrayView1<f64>,
+    valid: Option<ArrayView1<bool>>,
+    fill: f64,
     dt: f64,
     opts: &RidgeOptions,
     rates: RidgeRatesMut<'_>,
@@ -325,10 +356,23 @@ pub fn ridge_batch(
     ] {
         check_len(var, l, ncol)?;
     }
+    if let Some(m) = &valid {
+        check_len("valid", m.len(), ncol)?;
+    }
     let mut ws = Workspace::new(ncat);
     let mut abuf = vec![0.0; ncat];
     let mut vbuf = vec![0.0; ncat];
     for c in 0..ncol {
+        if let Some(m) = &valid
+            && !m[c]
+        {
+            closing[c] = fill;
+            opening[c] = fill;
+            dardg1dt[c] = fill;
+            dardg2dt[c] = fill;
+            dvirdgdt[c] = fill;
+            continue;
+        }
         let mut acol = aicen.index_axis_mut(Axis(1), c);
         let mut vcol = vicen.index_axis_mut(Axis(1), c);
         abuf.iter_mut().zip(acol.iter()).for_each(|(d, s)| *d = *s);

@@ -205,6 +205,21 @@ pub fn strength_batch(
     vicen: ArrayView2<f64>,
     aice0: Option<ArrayView1<f64>>,
     opts: &StrengthOptions,
+    out: ArrayViewMut1<f64>,
+) -> Result<BatchSummary, ItdError> {
+    strength_batch_masked(aicen, vicen, aice0, None, f64::NAN, opts, out)
+}
+
+/// As [`strength_batch`], skipping the columns where `valid[c]` is false (land, missing
+/// data): they get `fill` in `out` and are neither validated nor counted in
+/// [`BatchSummary::columns`].
+pub fn strength_batch_masked(
+    aicen: ArrayView2<f64>,
+    vicen: ArrayView2<f64>,
+    aice0: Option<ArrayView1<f64>>,
+    valid: Option<ArrayView1<bool>>,
+    fill: f64,
+    opts: &StrengthOptions,
     mut out: ArrayViewMut1<f64>,
 ) -> Result<BatchSummary, ItdError> {
     opts.validate()?;
@@ -220,6 +235,9 @@ pub fn strength_batch(
         check_len("aice0", a0.len(), ncol)?;
     }
     check_len("strength", out.len(), ncol)?;
+    if let Some(m) = &valid {
+        check_len("valid", m.len(), ncol)?;
+    }
     let mut ws = Workspace::new(ncat);
     let mut abuf = vec![0.0; ncat];
     let mut vbuf = vec![0.0; ncat];
@@ -228,6 +246,13 @@ pub fn strength_batch(
         cf_clamped_columns: 0,
     };
     for c in 0..ncol {
+        if let Some(m) = &valid
+            && !m[c]
+        {
+            out[c] = fill;
+            summary.columns -= 1;
+            continue;
+        }
         let acol = aicen.index_axis(Axis(1), c);
         let vcol = vicen.index_axis(Axis(1), c);
         let a: &[f64] = match acol.as_slice() {

@@ -7,8 +7,8 @@
 use std::path::PathBuf;
 
 use ndarray::Array1;
-use pressridge::io::itd_netcdf::{has_variable, read_field, read_itd};
-use pressridge::itd::strength_batch;
+use pressridge::io::itd_netcdf::{has_variable, read_field, read_fill, read_itd};
+use pressridge::itd::strength_batch_masked;
 use pressridge::plot::strength_map::{Panel, draw_strength_maps};
 
 use crate::BoxError;
@@ -71,12 +71,18 @@ pub fn run(args: Args) -> Result<(), BoxError> {
             )
             .into());
         }
-        let (dims, v) = read_field(&args.input, "strength")?;
+        let (dims, mut v) = read_field(&args.input, "strength")?;
+        // Masked (fill) cells are drawn grey.
+        if let Some(f) = read_fill(&args.input, "strength")? {
+            v.iter_mut()
+                .filter(|x| **x == f)
+                .for_each(|x| *x = f64::NAN);
+        }
         if dims.len() != 2 {
             return Err(format!("`strength` must be 2-D, has dimensions {dims:?}").into());
         }
         (ny, nx) = (dims[0].1, dims[1].1);
-        ice = v.iter().map(|x| *x > 0.0).collect();
+        ice = v.iter().map(|x| x.is_finite() && *x > 0.0).collect();
         titles.push("strength".to_string());
         fields.push(v);
     } else {
@@ -102,10 +108,12 @@ pub fn run(args: Args) -> Result<(), BoxError> {
                 None,
             )?;
             let mut p = Array1::zeros(grid.ncol());
-            strength_batch(
+            strength_batch_masked(
                 grid.aicen.view(),
                 grid.vicen.view(),
                 grid.aice0.as_ref().map(|a| a.view()),
+                grid.valid.as_ref().map(|v| v.view()),
+                f64::NAN,
                 &o,
                 p.view_mut(),
             )

@@ -3,8 +3,10 @@
 use std::path::PathBuf;
 
 use ndarray::Array1;
-use pressridge::io::itd_netcdf::{FieldMeta, Output, read_itd, write_output};
-use pressridge::itd::{CategoryBounds, RidgeOptions, RidgeRatesMut, category_bounds, ridge_batch};
+use pressridge::io::itd_netcdf::{FieldMeta, NC_FILL_DOUBLE, Output, read_itd, write_output};
+use pressridge::itd::{
+    CategoryBounds, RidgeOptions, RidgeRatesMut, category_bounds, ridge_batch_masked,
+};
 
 use crate::BoxError;
 use crate::strength::{PartArg, RedistArg};
@@ -63,6 +65,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         Some(a) => a.clone(),
         None => Array1::from_iter((0..ncol).map(|c| 1.0 - grid.aicen.column(c).sum())),
     };
+    let fill = grid.fill_value.unwrap_or(NC_FILL_DOUBLE);
     let o = RidgeOptions {
         participation: args.participation.into(),
         redistribution: args.redistribution.into(),
@@ -71,13 +74,15 @@ pub fn run(args: Args) -> Result<(), BoxError> {
     let mut rates: [Array1<f64>; 5] = std::array::from_fn(|_| Array1::zeros(ncol));
     {
         let [c, op, d1, d2, dv] = &mut rates;
-        ridge_batch(
+        ridge_batch_masked(
             grid.aicen.view_mut(),
             grid.vicen.view_mut(),
             aice0.view_mut(),
             &hin_max,
             conv.view(),
             shear.view(),
+            grid.valid.as_ref().map(|v| v.view()),
+            fill,
             args.dt,
             &o,
             RidgeRatesMut {
@@ -89,6 +94,13 @@ pub fn run(args: Args) -> Result<(), BoxError> {
             },
         )
         .map_err(|e| grid.locate(&args.input, e))?;
+    }
+    if let Some(v) = &grid.valid {
+        for (a, ok) in aice0.iter_mut().zip(v) {
+            if !ok {
+                *a = fill;
+            }
+        }
     }
     grid.aice0 = Some(aice0);
     let meta = [
@@ -143,6 +155,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
             hin_max: Some(&hin_max),
             fields: &fields,
             global: &global,
+            fill: grid.valid.as_ref().map(|_| fill),
         },
     )?;
     Ok(())

@@ -5,9 +5,12 @@ use std::sync::Arc;
 
 use clap::ValueEnum;
 use ndarray::Array1;
-use pressridge::io::itd_netcdf::{Output, STRENGTH_META, read_cf_table, read_itd, write_output};
+use pressridge::io::itd_netcdf::{
+    NC_FILL_DOUBLE, Output, STRENGTH_META, read_cf_table, read_itd, write_output,
+};
 use pressridge::itd::{
-    Cf, CfPreset, Participation, Redistribution, StrengthFormula, StrengthOptions, strength_batch,
+    Cf, CfPreset, Participation, Redistribution, StrengthFormula, StrengthOptions,
+    strength_batch_masked,
 };
 
 use crate::BoxError;
@@ -150,10 +153,13 @@ pub fn run(args: Args) -> Result<(), BoxError> {
     )?;
     let grid = read_itd(&args.input)?;
     let mut p = Array1::zeros(grid.ncol());
-    let summary = strength_batch(
+    let fill = grid.fill_value.unwrap_or(NC_FILL_DOUBLE);
+    let summary = strength_batch_masked(
         grid.aicen.view(),
         grid.vicen.view(),
         grid.aice0.as_ref().map(|a| a.view()),
+        grid.valid.as_ref().map(|v| v.view()),
+        fill,
         &o,
         p.view_mut(),
     )
@@ -178,6 +184,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
             hin_max: None,
             fields: &[(STRENGTH_META, p.as_slice().expect("contiguous"))],
             global: &global,
+            fill: grid.valid.as_ref().map(|_| fill),
         },
     )?;
     Ok(())
