@@ -277,6 +277,62 @@ fn cli_strength_ridge_step_and_plot() {
         .unwrap();
     assert_eq!(cf, "constant 15");
 
+    // Parameter override and a C_f table (values clamped outside 0.5–2 m, and flagged).
+    let out2 = tmp("strength_mu.nc");
+    let o = cli(&[
+        "strength",
+        "--input",
+        s,
+        "--output",
+        out2.to_str().unwrap(),
+        "--param",
+        "mu_rdg=4",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (_, p4) = read_field(&out2, "strength").unwrap();
+    let (_, p17) = {
+        let o17 = tmp("strength_17.nc");
+        assert!(
+            cli(&["strength", "--input", s, "--output", o17.to_str().unwrap()])
+                .status
+                .success()
+        );
+        read_field(&o17, "strength").unwrap()
+    };
+    assert!(p4.iter().zip(&p17).all(|(a, b)| a >= b) && p4.iter().zip(&p17).any(|(a, b)| a > b));
+    let bad = cli(&[
+        "strength",
+        "--input",
+        s,
+        "--output",
+        out2.to_str().unwrap(),
+        "--param",
+        "mu_rdg=-1",
+    ]);
+    assert!(!bad.status.success() && String::from_utf8_lossy(&bad.stderr).contains("mu_rdg"));
+    let table = tmp("cf_table.nc");
+    write_cf_table(
+        &table,
+        &CfTable::new(vec![0.5, 2.0], vec![17.0, 17.0]).unwrap(),
+    )
+    .unwrap();
+    let out3 = tmp("strength_table.nc");
+    let o = cli(&[
+        "strength",
+        "--input",
+        s,
+        "--output",
+        out3.to_str().unwrap(),
+        "--cf-table",
+        table.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("clamped"));
+    let (_, pt) = read_field(&out3, "strength").unwrap();
+    for (a, b) in pt.iter().zip(&p17) {
+        assert_relative_eq!(*a, *b, max_relative = 1e-12, epsilon = 1e-9);
+    }
+
     let rs = tmp("ridged.nc");
     let o = cli(&[
         "ridge-step",

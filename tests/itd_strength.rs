@@ -561,3 +561,38 @@ fn masked_columns_get_the_fill_value_and_are_not_validated() {
     assert_eq!(out[1], -1.0);
     assert!(out[0] > 0.0 && out[0] == out[2]);
 }
+
+#[test]
+fn parameters_are_overridable_by_name() {
+    let a = [0.08, 0.25, 0.35, 0.2, 0.1];
+    let v = [0.024, 0.25, 0.63, 0.6, 0.45];
+    let base = p_of(&a, &v, 0.02, &StrengthOptions::default());
+    let mut params = ItdParams::default();
+    params.set("mu_rdg", 4.0).unwrap();
+    assert_eq!(params.mu_rdg, 4.0);
+    // Wider ridges (μ = 4 m^½, ~ H* = 50 m in Lipscomb et al. 2007) make stronger ice.
+    let o = StrengthOptions {
+        params,
+        ..Default::default()
+    };
+    assert!(p_of(&a, &v, 0.02, &o) > base);
+    // Doubling g doubles C_p and hence P.
+    let mut params = ItdParams::default();
+    params.set("gravit", 2.0 * 9.80616).unwrap();
+    let o = StrengthOptions {
+        params,
+        ..Default::default()
+    };
+    assert_relative_eq!(p_of(&a, &v, 0.02, &o), 2.0 * base, max_relative = 1e-14);
+    let mut params = ItdParams::default();
+    assert!(params.set("no_such", 1.0).is_err());
+    assert!(params.set("hstar", -1.0).is_err());
+    assert!(params.set("nitermax", 2.5).is_err());
+    assert!(params.set("rhoi", 2000.0).is_err());
+    assert_eq!(
+        params,
+        ItdParams::default(),
+        "a rejected value changes nothing"
+    );
+    assert!(params.set("cs", 0.0).is_ok());
+}

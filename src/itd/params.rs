@@ -79,6 +79,81 @@ impl Default for ItdParams {
 }
 
 impl ItdParams {
+    /// Names accepted by [`ItdParams::set`] (the field names).
+    pub const NAMES: &'static [&'static str] = &[
+        "rhoi",
+        "rhow",
+        "gravit",
+        "gstar",
+        "astar",
+        "hstar",
+        "maxraft",
+        "mu_rdg",
+        "cs",
+        "pstar",
+        "cstar",
+        "puny",
+        "exp_argmax",
+        "big",
+        "nitermax",
+        "area_tolerance",
+        "max_area_before_ridging",
+    ];
+
+    /// Overrides one parameter by its field name (e.g. `"mu_rdg"`, units as the field).
+    /// Rejects unknown names and values that are not finite and positive (`cs` and
+    /// `maxraft` may be 0; `nitermax` must be a whole number ≥ 1; `rhow` must exceed `rhoi`).
+    pub fn set(&mut self, name: &str, value: f64) -> Result<(), super::ItdError> {
+        let bad = |reason: &'static str| super::ItdError::Parameter {
+            name: Self::NAMES
+                .iter()
+                .find(|n| **n == name)
+                .copied()
+                .unwrap_or("unknown"),
+            value,
+            reason,
+        };
+        if !value.is_finite() {
+            return Err(bad("must be finite"));
+        }
+        let may_be_zero = matches!(name, "cs" | "maxraft");
+        if value < 0.0 || (value == 0.0 && !may_be_zero) {
+            return Err(bad("must be positive"));
+        }
+        // Work on a copy so that a rejected value leaves `self` unchanged.
+        let mut new = *self;
+        match name {
+            "rhoi" => new.rhoi = value,
+            "rhow" => new.rhow = value,
+            "gravit" => new.gravit = value,
+            "gstar" => new.gstar = value,
+            "astar" => new.astar = value,
+            "hstar" => new.hstar = value,
+            "maxraft" => new.maxraft = value,
+            "mu_rdg" => new.mu_rdg = value,
+            "cs" => new.cs = value,
+            "pstar" => new.pstar = value,
+            "cstar" => new.cstar = value,
+            "puny" => new.puny = value,
+            "exp_argmax" => new.exp_argmax = value,
+            "big" => new.big = value,
+            "nitermax" => {
+                if value.fract() != 0.0 || value < 1.0 {
+                    return Err(bad("must be a whole number >= 1"));
+                }
+                new.nitermax = value as usize;
+            }
+            "area_tolerance" => new.area_tolerance = value,
+            "max_area_before_ridging" => new.max_area_before_ridging = value,
+            _ => return Err(bad("unknown parameter name (see ItdParams::NAMES)")),
+        }
+        if new.rhow <= new.rhoi {
+            return Err(bad("rhow must exceed rhoi"));
+        }
+        *self = new;
+        Ok(())
+    }
+
     /// Rothrock (1975) potential-energy coefficient C_p = g·ρ_i·(ρ_w − ρ_i)/(2ρ_w) (kg m⁻² s⁻²,
     /// i.e. N/m³), evaluated in the same order as Icepack's `Cp` so results match to the bit.
     pub fn cp(&self) -> f64 {

@@ -9,7 +9,7 @@ use pressridge::itd::{
 };
 
 use crate::BoxError;
-use crate::strength::{PartArg, RedistArg};
+use crate::strength::{PartArg, RedistArg, describe_params, parse_params};
 
 /// Arguments of `pressridge ridge-step`.
 #[derive(clap::Args, Debug)]
@@ -35,6 +35,9 @@ pub struct Args {
     /// Ridged-ice redistribution.
     #[arg(long, value_enum, default_value = "exponential")]
     pub redistribution: RedistArg,
+    /// Override a parameter, NAME=VALUE (repeatable), e.g. `--param cs=0.5`.
+    #[arg(long = "param", value_name = "NAME=VALUE")]
+    pub params: Vec<String>,
 }
 
 /// Runs `pressridge ridge-step`.
@@ -69,7 +72,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
     let o = RidgeOptions {
         participation: args.participation.into(),
         redistribution: args.redistribution.into(),
-        ..Default::default()
+        params: parse_params(&args.params)?,
     };
     let mut rates: [Array1<f64>; 5] = std::array::from_fn(|_| Array1::zeros(ncol));
     {
@@ -146,6 +149,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
                 .map_or("from input (or 0)".into(), |s| format!("{s} s-1")),
         ),
         ("input".to_string(), args.input.display().to_string()),
+        describe_params(&args.params),
     ];
     write_output(
         &args.output,

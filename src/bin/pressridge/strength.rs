@@ -9,7 +9,7 @@ use pressridge::io::itd_netcdf::{
     NC_FILL_DOUBLE, Output, STRENGTH_META, read_cf_table, read_itd, write_output,
 };
 use pressridge::itd::{
-    Cf, CfPreset, Participation, Redistribution, StrengthFormula, StrengthOptions,
+    Cf, CfPreset, ItdParams, Participation, Redistribution, StrengthFormula, StrengthOptions,
     strength_batch_masked,
 };
 
@@ -97,6 +97,38 @@ pub struct Args {
     /// NetCDF table of C_f (`cf`) against ridging-ice thickness (`thickness`, m).
     #[arg(long)]
     pub cf_table: Option<PathBuf>,
+    /// Override a parameter, NAME=VALUE (repeatable), e.g. `--param mu_rdg=4`; names as the
+    /// fields of `pressridge::itd::ItdParams`.
+    #[arg(long = "param", value_name = "NAME=VALUE")]
+    pub params: Vec<String>,
+}
+
+/// Applies `NAME=VALUE` overrides to CICE's default parameters.
+pub fn parse_params(list: &[String]) -> Result<ItdParams, BoxError> {
+    let mut p = ItdParams::default();
+    for item in list {
+        let (name, value) = item
+            .split_once('=')
+            .ok_or_else(|| format!("--param {item}: expected NAME=VALUE"))?;
+        let value: f64 = value
+            .trim()
+            .parse()
+            .map_err(|_| format!("--param {item}: `{value}` is not a number"))?;
+        p.set(name.trim(), value)?;
+    }
+    Ok(p)
+}
+
+/// Global attributes listing the parameters that differ from CICE's defaults.
+pub fn describe_params(list: &[String]) -> (String, String) {
+    (
+        "parameter_overrides".into(),
+        if list.is_empty() {
+            "none".into()
+        } else {
+            list.join(", ")
+        },
+    )
 }
 
 /// Builds the strength options from the shared flags.
@@ -143,7 +175,7 @@ pub fn describe(o: &StrengthOptions) -> Vec<(String, String)> {
 
 /// Runs `pressridge strength`.
 pub fn run(args: Args) -> Result<(), BoxError> {
-    let o = options(
+    let mut o = options(
         args.participation,
         args.redistribution,
         args.strength,
@@ -151,6 +183,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         args.cf_preset,
         args.cf_table.as_deref(),
     )?;
+    o.params = parse_params(&args.params)?;
     let grid = read_itd(&args.input)?;
     let mut p = Array1::zeros(grid.ncol());
     let fill = grid.fill_value.unwrap_or(NC_FILL_DOUBLE);
@@ -171,6 +204,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         );
     }
     let mut global = describe(&o);
+    global.push(describe_params(&args.params));
     global.push(("input".into(), args.input.display().to_string()));
     global.push((
         "cf_clamped_columns".into(),
