@@ -15,6 +15,7 @@
 
 pub mod bounds;
 pub mod cf;
+mod lanes;
 pub mod params;
 pub mod participation;
 pub mod redistribution;

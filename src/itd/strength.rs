@@ -12,6 +12,7 @@
 use ndarray::{ArrayView1, ArrayView2, ArrayViewMut1, Axis};
 
 use super::cf::{Cf, CfProvider};
+use super::lanes;
 use super::params::{ItdParams, Participation, Redistribution, StrengthFormula};
 use super::participation::participation_cached;
 use super::redistribution::{mean_square_ridge_thickness, net_to_gross, ridge_geometry};
@@ -245,13 +246,13 @@ pub fn strength_batch_masked(
         columns: ncol,
         cf_clamped_columns: 0,
     };
-    for c in 0..ncol {
+    let mut scalar = |c: usize, out: &mut ArrayViewMut1<f64>| -> Result<(), ItdError> {
         if let Some(m) = &valid
             && !m[c]
         {
             out[c] = fill;
             summary.columns -= 1;
-            continue;
+            return Ok(());
         }
         let acol = aicen.index_axis(Axis(1), c);
         let vcol = vicen.index_axis(Axis(1), c);
@@ -274,6 +275,63 @@ pub fn strength_batch_masked(
             .map_err(|source| ItdError::Column { column: c, source })?;
         out[c] = r.strength;
         summary.cf_clamped_columns += usize::from(r.cf_clamped);
+        Ok(())
+    };
+
+    // Block path: Rothrock with a constant C_f, L columns at a time, same numbers.
+    let mut c = 0;
+    if let (StrengthFormula::Rothrock, Cf::Constant(cf)) = (opts.formula, &opts.cf)
+        && ncat <= lanes::MAX_NCAT
+    {
+        let p = &opts.params;
+        let xtmp = 1.0 / (1.0 - (-(1.0 / p.astar)).exp());
+        let mut b = lanes::Block::new();
+        while c + lanes::L <= ncol {
+            let masked = valid
+                .as_ref()
+                .is_some_and(|m| (c..c + lanes::L).any(|k| !m[k]));
+            let r = if masked {
+                None
+            } else {
+                for n in 0..ncat {
+                    for l in 0..lanes::L {
+                        b.a[n][l] = aicen[[n, c + l]];
+                        b.v[n][l] = vicen[[n, c + l]];
+                    }
+                }
+                if let Some(a0) = &aice0 {
+                    for l in 0..lanes::L {
+                        b.a0[l] = a0[c + l];
+                    }
+                }
+                lanes::strength_block(
+                    &b,
+                    ncat,
+                    aice0.is_some(),
+                    opts.participation,
+                    opts.redistribution,
+                    p,
+                    *cf,
+                    xtmp,
+                )
+            };
+            match r {
+                Some(vals) => {
+                    for l in 0..lanes::L {
+                        out[c + l] = vals[l];
+                    }
+                }
+                None => {
+                    for k in c..c + lanes::L {
+                        scalar(k, &mut out)?;
+                    }
+                }
+            }
+            c += lanes::L;
+        }
+    }
+    for k in c..ncol {
+        scalar(k, &mut out)?;
     }
     Ok(summary)
 }
