@@ -7,6 +7,8 @@
 // Several parallel per-category arrays are indexed by the category number, as in CICE.
 #![allow(clippy::needless_range_loop)]
 
+use std::cmp::Ordering;
+
 use super::params::{ItdParams, Participation, Redistribution};
 
 /// Columns per block.
@@ -34,6 +36,7 @@ impl Block {
 /// Strength of a block; `None` when any column needs the scalar path.
 /// `aice0_given`: whether `a0` holds aice0 or must be 1 − Σ aicen.
 #[inline(always)]
+#[allow(clippy::too_many_arguments)]
 fn kernel(
     b: &Block,
     ncat: usize,
@@ -84,7 +87,7 @@ fn kernel(
         }
     }
     for l in 0..L {
-        if !(g[ncat + 1][l] > 0.0) {
+        if g[ncat + 1][l].partial_cmp(&0.0) != Some(Ordering::Greater) {
             return None;
         }
     }
@@ -164,7 +167,7 @@ fn kernel(
     let mut out = [0.0; L];
     let cp = p.cp();
     for l in 0..L {
-        if !(aksum[l] > 0.0) {
+        if aksum[l].partial_cmp(&0.0) != Some(Ordering::Greater) {
             return None;
         }
         out[l] = cf * cp * total[l] / aksum[l];
