@@ -35,14 +35,13 @@ impl Block {
 
 /// Strength of a block; `None` when any column needs the scalar path.
 /// `aice0_given`: whether `a0` holds aice0 or must be 1 − Σ aicen.
+/// `T`: Thorndike participation (else exponential); `U`: uniform redistribution (else
+/// exponential). Monomorphised so that each option pair is a straight-line loop.
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
-fn kernel(
+fn kernel<const T: bool, const U: bool>(
     b: &Block,
     ncat: usize,
     aice0_given: bool,
-    part: Participation,
-    redist: Redistribution,
     p: &ItdParams,
     cf: f64,
     xtmp: f64,
@@ -103,8 +102,8 @@ fn kernel(
 
     // Participation a_Pn, n = 0..=ncat.
     let mut ap = [[0.0; L]; MAX_NCAT + 1];
-    match part {
-        Participation::Thorndike => {
+    match T {
+        true => {
             let gstar = p.gstar;
             let gstari = 1.0 / gstar;
             for n in 0..=ncat {
@@ -118,7 +117,7 @@ fn kernel(
                 }
             }
         }
-        Participation::Exponential => {
+        false => {
             let astari = 1.0 / p.astar;
             let mut prev = [xtmp; L];
             for n in 0..=ncat {
@@ -139,8 +138,8 @@ fn kernel(
             let (a, v) = (b.a[n][l], b.v[n][l]);
             let live = a > puny;
             let hi = v / a;
-            let (krdg, h2rdg) = match redist {
-                Redistribution::Uniform => {
+            let (krdg, h2rdg) = match U {
+                true => {
                     let hrmin = f64::min(2.0 * hi, hi + p.maxraft);
                     let hrmax = f64::max(2.0 * (p.hstar * hi).sqrt(), hrmin + puny);
                     let krdg = 0.5 * (hrmin + hrmax) / hi;
@@ -148,7 +147,7 @@ fn kernel(
                     let h2 = (1.0 / 3.0) * (cube(hrmax) - cube(hrmin)) / (hrmax - hrmin);
                     (krdg, h2)
                 }
-                Redistribution::Exponential => {
+                false => {
                     let hc = f64::max(hi, puny);
                     let hrmin = f64::min(2.0 * hc, hc + p.maxraft);
                     let hrexp = p.mu_rdg * hc.sqrt();
@@ -175,10 +174,9 @@ fn kernel(
     Some(out)
 }
 
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
+#[inline(always)]
 #[allow(clippy::too_many_arguments)]
-unsafe fn kernel_avx2(
+fn dispatch(
     b: &Block,
     ncat: usize,
     aice0_given: bool,
@@ -188,7 +186,30 @@ unsafe fn kernel_avx2(
     cf: f64,
     xtmp: f64,
 ) -> Option<[f64; L]> {
-    kernel(b, ncat, aice0_given, part, redist, p, cf, xtmp)
+    let thorndike = part == Participation::Thorndike;
+    let uniform = redist == Redistribution::Uniform;
+    match (thorndike, uniform) {
+        (true, true) => kernel::<true, true>(b, ncat, aice0_given, p, cf, xtmp),
+        (true, false) => kernel::<true, false>(b, ncat, aice0_given, p, cf, xtmp),
+        (false, true) => kernel::<false, true>(b, ncat, aice0_given, p, cf, xtmp),
+        (false, false) => kernel::<false, false>(b, ncat, aice0_given, p, cf, xtmp),
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[allow(clippy::too_many_arguments)]
+unsafe fn dispatch_avx2(
+    b: &Block,
+    ncat: usize,
+    aice0_given: bool,
+    part: Participation,
+    redist: Redistribution,
+    p: &ItdParams,
+    cf: f64,
+    xtmp: f64,
+) -> Option<[f64; L]> {
+    dispatch(b, ncat, aice0_given, part, redist, p, cf, xtmp)
 }
 
 /// Strength of one block (dispatching to AVX2 where the CPU has it; no FMA, so rounding is
@@ -208,8 +229,8 @@ pub(crate) fn strength_block(
     {
         if std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: the CPU supports AVX2 (checked just above).
-            return unsafe { kernel_avx2(b, ncat, aice0_given, part, redist, p, cf, xtmp) };
+            return unsafe { dispatch_avx2(b, ncat, aice0_given, part, redist, p, cf, xtmp) };
         }
     }
-    kernel(b, ncat, aice0_given, part, redist, p, cf, xtmp)
+    dispatch(b, ncat, aice0_given, part, redist, p, cf, xtmp)
 }
