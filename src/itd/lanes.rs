@@ -12,7 +12,7 @@ use std::cmp::Ordering;
 use super::params::{ItdParams, Participation, Redistribution};
 
 /// Columns per block.
-pub(crate) const L: usize = 4;
+pub(crate) const L: usize = 8;
 /// Largest number of categories the block kernel handles.
 pub(crate) const MAX_NCAT: usize = 16;
 
