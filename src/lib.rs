@@ -16,13 +16,16 @@
 //! - [`simulation`] — running a scene and summarising it;
 //! - [`observe`] — ridge profiles and metrics from a state;
 //! - [`campaign`] — seeded ensembles over parameter grids, resumable;
-//! - [`io`] — files (JSON states and summaries, CSV time series);
+//! - [`itd`] — thickness-distribution physics: category bounds, participation, ridged-ice
+//!   redistribution, ice strength, the ridging step, on plain per-column slices;
+//! - [`io`] — files (JSON states and summaries, CSV time series, NetCDF distributions);
 //! - [`plot`] — figures.
 //!
 
 pub mod campaign;
 pub mod dem;
 pub mod io;
+pub mod itd;
 pub mod observe;
 pub mod plot;
 pub mod scene;

@@ -1,5 +1,7 @@
-//! Reading and writing files. Physics modules never touch files; this module does.
+//! Reading and writing files. Physics modules never touch files; this module does. Only
+//! this module touches NetCDF.
 
+pub mod itd_netcdf;
 pub mod series;
 pub mod state;
 

@@ -9,6 +9,8 @@ pub mod series;
 
 use std::sync::OnceLock;
 
+pub mod strength_map;
+
 /// An error while drawing or writing a figure.
 #[derive(Debug, thiserror::Error)]
 pub enum PlotError {

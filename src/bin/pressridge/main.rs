@@ -7,8 +7,11 @@
 use clap::{Parser, Subcommand};
 
 mod campaign;
+mod plot_strength;
 mod render;
+mod ridge_step;
 mod simulate;
+mod strength;
 
 /// Error type of the subcommands: any error with a readable message.
 pub type BoxError = Box<dyn std::error::Error + Send + Sync>;
@@ -32,6 +35,12 @@ enum Command {
     Render(render::Args),
     /// Run a seeded ensemble over a parameter grid (resumable).
     Campaign(campaign::Args),
+    /// Ice strength P (N/m) of a gridded thickness distribution (NetCDF in and out).
+    Strength(strength::Args),
+    /// One ridging step on a gridded thickness distribution (NetCDF in and out).
+    RidgeStep(ridge_step::Args),
+    /// PNG map of ice strength on a 2-D grid.
+    PlotStrength(plot_strength::Args),
 }
 
 fn main() {
@@ -40,6 +49,9 @@ fn main() {
         Command::Simulate(a) => simulate::run(a),
         Command::Render(a) => render::run(a),
         Command::Campaign(a) => campaign::run(a),
+        Command::Strength(a) => strength::run(a),
+        Command::RidgeStep(a) => ridge_step::run(a),
+        Command::PlotStrength(a) => plot_strength::run(a),
     };
     if let Err(e) = result {
         eprintln!("pressridge: error: {e}");

@@ -1,0 +1,140 @@
+//! `pressridge plot-strength`: a PNG map of ice strength on a 2-D grid.
+//!
+//! Either plots the `strength` variable of a file written by `pressridge strength`, or, with
+//! one or more `--cf`, computes the strength of a thickness-distribution file for each C_f
+//! and draws the panels side by side on one colour scale, printing a summary table.
+
+use std::path::PathBuf;
+
+use ndarray::Array1;
+use pressridge::io::itd_netcdf::{has_variable, read_field, read_fill, read_itd};
+use pressridge::itd::strength_batch_masked;
+use pressridge::plot::strength_map::{Panel, draw_strength_maps};
+
+use crate::BoxError;
+use crate::strength::{FormulaArg, PartArg, RedistArg, options};
+
+/// Arguments of `pressridge plot-strength`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// A file with `strength` (from `pressridge strength`), or a thickness distribution with
+    /// `--cf`.
+    #[arg(long)]
+    pub input: PathBuf,
+    /// Output PNG.
+    #[arg(long)]
+    pub output: PathBuf,
+    /// Compute and draw the Rothrock strength for this C_f (repeatable: one panel each).
+    #[arg(long)]
+    pub cf: Vec<f64>,
+    /// Participation function (with --cf).
+    #[arg(long, value_enum, default_value = "exponential")]
+    pub participation: PartArg,
+    /// Ridged-ice redistribution (with --cf).
+    #[arg(long, value_enum, default_value = "exponential")]
+    pub redistribution: RedistArg,
+}
+
+fn summary(label: &str, v: &[f64], ice: &[bool]) -> String {
+    let mut s: Vec<f64> = v
+        .iter()
+        .zip(ice)
+        .filter(|(_, i)| **i)
+        .map(|(x, _)| *x)
+        .collect();
+    s.sort_by(f64::total_cmp);
+    if s.is_empty() {
+        return format!("| {label} | 0 | - | - | - | - |");
+    }
+    let mean = s.iter().sum::<f64>() / s.len() as f64;
+    let med = s[s.len() / 2];
+    format!(
+        "| {label} | {} | {:.1} | {:.1} | {:.1} | {:.1} |",
+        s.len(),
+        s[0] / 1e3,
+        med / 1e3,
+        mean / 1e3,
+        s[s.len() - 1] / 1e3
+    )
+}
+
+/// Runs `pressridge plot-strength`.
+pub fn run(args: Args) -> Result<(), BoxError> {
+    let mut titles = Vec::new();
+    let mut fields = Vec::new();
+    let (ny, nx, ice): (usize, usize, Vec<bool>);
+    if args.cf.is_empty() {
+        if !has_variable(&args.input, "strength")? {
+            return Err(format!(
+                "{}: no `strength` variable; run `pressridge strength` first or pass --cf",
+                args.input.display()
+            )
+            .into());
+        }
+        let (dims, mut v) = read_field(&args.input, "strength")?;
+        // Masked (fill) cells are drawn grey.
+        if let Some(f) = read_fill(&args.input, "strength")? {
+            v.iter_mut()
+                .filter(|x| **x == f)
+                .for_each(|x| *x = f64::NAN);
+        }
+        if dims.len() != 2 {
+            return Err(format!("`strength` must be 2-D, has dimensions {dims:?}").into());
+        }
+        (ny, nx) = (dims[0].1, dims[1].1);
+        ice = v.iter().map(|x| x.is_finite() && *x > 0.0).collect();
+        titles.push("strength".to_string());
+        fields.push(v);
+    } else {
+        let grid = read_itd(&args.input)?;
+        if grid.spatial_dims.len() != 2 {
+            return Err(format!(
+                "a map needs 2 spatial dimensions, the input has {:?}",
+                grid.spatial_dims
+            )
+            .into());
+        }
+        (ny, nx) = (grid.spatial_dims[0].1, grid.spatial_dims[1].1);
+        ice = (0..grid.ncol())
+            .map(|c| grid.aicen.column(c).sum() > 0.0)
+            .collect();
+        for &cf in &args.cf {
+            let o = options(
+                args.participation,
+                args.redistribution,
+                FormulaArg::Rothrock,
+                Some(cf),
+                None,
+                None,
+            )?;
+            let mut p = Array1::zeros(grid.ncol());
+            strength_batch_masked(
+                grid.aicen.view(),
+                grid.vicen.view(),
+                grid.aice0.as_ref().map(|a| a.view()),
+                grid.valid.as_ref().map(|v| v.view()),
+                f64::NAN,
+                &o,
+                p.view_mut(),
+            )
+            .map_err(|e| grid.locate(&args.input, e))?;
+            titles.push(format!("C_f = {cf}"));
+            fields.push(p.to_vec());
+        }
+    }
+    let panels: Vec<Panel<'_>> = titles
+        .iter()
+        .zip(&fields)
+        .map(|(t, v)| Panel {
+            title: t,
+            values: v,
+        })
+        .collect();
+    draw_strength_maps(&args.output, &panels, ny, nx)?;
+    println!("| field | ice cells | min (kN/m) | median (kN/m) | mean (kN/m) | max (kN/m) |");
+    println!("|---|---|---|---|---|---|");
+    for (t, v) in titles.iter().zip(&fields) {
+        println!("{}", summary(t, v, &ice));
+    }
+    Ok(())
+}

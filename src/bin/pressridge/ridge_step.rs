@@ -1,0 +1,166 @@
+//! `pressridge ridge-step`: one ridging step on a gridded thickness distribution.
+
+use std::path::PathBuf;
+
+use ndarray::Array1;
+use pressridge::io::itd_netcdf::{FieldMeta, NC_FILL_DOUBLE, Output, read_itd, write_output};
+use pressridge::itd::{
+    CategoryBounds, RidgeOptions, RidgeRatesMut, category_bounds, ridge_batch_masked,
+};
+
+use crate::BoxError;
+use crate::strength::{PartArg, RedistArg, describe_params, parse_params};
+
+/// Arguments of `pressridge ridge-step`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Input NetCDF with aicen, vicen and optionally aice0, hin_max, divu, shear.
+    #[arg(long)]
+    pub input: PathBuf,
+    /// Output NetCDF: updated aicen, vicen, aice0, hin_max and the ridging rates.
+    #[arg(long)]
+    pub output: PathBuf,
+    /// Time step (s).
+    #[arg(long)]
+    pub dt: f64,
+    /// Convergence rate (1/s, >= 0) for every column; default: max(-divu, 0) from the file.
+    #[arg(long)]
+    pub convergence: Option<f64>,
+    /// Shear term (1/s, >= 0) for every column; default: `shear` from the file, else 0.
+    #[arg(long)]
+    pub shear: Option<f64>,
+    /// Participation function.
+    #[arg(long, value_enum, default_value = "exponential")]
+    pub participation: PartArg,
+    /// Ridged-ice redistribution.
+    #[arg(long, value_enum, default_value = "exponential")]
+    pub redistribution: RedistArg,
+    /// Override a parameter, NAME=VALUE (repeatable), e.g. `--param cs=0.5`.
+    #[arg(long = "param", value_name = "NAME=VALUE")]
+    pub params: Vec<String>,
+}
+
+/// Runs `pressridge ridge-step`.
+pub fn run(args: Args) -> Result<(), BoxError> {
+    let mut grid = read_itd(&args.input)?;
+    let ncol = grid.ncol();
+    let ncat = grid.ncat();
+    let conv: Array1<f64> = match (args.convergence, &grid.divu) {
+        (Some(c), _) => Array1::from_elem(ncol, c),
+        (None, Some(d)) => d.mapv(|x| f64::max(-x, 0.0)),
+        (None, None) => {
+            return Err("no convergence: pass --convergence or put `divu` in the input".into());
+        }
+    };
+    let shear: Array1<f64> = match (args.shear, &grid.shear) {
+        (Some(s), _) => Array1::from_elem(ncol, s),
+        (None, Some(s)) => s.clone(),
+        (None, None) => {
+            eprintln!("pressridge: note: no --shear and no `shear` in the input; using 0");
+            Array1::zeros(ncol)
+        }
+    };
+    let hin_max = match &grid.hin_max {
+        Some(h) => h.clone(),
+        None => category_bounds(&CategoryBounds::RoundNumbers, ncat)?,
+    };
+    let mut aice0 = match &grid.aice0 {
+        Some(a) => a.clone(),
+        None => Array1::from_iter((0..ncol).map(|c| 1.0 - grid.aicen.column(c).sum())),
+    };
+    let fill = grid.fill_value.unwrap_or(NC_FILL_DOUBLE);
+    let o = RidgeOptions {
+        participation: args.participation.into(),
+        redistribution: args.redistribution.into(),
+        params: parse_params(&args.params)?,
+    };
+    let mut rates: [Array1<f64>; 5] = std::array::from_fn(|_| Array1::zeros(ncol));
+    {
+        let [c, op, d1, d2, dv] = &mut rates;
+        ridge_batch_masked(
+            grid.aicen.view_mut(),
+            grid.vicen.view_mut(),
+            aice0.view_mut(),
+            &hin_max,
+            conv.view(),
+            shear.view(),
+            grid.valid.as_ref().map(|v| v.view()),
+            fill,
+            args.dt,
+            &o,
+            RidgeRatesMut {
+                closing: c.view_mut(),
+                opening: op.view_mut(),
+                dardg1dt: d1.view_mut(),
+                dardg2dt: d2.view_mut(),
+                dvirdgdt: dv.view_mut(),
+            },
+        )
+        .map_err(|e| grid.locate(&args.input, e))?;
+    }
+    if let Some(v) = &grid.valid {
+        for (a, ok) in aice0.iter_mut().zip(v) {
+            if !ok {
+                *a = fill;
+            }
+        }
+    }
+    grid.aice0 = Some(aice0);
+    let meta = [
+        ("closing", "s-1", "net closing rate"),
+        ("opening", "s-1", "opening rate"),
+        ("dardg1dt", "s-1", "rate of area loss by ridging ice"),
+        ("dardg2dt", "s-1", "rate of area gain by new ridges"),
+        ("dvirdgdt", "m s-1", "rate of ice volume ridged"),
+    ];
+    let fields: Vec<(FieldMeta<'_>, &[f64])> = meta
+        .iter()
+        .zip(&rates)
+        .map(|(&(name, units, long_name), r)| {
+            (
+                FieldMeta {
+                    name,
+                    units,
+                    long_name,
+                    standard_name: None,
+                },
+                r.as_slice().expect("contiguous"),
+            )
+        })
+        .collect();
+    let global = vec![
+        (
+            "participation".to_string(),
+            o.participation.name().to_string(),
+        ),
+        (
+            "redistribution".to_string(),
+            o.redistribution.name().to_string(),
+        ),
+        ("dt".to_string(), format!("{} s", args.dt)),
+        (
+            "convergence".to_string(),
+            args.convergence
+                .map_or("max(-divu, 0) from input".into(), |c| format!("{c} s-1")),
+        ),
+        (
+            "shear".to_string(),
+            args.shear
+                .map_or("from input (or 0)".into(), |s| format!("{s} s-1")),
+        ),
+        ("input".to_string(), args.input.display().to_string()),
+        describe_params(&args.params),
+    ];
+    write_output(
+        &args.output,
+        &Output {
+            grid: &grid,
+            write_itd: true,
+            hin_max: Some(&hin_max),
+            fields: &fields,
+            global: &global,
+            fill: grid.valid.as_ref().map(|_| fill),
+        },
+    )?;
+    Ok(())
+}

@@ -1,0 +1,225 @@
+//! `pressridge strength`: ice strength P (N/m) of a gridded thickness distribution.
+
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use clap::ValueEnum;
+use ndarray::Array1;
+use pressridge::io::itd_netcdf::{
+    NC_FILL_DOUBLE, Output, STRENGTH_META, read_cf_table, read_itd, write_output,
+};
+use pressridge::itd::{
+    Cf, CfPreset, ItdParams, Participation, Redistribution, StrengthFormula, StrengthOptions,
+    strength_batch_masked,
+};
+
+use crate::BoxError;
+
+/// Participation function.
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum PartArg {
+    /// Thorndike et al. (1975), G* = 0.15.
+    Thorndike,
+    /// Lipscomb et al. (2007), a* = 0.05 (CICE default).
+    Exponential,
+}
+
+/// Redistribution of ridged ice.
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum RedistArg {
+    /// Hibler (1980), H* = 25 m.
+    Uniform,
+    /// Lipscomb et al. (2007), mu = 3 m^0.5 (CICE default).
+    Exponential,
+}
+
+/// Strength formula.
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum FormulaArg {
+    /// Rothrock (1975) with C_f (CICE default).
+    Rothrock,
+    /// Hibler (1979), P* = 2.75e4 N/m^2, C* = 20.
+    Hibler,
+}
+
+/// Named C_f values.
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum PresetArg {
+    /// Hibler (1980): 2.
+    Hibler1980,
+    /// Flato (1991): 15.
+    Flato1991,
+    /// CICE/Icepack default: 17.
+    Cice,
+}
+
+impl From<PartArg> for Participation {
+    fn from(a: PartArg) -> Self {
+        match a {
+            PartArg::Thorndike => Participation::Thorndike,
+            PartArg::Exponential => Participation::Exponential,
+        }
+    }
+}
+impl From<RedistArg> for Redistribution {
+    fn from(a: RedistArg) -> Self {
+        match a {
+            RedistArg::Uniform => Redistribution::Uniform,
+            RedistArg::Exponential => Redistribution::Exponential,
+        }
+    }
+}
+
+/// Arguments of `pressridge strength`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Input NetCDF with aicen, vicen (ncat first) and optionally aice0, hin_max.
+    #[arg(long)]
+    pub input: PathBuf,
+    /// Output NetCDF; gets `strength` (N/m) on the input's spatial dimensions.
+    #[arg(long)]
+    pub output: PathBuf,
+    /// Participation function.
+    #[arg(long, value_enum, default_value = "exponential")]
+    pub participation: PartArg,
+    /// Ridged-ice redistribution.
+    #[arg(long, value_enum, default_value = "exponential")]
+    pub redistribution: RedistArg,
+    /// Strength formula.
+    #[arg(long, value_enum, default_value = "rothrock")]
+    pub strength: FormulaArg,
+    /// Constant C_f (dimensionless); default 17 (CICE).
+    #[arg(long, conflicts_with_all = ["cf_preset", "cf_table"])]
+    pub cf: Option<f64>,
+    /// Named constant C_f.
+    #[arg(long, value_enum, conflicts_with = "cf_table")]
+    pub cf_preset: Option<PresetArg>,
+    /// NetCDF table of C_f (`cf`) against ridging-ice thickness (`thickness`, m).
+    #[arg(long)]
+    pub cf_table: Option<PathBuf>,
+    /// Override a parameter, NAME=VALUE (repeatable), e.g. `--param mu_rdg=4`; names as the
+    /// fields of `pressridge::itd::ItdParams`.
+    #[arg(long = "param", value_name = "NAME=VALUE")]
+    pub params: Vec<String>,
+}
+
+/// Applies `NAME=VALUE` overrides to CICE's default parameters.
+pub fn parse_params(list: &[String]) -> Result<ItdParams, BoxError> {
+    let mut p = ItdParams::default();
+    for item in list {
+        let (name, value) = item
+            .split_once('=')
+            .ok_or_else(|| format!("--param {item}: expected NAME=VALUE"))?;
+        let value: f64 = value
+            .trim()
+            .parse()
+            .map_err(|_| format!("--param {item}: `{value}` is not a number"))?;
+        p.set(name.trim(), value)?;
+    }
+    Ok(p)
+}
+
+/// Global attributes listing the parameters that differ from CICE's defaults.
+pub fn describe_params(list: &[String]) -> (String, String) {
+    (
+        "parameter_overrides".into(),
+        if list.is_empty() {
+            "none".into()
+        } else {
+            list.join(", ")
+        },
+    )
+}
+
+/// Builds the strength options from the shared flags.
+pub fn options(
+    participation: PartArg,
+    redistribution: RedistArg,
+    formula: FormulaArg,
+    cf: Option<f64>,
+    cf_preset: Option<PresetArg>,
+    cf_table: Option<&std::path::Path>,
+) -> Result<StrengthOptions, BoxError> {
+    let cf = if let Some(t) = cf_table {
+        Cf::Table(Arc::new(read_cf_table(t)?))
+    } else if let Some(p) = cf_preset {
+        match p {
+            PresetArg::Hibler1980 => CfPreset::Hibler1980.into(),
+            PresetArg::Flato1991 => CfPreset::Flato1991.into(),
+            PresetArg::Cice => CfPreset::Cice.into(),
+        }
+    } else {
+        Cf::Constant(cf.unwrap_or(CfPreset::Cice.value()))
+    };
+    Ok(StrengthOptions {
+        participation: participation.into(),
+        redistribution: redistribution.into(),
+        formula: match formula {
+            FormulaArg::Rothrock => StrengthFormula::Rothrock,
+            FormulaArg::Hibler => StrengthFormula::Hibler1979,
+        },
+        cf,
+        ..Default::default()
+    })
+}
+
+/// Global attributes describing the strength options.
+pub fn describe(o: &StrengthOptions) -> Vec<(String, String)> {
+    vec![
+        ("participation".into(), o.participation.name().into()),
+        ("redistribution".into(), o.redistribution.name().into()),
+        ("strength_formula".into(), o.formula.name().into()),
+        ("cf".into(), o.cf.describe()),
+    ]
+}
+
+/// Runs `pressridge strength`.
+pub fn run(args: Args) -> Result<(), BoxError> {
+    let mut o = options(
+        args.participation,
+        args.redistribution,
+        args.strength,
+        args.cf,
+        args.cf_preset,
+        args.cf_table.as_deref(),
+    )?;
+    o.params = parse_params(&args.params)?;
+    let grid = read_itd(&args.input)?;
+    let mut p = Array1::zeros(grid.ncol());
+    let fill = grid.fill_value.unwrap_or(NC_FILL_DOUBLE);
+    let summary = strength_batch_masked(
+        grid.aicen.view(),
+        grid.vicen.view(),
+        grid.aice0.as_ref().map(|a| a.view()),
+        grid.valid.as_ref().map(|v| v.view()),
+        fill,
+        &o,
+        p.view_mut(),
+    )
+    .map_err(|e| grid.locate(&args.input, e))?;
+    if summary.cf_clamped_columns > 0 {
+        eprintln!(
+            "pressridge: note: {} of {} columns had ridging-ice thicknesses outside the C_f table; values were clamped",
+            summary.cf_clamped_columns, summary.columns
+        );
+    }
+    let mut global = describe(&o);
+    global.push(describe_params(&args.params));
+    global.push(("input".into(), args.input.display().to_string()));
+    global.push((
+        "cf_clamped_columns".into(),
+        summary.cf_clamped_columns.to_string(),
+    ));
+    write_output(
+        &args.output,
+        &Output {
+            grid: &grid,
+            write_itd: false,
+            hin_max: None,
+            fields: &[(STRENGTH_META, p.as_slice().expect("contiguous"))],
+            global: &global,
+            fill: grid.valid.as_ref().map(|_| fill),
+        },
+    )?;
+    Ok(())
+}

@@ -1,0 +1,560 @@
+//! NetCDF reading and writing of gridded thickness distributions.
+//!
+//! Input: `aicen` and `vicen` whose first dimension is the category dimension (`ncat`)
+//! followed by any number of spatial dimensions; optional `aice0` (spatial dims; else
+//! 1 − Σ aicen), `hin_max` (length ncat + 1; else the CICE default bounds), `divu` and `shear`
+//! (spatial dims, 1/s) for the ridging step. Any numeric type is read as `f64`.
+//!
+//! Output: CF-1.8 attributes (`units`, `long_name`, `standard_name` where CF has one), the
+//! options used and the package version as global attributes.
+
+use std::path::{Path, PathBuf};
+
+use ndarray::{Array1, Array2};
+
+use crate::itd::{CfTable, ItdError};
+
+/// Dimensions of a variable: (name, length) in file order.
+pub type Dims = Vec<(String, usize)>;
+
+/// Errors of NetCDF input and output.
+#[derive(Debug, thiserror::Error)]
+pub enum NetcdfError {
+    /// The NetCDF library reported an error.
+    #[error("{path}: {source}")]
+    Netcdf {
+        /// File concerned.
+        path: PathBuf,
+        /// Library error.
+        source: netcdf::Error,
+    },
+    /// A required variable is missing.
+    #[error("{path}: missing variable `{var}`")]
+    MissingVariable {
+        /// File concerned.
+        path: PathBuf,
+        /// Variable name.
+        var: String,
+    },
+    /// A variable's dimensions do not match what is required.
+    #[error("{path}: variable `{var}` has dimensions {found}, expected {expected}")]
+    Shape {
+        /// File concerned.
+        path: PathBuf,
+        /// Variable name.
+        var: String,
+        /// What was expected.
+        expected: String,
+        /// What was found.
+        found: String,
+    },
+    /// Bad values in one grid column, located by flat and spatial index.
+    #[error("{path}: column {column} at ({spatial}): {source}")]
+    Column {
+        /// File concerned.
+        path: PathBuf,
+        /// Flat column index (C order over the spatial dimensions).
+        column: usize,
+        /// Spatial index, e.g. `nj=3, ni=17`.
+        spatial: String,
+        /// What is wrong.
+        source: crate::itd::ColumnError,
+    },
+    /// Any other physics error (bounds, shapes, parameters, C_f table).
+    #[error("{path}: {source}")]
+    Itd {
+        /// File concerned.
+        path: PathBuf,
+        /// The error.
+        source: ItdError,
+    },
+}
+
+/// A gridded thickness distribution with its spatial dimensions flattened to `ncol` columns
+/// (C order, last dimension fastest).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ItdGrid {
+    /// Name of the category dimension (e.g. `ncat`).
+    pub ncat_dim: String,
+    /// Spatial dimensions (name, length) in file order.
+    pub spatial_dims: Vec<(String, usize)>,
+    /// Category area fractions (dimensionless), shape (ncat, ncol).
+    pub aicen: Array2<f64>,
+    /// Category ice volume per unit area (m), shape (ncat, ncol).
+    pub vicen: Array2<f64>,
+    /// Open-water fraction (dimensionless), if present in the file.
+    pub aice0: Option<Array1<f64>>,
+    /// Category bounds (m), if present in the file.
+    pub hin_max: Option<Vec<f64>>,
+    /// Velocity divergence (1/s), if present.
+    pub divu: Option<Array1<f64>>,
+    /// Shear term of the ridging closing rate (1/s), if present.
+    pub shear: Option<Array1<f64>>,
+    /// Columns holding data (false where `aicen`, `vicen` or `aice0` equals its
+    /// `_FillValue`/`missing_value`, e.g. land); `None` when no value is missing.
+    pub valid: Option<Array1<bool>>,
+    /// The fill value of `aicen` in the input (used for masked columns on output), if any.
+    pub fill_value: Option<f64>,
+}
+
+impl ItdGrid {
+    /// Number of categories.
+    pub fn ncat(&self) -> usize {
+        self.aicen.nrows()
+    }
+    /// Number of columns (product of the spatial lengths).
+    pub fn ncol(&self) -> usize {
+        self.aicen.ncols()
+    }
+    /// The spatial index of flat column `column`, formatted as `name=i, ...`.
+    pub fn spatial_index(&self, column: usize) -> String {
+        let mut rem = column;
+        let mut idx = vec![0; self.spatial_dims.len()];
+        for (k, (_, len)) in self.spatial_dims.iter().enumerate().rev() {
+            idx[k] = rem % len;
+            rem /= len;
+        }
+        self.spatial_dims
+            .iter()
+            .zip(idx)
+            .map(|((n, _), i)| format!("{n}={i}"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+    /// Wraps a physics error with the file name and, for a column error, the spatial index.
+    pub fn locate(&self, path: &Path, e: ItdError) -> NetcdfError {
+        match e {
+            ItdError::Column { column, source } => NetcdfError::Column {
+                path: path.to_path_buf(),
+                column,
+                spatial: self.spatial_index(column),
+                source,
+            },
+            other => NetcdfError::Itd {
+                path: path.to_path_buf(),
+                source: other,
+            },
+        }
+    }
+}
+
+fn nc_err(path: &Path) -> impl Fn(netcdf::Error) -> NetcdfError + '_ {
+    move |source| NetcdfError::Netcdf {
+        path: path.to_path_buf(),
+        source,
+    }
+}
+
+/// Dimensions of `v`, without a leading time dimension of length 1 (named `time` or `t`, or
+/// unlimited), as in CICE history files `aicen(time, nc, nj, ni)`.
+fn dims_of(v: &netcdf::Variable<'_>) -> Vec<(String, usize)> {
+    let d = v.dimensions();
+    let skip = usize::from(
+        d.len() > 1
+            && d[0].len() == 1
+            && (d[0].is_unlimited() || d[0].name() == "time" || d[0].name() == "t"),
+    );
+    d[skip..].iter().map(|d| (d.name(), d.len())).collect()
+}
+
+/// The `_FillValue` (else `missing_value`) attribute of `v`, as f64.
+fn fill_of(v: &netcdf::Variable<'_>) -> Option<f64> {
+    ["_FillValue", "missing_value"].iter().find_map(|a| {
+        v.attribute_value(a)
+            .and_then(|r| r.ok())
+            .and_then(|x| f64::try_from(x).ok())
+    })
+}
+
+fn is_fill(x: f64, fill: Option<f64>) -> bool {
+    match fill {
+        Some(f) => x == f || (f.is_nan() && x.is_nan()),
+        None => false,
+    }
+}
+
+fn fmt_dims(d: &[(String, usize)]) -> String {
+    let parts: Vec<String> = d.iter().map(|(n, l)| format!("{n}={l}")).collect();
+    format!("({})", parts.join(", "))
+}
+
+fn read_f64(path: &Path, v: &netcdf::Variable<'_>) -> Result<Vec<f64>, NetcdfError> {
+    v.get_values::<f64, _>(..).map_err(nc_err(path))
+}
+
+fn read_spatial(
+    path: &Path,
+    file: &netcdf::File,
+    name: &str,
+    spatial: &[(String, usize)],
+) -> Result<Option<Array1<f64>>, NetcdfError> {
+    let Some(v) = file.variable(name) else {
+        return Ok(None);
+    };
+    let d = dims_of(&v);
+    if d != spatial {
+        return Err(NetcdfError::Shape {
+            path: path.to_path_buf(),
+            var: name.into(),
+            expected: fmt_dims(spatial),
+            found: fmt_dims(&d),
+        });
+    }
+    Ok(Some(Array1::from(read_f64(path, &v)?)))
+}
+
+/// Reads a gridded thickness distribution (see the module documentation for the layout).
+pub fn read_itd(path: &Path) -> Result<ItdGrid, NetcdfError> {
+    let file = netcdf::open(path).map_err(nc_err(path))?;
+    let get = |name: &str| {
+        file.variable(name)
+            .ok_or_else(|| NetcdfError::MissingVariable {
+                path: path.to_path_buf(),
+                var: name.into(),
+            })
+    };
+    let av = get("aicen")?;
+    let vv = get("vicen")?;
+    let ad = dims_of(&av);
+    let vd = dims_of(&vv);
+    if ad.is_empty() {
+        return Err(NetcdfError::Shape {
+            path: path.to_path_buf(),
+            var: "aicen".into(),
+            expected: "(ncat, spatial dimensions...)".into(),
+            found: "a scalar".into(),
+        });
+    }
+    if vd != ad {
+        return Err(NetcdfError::Shape {
+            path: path.to_path_buf(),
+            var: "vicen".into(),
+            expected: fmt_dims(&ad),
+            found: fmt_dims(&vd),
+        });
+    }
+    if let Some(d0) = av.dimensions().first()
+        && (d0.is_unlimited() || d0.name() == "time" || d0.name() == "t")
+        && d0.len() > 1
+    {
+        return Err(NetcdfError::Shape {
+            path: path.to_path_buf(),
+            var: "aicen".into(),
+            expected:
+                "(ncat, spatial dimensions...), optionally after a time dimension of length 1"
+                    .into(),
+            found: format!(
+                "a leading `{}` dimension of length {}: select one time first",
+                d0.name(),
+                d0.len()
+            ),
+        });
+    }
+    let ncat = ad[0].1;
+    let spatial: Vec<(String, usize)> = ad[1..].to_vec();
+    let ncol: usize = spatial.iter().map(|d| d.1).product();
+    let aicen = Array2::from_shape_vec((ncat, ncol), read_f64(path, &av)?)
+        .expect("length checked by the library");
+    let vicen = Array2::from_shape_vec((ncat, ncol), read_f64(path, &vv)?)
+        .expect("length checked by the library");
+    let (afill, vfill) = (fill_of(&av), fill_of(&vv));
+    let a0fill = file.variable("aice0").as_ref().and_then(fill_of);
+    let hin_max = match file.variable("hin_max") {
+        None => None,
+        Some(h) => {
+            let vals = read_f64(path, &h)?;
+            if h.dimensions().len() != 1 || vals.len() != ncat + 1 {
+                return Err(NetcdfError::Shape {
+                    path: path.to_path_buf(),
+                    var: "hin_max".into(),
+                    expected: format!("one dimension of length ncat + 1 = {}", ncat + 1),
+                    found: fmt_dims(&dims_of(&h)),
+                });
+            }
+            Some(vals)
+        }
+    };
+    let aice0 = read_spatial(path, &file, "aice0", &spatial)?;
+    let valid: Array1<bool> = (0..ncol)
+        .map(|c| {
+            !(aicen.column(c).iter().any(|&x| is_fill(x, afill))
+                || vicen.column(c).iter().any(|&x| is_fill(x, vfill))
+                || aice0.as_ref().is_some_and(|a| is_fill(a[c], a0fill)))
+        })
+        .collect();
+    Ok(ItdGrid {
+        ncat_dim: ad[0].0.clone(),
+        aice0,
+        divu: read_spatial(path, &file, "divu", &spatial)?,
+        shear: read_spatial(path, &file, "shear", &spatial)?,
+        spatial_dims: spatial,
+        aicen,
+        vicen,
+        hin_max,
+        fill_value: afill.or(vfill).or(a0fill),
+        valid: if valid.iter().all(|&v| v) {
+            None
+        } else {
+            Some(valid)
+        },
+    })
+}
+
+/// Reads a C_f table: 1-D variables `thickness` (m) and `cf` (dimensionless) of equal
+/// length, thickness strictly increasing. See [`CfTable`] for interpolation and clamping.
+pub fn read_cf_table(path: &Path) -> Result<CfTable, NetcdfError> {
+    let file = netcdf::open(path).map_err(nc_err(path))?;
+    let mut cols = Vec::new();
+    for name in ["thickness", "cf"] {
+        let v = file
+            .variable(name)
+            .ok_or_else(|| NetcdfError::MissingVariable {
+                path: path.to_path_buf(),
+                var: name.into(),
+            })?;
+        if v.dimensions().len() != 1 {
+            return Err(NetcdfError::Shape {
+                path: path.to_path_buf(),
+                var: name.into(),
+                expected: "one dimension".into(),
+                found: fmt_dims(&dims_of(&v)),
+            });
+        }
+        cols.push(read_f64(path, &v)?);
+    }
+    let cf = cols.pop().unwrap_or_default();
+    let thickness = cols.pop().unwrap_or_default();
+    CfTable::new(thickness, cf).map_err(|source| NetcdfError::Itd {
+        path: path.to_path_buf(),
+        source,
+    })
+}
+
+/// Writes a C_f table file (`thickness` in m, `cf` dimensionless), 64-bit-offset format.
+pub fn write_cf_table(path: &Path, table: &CfTable) -> Result<(), NetcdfError> {
+    let e = nc_err(path);
+    let mut f = netcdf::create_with(path, netcdf::Options::_64BIT_OFFSET).map_err(&e)?;
+    f.add_dimension("node", table.thickness().len())
+        .map_err(&e)?;
+    let mut v = f.add_variable::<f64>("thickness", &["node"]).map_err(&e)?;
+    v.put_attribute("units", "m").map_err(&e)?;
+    v.put_attribute("long_name", "thickness of the ridging ice")
+        .map_err(&e)?;
+    let mut v = f.add_variable::<f64>("cf", &["node"]).map_err(&e)?;
+    v.put_attribute("units", "1").map_err(&e)?;
+    v.put_attribute(
+        "long_name",
+        "ratio of ridging work to potential energy change C_f",
+    )
+    .map_err(&e)?;
+    f.add_attribute("Conventions", "CF-1.8").map_err(&e)?;
+    f.enddef().map_err(&e)?;
+    for (name, data) in [("thickness", table.thickness()), ("cf", table.values())] {
+        let mut v = f.variable_mut(name).expect("just defined");
+        v.put_values(data, ..).map_err(&e)?;
+    }
+    f.close().map_err(&e)?;
+    Ok(())
+}
+
+/// Description of one output field.
+#[derive(Debug, Clone, Copy)]
+pub struct FieldMeta<'a> {
+    /// Variable name.
+    pub name: &'a str,
+    /// CF `units`.
+    pub units: &'a str,
+    /// CF `long_name`.
+    pub long_name: &'a str,
+    /// CF `standard_name`, where CF defines one.
+    pub standard_name: Option<&'a str>,
+}
+
+/// What to write: an optional distribution (with bounds) and any number of 2-D fields.
+#[derive(Debug, Clone, Copy)]
+pub struct Output<'a> {
+    /// Category and spatial layout (only the dimension names and lengths are used, plus
+    /// `aicen`/`vicen`/`aice0` when `write_itd` is true).
+    pub grid: &'a ItdGrid,
+    /// Also write `aicen`, `vicen`, `aice0` (from `grid.aice0`, else 1 − Σ aicen) and
+    /// `hin_max` from `hin_max`.
+    pub write_itd: bool,
+    /// Category bounds to write with the distribution (m).
+    pub hin_max: Option<&'a [f64]>,
+    /// Extra fields on the spatial dimensions, `ncol` values each.
+    pub fields: &'a [(FieldMeta<'a>, &'a [f64])],
+    /// Global attributes (name, value): options used.
+    pub global: &'a [(String, String)],
+    /// Fill value for masked columns (`grid.valid` false): written as `_FillValue` of every
+    /// gridded variable and into the computed `aice0` of masked columns.
+    pub fill: Option<f64>,
+}
+
+/// Writes `out` to a new file at `path` in the NetCDF 64-bit-offset format (readable by
+/// every NetCDF tool; netCDF-C 4.9.0 with HDF5 1.10 prints spurious `HDF5-DIAG` messages
+/// when NetCDF-4 files are read from a non-main thread), with CF attributes,
+/// `Conventions = CF-1.8`, `source`/`pressridge_version` and the given global attributes.
+pub fn write_output(path: &Path, out: &Output<'_>) -> Result<(), NetcdfError> {
+    let e = nc_err(path);
+    let g = out.grid;
+    let ncol = g.ncol();
+    for (meta, data) in out.fields {
+        if data.len() != ncol {
+            return Err(NetcdfError::Shape {
+                path: path.to_path_buf(),
+                var: meta.name.into(),
+                expected: format!("{ncol} values"),
+                found: format!("{} values", data.len()),
+            });
+        }
+    }
+    let spatial: Vec<&str> = g.spatial_dims.iter().map(|d| d.0.as_str()).collect();
+    let mut cat_dims: Vec<&str> = vec![g.ncat_dim.as_str()];
+    cat_dims.extend(&spatial);
+    let bdim = format!("{}_bounds", g.ncat_dim);
+
+    // Everything to write: (metadata, dimensions, values). Owned copies of the distribution
+    // in C order (the classic format wants all definitions before any data).
+    let a = g.aicen.as_standard_layout().into_owned();
+    let v = g.vicen.as_standard_layout().into_owned();
+    let aice0: Vec<f64> = match &g.aice0 {
+        Some(a0) => a0.to_vec(),
+        None => (0..ncol)
+            .map(|c| match (&g.valid, out.fill) {
+                (Some(v), Some(f)) if !v[c] => f,
+                _ => 1.0 - g.aicen.column(c).sum(),
+            })
+            .collect(),
+    };
+    let mut items: Vec<(FieldMeta<'_>, Vec<&str>, &[f64])> = Vec::new();
+    if out.write_itd {
+        items.push((
+            FieldMeta {
+                name: "aicen",
+                units: "1",
+                long_name: "sea ice area fraction in each thickness category",
+                standard_name: Some("sea_ice_area_fraction"),
+            },
+            cat_dims.clone(),
+            a.as_slice().expect("standard layout"),
+        ));
+        items.push((
+            FieldMeta {
+                name: "vicen",
+                units: "m",
+                long_name: "sea ice volume per unit grid-cell area in each thickness category",
+                standard_name: None,
+            },
+            cat_dims.clone(),
+            v.as_slice().expect("standard layout"),
+        ));
+        items.push((
+            FieldMeta {
+                name: "aice0",
+                units: "1",
+                long_name: "open water fraction",
+                standard_name: None,
+            },
+            spatial.clone(),
+            &aice0,
+        ));
+        if let Some(h) = out.hin_max {
+            items.push((
+                FieldMeta {
+                    name: "hin_max",
+                    units: "m",
+                    long_name: "thickness category bounds",
+                    standard_name: None,
+                },
+                vec![bdim.as_str()],
+                h,
+            ));
+        }
+    }
+    for (meta, data) in out.fields {
+        items.push((*meta, spatial.clone(), data));
+    }
+
+    let mut f = netcdf::create_with(path, netcdf::Options::_64BIT_OFFSET).map_err(&e)?;
+    for (n, l) in &g.spatial_dims {
+        f.add_dimension(n, *l).map_err(&e)?;
+    }
+    if out.write_itd {
+        f.add_dimension(&g.ncat_dim, g.ncat()).map_err(&e)?;
+        if let Some(h) = out.hin_max {
+            f.add_dimension(&bdim, h.len()).map_err(&e)?;
+        }
+    }
+    for (meta, dims, _) in &items {
+        let mut var = f.add_variable::<f64>(meta.name, dims).map_err(&e)?;
+        var.put_attribute("units", meta.units).map_err(&e)?;
+        var.put_attribute("long_name", meta.long_name).map_err(&e)?;
+        if let Some(s) = meta.standard_name {
+            var.put_attribute("standard_name", s).map_err(&e)?;
+        }
+        if let Some(fill) = out.fill
+            && meta.name != "hin_max"
+        {
+            var.put_attribute("_FillValue", fill).map_err(&e)?;
+        }
+    }
+    f.add_attribute("Conventions", "CF-1.8").map_err(&e)?;
+    f.add_attribute(
+        "source",
+        format!("pressridge {}", env!("CARGO_PKG_VERSION")),
+    )
+    .map_err(&e)?;
+    f.add_attribute("pressridge_version", env!("CARGO_PKG_VERSION"))
+        .map_err(&e)?;
+    for (k, val) in out.global {
+        f.add_attribute(k, val.as_str()).map_err(&e)?;
+    }
+    f.enddef().map_err(&e)?;
+    for (meta, _, data) in &items {
+        let mut var = f.variable_mut(meta.name).expect("just defined");
+        var.put_values(data, ..).map_err(&e)?;
+    }
+    f.close().map_err(&e)?;
+    Ok(())
+}
+
+/// NetCDF's default fill value for doubles (`NC_FILL_DOUBLE`).
+pub const NC_FILL_DOUBLE: f64 = 9.969_209_968_386_869e36;
+
+/// Metadata of the `strength` output field (N/m).
+pub const STRENGTH_META: FieldMeta<'static> = FieldMeta {
+    name: "strength",
+    units: "N m-1",
+    long_name: "compressive ice strength P",
+    standard_name: None,
+};
+
+/// Reads one variable as `f64` with its dimensions (name, length).
+pub fn read_field(path: &Path, name: &str) -> Result<(Dims, Vec<f64>), NetcdfError> {
+    let file = netcdf::open(path).map_err(nc_err(path))?;
+    let v = file
+        .variable(name)
+        .ok_or_else(|| NetcdfError::MissingVariable {
+            path: path.to_path_buf(),
+            var: name.into(),
+        })?;
+    Ok((dims_of(&v), read_f64(path, &v)?))
+}
+
+/// True when the file has a variable called `name`.
+pub fn has_variable(path: &Path, name: &str) -> Result<bool, NetcdfError> {
+    let file = netcdf::open(path).map_err(nc_err(path))?;
+    Ok(file.variable(name).is_some())
+}
+
+/// The `_FillValue` (else `missing_value`) of variable `name`, if it has one.
+pub fn read_fill(path: &Path, name: &str) -> Result<Option<f64>, NetcdfError> {
+    let file = netcdf::open(path).map_err(nc_err(path))?;
+    let v = file
+        .variable(name)
+        .ok_or_else(|| NetcdfError::MissingVariable {
+            path: path.to_path_buf(),
+            var: name.into(),
+        })?;
+    Ok(fill_of(&v))
+}

@@ -1,0 +1,188 @@
+//! The frictional factor C_f of the Rothrock (1975) strength: the ratio of the total work
+//! done in ridging (friction included) to the change in potential energy.
+//!
+//! C_f is either a constant — Hibler (1980) used 2, Flato (1991) 15, CICE/Icepack's default
+//! `Cf` is 17 — or a function of the thickness of the ice in the ridging category, supplied
+//! by a lookup table (the tabulation issue fills it with the simulator's work ratios).
+
+use std::sync::Arc;
+
+use super::ItdError;
+
+/// Named constant values of C_f (dimensionless).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CfPreset {
+    /// Hibler (1980): C_f = 2.
+    Hibler1980,
+    /// Flato (1991): C_f = 15.
+    Flato1991,
+    /// CICE/Icepack default `Cf` = 17.
+    Cice,
+}
+
+impl CfPreset {
+    /// The value of the preset (dimensionless).
+    pub fn value(self) -> f64 {
+        match self {
+            CfPreset::Hibler1980 => 2.0,
+            CfPreset::Flato1991 => 15.0,
+            CfPreset::Cice => 17.0,
+        }
+    }
+}
+
+/// A C_f lookup result: the value (dimensionless) and whether the thickness lay outside the
+/// table so that the value was clamped to the nearest end.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CfLookup {
+    /// C_f (dimensionless).
+    pub value: f64,
+    /// True when the thickness was outside the table's range.
+    pub clamped: bool,
+}
+
+/// Anything that gives C_f (dimensionless) as a function of the ridging category's ice
+/// thickness (m). Implementations must be cheap and thread-safe.
+pub trait CfProvider: Send + Sync + std::fmt::Debug {
+    /// C_f for ridging ice of thickness `h_ridging_category` (m).
+    fn cf(&self, h_ridging_category: f64) -> f64 {
+        self.lookup(h_ridging_category).value
+    }
+    /// C_f with the out-of-range flag.
+    fn lookup(&self, h_ridging_category: f64) -> CfLookup;
+}
+
+/// A piecewise-linear table of C_f (dimensionless) against ridging-ice thickness (m).
+///
+/// Between nodes the value is interpolated linearly; outside `[thickness[0], thickness[last]]`
+/// it is clamped to the end value and the lookup is flagged `clamped`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CfTable {
+    thickness: Vec<f64>,
+    cf: Vec<f64>,
+}
+
+impl CfTable {
+    /// Builds a table from node thicknesses (m; finite, strictly increasing) and C_f values
+    /// (finite, positive). At least one node.
+    pub fn new(thickness: Vec<f64>, cf: Vec<f64>) -> Result<Self, ItdError> {
+        if thickness.is_empty() {
+            return Err(ItdError::CfTable("the table has no nodes".into()));
+        }
+        if thickness.len() != cf.len() {
+            return Err(ItdError::CfTable(format!(
+                "thickness has {} values but cf has {}",
+                thickness.len(),
+                cf.len()
+            )));
+        }
+        for (i, (&h, &c)) in thickness.iter().zip(&cf).enumerate() {
+            if !h.is_finite() {
+                return Err(ItdError::CfTable(format!(
+                    "thickness[{i}] = {h} is not finite"
+                )));
+            }
+            if !(c.is_finite() && c > 0.0) {
+                return Err(ItdError::CfTable(format!(
+                    "cf[{i}] = {c} is not finite and positive"
+                )));
+            }
+            if i > 0 && h <= thickness[i - 1] {
+                return Err(ItdError::CfTable(format!(
+                    "thickness is not strictly increasing at index {i} ({} then {h})",
+                    thickness[i - 1]
+                )));
+            }
+        }
+        Ok(Self { thickness, cf })
+    }
+
+    /// Node thicknesses (m).
+    pub fn thickness(&self) -> &[f64] {
+        &self.thickness
+    }
+
+    /// Node values of C_f (dimensionless).
+    pub fn values(&self) -> &[f64] {
+        &self.cf
+    }
+}
+
+impl CfProvider for CfTable {
+    fn lookup(&self, h: f64) -> CfLookup {
+        let t = &self.thickness;
+        let last = t.len() - 1;
+        if h <= t[0] {
+            return CfLookup {
+                value: self.cf[0],
+                clamped: h < t[0],
+            };
+        }
+        if h >= t[last] {
+            return CfLookup {
+                value: self.cf[last],
+                clamped: h > t[last],
+            };
+        }
+        // t[0] < h < t[last]: find i with t[i] <= h < t[i+1].
+        let i = t.partition_point(|&x| x <= h) - 1;
+        let w = (h - t[i]) / (t[i + 1] - t[i]);
+        CfLookup {
+            value: self.cf[i] + w * (self.cf[i + 1] - self.cf[i]),
+            clamped: false,
+        }
+    }
+}
+
+/// The C_f used by the Rothrock strength.
+#[derive(Debug, Clone)]
+pub enum Cf {
+    /// A constant (dimensionless); gives CICE's numbers to the bit.
+    Constant(f64),
+    /// A piecewise-linear table in the ridging-category thickness.
+    Table(Arc<CfTable>),
+    /// Any other provider.
+    Custom(Arc<dyn CfProvider>),
+}
+
+impl Default for Cf {
+    /// CICE's default, C_f = 17.
+    fn default() -> Self {
+        Cf::Constant(CfPreset::Cice.value())
+    }
+}
+
+impl From<CfPreset> for Cf {
+    fn from(p: CfPreset) -> Self {
+        Cf::Constant(p.value())
+    }
+}
+
+impl Cf {
+    /// A short description for NetCDF attributes and logs.
+    pub fn describe(&self) -> String {
+        match self {
+            Cf::Constant(c) => format!("constant {c}"),
+            Cf::Table(t) => format!(
+                "table of {} nodes, thickness {} to {} m",
+                t.thickness.len(),
+                t.thickness[0],
+                t.thickness[t.thickness.len() - 1]
+            ),
+            Cf::Custom(p) => format!("custom provider {p:?}"),
+        }
+    }
+
+    pub(crate) fn validate(&self) -> Result<(), ItdError> {
+        if let Cf::Constant(c) = *self
+            && !(c.is_finite() && c > 0.0)
+        {
+            return Err(ItdError::Parameter {
+                name: "cf",
+                value: c,
+                reason: "must be finite and positive",
+            });
+        }
+        Ok(())
+    }
+}

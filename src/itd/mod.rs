@@ -1,0 +1,285 @@
+//! Ice thickness distribution (ITD) physics: category bounds, ridging participation,
+//! redistribution of ridged ice, ice strength and the ridging step.
+//!
+//! This is the Thorndike et al. (1975) / Rothrock (1975) machinery of CICE/Icepack
+//! (`icepack_mechred.F90`, `icepack_itd.F90`), rewritten in Rust so that the same options give
+//! the same numbers to round-off, and extended where CICE leaves results undefined
+//! (see `docs/strength.md`).
+//!
+//! Design: the core is a per-column function on plain slices (`aicen`, `vicen` of length
+//! `ncat`, scalar `aice0`) that uses a reusable [`Workspace`] and never allocates; batched
+//! drivers ([`strength::strength_batch`], [`ridging::ridge_batch`]) loop over `ncol` columns
+//! given as 2-D `ndarray` views of shape `(ncat, ncol)` with any strides (so Fortran
+//! column-major `aicen(ncat, ncol)` and NetCDF `(ncat, y, x)` both pass without copies).
+//! No module here knows about NetCDF, plotting or the command line.
+
+pub mod bounds;
+pub mod cf;
+mod lanes;
+pub mod params;
+pub mod participation;
+pub mod redistribution;
+pub mod ridging;
+pub mod strength;
+
+pub use bounds::{CategoryBounds, category_bounds};
+pub use cf::{Cf, CfLookup, CfPreset, CfProvider, CfTable};
+pub use params::{ItdParams, Participation, Redistribution, StrengthFormula};
+pub use ridging::{
+    RidgeDiagnostics, RidgeForcing, RidgeOptions, RidgeRatesMut, ridge_batch, ridge_batch_masked,
+    ridge_column,
+};
+pub use strength::{
+    BatchSummary, ColumnStrength, StrengthOptions, strength_batch, strength_batch_masked,
+    strength_column,
+};
+
+/// What is wrong with one column (no column index: see [`ItdError::Column`]).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ColumnError {
+    /// A value is NaN or infinite.
+    #[error("{var}{} is not finite ({value})", cat_suffix(*.category))]
+    NotFinite {
+        /// Variable name (`aicen`, `vicen`, `aice0`, ...).
+        var: &'static str,
+        /// Category index (0-based) for per-category variables.
+        category: Option<usize>,
+        /// The offending value.
+        value: f64,
+    },
+    /// A value that must be non-negative is negative.
+    #[error("{var}{} is negative ({value})", cat_suffix(*.category))]
+    Negative {
+        /// Variable name.
+        var: &'static str,
+        /// Category index (0-based) for per-category variables.
+        category: Option<usize>,
+        /// The offending value.
+        value: f64,
+    },
+    /// The total area differs from 1 by more than the tolerance (strength input).
+    #[error(
+        "total area aice0 + sum(aicen) = {total} differs from 1 by more than {tolerance}; \
+         a ridging step always leaves exactly 1"
+    )]
+    AreaSum {
+        /// aice0 + Σ aicen.
+        total: f64,
+        /// [`ItdParams::area_tolerance`].
+        tolerance: f64,
+    },
+    /// `aice0` was not given and Σ aicen exceeds 1 by more than the tolerance.
+    #[error(
+        "aice0 not given and sum(aicen) = {total} exceeds 1 (by more than {tolerance}), \
+         so 1 - sum(aicen) would be negative"
+    )]
+    IceAreaAboveOne {
+        /// Σ aicen.
+        total: f64,
+        /// [`ItdParams::area_tolerance`].
+        tolerance: f64,
+    },
+    /// The total area before ridging is larger than any advection step could leave.
+    #[error(
+        "total area aice0 + sum(aicen) = {total} before ridging exceeds the maximum {max} \
+         (ItdParams::max_area_before_ridging)"
+    )]
+    AreaTooLarge {
+        /// aice0 + Σ aicen.
+        total: f64,
+        /// [`ItdParams::max_area_before_ridging`].
+        max: f64,
+    },
+    /// The ridging iteration did not bring the total area to 1.
+    #[error("ridging did not converge after {niter} iterations (total area {total})")]
+    NoConvergence {
+        /// Iterations done.
+        niter: usize,
+        /// Total area left.
+        total: f64,
+    },
+    /// More open water was removed than existed (cannot happen for valid input; CICE aborts).
+    #[error("ridging removed more open water than existed (aice0 = {aice0})")]
+    OpenWaterExhausted {
+        /// aice0 after the shift.
+        aice0: f64,
+    },
+}
+
+fn cat_suffix(category: Option<usize>) -> String {
+    match category {
+        Some(n) => format!("[category {n}]"),
+        None => String::new(),
+    }
+}
+
+/// Errors of the ITD physics.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ItdError {
+    /// Bad values in one column; `column` is the flat column index (0-based).
+    #[error("column {column}: {source}")]
+    Column {
+        /// Flat column index.
+        column: usize,
+        /// What is wrong.
+        source: ColumnError,
+    },
+    /// Arrays do not have the shapes they must have.
+    #[error("shape mismatch: {var} has shape {found:?}, expected {expected:?}")]
+    Shape {
+        /// Variable name.
+        var: &'static str,
+        /// Expected shape.
+        expected: Vec<usize>,
+        /// Actual shape.
+        found: Vec<usize>,
+    },
+    /// Category bounds are unusable.
+    #[error("invalid category bounds hin_max: {0}")]
+    Bounds(String),
+    /// A parameter or option value is unusable.
+    #[error("invalid parameter {name} = {value}: {reason}")]
+    Parameter {
+        /// Parameter name.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+        /// Why it is rejected.
+        reason: &'static str,
+    },
+    /// A C_f table is unusable.
+    #[error("invalid C_f table: {0}")]
+    CfTable(String),
+}
+
+/// Reusable scratch space for the per-column routines, sized once for `ncat` categories.
+/// Holding one per thread gives allocation-free, thread-safe column calls.
+#[derive(Debug, Clone)]
+pub struct Workspace {
+    ncat: usize,
+    /// Participation a_Pn, n = 0 (open water) ..= ncat.
+    pub(crate) apartic: Vec<f64>,
+    /// Cumulative area G(n), stored shifted: gsum[k + 1] = G(k), k = −1 ..= ncat.
+    pub(crate) gsum: Vec<f64>,
+    /// (a*, 1/(1 − e^{−1/a*})) of the exponential participation, computed once.
+    pub(crate) exp_cache: (f64, f64),
+    pub(crate) hi: Vec<f64>,
+    pub(crate) hrmin: Vec<f64>,
+    pub(crate) hrmax: Vec<f64>,
+    pub(crate) hrexp: Vec<f64>,
+    pub(crate) krdg: Vec<f64>,
+    pub(crate) aicen_init: Vec<f64>,
+    pub(crate) vicen_init: Vec<f64>,
+    /// Area ridged out of each category during the last ridging step (dimensionless).
+    pub ardg1n: Vec<f64>,
+    /// Area of new ridges formed from each category during the last ridging step.
+    pub ardg2n: Vec<f64>,
+    /// Volume per unit area ridged out of each category during the last ridging step (m).
+    pub virdgn: Vec<f64>,
+}
+
+impl Workspace {
+    /// Allocates scratch space for `ncat` categories (the only allocation).
+    pub fn new(ncat: usize) -> Self {
+        Self {
+            ncat,
+            apartic: vec![0.0; ncat + 1],
+            gsum: vec![0.0; ncat + 2],
+            exp_cache: (f64::NAN, f64::NAN),
+            hi: vec![0.0; ncat],
+            hrmin: vec![0.0; ncat],
+            hrmax: vec![0.0; ncat],
+            hrexp: vec![0.0; ncat],
+            krdg: vec![1.0; ncat],
+            aicen_init: vec![0.0; ncat],
+            vicen_init: vec![0.0; ncat],
+            ardg1n: vec![0.0; ncat],
+            ardg2n: vec![0.0; ncat],
+            virdgn: vec![0.0; ncat],
+        }
+    }
+
+    /// Number of categories this workspace was made for.
+    pub fn ncat(&self) -> usize {
+        self.ncat
+    }
+
+    /// Participation function a_Pn of the last call (index 0 is open water), dimensionless.
+    pub fn apartic(&self) -> &[f64] {
+        &self.apartic
+    }
+
+    /// Mean ridge thickness over ridging-ice thickness k_n of the last call (dimensionless).
+    pub fn krdg(&self) -> &[f64] {
+        &self.krdg
+    }
+}
+
+/// Checks one column's raw values: finite and non-negative `aicen`, `vicen` (and `aice0` when
+/// given), and matching lengths. Returns Σ aicen.
+pub(crate) fn check_column(
+    aicen: &[f64],
+    vicen: &[f64],
+    aice0: Option<f64>,
+) -> Result<f64, ColumnError> {
+    let mut sum = 0.0;
+    for (n, (&a, &v)) in aicen.iter().zip(vicen).enumerate() {
+        if !a.is_finite() {
+            return Err(ColumnError::NotFinite {
+                var: "aicen",
+                category: Some(n),
+                value: a,
+            });
+        }
+        if a < 0.0 {
+            return Err(ColumnError::Negative {
+                var: "aicen",
+                category: Some(n),
+                value: a,
+            });
+        }
+        if !v.is_finite() {
+            return Err(ColumnError::NotFinite {
+                var: "vicen",
+                category: Some(n),
+                value: v,
+            });
+        }
+        if v < 0.0 {
+            return Err(ColumnError::Negative {
+                var: "vicen",
+                category: Some(n),
+                value: v,
+            });
+        }
+        sum += a;
+    }
+    if let Some(a0) = aice0 {
+        if !a0.is_finite() {
+            return Err(ColumnError::NotFinite {
+                var: "aice0",
+                category: None,
+                value: a0,
+            });
+        }
+        if a0 < 0.0 {
+            return Err(ColumnError::Negative {
+                var: "aice0",
+                category: None,
+                value: a0,
+            });
+        }
+    }
+    Ok(sum)
+}
+
+pub(crate) fn check_len(var: &'static str, found: usize, ncat: usize) -> Result<(), ItdError> {
+    if found != ncat {
+        return Err(ItdError::Shape {
+            var,
+            expected: vec![ncat],
+            found: vec![found],
+        });
+    }
+    Ok(())
+}

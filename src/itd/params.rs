@@ -1,0 +1,225 @@
+//! Physical constants and tunable parameters of the thickness-distribution physics.
+//!
+//! Every value is a named, overridable field of [`ItdParams`] whose [`Default`] is the
+//! CICE/Icepack default (`icepack_parameters.F90`, `icepack_mechred.F90`). Units are SI.
+
+/// Parameters of participation, redistribution, strength and the ridging step.
+///
+/// `ItdParams::default()` reproduces CICE/Icepack; change any field to override it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ItdParams {
+    /// Density of sea ice ρ_i (kg/m³). CICE `rhoi` = 917.
+    pub rhoi: f64,
+    /// Density of sea water ρ_w (kg/m³). CICE `rhow` = 1026.
+    pub rhow: f64,
+    /// Gravitational acceleration g (m/s²). CICE `gravit` = 9.80616.
+    pub gravit: f64,
+    /// Thorndike et al. (1975) participation cut-off G* (dimensionless). CICE `Gstar` = 0.15.
+    pub gstar: f64,
+    /// Lipscomb et al. (2007) exponential participation scale a* (dimensionless).
+    /// CICE `astar` = 0.05.
+    pub astar: f64,
+    /// Hibler (1980) ridge thickness scale H* (m) of the uniform redistribution.
+    /// CICE `Hstar` = 25.
+    pub hstar: f64,
+    /// Largest thickness of ice that rafts rather than ridges (m): h_min = min(2h, h + maxraft).
+    /// CICE `maxraft` = 1.
+    pub maxraft: f64,
+    /// Lipscomb et al. (2007) e-folding parameter μ (m^½) of the exponential redistribution,
+    /// λ = μ·√h. CICE `mu_rdg` = 3.
+    pub mu_rdg: f64,
+    /// Fraction of the shear deformation energy that goes into ridging, C_s
+    /// (dimensionless; Flato and Hibler 1995). CICE `Cs` = 0.25.
+    pub cs: f64,
+    /// Hibler (1979) strength parameter P* (N/m²). CICE `Pstar` = 2.75e4.
+    pub pstar: f64,
+    /// Hibler (1979) concentration parameter C* (dimensionless). CICE `Cstar` = 20.
+    pub cstar: f64,
+    /// Smallest area treated as non-zero (dimensionless). CICE `puny` = 1e-11.
+    pub puny: f64,
+    /// Largest argument of the exponentials of the redistribution (underflow guard).
+    /// CICE `exp_argmax` = 100.
+    pub exp_argmax: f64,
+    /// Upper bound (m) given to the thickest category in the ridging step so that all ridged
+    /// ice fits below it (CICE `ridge_prep`: `big` = 1e8).
+    pub big: f64,
+    /// Maximum number of ridging iterations. CICE `nitermax` = 20.
+    pub nitermax: usize,
+    /// pressridge (not CICE): tolerance on |aice0 + Σ aicen − 1| for the strength routine.
+    /// A ridging step always leaves a total area of 1, so a larger departure is bad input.
+    /// Default 1e-6 (accepts single-precision files).
+    pub area_tolerance: f64,
+    /// pressridge (not CICE): largest total area aice0 + Σ aicen accepted as input of a
+    /// ridging step (what advection can leave behind). Default 2.
+    pub max_area_before_ridging: f64,
+}
+
+impl Default for ItdParams {
+    fn default() -> Self {
+        Self {
+            rhoi: 917.0,
+            rhow: 1026.0,
+            gravit: 9.80616,
+            gstar: 0.15,
+            astar: 0.05,
+            hstar: 25.0,
+            maxraft: 1.0,
+            mu_rdg: 3.0,
+            cs: 0.25,
+            pstar: 2.75e4,
+            cstar: 20.0,
+            puny: 1.0e-11,
+            exp_argmax: 100.0,
+            big: 1.0e8,
+            nitermax: 20,
+            area_tolerance: 1.0e-6,
+            max_area_before_ridging: 2.0,
+        }
+    }
+}
+
+impl ItdParams {
+    /// Names accepted by [`ItdParams::set`] (the field names).
+    pub const NAMES: &'static [&'static str] = &[
+        "rhoi",
+        "rhow",
+        "gravit",
+        "gstar",
+        "astar",
+        "hstar",
+        "maxraft",
+        "mu_rdg",
+        "cs",
+        "pstar",
+        "cstar",
+        "puny",
+        "exp_argmax",
+        "big",
+        "nitermax",
+        "area_tolerance",
+        "max_area_before_ridging",
+    ];
+
+    /// Overrides one parameter by its field name (e.g. `"mu_rdg"`, units as the field).
+    /// Rejects unknown names and values that are not finite and positive (`cs` and
+    /// `maxraft` may be 0; `nitermax` must be a whole number ≥ 1; `rhow` must exceed `rhoi`).
+    pub fn set(&mut self, name: &str, value: f64) -> Result<(), super::ItdError> {
+        let bad = |reason: &'static str| super::ItdError::Parameter {
+            name: Self::NAMES
+                .iter()
+                .find(|n| **n == name)
+                .copied()
+                .unwrap_or("unknown"),
+            value,
+            reason,
+        };
+        if !value.is_finite() {
+            return Err(bad("must be finite"));
+        }
+        let may_be_zero = matches!(name, "cs" | "maxraft");
+        if value < 0.0 || (value == 0.0 && !may_be_zero) {
+            return Err(bad("must be positive"));
+        }
+        // Work on a copy so that a rejected value leaves `self` unchanged.
+        let mut new = *self;
+        match name {
+            "rhoi" => new.rhoi = value,
+            "rhow" => new.rhow = value,
+            "gravit" => new.gravit = value,
+            "gstar" => new.gstar = value,
+            "astar" => new.astar = value,
+            "hstar" => new.hstar = value,
+            "maxraft" => new.maxraft = value,
+            "mu_rdg" => new.mu_rdg = value,
+            "cs" => new.cs = value,
+            "pstar" => new.pstar = value,
+            "cstar" => new.cstar = value,
+            "puny" => new.puny = value,
+            "exp_argmax" => new.exp_argmax = value,
+            "big" => new.big = value,
+            "nitermax" => {
+                if value.fract() != 0.0 || value < 1.0 {
+                    return Err(bad("must be a whole number >= 1"));
+                }
+                new.nitermax = value as usize;
+            }
+            "area_tolerance" => new.area_tolerance = value,
+            "max_area_before_ridging" => new.max_area_before_ridging = value,
+            _ => return Err(bad("unknown parameter name (see ItdParams::NAMES)")),
+        }
+        if new.rhow <= new.rhoi {
+            return Err(bad("rhow must exceed rhoi"));
+        }
+        *self = new;
+        Ok(())
+    }
+
+    /// Rothrock (1975) potential-energy coefficient C_p = g·ρ_i·(ρ_w − ρ_i)/(2ρ_w) (kg m⁻² s⁻²,
+    /// i.e. N/m³), evaluated in the same order as Icepack's `Cp` so results match to the bit.
+    pub fn cp(&self) -> f64 {
+        0.5 * self.gravit * (self.rhow - self.rhoi) * self.rhoi / self.rhow
+    }
+}
+
+/// Participation function b(h) (Thorndike et al. 1975; Lipscomb et al. 2007).
+/// CICE `krdg_partic`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Participation {
+    /// Thorndike et al. (1975): b = (2/G*)(1 − G/G*) for G < G* (CICE `krdg_partic = 0`).
+    Thorndike,
+    /// Lipscomb et al. (2007): b ∝ exp(−G/a*) (CICE `krdg_partic = 1`, the default).
+    #[default]
+    Exponential,
+}
+
+/// Thickness distribution of newly ridged ice. CICE `krdg_redist`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Redistribution {
+    /// Hibler (1980): uniform between h_min = min(2h, h + maxraft) and 2√(H*·h)
+    /// (CICE `krdg_redist = 0`).
+    Uniform,
+    /// Lipscomb et al. (2007): exp(−(h_r − h_min)/λ) for h_r ≥ h_min, λ = μ√h
+    /// (CICE `krdg_redist = 1`, the default).
+    #[default]
+    Exponential,
+}
+
+/// Ice strength formula. CICE `kstrength`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum StrengthFormula {
+    /// Rothrock (1975) energetics with a frictional factor C_f (CICE `kstrength = 1`, default).
+    #[default]
+    Rothrock,
+    /// Hibler (1979): P = P*·h·exp(−C*(1 − A)) (CICE `kstrength = 0`).
+    Hibler1979,
+}
+
+impl Participation {
+    /// Short lower-case name used in the CLI and in NetCDF attributes.
+    pub fn name(self) -> &'static str {
+        match self {
+            Participation::Thorndike => "thorndike",
+            Participation::Exponential => "exponential",
+        }
+    }
+}
+
+impl Redistribution {
+    /// Short lower-case name used in the CLI and in NetCDF attributes.
+    pub fn name(self) -> &'static str {
+        match self {
+            Redistribution::Uniform => "uniform",
+            Redistribution::Exponential => "exponential",
+        }
+    }
+}
+
+impl StrengthFormula {
+    /// Short lower-case name used in the CLI and in NetCDF attributes.
+    pub fn name(self) -> &'static str {
+        match self {
+            StrengthFormula::Rothrock => "rothrock",
+            StrengthFormula::Hibler1979 => "hibler",
+        }
+    }
+}

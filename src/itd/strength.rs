@@ -1,0 +1,337 @@
+//! Ice strength P (N/m): Rothrock (1975) energetics as in CICE/Icepack
+//! `icepack_ice_strength` (`kstrength = 1`), or Hibler (1979) (`kstrength = 0`).
+//!
+//! Rothrock (1975):
+//! P = C_f·C_p·Σ_n a_Pn(⟨h_r²⟩_n/k_n − h_n²) / (a_P0 + Σ_n a_Pn(1 − 1/k_n)),
+//! C_p = g·ρ_i·(ρ_w − ρ_i)/(2ρ_w); with a C_f table, C_f(h_n) moves inside the sum.
+//! Hibler (1979): P = P*·V·exp(−C*(1 − A)), V = Σ vicen, A = Σ aicen.
+
+// Several parallel per-category arrays are indexed by the category number, as in CICE.
+#![allow(clippy::needless_range_loop)]
+
+use ndarray::{ArrayView1, ArrayView2, ArrayViewMut1, Axis};
+
+use super::cf::{Cf, CfProvider};
+use super::lanes;
+use super::params::{ItdParams, Participation, Redistribution, StrengthFormula};
+use super::participation::participation_cached;
+use super::redistribution::{mean_square_ridge_thickness, net_to_gross, ridge_geometry};
+use super::{ColumnError, ItdError, Workspace, check_column, check_len};
+
+/// Options of the strength routine. `StrengthOptions::default()` is CICE's default
+/// (exponential participation, exponential redistribution, Rothrock, C_f = 17).
+#[derive(Debug, Clone, Default)]
+pub struct StrengthOptions {
+    /// Participation function (CICE `krdg_partic`).
+    pub participation: Participation,
+    /// Ridged-ice redistribution (CICE `krdg_redist`).
+    pub redistribution: Redistribution,
+    /// Strength formula (CICE `kstrength`).
+    pub formula: StrengthFormula,
+    /// Frictional factor C_f (Rothrock only).
+    pub cf: Cf,
+    /// Physical constants and tunables.
+    pub params: ItdParams,
+}
+
+impl StrengthOptions {
+    /// Checks option values that could otherwise give garbage (C_f).
+    pub fn validate(&self) -> Result<(), ItdError> {
+        self.cf.validate()
+    }
+}
+
+/// Result of the strength routine for one column.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ColumnStrength {
+    /// Ice strength P (N/m).
+    pub strength: f64,
+    /// True when a C_f table was queried outside its thickness range (value clamped).
+    pub cf_clamped: bool,
+}
+
+/// Strength P (N/m) of one column.
+///
+/// Inputs: `aicen` (dimensionless) and `vicen` (m) of length `ncat = ws.ncat()`, and the
+/// open-water fraction `aice0` (dimensionless), or `None` to use 1 − Σ aicen. Errors on
+/// NaN/infinite or negative values and on a total area that differs from 1 by more than
+/// [`ItdParams::area_tolerance`]. An empty column (`aice0` and every `aicen` exactly 0, e.g.
+/// land) has strength 0, where CICE divides 0 by 0. Does not allocate.
+///
+/// # Panics
+/// If the slice lengths differ from `ws.ncat()` (the batched driver checks shapes first).
+pub fn strength_column(
+    aicen: &[f64],
+    vicen: &[f64],
+    aice0: Option<f64>,
+    opts: &StrengthOptions,
+    ws: &mut Workspace,
+) -> Result<ColumnStrength, ColumnError> {
+    let ncat = ws.ncat;
+    assert!(
+        aicen.len() == ncat && vicen.len() == ncat,
+        "column length differs from ncat"
+    );
+    let p = &opts.params;
+    let sum = check_column(aicen, vicen, aice0)?;
+    let aice0 = match aice0 {
+        // Empty column (land, or no data): defined as zero strength (CICE: 0/0).
+        Some(a0) if a0 == 0.0 && sum == 0.0 => {
+            return Ok(ColumnStrength {
+                strength: 0.0,
+                cf_clamped: false,
+            });
+        }
+        Some(a0) => {
+            let total = a0 + sum;
+            if (total - 1.0).abs() > p.area_tolerance {
+                return Err(ColumnError::AreaSum {
+                    total,
+                    tolerance: p.area_tolerance,
+                });
+            }
+            a0
+        }
+        None => {
+            if sum > 1.0 + p.area_tolerance {
+                return Err(ColumnError::IceAreaAboveOne {
+                    total: sum,
+                    tolerance: p.area_tolerance,
+                });
+            }
+            f64::max(1.0 - sum, 0.0)
+        }
+    };
+
+    if opts.formula == StrengthFormula::Hibler1979 {
+        let vice: f64 = vicen.iter().sum();
+        let strength = p.pstar * vice * (-p.cstar * (1.0 - sum)).exp();
+        return Ok(ColumnStrength {
+            strength,
+            cf_clamped: false,
+        });
+    }
+
+    participation_cached(
+        opts.participation,
+        p,
+        aice0,
+        aicen,
+        &mut ws.gsum,
+        &mut ws.apartic,
+        &mut ws.exp_cache,
+    );
+    for n in 0..ncat {
+        let g = ridge_geometry(opts.redistribution, p, aicen[n], vicen[n]);
+        ws.hi[n] = g.hi;
+        ws.hrmin[n] = g.hrmin;
+        ws.hrmax[n] = g.hrmax;
+        ws.hrexp[n] = g.hrexp;
+        ws.krdg[n] = g.krdg;
+    }
+    let aksum = net_to_gross(&ws.apartic, &ws.krdg);
+    if aksum <= 0.0 {
+        // Nothing participates (no area above puny): defined as zero strength.
+        return Ok(ColumnStrength {
+            strength: 0.0,
+            cf_clamped: false,
+        });
+    }
+
+    let mut total = 0.0;
+    let mut clamped = false;
+    let term = |ws: &Workspace, n: usize| {
+        let g = super::redistribution::RidgeGeometry {
+            hi: ws.hi[n],
+            hrmin: ws.hrmin[n],
+            hrmax: ws.hrmax[n],
+            hrexp: ws.hrexp[n],
+            krdg: ws.krdg[n],
+        };
+        let h2rdg = mean_square_ridge_thickness(opts.redistribution, &g);
+        -g.hi * g.hi + h2rdg / g.krdg
+    };
+    match &opts.cf {
+        Cf::Constant(_) => {
+            for n in 0..ncat {
+                let ap = ws.apartic[n + 1];
+                if aicen[n] > p.puny && ap > 0.0 {
+                    total += ap * term(ws, n);
+                }
+            }
+        }
+        Cf::Table(_) | Cf::Custom(_) => {
+            for n in 0..ncat {
+                let ap = ws.apartic[n + 1];
+                if aicen[n] > p.puny && ap > 0.0 {
+                    let l = match &opts.cf {
+                        Cf::Table(t) => t.lookup(ws.hi[n]),
+                        Cf::Custom(c) => c.lookup(ws.hi[n]),
+                        Cf::Constant(_) => unreachable!(),
+                    };
+                    clamped |= l.clamped;
+                    total += l.value * ap * term(ws, n);
+                }
+            }
+        }
+    }
+    let strength = match opts.cf {
+        Cf::Constant(cf) => cf * p.cp() * total / aksum,
+        _ => p.cp() * total / aksum,
+    };
+    Ok(ColumnStrength {
+        strength,
+        cf_clamped: clamped,
+    })
+}
+
+/// Summary of a batched call.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct BatchSummary {
+    /// Columns computed.
+    pub columns: usize,
+    /// Columns where a C_f table was queried outside its range (values clamped).
+    pub cf_clamped_columns: usize,
+}
+
+/// Strength P (N/m) of `ncol` columns into `out` (length `ncol`).
+///
+/// `aicen` (dimensionless) and `vicen` (m) have shape `(ncat, ncol)` with any strides
+/// (Fortran `aicen(ncat, ncol)` or a NetCDF `(ncat, y, x)` block reshaped to `(ncat, ncol)`).
+/// `aice0` has length `ncol`, or `None` for 1 − Σ aicen. Stops at the first bad column with
+/// [`ItdError::Column`] naming its flat index. One workspace per call; no allocation per
+/// column.
+pub fn strength_batch(
+    aicen: ArrayView2<f64>,
+    vicen: ArrayView2<f64>,
+    aice0: Option<ArrayView1<f64>>,
+    opts: &StrengthOptions,
+    out: ArrayViewMut1<f64>,
+) -> Result<BatchSummary, ItdError> {
+    strength_batch_masked(aicen, vicen, aice0, None, f64::NAN, opts, out)
+}
+
+/// As [`strength_batch`], skipping the columns where `valid[c]` is false (land, missing
+/// data): they get `fill` in `out` and are neither validated nor counted in
+/// [`BatchSummary::columns`].
+pub fn strength_batch_masked(
+    aicen: ArrayView2<f64>,
+    vicen: ArrayView2<f64>,
+    aice0: Option<ArrayView1<f64>>,
+    valid: Option<ArrayView1<bool>>,
+    fill: f64,
+    opts: &StrengthOptions,
+    mut out: ArrayViewMut1<f64>,
+) -> Result<BatchSummary, ItdError> {
+    opts.validate()?;
+    let (ncat, ncol) = aicen.dim();
+    if vicen.dim() != (ncat, ncol) {
+        return Err(ItdError::Shape {
+            var: "vicen",
+            expected: vec![ncat, ncol],
+            found: vicen.shape().to_vec(),
+        });
+    }
+    if let Some(a0) = &aice0 {
+        check_len("aice0", a0.len(), ncol)?;
+    }
+    check_len("strength", out.len(), ncol)?;
+    if let Some(m) = &valid {
+        check_len("valid", m.len(), ncol)?;
+    }
+    let mut ws = Workspace::new(ncat);
+    let mut abuf = vec![0.0; ncat];
+    let mut vbuf = vec![0.0; ncat];
+    let mut summary = BatchSummary {
+        columns: ncol,
+        cf_clamped_columns: 0,
+    };
+    let mut scalar = |c: usize, out: &mut ArrayViewMut1<f64>| -> Result<(), ItdError> {
+        if let Some(m) = &valid
+            && !m[c]
+        {
+            out[c] = fill;
+            summary.columns -= 1;
+            return Ok(());
+        }
+        let acol = aicen.index_axis(Axis(1), c);
+        let vcol = vicen.index_axis(Axis(1), c);
+        let a: &[f64] = match acol.as_slice() {
+            Some(s) => s,
+            None => {
+                abuf.iter_mut().zip(acol.iter()).for_each(|(d, s)| *d = *s);
+                &abuf
+            }
+        };
+        let v: &[f64] = match vcol.as_slice() {
+            Some(s) => s,
+            None => {
+                vbuf.iter_mut().zip(vcol.iter()).for_each(|(d, s)| *d = *s);
+                &vbuf
+            }
+        };
+        let a0 = aice0.as_ref().map(|x| x[c]);
+        let r = strength_column(a, v, a0, opts, &mut ws)
+            .map_err(|source| ItdError::Column { column: c, source })?;
+        out[c] = r.strength;
+        summary.cf_clamped_columns += usize::from(r.cf_clamped);
+        Ok(())
+    };
+
+    // Block path: Rothrock with a constant C_f, L columns at a time, same numbers.
+    let mut c = 0;
+    if let (StrengthFormula::Rothrock, Cf::Constant(cf)) = (opts.formula, &opts.cf)
+        && ncat <= lanes::MAX_NCAT
+    {
+        let p = &opts.params;
+        let xtmp = 1.0 / (1.0 - (-(1.0 / p.astar)).exp());
+        let mut b = lanes::Block::new();
+        while c + lanes::L <= ncol {
+            let masked = valid
+                .as_ref()
+                .is_some_and(|m| (c..c + lanes::L).any(|k| !m[k]));
+            let r = if masked {
+                None
+            } else {
+                for n in 0..ncat {
+                    for l in 0..lanes::L {
+                        b.a[n][l] = aicen[[n, c + l]];
+                        b.v[n][l] = vicen[[n, c + l]];
+                    }
+                }
+                if let Some(a0) = &aice0 {
+                    for l in 0..lanes::L {
+                        b.a0[l] = a0[c + l];
+                    }
+                }
+                lanes::strength_block(
+                    &b,
+                    ncat,
+                    aice0.is_some(),
+                    opts.participation,
+                    opts.redistribution,
+                    p,
+                    *cf,
+                    xtmp,
+                )
+            };
+            match r {
+                Some(vals) => {
+                    for l in 0..lanes::L {
+                        out[c + l] = vals[l];
+                    }
+                }
+                None => {
+                    for k in c..c + lanes::L {
+                        scalar(k, &mut out)?;
+                    }
+                }
+            }
+            c += lanes::L;
+        }
+    }
+    for k in c..ncol {
+        scalar(k, &mut out)?;
+    }
+    Ok(summary)
+}

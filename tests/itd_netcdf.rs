@@ -1,0 +1,490 @@
+//! NetCDF input/output and the command line on small files written here and on the sample.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use approx::assert_relative_eq;
+use ndarray::{Array1, Array2};
+use pressridge::io::itd_netcdf::{
+    FieldMeta, ItdGrid, NetcdfError, Output, read_cf_table, read_field, read_itd, write_cf_table,
+    write_output,
+};
+use pressridge::itd::{CfTable, ColumnError};
+
+fn tmp(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("pressridge-itd-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name)
+}
+
+fn sample() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("data/sample_itd.nc")
+}
+
+/// A 2 × 3 grid, 2 categories; column (j=1, i=2) gets `bad` in aicen category 1.
+fn small_grid(bad: Option<f64>) -> ItdGrid {
+    let mut aicen = Array2::from_elem((2, 6), 0.4);
+    if let Some(b) = bad {
+        aicen[[1, 5]] = b;
+    }
+    ItdGrid {
+        ncat_dim: "nc".into(),
+        spatial_dims: vec![("y".into(), 2), ("x".into(), 3)],
+        aicen,
+        vicen: Array2::from_elem((2, 6), 0.6),
+        aice0: Some(Array1::from_elem(6, 0.2)),
+        hin_max: None,
+        divu: None,
+        shear: None,
+        valid: None,
+        fill_value: None,
+    }
+}
+
+fn write_grid(path: &Path, g: &ItdGrid) {
+    write_output(
+        path,
+        &Output {
+            grid: g,
+            write_itd: true,
+            hin_max: Some(&[0.0, 1.0, 3.0]),
+            fields: &[],
+            global: &[],
+            fill: None,
+        },
+    )
+    .unwrap();
+}
+
+#[test]
+fn round_trip_keeps_values_and_dimensions() {
+    let p = tmp("rt.nc");
+    let g = small_grid(None);
+    write_grid(&p, &g);
+    let r = read_itd(&p).unwrap();
+    assert_eq!(r.ncat_dim, "nc");
+    assert_eq!(r.spatial_dims, g.spatial_dims);
+    assert_eq!(r.aicen, g.aicen);
+    assert_eq!(r.vicen, g.vicen);
+    assert_eq!(r.aice0, g.aice0);
+    assert_eq!(r.hin_max, Some(vec![0.0, 1.0, 3.0]));
+    assert_eq!(r.spatial_index(5), "y=1, x=2");
+}
+
+#[test]
+fn bad_column_is_located_by_spatial_index() {
+    let p = tmp("bad.nc");
+    let g = small_grid(Some(-0.1));
+    write_grid(&p, &g);
+    let r = read_itd(&p).unwrap();
+    let mut out = Array1::zeros(6);
+    let e = pressridge::itd::strength_batch(
+        r.aicen.view(),
+        r.vicen.view(),
+        r.aice0.as_ref().map(|a| a.view()),
+        &Default::default(),
+        out.view_mut(),
+    )
+    .map_err(|e| r.locate(&p, e))
+    .unwrap_err();
+    assert!(matches!(
+        e,
+        NetcdfError::Column {
+            column: 5,
+            source: ColumnError::Negative {
+                var: "aicen",
+                category: Some(1),
+                ..
+            },
+            ..
+        }
+    ));
+    let msg = e.to_string();
+    assert!(
+        msg.contains("y=1, x=2") && msg.contains("aicen[category 1]"),
+        "{msg}"
+    );
+}
+
+/// Writes a bare classic-format file with the given dimensions and variables.
+fn raw_file(path: &Path, dims: &[(&str, usize)], vars: &[(&str, &[&str], Vec<f64>)]) {
+    let mut f = netcdf::create_with(path, netcdf::Options::_64BIT_OFFSET).unwrap();
+    for (n, l) in dims {
+        f.add_dimension(n, *l).unwrap();
+    }
+    for (n, d, _) in vars {
+        f.add_variable::<f64>(n, d).unwrap();
+    }
+    f.enddef().unwrap();
+    for (n, _, v) in vars {
+        f.variable_mut(n).unwrap().put_values(v, ..).unwrap();
+    }
+}
+
+#[test]
+fn missing_and_mismatched_variables_are_named() {
+    // No vicen.
+    let p = tmp("novicen.nc");
+    raw_file(
+        &p,
+        &[("ncat", 2), ("x", 3)],
+        &[("aicen", &["ncat", "x"], vec![0.1; 6])],
+    );
+    let e = read_itd(&p).unwrap_err();
+    assert!(
+        matches!(&e, NetcdfError::MissingVariable { var, .. } if var == "vicen"),
+        "{e}"
+    );
+    // vicen on other dimensions.
+    let p = tmp("shape.nc");
+    raw_file(
+        &p,
+        &[("ncat", 2), ("x", 3), ("y", 2)],
+        &[
+            ("aicen", &["ncat", "x"], vec![0.1; 6]),
+            ("vicen", &["ncat", "y"], vec![0.1; 4]),
+        ],
+    );
+    let e = read_itd(&p).unwrap_err();
+    assert!(
+        matches!(&e, NetcdfError::Shape { var, .. } if var == "vicen"),
+        "{e}"
+    );
+    // aice0 on the wrong dimensions.
+    let p = tmp("shape0.nc");
+    raw_file(
+        &p,
+        &[("ncat", 2), ("x", 3)],
+        &[
+            ("aicen", &["ncat", "x"], vec![0.1; 6]),
+            ("vicen", &["ncat", "x"], vec![0.1; 6]),
+            ("aice0", &["ncat"], vec![0.1; 2]),
+        ],
+    );
+    let e = read_itd(&p).unwrap_err();
+    assert!(
+        matches!(&e, NetcdfError::Shape { var, .. } if var == "aice0"),
+        "{e}"
+    );
+    // hin_max of the wrong length.
+    let p = tmp("hin.nc");
+    raw_file(
+        &p,
+        &[("ncat", 2), ("x", 3), ("nb", 2)],
+        &[
+            ("aicen", &["ncat", "x"], vec![0.1; 6]),
+            ("vicen", &["ncat", "x"], vec![0.1; 6]),
+            ("hin_max", &["nb"], vec![0.0, 1.0]),
+        ],
+    );
+    let e = read_itd(&p).unwrap_err();
+    assert!(
+        matches!(&e, NetcdfError::Shape { var, .. } if var == "hin_max"),
+        "{e}"
+    );
+}
+
+#[test]
+fn cf_table_round_trip() {
+    let p = tmp("cf.nc");
+    let t = CfTable::new(vec![0.2, 1.0, 3.0], vec![5.0, 12.0, 20.0]).unwrap();
+    write_cf_table(&p, &t).unwrap();
+    assert_eq!(read_cf_table(&p).unwrap(), t);
+}
+
+#[test]
+fn sample_file_is_valid_and_ridging_conserves_it() {
+    let g = read_itd(&sample()).unwrap();
+    assert_eq!(g.ncat(), 5);
+    assert_eq!(
+        g.spatial_dims,
+        vec![("nj".to_string(), 60), ("ni".to_string(), 80)]
+    );
+    let a0 = g.aice0.clone().unwrap();
+    assert!(
+        a0.iter().any(|&x| x == 1.0),
+        "sample needs open-water cells"
+    );
+    assert!(
+        a0.iter().any(|&x| x == 0.0),
+        "sample needs full-cover cells"
+    );
+    let vol0 = g.vicen.sum();
+    let mut aicen = g.aicen.clone();
+    let mut vicen = g.vicen.clone();
+    let mut aice0 = a0.clone();
+    let conv = g.divu.clone().unwrap().mapv(|d| f64::max(-d, 0.0));
+    let shear = g.shear.clone().unwrap();
+    let mut r: [Array1<f64>; 5] = std::array::from_fn(|_| Array1::zeros(g.ncol()));
+    let [c, o, d1, d2, dv] = &mut r;
+    pressridge::itd::ridge_batch(
+        aicen.view_mut(),
+        vicen.view_mut(),
+        aice0.view_mut(),
+        g.hin_max.as_ref().unwrap(),
+        conv.view(),
+        shear.view(),
+        86_400.0,
+        &Default::default(),
+        pressridge::itd::RidgeRatesMut {
+            closing: c.view_mut(),
+            opening: o.view_mut(),
+            dardg1dt: d1.view_mut(),
+            dardg2dt: d2.view_mut(),
+            dvirdgdt: dv.view_mut(),
+        },
+    )
+    .unwrap();
+    assert_relative_eq!(vicen.sum(), vol0, max_relative = 1e-13);
+    for col in 0..g.ncol() {
+        assert!((aice0[col] + aicen.column(col).sum() - 1.0).abs() < 1e-10);
+    }
+    assert!(r[2].iter().any(|&x| x > 0.0), "some ice must ridge");
+}
+
+fn cli(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_pressridge"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn cli_strength_ridge_step_and_plot() {
+    let s = sample();
+    let s = s.to_str().unwrap();
+    let out = tmp("strength.nc");
+    let o = cli(&[
+        "strength",
+        "--input",
+        s,
+        "--output",
+        out.to_str().unwrap(),
+        "--cf-preset",
+        "flato1991",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (dims, p) = read_field(&out, "strength").unwrap();
+    assert_eq!(dims, vec![("nj".to_string(), 60), ("ni".to_string(), 80)]);
+    assert!(p.iter().all(|x| x.is_finite() && *x >= 0.0) && p.iter().any(|x| *x > 0.0));
+    let f = netcdf::open(&out).unwrap();
+    let cf: String = f
+        .attribute("cf")
+        .unwrap()
+        .value()
+        .unwrap()
+        .try_into()
+        .unwrap();
+    assert_eq!(cf, "constant 15");
+
+    // Parameter override and a C_f table (values clamped outside 0.5–2 m, and flagged).
+    let out2 = tmp("strength_mu.nc");
+    let o = cli(&[
+        "strength",
+        "--input",
+        s,
+        "--output",
+        out2.to_str().unwrap(),
+        "--param",
+        "mu_rdg=4",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (_, p4) = read_field(&out2, "strength").unwrap();
+    let (_, p17) = {
+        let o17 = tmp("strength_17.nc");
+        assert!(
+            cli(&["strength", "--input", s, "--output", o17.to_str().unwrap()])
+                .status
+                .success()
+        );
+        read_field(&o17, "strength").unwrap()
+    };
+    assert!(p4.iter().zip(&p17).all(|(a, b)| a >= b) && p4.iter().zip(&p17).any(|(a, b)| a > b));
+    let bad = cli(&[
+        "strength",
+        "--input",
+        s,
+        "--output",
+        out2.to_str().unwrap(),
+        "--param",
+        "mu_rdg=-1",
+    ]);
+    assert!(!bad.status.success() && String::from_utf8_lossy(&bad.stderr).contains("mu_rdg"));
+    let table = tmp("cf_table.nc");
+    write_cf_table(
+        &table,
+        &CfTable::new(vec![0.5, 2.0], vec![17.0, 17.0]).unwrap(),
+    )
+    .unwrap();
+    let out3 = tmp("strength_table.nc");
+    let o = cli(&[
+        "strength",
+        "--input",
+        s,
+        "--output",
+        out3.to_str().unwrap(),
+        "--cf-table",
+        table.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("clamped"));
+    let (_, pt) = read_field(&out3, "strength").unwrap();
+    for (a, b) in pt.iter().zip(&p17) {
+        assert_relative_eq!(*a, *b, max_relative = 1e-12, epsilon = 1e-9);
+    }
+
+    let rs = tmp("ridged.nc");
+    let o = cli(&[
+        "ridge-step",
+        "--input",
+        s,
+        "--output",
+        rs.to_str().unwrap(),
+        "--dt",
+        "3600",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let g = read_itd(&rs).unwrap();
+    assert_eq!(g.ncat(), 5);
+    assert!(read_field(&rs, "dardg1dt").is_ok());
+
+    let png = tmp("map.png");
+    let o = cli(&[
+        "plot-strength",
+        "--input",
+        out.to_str().unwrap(),
+        "--output",
+        png.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(std::fs::metadata(&png).unwrap().len() > 1000);
+
+    // Bad input: the error names the variable and the spatial index, exit status 1.
+    let bad = tmp("cli_bad.nc");
+    write_grid(&bad, &small_grid(Some(f64::NAN)));
+    let o = cli(&[
+        "strength",
+        "--input",
+        bad.to_str().unwrap(),
+        "--output",
+        tmp("x.nc").to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("y=1, x=2") && err.contains("aicen"), "{err}");
+}
+
+#[test]
+fn write_output_rejects_wrong_field_length() {
+    let g = small_grid(None);
+    let meta = FieldMeta {
+        name: "strength",
+        units: "N m-1",
+        long_name: "P",
+        standard_name: None,
+    };
+    let data = [0.0; 5];
+    let e = write_output(
+        &tmp("len.nc"),
+        &Output {
+            grid: &g,
+            write_itd: false,
+            hin_max: None,
+            fields: &[(meta, &data)],
+            global: &[],
+            fill: None,
+        },
+    )
+    .unwrap_err();
+    assert!(matches!(e, NetcdfError::Shape { .. }));
+}
+
+/// A CICE-history-like file: `aicen(time, nc, nj, ni)` in single precision with
+/// `_FillValue = 1e30` on a land cell. The length-1 time dimension is dropped, the land cell is
+/// masked (fill on output), the other cells are computed.
+#[test]
+fn cice_like_file_with_time_and_land_fill() {
+    let p = tmp("cice_like.nc");
+    {
+        let mut f = netcdf::create_with(&p, netcdf::Options::_64BIT_OFFSET).unwrap();
+        for (n, l) in [("time", 1), ("nc", 2), ("nj", 2), ("ni", 3)] {
+            f.add_dimension(n, l).unwrap();
+        }
+        for n in ["aicen", "vicen"] {
+            let mut v = f
+                .add_variable::<f32>(n, &["time", "nc", "nj", "ni"])
+                .unwrap();
+            v.put_attribute("_FillValue", 1.0e30f32).unwrap();
+        }
+        f.enddef().unwrap();
+        // Category-major, 6 columns; column 1 (nj=0, ni=1) is land.
+        let mut a = vec![0.45f32; 12];
+        let mut v = vec![0.9f32; 12];
+        for k in [1usize, 7] {
+            a[k] = 1.0e30;
+            v[k] = 1.0e30;
+        }
+        f.variable_mut("aicen").unwrap().put_values(&a, ..).unwrap();
+        f.variable_mut("vicen").unwrap().put_values(&v, ..).unwrap();
+    }
+    let g = read_itd(&p).unwrap();
+    assert_eq!(g.ncat(), 2);
+    assert_eq!(
+        g.spatial_dims,
+        vec![("nj".to_string(), 2), ("ni".to_string(), 3)]
+    );
+    let valid = g.valid.clone().unwrap();
+    assert_eq!(valid.to_vec(), vec![true, false, true, true, true, true]);
+    assert_relative_eq!(g.fill_value.unwrap(), 1.0e30f32 as f64);
+
+    let out = tmp("cice_like_strength.nc");
+    let o = cli(&[
+        "strength",
+        "--input",
+        p.to_str().unwrap(),
+        "--output",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (_, s) = read_field(&out, "strength").unwrap();
+    assert_eq!(s[1], 1.0e30f32 as f64);
+    assert!(
+        s.iter()
+            .enumerate()
+            .all(|(c, x)| c == 1 || (x.is_finite() && *x > 0.0))
+    );
+    assert!(s[0] == s[5], "identical columns give identical strength");
+    let f = netcdf::open(&out).unwrap();
+    let fv: f64 = f
+        .variable("strength")
+        .unwrap()
+        .attribute_value("_FillValue")
+        .unwrap()
+        .unwrap()
+        .try_into()
+        .unwrap();
+    assert_eq!(fv, 1.0e30f32 as f64);
+
+    // A time dimension longer than 1 is refused, not mistaken for the categories.
+    let p2 = tmp("two_times.nc");
+    {
+        let mut f = netcdf::create_with(&p2, netcdf::Options::_64BIT_OFFSET).unwrap();
+        for (n, l) in [("time", 2), ("nc", 2), ("ni", 3)] {
+            f.add_dimension(n, l).unwrap();
+        }
+        for n in ["aicen", "vicen"] {
+            f.add_variable::<f64>(n, &["time", "nc", "ni"]).unwrap();
+        }
+        f.enddef().unwrap();
+        f.variable_mut("aicen")
+            .unwrap()
+            .put_values(&[0.4; 12], ..)
+            .unwrap();
+        f.variable_mut("vicen")
+            .unwrap()
+            .put_values(&[0.4; 12], ..)
+            .unwrap();
+    }
+    let e = read_itd(&p2).unwrap_err();
+    assert!(e.to_string().contains("time"), "{e}");
+}
