@@ -104,3 +104,32 @@ fn booked_potential_energy_matches_state_function() {
     );
     assert!(w.energy().drag_dissipation > 0.0);
 }
+
+/// Drag acts on free blocks and rubble; sheet and floe blocks are damped by their own
+/// boundary forces instead (eqs 7–8, the floe's dashpots), so they feel none.
+#[test]
+fn drag_acts_on_rubble_not_on_sheet_blocks() {
+    use pressridge::dem::{Block, Role};
+    let mut dissipated = Vec::new();
+    for role in [Role::Rubble, Role::Sheet] {
+        let mut w = World::new(WorldParams::default()).unwrap();
+        let h = 0.3;
+        let block = Block {
+            width: 1.0,
+            thickness: h,
+            bevel: [0.0; 4],
+        };
+        let y = h / 2.0 - h * RHO_I / RHO_W;
+        let id = w
+            .add_rect(block, V2::new(0.0, y), 0.0, Drive::FREE, role)
+            .unwrap();
+        w.set_velocity(id, V2::new(0.5, 0.0), 0.0);
+        while w.time() < 1.0 {
+            w.step();
+        }
+        dissipated.push(w.energy().drag_dissipation);
+    }
+    // Rubble: ½ρ_w·C_d·draft·|v|·v slows it; a sheet block keeps its speed.
+    assert!(dissipated[0] > 1.0, "{dissipated:?}");
+    assert_eq!(dissipated[1], 0.0);
+}

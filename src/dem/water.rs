@@ -10,8 +10,13 @@
 //!   (its extent perpendicular to v_s);
 //! - moment M = −(ρ_w·C_d·D⁴/64)·|ω|·ω, the strip-theory moment on a plate of length D
 //!   spinning about its middle, with D the diagonal of the submerged part's bounding box.
+//!
+//! Drag acts on free blocks and rubble, not on the blocks of the sheet or the floe: the
+//! paper models the water's damping of those by the viscous forces of eqs (7)–(8) and the
+//! floe's dashpots. (Form drag on each sheet block would also be wrong in itself: the blocks
+//! of a continuous sheet moving through water shield one another.)
 
-use super::body::Bodies;
+use super::body::{Bodies, Role};
 use super::geometry::{ClipPoly, V2, area_centroid, clip_below_into};
 use serde::{Deserialize, Serialize};
 
@@ -92,7 +97,9 @@ impl WaterForces {
             let fb = w.density * g * area;
             bodies.apply(i, V2::new(0.0, fb), c);
             self.buoyancy[i] = (fb, c);
-            if !drag_on {
+            // The sheet and the floe feel the water's damping through their own boundary
+            // forces (eqs 7–8; the floe's dashpots): drag acts on free blocks and rubble.
+            if !drag_on || matches!(bodies.role[i], Role::Sheet | Role::Floe) {
                 self.drag[i] = (V2::default(), V2::default(), 0.0);
                 continue;
             }

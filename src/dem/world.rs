@@ -202,7 +202,9 @@ impl World {
         let id = self
             .bodies
             .push(shape, self.params.ice_density, pos, theta, drive);
-        self.refresh_time_step();
+        if self.steps == 0 {
+            self.refresh_time_step();
+        }
         self.acc.kinetic_start += self.body_kinetic_energy(id as usize);
         id
     }
@@ -226,6 +228,9 @@ impl World {
         self.bodies.role[id as usize] = role;
         self.bodies.block[id as usize] = Some(b);
         self.acc.kinetic_start += self.body_kinetic_energy(id as usize);
+        if self.steps == 0 {
+            self.refresh_time_step();
+        }
         Ok(id)
     }
 
@@ -250,9 +255,15 @@ impl World {
         let pb = bb.rect_centre() + V2::new(-0.5 * bb.width, 0.0);
         let h = ba.thickness.min(bb.thickness);
         let gauge = 0.5 * (ba.width + bb.width);
-        Ok(self
+        let k = self
             .joints
-            .push(Joint::new(a, b, pa, pb, h, skeletal, gauge, mat)))
+            .push(Joint::new(a, b, pa, pb, h, skeletal, gauge, mat));
+        // The time step is derived while the world is built and then kept for the run
+        // (blocks the sheet grows later are alike and need no new bound).
+        if self.steps == 0 {
+            self.refresh_time_step();
+        }
+        Ok(k)
     }
 
     /// The joints.
@@ -383,9 +394,13 @@ impl World {
         Ok(())
     }
 
-    /// Advances the world by one time step.
+    /// Advances the world by one time step. A world without free bodies has no stability
+    /// bound and does not move: set a time step with [`World::set_time_step`] to step it.
     pub fn step(&mut self) {
         let dt = self.dt;
+        if dt.is_nan() || dt <= 0.0 || dt.is_infinite() {
+            return;
+        }
         let n = self.bodies.len();
         let g = self.params.gravity;
         let b = &mut self.bodies;
