@@ -15,7 +15,9 @@
 //! - [`scene`] — every parameter of a run, from TOML, with defaults and validation;
 //! - [`simulation`] — running a scene and summarising it;
 //! - [`io`] — files (JSON states and summaries, CSV time series);
-//! - [`plot`] — figures.
+//! - [`plot`] — figures;
+//! - [`table`] — regressions of ridging ensembles (work and potential energy against ridged
+//!   volume, eqs 13–16) for tabulation.
 //!
 
 pub mod dem;
@@ -23,3 +25,4 @@ pub mod io;
 pub mod plot;
 pub mod scene;
 pub mod simulation;
+pub mod table;
