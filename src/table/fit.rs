@@ -907,11 +907,17 @@ mod tests {
 
     #[test]
     fn intervals_have_nominal_coverage_with_few_points() {
-        // n = 6 (4 dof): a normal quantile in place of t would give ~0.88 and fail,
-        // as would s² = RSS/n (~0.91) or a confidence band used for prediction.
+        // n = 6 (4 dof), 400 replicates: a normal quantile in place of t gives ~0.88, a
+        // confidence band used for prediction far less.
         let c = coverage(6, 400, 1000);
         for (name, x) in ["a", "b", "mean curve", "new observation"].iter().zip(c) {
             assert!((0.92..=0.98).contains(&x), "{name}: coverage {x}");
+        }
+        // Sharper: n = 4 (2 dof), 4000 replicates (binomial sd 0.0034), window ±3 sd.
+        // Here the normal quantile gives ~0.81 and s² = RSS/n gives ~0.91.
+        let c = coverage(4, 4000, 20_000);
+        for (name, x) in ["a", "b", "mean curve", "new observation"].iter().zip(c) {
+            assert!((0.94..=0.96).contains(&x), "n = 4, {name}: coverage {x}");
         }
     }
 
