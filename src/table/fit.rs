@@ -26,6 +26,24 @@
 //!
 //! Intervals use the Student-t distribution with `n − 2` degrees of freedom, whose quantile
 //! is computed in this module ([`student_t_quantile`]).
+//!
+//! ```
+//! use pressridge::table::fit::{Band, fit_through_origin, force, ratio};
+//!
+//! // Pooled samples of an experiment set: V (m³/m), work and potential energy (J/m).
+//! let v: [f64; 6] = [0.5, 1.0, 1.5, 2.0, 2.5, 3.0];
+//! let w: Vec<f64> = v.iter().map(|&x| x * (1.8e3 * x + 2.4e4) + 10.0 * x.sin()).collect();
+//! let pe: Vec<f64> = v.iter().map(|&x| x * (4.0e2 * x + 1.0e3) + 5.0 * x.cos()).collect();
+//! let fit_w = fit_through_origin(&v, &w)?; // eq (13)
+//! let fit_pe = fit_through_origin(&v, &pe)?; // eq (14)
+//! let f = force(&fit_w, 0.5, 2.0); // eq (15), N/m for a 0.5 m sheet at V = 2 m³/m
+//! assert!((f / (0.5 * (2.0 * 1.8e3 * 2.0 + 2.4e4)) - 1.0).abs() < 1e-2);
+//! let r = ratio(&fit_w, &fit_pe, 2.0); // eq (16)
+//! assert!(r > 1.0);
+//! let band = Band::linspace(&fit_w, 0.0, 3.0, 31, 0.95);
+//! assert!(band.conf_lo[10] < band.fit[10] && band.fit[10] < band.conf_hi[10]);
+//! # Ok::<(), pressridge::table::fit::FitError>(())
+//! ```
 
 use faer::prelude::*;
 use thiserror::Error;
