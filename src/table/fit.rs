@@ -168,8 +168,15 @@ pub fn fit_through_origin(v: &[f64], y: &[f64]) -> Result<QuadFit, FitError> {
         let u = v[i] / vmax;
         if j == 0 { u * u / d1 } else { u / d2 }
     });
-    // Column j of X = [V², V] is s_j times column j of xs.
-    let s = [vmax * vmax * d1, vmax * d2];
+    // Column j of X = [V², V] is s_j times column j of xs, s = (vmax²·d1, vmax·d2); the
+    // divisions below are done factor by factor so that no product of scales overflows.
+    let unscale = |j: usize, x: f64| {
+        if j == 0 {
+            x / d1 / vmax / vmax
+        } else {
+            x / d2 / vmax
+        }
+    };
     let qr = xs.qr();
     let r = qr.thin_R();
     let (r11, r12, r22) = (r[(0, 0)], r[(0, 1)], r[(1, 1)]);
@@ -179,8 +186,8 @@ pub fn fit_through_origin(v: &[f64], y: &[f64]) -> Result<QuadFit, FitError> {
     }
     let rhs = Col::<f64>::from_fn(n, |i| y[i]);
     let beta_s = qr.solve_lstsq(&rhs);
-    let a = beta_s[0] / s[0];
-    let b = beta_s[1] / s[1];
+    let a = unscale(0, beta_s[0]);
+    let b = unscale(1, beta_s[1]);
 
     // (XsᵀXs)⁻¹ = R⁻¹R⁻ᵀ with R⁻¹ = [[1/r11, -r12/(r11 r22)], [0, 1/r22]].
     let (i00, i01, i11) = (1.0 / r11, -r12 / (r11 * r22), 1.0 / r22);
@@ -188,7 +195,7 @@ pub fn fit_through_origin(v: &[f64], y: &[f64]) -> Result<QuadFit, FitError> {
     let mut xtx_inv = [[0.0; 2]; 2];
     for (j, row) in xtx_inv.iter_mut().enumerate() {
         for (k, e) in row.iter_mut().enumerate() {
-            *e = m[j][k] / (s[j] * s[k]);
+            *e = unscale(k, unscale(j, m[j][k]));
         }
     }
 
@@ -718,6 +725,9 @@ mod tests {
             (1.0, 1.8e3, 2.4e4),
             (1e-4, 7.0e9, -3.0e2),
             (1e4, 2.5e-5, 1.0e3),
+            // Extreme units (terms of comparable size): the scaling must keep all finite.
+            (1e100, 3e-100, 5.0),
+            (1e-100, 3e100, 5.0),
         ] {
             let v: Vec<f64> = sample_volumes(40).iter().map(|x| x * scale).collect();
             let y: Vec<f64> = v.iter().map(|&x| x * (a * x + b)).collect();
