@@ -19,7 +19,9 @@
 //! - [`itd`] — thickness-distribution physics: category bounds, participation, ridged-ice
 //!   redistribution, ice strength, the ridging step, on plain per-column slices;
 //! - [`io`] — files (JSON states and summaries, CSV time series, NetCDF distributions);
-//! - [`plot`] — figures.
+//! - [`plot`] — figures;
+//! - [`table`] — regressions of ridging ensembles (work and potential energy against ridged
+//!   volume, eqs 13–16) for tabulation.
 //!
 
 pub mod campaign;
@@ -30,3 +32,4 @@ pub mod observe;
 pub mod plot;
 pub mod scene;
 pub mod simulation;
+pub mod table;

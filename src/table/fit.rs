@@ -1,0 +1,1079 @@
+//! Least-squares fits of ridging energetics against ridged volume (Hopkins 1994, eqs 13–16).
+//!
+//! Hopkins fits, over **all** samples of an experiment set (every run sampled every 25 s),
+//! the work done by the driving sheet and the potential energy of the ridge as quadratics
+//! through the origin in the ridged volume `V`:
+//!
+//! - eq (13) `Work(V) = V·(a_W·V + b_W)`,
+//! - eq (14) `PE(V)   = V·(a_P·V + b_P)`.
+//!
+//! Each is a linear least-squares problem on the basis `{V², V}` with no intercept; it is
+//! solved here by a Householder QR factorisation (via `faer`), never by the normal equations,
+//! and the coefficient covariance `s²·(XᵀX)⁻¹` is formed from the triangular factor as
+//! `s²·R⁻¹R⁻ᵀ`, so its conditioning is that of `R`, not of `XᵀX`.
+//!
+//! Derived quantities:
+//!
+//! - eq (15) the mean ridging force `F(V) = h·dW/dV = h·(2·a_W·V + b_W)` for a sheet of
+//!   thickness `h` ([`force`]);
+//! - eq (16) the ratio `dWork/dPE = (2·a_W·V + b_W)/(2·a_P·V + b_P)` ([`ratio`]);
+//! - the plain ratio `W/PE` of the fitted curves ([`fitted_ratio`]) and of data
+//!   ([`data_ratio`]).
+//!
+//! Units (SI; the model is two-dimensional with a depth of 1 m): ridged volume `V` in m³/m
+//! (= m²), work and potential energy in J/m, so `a` is in J/m⁵ (= N/m⁴) and `b` in J/m³
+//! (= N/m²); the force of eq (15) is in N/m (per metre of ridge).
+//!
+//! Intervals use the Student-t distribution with `n − 2` degrees of freedom, whose quantile
+//! is computed in this module ([`student_t_quantile`]).
+//!
+//! **Caveat.** All standard errors and bands assume independent residuals of constant
+//! variance. Successive 25 s samples of one run are serially correlated and the scatter
+//! grows with `V`, so with pooled ridging samples the intervals are optimistic (too narrow);
+//! the coefficients themselves are the paper's least-squares estimates regardless.
+//!
+//! ```
+//! use pressridge::table::fit::{Band, fit_through_origin, force, ratio};
+//!
+//! // Pooled samples of an experiment set: V (m³/m), work and potential energy (J/m).
+//! let v: [f64; 6] = [0.5, 1.0, 1.5, 2.0, 2.5, 3.0];
+//! let w: Vec<f64> = v.iter().map(|&x| x * (1.8e3 * x + 2.4e4) + 10.0 * x.sin()).collect();
+//! let pe: Vec<f64> = v.iter().map(|&x| x * (4.0e2 * x + 1.0e3) + 5.0 * x.cos()).collect();
+//! let fit_w = fit_through_origin(&v, &w)?; // eq (13)
+//! let fit_pe = fit_through_origin(&v, &pe)?; // eq (14)
+//! let f = force(&fit_w, 0.5, 2.0); // eq (15), N/m for a 0.5 m sheet at V = 2 m³/m
+//! assert!((f / (0.5 * (2.0 * 1.8e3 * 2.0 + 2.4e4)) - 1.0).abs() < 1e-2);
+//! let r = ratio(&fit_w, &fit_pe, 2.0); // eq (16)
+//! assert!(r > 1.0);
+//! let band = Band::linspace(&fit_w, 0.0, 3.0, 31, 0.95);
+//! assert!(band.conf_lo[10] < band.fit[10] && band.fit[10] < band.conf_hi[10]);
+//! # Ok::<(), pressridge::table::fit::FitError>(())
+//! ```
+
+use faer::prelude::*;
+use thiserror::Error;
+
+/// Ratio `|R₂₂|/|R₁₁|` of the triangular factor of the column-normalised design matrix
+/// below which the basis `{V², V}` is declared rank-deficient (a condition number above
+/// 10¹² leaves no significant digit worth tabulating).
+const RANK_TOL: f64 = 1e-12;
+
+/// Why a fit could not be made.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum FitError {
+    /// The two sample slices have different lengths.
+    #[error("length mismatch: {left} values of V but {right} values of the response")]
+    LengthMismatch {
+        /// Number of ridged-volume samples.
+        left: usize,
+        /// Number of response samples.
+        right: usize,
+    },
+    /// Fewer than 3 samples: two coefficients need at least one residual degree of freedom.
+    #[error("too few points: {n} (a quadratic through the origin needs at least 3)")]
+    TooFewPoints {
+        /// Number of samples given.
+        n: usize,
+    },
+    /// A sample is NaN or infinite.
+    #[error("non-finite {which} at index {index}")]
+    NonFinite {
+        /// Which input: `"V"` or `"y"` (or `"W"`, `"PE"`).
+        which: &'static str,
+        /// Index of the first offending sample.
+        index: usize,
+    },
+    /// All ridged volumes are equal, so `V²` and `V` are proportional.
+    #[error("all V are equal ({value}); V² and V cannot be separated")]
+    AllVEqual {
+        /// The common value of V (m³/m).
+        value: f64,
+    },
+    /// The basis `{V², V}` is (numerically) rank-deficient on these samples, e.g. only one
+    /// distinct non-zero `V`.
+    #[error("rank-deficient design: |R22|/|R11| = {ratio:e} (fewer than two distinct non-zero V?)")]
+    RankDeficient {
+        /// `|R₂₂|/|R₁₁|` of the QR factor of the column-normalised design matrix.
+        ratio: f64,
+    },
+    /// A fit passed in does not belong to the samples passed in.
+    #[error("fit was made from {fit_n} samples but {n} were given")]
+    FitMismatch {
+        /// Samples the fit was made from.
+        fit_n: usize,
+        /// Samples given now.
+        n: usize,
+    },
+}
+
+/// A least-squares quadratic through the origin, `y(V) = V·(a·V + b)` (eqs 13–14).
+///
+/// For the work fit `y` is in J/m, `a` in J/m⁵ and `b` in J/m³ (V in m³/m); likewise for
+/// potential energy.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct QuadFit {
+    /// Coefficient of `V²` (J/m⁵ for work or potential energy).
+    pub a: f64,
+    /// Coefficient of `V` (J/m³ for work or potential energy).
+    pub b: f64,
+    /// Covariance of `(a, b)`: `s²·(XᵀX)⁻¹` with `X = [V², V]`; `cov[0][0]` is Var(a)
+    /// ((J/m⁵)²), `cov[1][1]` Var(b) ((J/m³)²), `cov[0][1] = cov[1][0]` Cov(a, b).
+    pub cov: [[f64; 2]; 2],
+    /// `(XᵀX)⁻¹` alone (the covariance per unit residual variance), kept so that the
+    /// cross-covariance of two fits on the same `V` can be formed ([`cross_covariance`]).
+    pub xtx_inv: [[f64; 2]; 2],
+    /// Residual variance `s² = Σ rᵢ² / (n − 2)` (units of `y`², e.g. (J/m)²).
+    pub residual_variance: f64,
+    /// Residual degrees of freedom, `n − 2`.
+    pub dof: usize,
+    /// Number of samples.
+    pub n: usize,
+    /// Uncentred coefficient of determination `1 − Σ rᵢ² / Σ yᵢ²`, the usual definition for
+    /// a model without intercept (as R's `summary.lm` reports it); 1 when all `y` are 0.
+    /// It is not comparable with the centred R² of a model with intercept.
+    pub r_squared: f64,
+}
+
+/// Fits `y = V·(a·V + b)` by linear least squares on the basis `{V², V}` (no intercept),
+/// eqs (13) and (14).
+///
+/// `v` are ridged volumes (m³/m), `y` the work or potential energy (J/m) at the same
+/// samples. The design matrix is scaled by `max|V|` and its columns normalised before a
+/// Householder QR factorisation (faer), so the result does not depend on the units chosen.
+///
+/// # Errors
+/// [`FitError::LengthMismatch`], [`FitError::TooFewPoints`] (n < 3),
+/// [`FitError::NonFinite`], [`FitError::AllVEqual`], [`FitError::RankDeficient`].
+pub fn fit_through_origin(v: &[f64], y: &[f64]) -> Result<QuadFit, FitError> {
+    if v.len() != y.len() {
+        return Err(FitError::LengthMismatch {
+            left: v.len(),
+            right: y.len(),
+        });
+    }
+    let n = v.len();
+    if n < 3 {
+        return Err(FitError::TooFewPoints { n });
+    }
+    check_finite(v, "V")?;
+    check_finite(y, "y")?;
+    if v.iter().all(|&x| x == v[0]) {
+        return Err(FitError::AllVEqual { value: v[0] });
+    }
+    // Scale V to u = V / vmax ∈ [-1, 1]; then normalise the columns u², u.
+    let vmax = v.iter().fold(0.0_f64, |m, &x| m.max(x.abs()));
+    let d1 = v.iter().map(|&x| (x / vmax).powi(4)).sum::<f64>().sqrt();
+    let d2 = v.iter().map(|&x| (x / vmax).powi(2)).sum::<f64>().sqrt();
+    let xs = Mat::<f64>::from_fn(n, 2, |i, j| {
+        let u = v[i] / vmax;
+        if j == 0 { u * u / d1 } else { u / d2 }
+    });
+    // Column j of X = [V², V] is s_j times column j of xs, s = (vmax²·d1, vmax·d2); the
+    // divisions below are done factor by factor so that no product of scales overflows.
+    let unscale = |j: usize, x: f64| {
+        if j == 0 {
+            x / d1 / vmax / vmax
+        } else {
+            x / d2 / vmax
+        }
+    };
+    let qr = xs.qr();
+    let r = qr.thin_R();
+    let (r11, r12, r22) = (r[(0, 0)], r[(0, 1)], r[(1, 1)]);
+    let ratio = (r22 / r11).abs();
+    if ratio.is_nan() || ratio <= RANK_TOL {
+        return Err(FitError::RankDeficient { ratio });
+    }
+    let rhs = Col::<f64>::from_fn(n, |i| y[i]);
+    let beta_s = qr.solve_lstsq(&rhs);
+    let a = unscale(0, beta_s[0]);
+    let b = unscale(1, beta_s[1]);
+
+    // (XsᵀXs)⁻¹ = R⁻¹R⁻ᵀ with R⁻¹ = [[1/r11, -r12/(r11 r22)], [0, 1/r22]].
+    let (i00, i01, i11) = (1.0 / r11, -r12 / (r11 * r22), 1.0 / r22);
+    let m = [[i00 * i00 + i01 * i01, i01 * i11], [i01 * i11, i11 * i11]];
+    let mut xtx_inv = [[0.0; 2]; 2];
+    for (j, row) in xtx_inv.iter_mut().enumerate() {
+        for (k, e) in row.iter_mut().enumerate() {
+            *e = unscale(k, unscale(j, m[j][k]));
+        }
+    }
+
+    let (mut rss, mut syy) = (0.0, 0.0);
+    for (&vi, &yi) in v.iter().zip(y) {
+        let res = yi - vi * (a * vi + b);
+        rss += res * res;
+        syy += yi * yi;
+    }
+    let dof = n - 2;
+    let s2 = rss / dof as f64;
+    let cov = xtx_inv.map(|row| row.map(|e| e * s2));
+    let r_squared = if syy > 0.0 { 1.0 - rss / syy } else { 1.0 };
+    Ok(QuadFit {
+        a,
+        b,
+        cov,
+        xtx_inv,
+        residual_variance: s2,
+        dof,
+        n,
+        r_squared,
+    })
+}
+
+fn check_finite(x: &[f64], which: &'static str) -> Result<(), FitError> {
+    match x.iter().position(|e| !e.is_finite()) {
+        Some(index) => Err(FitError::NonFinite { which, index }),
+        None => Ok(()),
+    }
+}
+
+/// `gᵀ·M·g` for a symmetric 2×2 `M`, clamped at 0 against rounding.
+fn quad_form(m: &[[f64; 2]; 2], g: [f64; 2]) -> f64 {
+    (m[0][0] * g[0] * g[0] + 2.0 * m[0][1] * g[0] * g[1] + m[1][1] * g[1] * g[1]).max(0.0)
+}
+
+/// Two-sided interval level → upper Student-t quantile, with a check of the level.
+fn two_sided_t(level: f64, dof: usize) -> f64 {
+    assert!(
+        level > 0.0 && level < 1.0,
+        "confidence level must lie in (0, 1), got {level}"
+    );
+    student_t_quantile(0.5 + 0.5 * level, dof as f64)
+}
+
+impl QuadFit {
+    /// The fitted curve `y(V) = V·(a·V + b)` (eq 13 or 14), in the units of `y` (J/m).
+    pub fn eval(&self, v: f64) -> f64 {
+        v * (self.a * v + self.b)
+    }
+
+    /// The derivative `dy/dV = 2·a·V + b` (J/m³ = N/m² for work or potential energy).
+    pub fn slope(&self, v: f64) -> f64 {
+        2.0 * self.a * v + self.b
+    }
+
+    /// Standard errors `[se(a), se(b)]` (J/m⁵, J/m³): square roots of the diagonal of
+    /// [`QuadFit::cov`].
+    pub fn standard_errors(&self) -> [f64; 2] {
+        [self.cov[0][0].sqrt(), self.cov[1][1].sqrt()]
+    }
+
+    /// Two-sided `level` confidence intervals `[(a_lo, a_hi), (b_lo, b_hi)]` of the
+    /// coefficients, `coef ± t_{(1+level)/2, n−2}·se`.
+    ///
+    /// # Panics
+    /// If `level` is not in (0, 1).
+    pub fn coefficient_intervals(&self, level: f64) -> [(f64, f64); 2] {
+        let t = two_sided_t(level, self.dof);
+        let se = self.standard_errors();
+        [
+            (self.a - t * se[0], self.a + t * se[0]),
+            (self.b - t * se[1], self.b + t * se[1]),
+        ]
+    }
+
+    /// Standard error of the fitted mean curve at `v`: `sqrt(gᵀ·cov·g)` with `g = (V², V)`
+    /// (units of `y`).
+    pub fn mean_std_error(&self, v: f64) -> f64 {
+        quad_form(&self.cov, [v * v, v]).sqrt()
+    }
+
+    /// Standard error for a new observation at `v`: `sqrt(s² + gᵀ·cov·g)` (units of `y`).
+    pub fn prediction_std_error(&self, v: f64) -> f64 {
+        (self.residual_variance + quad_form(&self.cov, [v * v, v])).sqrt()
+    }
+
+    /// Two-sided `level` (e.g. 0.95) pointwise confidence band `(lo, hi)` for the mean
+    /// curve at `v`: `eval(v) ± t_{(1+level)/2, n−2}·mean_std_error(v)` (units of `y`).
+    ///
+    /// # Panics
+    /// If `level` is not in (0, 1).
+    pub fn confidence_band(&self, v: f64, level: f64) -> (f64, f64) {
+        let t = two_sided_t(level, self.dof);
+        let (c, h) = (self.eval(v), t * self.mean_std_error(v));
+        (c - h, c + h)
+    }
+
+    /// Two-sided `level` prediction band `(lo, hi)` for a new observation at `v`:
+    /// `eval(v) ± t_{(1+level)/2, n−2}·prediction_std_error(v)` (units of `y`). Assumes
+    /// independent residuals of constant variance; successive 25 s samples of one run are
+    /// serially correlated, so read it as indicative.
+    ///
+    /// # Panics
+    /// If `level` is not in (0, 1).
+    pub fn prediction_band(&self, v: f64, level: f64) -> (f64, f64) {
+        let t = two_sided_t(level, self.dof);
+        let (c, h) = (self.eval(v), t * self.prediction_std_error(v));
+        (c - h, c + h)
+    }
+}
+
+/// Eq (15): the mean ridging force per metre of ridge (N/m) on a sheet of thickness `h` (m)
+/// at ridged volume `v` (m³/m), from the work fit: `F = h·dW/dV = h·(2·a_W·V + b_W)`.
+///
+/// Derivation: a sheet of thickness `h` pushed at speed `U` feeds ridged volume at
+/// `dV/dt = U·h`, and the driver does work at the rate `dW/dt = F·U`; hence
+/// `F = (dW/dV)·(dV/dt)/U = h·dW/dV`.
+pub fn force(fit_w: &QuadFit, h: f64, v: f64) -> f64 {
+    h * fit_w.slope(v)
+}
+
+/// Standard error of [`force`] (N/m): `h·sqrt(gᵀ·cov_W·g)` with `g = (2V, 1)`. The force is
+/// linear in `(a_W, b_W)`, so this is exact (no delta-method approximation), given `h`
+/// without error.
+pub fn force_std_error(fit_w: &QuadFit, h: f64, v: f64) -> f64 {
+    h.abs() * quad_form(&fit_w.cov, [2.0 * v, 1.0]).sqrt()
+}
+
+/// Eq (16): the ratio of incremental work to incremental potential energy at ridged volume
+/// `v` (m³/m), `dWork/dPE = (2·a_W·V + b_W)/(2·a_P·V + b_P)` (dimensionless).
+pub fn ratio(fit_w: &QuadFit, fit_pe: &QuadFit, v: f64) -> f64 {
+    fit_w.slope(v) / fit_pe.slope(v)
+}
+
+/// Delta-method (first-order) standard error of [`ratio`] (dimensionless).
+///
+/// With `N = 2a_W V + b_W`, `D = 2a_P V + b_P`, `g = (2V, 1)` and `R = N/D`:
+/// `Var(R) ≈ [Var N − 2R·Cov(N, D) + R²·Var D] / D²`, where `Var N = gᵀC_W g`,
+/// `Var D = gᵀC_P g` and `Cov(N, D) = gᵀC_{WP} g`. The approximation linearises `N/D`
+/// about the estimates; it is poor when `D` is within a few standard errors of 0.
+///
+/// Work and potential energy fitted on the same samples have correlated errors: pass their
+/// cross-covariance from [`cross_covariance`]. `None` treats the two fits as independent.
+pub fn ratio_std_error(
+    fit_w: &QuadFit,
+    fit_pe: &QuadFit,
+    cross_cov: Option<&[[f64; 2]; 2]>,
+    v: f64,
+) -> f64 {
+    let g = [2.0 * v, 1.0];
+    let (num, den) = (fit_w.slope(v), fit_pe.slope(v));
+    let r = num / den;
+    let var_n = quad_form(&fit_w.cov, g);
+    let var_d = quad_form(&fit_pe.cov, g);
+    let cov_nd = cross_cov.map_or(0.0, |c| {
+        c[0][0] * g[0] * g[0] + (c[0][1] + c[1][0]) * g[0] * g[1] + c[1][1] * g[1] * g[1]
+    });
+    ((var_n - 2.0 * r * cov_nd + r * r * var_d).max(0.0)).sqrt() / den.abs()
+}
+
+/// Cross-covariance `Cov(β_W, β_P) = s_{WP}·(XᵀX)⁻¹` of two fits made on the same ridged
+/// volumes `v` (m³/m) — pass exactly the `v` both fits were made from (only the count is
+/// checked) — with `s_{WP} = Σ r_{W,i}·r_{P,i} / (n − 2)` the residual
+/// cross-covariance ((J/m)²). Entry `[j][k]` is Cov(coefficient j of W, coefficient k of
+/// PE), coefficients ordered `(a, b)`.
+///
+/// # Errors
+/// [`FitError::LengthMismatch`] or [`FitError::FitMismatch`] if the slices do not match each
+/// other or the fits; [`FitError::NonFinite`] for NaN/inf samples.
+pub fn cross_covariance(
+    v: &[f64],
+    w: &[f64],
+    pe: &[f64],
+    fit_w: &QuadFit,
+    fit_pe: &QuadFit,
+) -> Result<[[f64; 2]; 2], FitError> {
+    for other in [w.len(), pe.len()] {
+        if other != v.len() {
+            return Err(FitError::LengthMismatch {
+                left: v.len(),
+                right: other,
+            });
+        }
+    }
+    for fit in [fit_w, fit_pe] {
+        if fit.n != v.len() {
+            return Err(FitError::FitMismatch {
+                fit_n: fit.n,
+                n: v.len(),
+            });
+        }
+    }
+    check_finite(v, "V")?;
+    check_finite(w, "W")?;
+    check_finite(pe, "PE")?;
+    let s_wp = v
+        .iter()
+        .zip(w.iter().zip(pe))
+        .map(|(&vi, (&wi, &pi))| (wi - fit_w.eval(vi)) * (pi - fit_pe.eval(vi)))
+        .sum::<f64>()
+        / fit_w.dof as f64;
+    Ok(fit_w.xtx_inv.map(|row| row.map(|e| e * s_wp)))
+}
+
+/// The plain ratio of the fitted curves, `W/PE = (a_W·V + b_W)/(a_P·V + b_P)`
+/// (dimensionless), written with the common factor `V` cancelled so that `V = 0` gives the
+/// limit `b_W/b_P`.
+pub fn fitted_ratio(fit_w: &QuadFit, fit_pe: &QuadFit, v: f64) -> f64 {
+    (fit_w.a * v + fit_w.b) / (fit_pe.a * v + fit_pe.b)
+}
+
+/// The plain ratio `W/PE` of data, sample by sample (dimensionless). Samples with `PE = 0`
+/// give ±∞ or NaN, as IEEE division does.
+///
+/// # Errors
+/// [`FitError::LengthMismatch`] if the slices differ in length.
+pub fn data_ratio(w: &[f64], pe: &[f64]) -> Result<Vec<f64>, FitError> {
+    if w.len() != pe.len() {
+        return Err(FitError::LengthMismatch {
+            left: w.len(),
+            right: pe.len(),
+        });
+    }
+    Ok(w.iter().zip(pe).map(|(&a, &b)| a / b).collect())
+}
+
+/// A fitted curve with its pointwise confidence and prediction bands on a grid of ridged
+/// volumes, for plotting and tabulation. All vectors have the length of `v`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Band {
+    /// Two-sided level of both bands (e.g. 0.95).
+    pub level: f64,
+    /// Ridged volumes (m³/m).
+    pub v: Vec<f64>,
+    /// Fitted curve `V·(a·V + b)` (units of `y`, J/m).
+    pub fit: Vec<f64>,
+    /// Lower edge of the confidence band of the mean curve.
+    pub conf_lo: Vec<f64>,
+    /// Upper edge of the confidence band of the mean curve.
+    pub conf_hi: Vec<f64>,
+    /// Lower edge of the prediction band for a new observation.
+    pub pred_lo: Vec<f64>,
+    /// Upper edge of the prediction band for a new observation.
+    pub pred_hi: Vec<f64>,
+}
+
+impl Band {
+    /// Evaluates `fit` and its `level` bands ([`QuadFit::confidence_band`],
+    /// [`QuadFit::prediction_band`]) at the ridged volumes `v` (m³/m). The t quantile is
+    /// computed once.
+    ///
+    /// # Panics
+    /// If `level` is not in (0, 1).
+    pub fn new(fit: &QuadFit, v: &[f64], level: f64) -> Band {
+        let t = two_sided_t(level, fit.dof);
+        let k = v.len();
+        let mut band = Band {
+            level,
+            v: v.to_vec(),
+            fit: Vec::with_capacity(k),
+            conf_lo: Vec::with_capacity(k),
+            conf_hi: Vec::with_capacity(k),
+            pred_lo: Vec::with_capacity(k),
+            pred_hi: Vec::with_capacity(k),
+        };
+        for &x in v {
+            let c = fit.eval(x);
+            let (hc, hp) = (t * fit.mean_std_error(x), t * fit.prediction_std_error(x));
+            band.fit.push(c);
+            band.conf_lo.push(c - hc);
+            band.conf_hi.push(c + hc);
+            band.pred_lo.push(c - hp);
+            band.pred_hi.push(c + hp);
+        }
+        band
+    }
+
+    /// [`Band::new`] on `points` equally spaced ridged volumes from `v_min` to `v_max`
+    /// inclusive (m³/m); `points == 1` gives `v_min` alone.
+    ///
+    /// # Panics
+    /// If `level` is not in (0, 1).
+    pub fn linspace(fit: &QuadFit, v_min: f64, v_max: f64, points: usize, level: f64) -> Band {
+        let step = if points > 1 {
+            (v_max - v_min) / (points - 1) as f64
+        } else {
+            0.0
+        };
+        let v: Vec<f64> = (0..points)
+            .map(|i| {
+                if i + 1 == points && points > 1 {
+                    v_max
+                } else {
+                    v_min + step * i as f64
+                }
+            })
+            .collect();
+        Band::new(fit, &v, level)
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Student-t distribution.
+//
+// The quantile is implemented here rather than taken from a crate: the dependency set has
+// no small, well-kept crate for it (statrs is large and pulls nalgebra), and only the
+// quantile at a handful of levels is needed. The method is plain and checkable: the upper
+// tail P(T > t) = ½·I_x(ν/2, ½) with x = ν/(ν + t²), the regularised incomplete beta
+// function I evaluated by its continued fraction (modified Lentz), and the quantile found
+// by bracketing and bisection, which cannot fail to converge because the tail is monotone.
+// For ν = ∞ the normal tail ½·Q(½, z²/2) (regularised upper incomplete gamma) is used.
+// ---------------------------------------------------------------------------------------
+
+const CF_EPS: f64 = 1e-15;
+const CF_TINY: f64 = 1e-300;
+const CF_MAXIT: usize = 100_000;
+
+/// ln Γ(x) for x > 0 (Lanczos, g = 7, 9 terms; relative error ~1e-15), with the reflection
+/// formula below ½.
+fn ln_gamma(x: f64) -> f64 {
+    const G: f64 = 7.0;
+    const P: [f64; 9] = [
+        0.999_999_999_999_809_9,
+        676.520_368_121_885_1,
+        -1_259.139_216_722_402_8,
+        771.323_428_777_653_1,
+        -176.615_029_162_140_6,
+        12.507_343_278_686_905,
+        -0.138_571_095_265_720_12,
+        9.984_369_578_019_572e-6,
+        1.505_632_735_149_311_6e-7,
+    ];
+    if x < 0.5 {
+        let pi = std::f64::consts::PI;
+        return (pi / (pi * x).sin().abs()).ln() - ln_gamma(1.0 - x);
+    }
+    let x = x - 1.0;
+    let t = x + G + 0.5;
+    let mut a = P[0];
+    for (i, &p) in P.iter().enumerate().skip(1) {
+        a += p / (x + i as f64);
+    }
+    0.5 * (2.0 * std::f64::consts::PI).ln() + (x + 0.5) * t.ln() - t + a.ln()
+}
+
+/// Continued fraction for the incomplete beta function (modified Lentz).
+fn beta_cf(a: f64, b: f64, x: f64) -> f64 {
+    let (qab, qap, qam) = (a + b, a + 1.0, a - 1.0);
+    let tiny = |d: f64| if d.abs() < CF_TINY { CF_TINY } else { d };
+    let mut c = 1.0;
+    let mut d = 1.0 / tiny(1.0 - qab * x / qap);
+    let mut h = d;
+    for m in 1..=CF_MAXIT {
+        let m = m as f64;
+        let m2 = 2.0 * m;
+        let aa = m * (b - m) * x / ((qam + m2) * (a + m2));
+        d = 1.0 / tiny(1.0 + aa * d);
+        c = tiny(1.0 + aa / c);
+        h *= d * c;
+        let aa = -(a + m) * (qab + m) * x / ((a + m2) * (qap + m2));
+        d = 1.0 / tiny(1.0 + aa * d);
+        c = tiny(1.0 + aa / c);
+        let del = d * c;
+        h *= del;
+        if (del - 1.0).abs() < CF_EPS {
+            break;
+        }
+    }
+    h
+}
+
+/// Regularised incomplete beta `I_x(a, b)`, with `y = 1 − x` passed separately so that
+/// `x` near 1 loses no digits.
+fn reg_inc_beta(a: f64, b: f64, x: f64, y: f64) -> f64 {
+    if x <= 0.0 {
+        return 0.0;
+    }
+    if y <= 0.0 {
+        return 1.0;
+    }
+    let ln_front = ln_gamma(a + b) - ln_gamma(a) - ln_gamma(b) + a * x.ln() + b * y.ln();
+    if x < (a + 1.0) / (a + b + 2.0) {
+        ln_front.exp() * beta_cf(a, b, x) / a
+    } else {
+        1.0 - ln_front.exp() * beta_cf(b, a, y) / b
+    }
+}
+
+/// Regularised upper incomplete gamma `Q(a, x)`, x ≥ 0.
+fn reg_upper_gamma(a: f64, x: f64) -> f64 {
+    if x <= 0.0 {
+        return 1.0;
+    }
+    let ln_front = -x + a * x.ln() - ln_gamma(a);
+    if x < a + 1.0 {
+        // Series for P(a, x).
+        let (mut ap, mut del) = (a, 1.0 / a);
+        let mut sum = del;
+        for _ in 0..CF_MAXIT {
+            ap += 1.0;
+            del *= x / ap;
+            sum += del;
+            if del.abs() < sum.abs() * CF_EPS {
+                break;
+            }
+        }
+        1.0 - sum * ln_front.exp()
+    } else {
+        let tiny = |d: f64| if d.abs() < CF_TINY { CF_TINY } else { d };
+        let mut b = x + 1.0 - a;
+        let mut c = 1.0 / CF_TINY;
+        let mut d = 1.0 / b;
+        let mut h = d;
+        for i in 1..=CF_MAXIT {
+            let i = i as f64;
+            let an = -i * (i - a);
+            b += 2.0;
+            d = 1.0 / tiny(an * d + b);
+            c = tiny(b + an / c);
+            let del = d * c;
+            h *= del;
+            if (del - 1.0).abs() < CF_EPS {
+                break;
+            }
+        }
+        ln_front.exp() * h
+    }
+}
+
+/// Upper tail `P(T > t)` for `t ≥ 0`.
+fn student_t_upper_tail(t: f64, dof: f64) -> f64 {
+    if dof.is_infinite() {
+        return 0.5 * reg_upper_gamma(0.5, 0.5 * t * t);
+    }
+    let r2 = t * t / dof;
+    if !r2.is_finite() {
+        return 0.0;
+    }
+    // x = ν/(ν + t²) = 1/(1 + r²), 1 − x = r²/(1 + r²).
+    0.5 * reg_inc_beta(0.5 * dof, 0.5, 1.0 / (1.0 + r2), r2 / (1.0 + r2))
+}
+
+/// Cumulative distribution function `P(T ≤ t)` of Student's t with `dof` degrees of
+/// freedom (`dof > 0`, may be `f64::INFINITY` for the standard normal). NaN for invalid
+/// arguments.
+pub fn student_t_cdf(t: f64, dof: f64) -> f64 {
+    if t.is_nan() || dof.is_nan() || dof <= 0.0 {
+        return f64::NAN;
+    }
+    let tail = student_t_upper_tail(t.abs(), dof);
+    if t >= 0.0 { 1.0 - tail } else { tail }
+}
+
+/// Quantile (inverse CDF) of Student's t with `dof` degrees of freedom: the `t` with
+/// `P(T ≤ t) = p`. `dof > 0` may be non-integer, or `f64::INFINITY` for the standard
+/// normal. Returns NaN unless `0 < p < 1` and `dof > 0`.
+///
+/// Why here: see the comment above the implementation — no tiny, well-kept crate in the
+/// dependency set provides it. Method: bisection on the upper tail `½·I_x(ν/2, ½)`,
+/// `x = ν/(ν + t²)`, with the regularised incomplete beta function `I` from its continued
+/// fraction; agrees with the closed forms for ν = 1 and 2 to ~1e-13 relative.
+pub fn student_t_quantile(p: f64, dof: f64) -> f64 {
+    if p.is_nan() || p <= 0.0 || p >= 1.0 || dof.is_nan() || dof <= 0.0 {
+        return f64::NAN;
+    }
+    if p == 0.5 {
+        return 0.0;
+    }
+    if p < 0.5 {
+        return -student_t_quantile(1.0 - p, dof);
+    }
+    let q = 1.0 - p; // upper-tail target, in (0, ½)
+    let (mut lo, mut hi) = (0.0_f64, 1.0_f64);
+    while student_t_upper_tail(hi, dof) > q {
+        lo = hi;
+        hi *= 2.0;
+        if !hi.is_finite() {
+            return f64::INFINITY;
+        }
+    }
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if student_t_upper_tail(mid, dof) > q {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand_xoshiro::Xoshiro256PlusPlus;
+    use rand_xoshiro::rand_core::{Rng, SeedableRng};
+
+    /// Uniform on (0, 1].
+    fn uniform(rng: &mut Xoshiro256PlusPlus) -> f64 {
+        ((rng.next_u64() >> 11) + 1) as f64 * (1.0 / (1u64 << 53) as f64)
+    }
+
+    /// Standard normal by Box–Muller.
+    fn normal(rng: &mut Xoshiro256PlusPlus) -> f64 {
+        let (u1, u2) = (uniform(rng), uniform(rng));
+        (-2.0 * u1.ln()).sqrt() * (2.0 * std::f64::consts::PI * u2).cos()
+    }
+
+    fn rel(x: f64, y: f64) -> f64 {
+        (x - y).abs() / y.abs()
+    }
+
+    /// Ridged volumes of one run sampled every 25 s: V = U·h·t, U = 0.05 m/s, h = 0.5 m.
+    fn sample_volumes(n: usize) -> Vec<f64> {
+        (1..=n).map(|i| 0.05 * 0.5 * 25.0 * i as f64).collect()
+    }
+
+    #[test]
+    fn exact_recovery_on_noiseless_data() {
+        // Realistic magnitudes (a ~ 1e3 J/m⁵, b ~ 1e4 J/m³) and wildly rescaled V.
+        for (scale, a, b) in [
+            (1.0, 1.8e3, 2.4e4),
+            (1e-4, 7.0e9, -3.0e2),
+            (1e4, 2.5e-5, 1.0e3),
+            // Extreme units (terms of comparable size): the scaling must keep all finite.
+            (1e100, 3e-100, 5.0),
+            (1e-100, 3e100, 5.0),
+        ] {
+            let v: Vec<f64> = sample_volumes(40).iter().map(|x| x * scale).collect();
+            let y: Vec<f64> = v.iter().map(|&x| x * (a * x + b)).collect();
+            let fit = fit_through_origin(&v, &y).unwrap();
+            assert!(rel(fit.a, a) < 1e-10, "a {} vs {a}", fit.a);
+            assert!(rel(fit.b, b) < 1e-10, "b {} vs {b}", fit.b);
+            assert_eq!((fit.n, fit.dof), (40, 38));
+            assert!(fit.r_squared > 1.0 - 1e-12);
+            let ymax = y.iter().fold(0.0_f64, |m, &e| m.max(e.abs()));
+            assert!(fit.residual_variance.sqrt() < 1e-12 * ymax);
+        }
+        // Negative and positive V mixed (the basis is still independent).
+        let v = [-2.0, -0.5, 1.0, 3.0];
+        let y: Vec<f64> = v.iter().map(|&x| x * (0.3 * x - 4.0)).collect();
+        let fit = fit_through_origin(&v, &y).unwrap();
+        assert!(rel(fit.a, 0.3) < 1e-12 && rel(fit.b, -4.0) < 1e-12);
+    }
+
+    #[test]
+    fn matches_hand_computed_normal_equations_on_four_points() {
+        // V = 1..4, y = (3, 9, 20, 33). By hand:
+        //   ΣV⁴ = 354, ΣV³ = 100, ΣV² = 30, ΣV²y = 747, ΣVy = 213,
+        //   det = 354·30 − 100² = 620,
+        //   a = (30·747 − 100·213)/620 = 1110/620 = 111/62,
+        //   b = (354·213 − 100·747)/620 = 702/620 = 351/310,
+        //   residuals = (12, −66, 76, −27)/155, RSS = 71/155, s² = RSS/2 = 71/310,
+        //   (XᵀX)⁻¹ = [[30, −100], [−100, 354]]/620,
+        //   uncentred R² = 1 − (71/155)/Σy² = 1 − (71/155)/1579.
+        let v = [1.0, 2.0, 3.0, 4.0];
+        let y = [3.0, 9.0, 20.0, 33.0];
+        let fit = fit_through_origin(&v, &y).unwrap();
+        assert!(rel(fit.a, 111.0 / 62.0) < 1e-13);
+        assert!(rel(fit.b, 351.0 / 310.0) < 1e-13);
+        let s2 = 71.0 / 310.0;
+        assert!(rel(fit.residual_variance, s2) < 1e-12);
+        assert_eq!((fit.n, fit.dof), (4, 2));
+        let inv = [
+            [30.0 / 620.0, -100.0 / 620.0],
+            [-100.0 / 620.0, 354.0 / 620.0],
+        ];
+        for (j, k) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
+            assert!(rel(fit.xtx_inv[j][k], inv[j][k]) < 1e-12);
+            assert!(rel(fit.cov[j][k], s2 * inv[j][k]) < 1e-12);
+        }
+        assert!(rel(fit.r_squared, 1.0 - (71.0 / 155.0) / 1579.0) < 1e-14);
+        let se = fit.standard_errors();
+        assert!(rel(se[0], (s2 * 30.0 / 620.0).sqrt()) < 1e-12);
+        // Bands at V = 2.5 by hand: g = (6.25, 2.5), gᵀ(XᵀX)⁻¹g = (30·39.0625 −
+        // 2·100·15.625 + 354·6.25)/620 = 259.375/620; t_{0.975,2} = 4.302652729911275.
+        let t = 4.302_652_729_911_275;
+        let c = 2.5 * (2.5 * 111.0 / 62.0 + 351.0 / 310.0);
+        let hm = t * (s2 * 259.375 / 620.0).sqrt();
+        let hp = t * (s2 * (1.0 + 259.375 / 620.0)).sqrt();
+        let (lo, hi) = fit.confidence_band(2.5, 0.95);
+        assert!(rel(lo, c - hm) < 1e-10 && rel(hi, c + hm) < 1e-10);
+        let (lo, hi) = fit.prediction_band(2.5, 0.95);
+        assert!(rel(lo, c - hp) < 1e-10 && rel(hi, c + hp) < 1e-10);
+    }
+
+    #[test]
+    fn bad_input_is_rejected_with_the_right_error() {
+        let ok = [1.0, 2.0, 3.0];
+        assert_eq!(
+            fit_through_origin(&ok, &[1.0, 2.0]),
+            Err(FitError::LengthMismatch { left: 3, right: 2 })
+        );
+        assert_eq!(
+            fit_through_origin(&[1.0, 2.0], &[1.0, 2.0]),
+            Err(FitError::TooFewPoints { n: 2 })
+        );
+        assert_eq!(
+            fit_through_origin(&[], &[]),
+            Err(FitError::TooFewPoints { n: 0 })
+        );
+        assert_eq!(
+            fit_through_origin(&[1.0, f64::NAN, 3.0], &ok),
+            Err(FitError::NonFinite {
+                which: "V",
+                index: 1
+            })
+        );
+        assert_eq!(
+            fit_through_origin(&ok, &[1.0, 2.0, f64::INFINITY]),
+            Err(FitError::NonFinite {
+                which: "y",
+                index: 2
+            })
+        );
+        assert_eq!(
+            fit_through_origin(&[2.0, 2.0, 2.0], &ok),
+            Err(FitError::AllVEqual { value: 2.0 })
+        );
+        assert_eq!(
+            fit_through_origin(&[0.0; 3], &ok),
+            Err(FitError::AllVEqual { value: 0.0 })
+        );
+        // One distinct non-zero V: V² = 5·V on every sample.
+        assert!(matches!(
+            fit_through_origin(&[0.0, 5.0, 0.0, 5.0], &[0.0, 1.0, 0.0, 1.1]),
+            Err(FitError::RankDeficient { .. })
+        ));
+        assert!(data_ratio(&[1.0], &[1.0, 2.0]).is_err());
+    }
+
+    #[test]
+    fn t_quantile_matches_tables() {
+        // (p, ν, t_p,ν) from standard tables (10 significant digits).
+        let table = [
+            (0.975, 1.0, 12.706_204_74),
+            (0.975, 2.0, 4.302_652_730),
+            (0.975, 5.0, 2.570_581_836),
+            (0.975, 10.0, 2.228_138_852),
+            (0.975, 30.0, 2.042_272_456),
+            (0.975, 120.0, 1.979_930_405),
+            (0.95, 1.0, 6.313_751_515),
+            (0.95, 4.0, 2.131_846_786),
+            (0.995, 10.0, 3.169_272_673),
+            (0.9995, 1.0, 636.619_248_7),
+            (0.9, 3.0, 1.637_744_354),
+            (0.975, f64::INFINITY, 1.959_963_985),
+            (0.995, f64::INFINITY, 2.575_829_304),
+            (0.8413447460685429, f64::INFINITY, 1.0),
+        ];
+        for (p, nu, t) in table {
+            let q = student_t_quantile(p, nu);
+            assert!(rel(q, t) < 2e-9, "t_({p}, {nu}) = {q}, table {t}");
+            assert!(rel(student_t_quantile(1.0 - p, nu), -t) < 2e-9);
+        }
+        // Printed tables: 12.706, 2.571, 2.042, 1.960.
+        assert_eq!(format!("{:.3}", student_t_quantile(0.975, 1.0)), "12.706");
+        assert_eq!(format!("{:.3}", student_t_quantile(0.975, 5.0)), "2.571");
+        assert_eq!(format!("{:.3}", student_t_quantile(0.975, 30.0)), "2.042");
+        assert_eq!(format!("{:.3}", student_t_quantile(0.975, 1e7)), "1.960");
+        assert!(rel(student_t_quantile(0.975, 1e6), 1.959_963_985) < 1e-5);
+        // Closed forms: ν = 1 (Cauchy) t = tan(π(p − ½)); ν = 2 t = (2p − 1)/√(2p(1 − p)).
+        for p in [0.01, 0.2, 0.6, 0.9, 0.99, 0.999] {
+            let c = (std::f64::consts::PI * (p - 0.5)).tan();
+            assert!(rel(student_t_quantile(p, 1.0), c) < 1e-11);
+            let t2 = (2.0 * p - 1.0) / (2.0 * p * (1.0 - p)).sqrt();
+            assert!(rel(student_t_quantile(p, 2.0), t2) < 1e-11);
+        }
+        // CDF and quantile invert each other, also for non-integer ν.
+        for nu in [0.7, 3.5, 17.0, 250.0] {
+            for p in [0.03, 0.3, 0.7, 0.975] {
+                assert!((student_t_cdf(student_t_quantile(p, nu), nu) - p).abs() < 1e-12);
+            }
+        }
+        assert_eq!(student_t_cdf(1.0, 1.0), 0.75);
+        assert_eq!(student_t_quantile(0.5, 3.0), 0.0);
+        assert!(student_t_quantile(1.0, 3.0).is_nan());
+        assert!(student_t_quantile(0.0, 3.0).is_nan());
+        assert!(student_t_quantile(0.9, 0.0).is_nan());
+    }
+
+    #[test]
+    fn ln_gamma_matches_known_values() {
+        let pi = std::f64::consts::PI;
+        assert!((ln_gamma(0.5) - 0.5 * pi.ln()).abs() < 1e-14);
+        assert!(ln_gamma(1.0).abs() < 1e-14 && ln_gamma(2.0).abs() < 1e-14);
+        assert!(rel(ln_gamma(10.0), 362_880.0_f64.ln()) < 1e-14);
+        assert!(rel(ln_gamma(0.1), 2.252_712_651_734_206) < 1e-13);
+    }
+
+    /// Simulates `reps` data sets `y = V(aV + b) + σε` on `n` samples and counts how often
+    /// the 95 % intervals cover the truth: [a, b, mean curve at V₀, fresh observation].
+    fn coverage(n: usize, reps: u64, seed: u64) -> [f64; 4] {
+        let (a, b, sigma) = (1.8e3, 2.4e4, 300.0);
+        let v = sample_volumes(n);
+        let v0 = v[n / 3];
+        let vmax = v[n - 1];
+        let mut hits = [0u32; 4];
+        let mut y = vec![0.0; n];
+        for r in 0..reps {
+            let mut rng = Xoshiro256PlusPlus::seed_from_u64(seed + r);
+            for (yi, &vi) in y.iter_mut().zip(&v) {
+                *yi = vi * (a * vi + b) + sigma * normal(&mut rng);
+            }
+            let fit = fit_through_origin(&v, &y).unwrap();
+            let [ia, ib] = fit.coefficient_intervals(0.95);
+            hits[0] += u32::from(ia.0 <= a && a <= ia.1);
+            hits[1] += u32::from(ib.0 <= b && b <= ib.1);
+            let (lo, hi) = fit.confidence_band(v0, 0.95);
+            let truth = v0 * (a * v0 + b);
+            hits[2] += u32::from(lo <= truth && truth <= hi);
+            let vn = vmax * uniform(&mut rng);
+            let yn = vn * (a * vn + b) + sigma * normal(&mut rng);
+            let (lo, hi) = fit.prediction_band(vn, 0.95);
+            hits[3] += u32::from(lo <= yn && yn <= hi);
+        }
+        hits.map(|h| f64::from(h) / reps as f64)
+    }
+
+    #[test]
+    fn noisy_data_true_coefficients_lie_in_their_intervals() {
+        let (a, b) = (1.8e3, 2.4e4);
+        let v = sample_volumes(60);
+        let mut rng = Xoshiro256PlusPlus::seed_from_u64(7);
+        let y: Vec<f64> = v
+            .iter()
+            .map(|&x| x * (a * x + b) + 300.0 * normal(&mut rng))
+            .collect();
+        let fit = fit_through_origin(&v, &y).unwrap();
+        let [ia, ib] = fit.coefficient_intervals(0.95);
+        assert!(ia.0 <= a && a <= ia.1, "{ia:?}");
+        assert!(ib.0 <= b && b <= ib.1, "{ib:?}");
+        // The estimate is informative: intervals are narrow relative to the values.
+        assert!(ia.1 - ia.0 < 0.1 * a && ib.1 - ib.0 < 0.5 * b);
+        // The residual variance estimates σ² = 9e4 within sampling error (χ²₅₈).
+        assert!((fit.residual_variance / 9e4 - 1.0).abs() < 0.4);
+    }
+
+    #[test]
+    fn intervals_have_nominal_coverage_with_few_points() {
+        // n = 6 (4 dof), 400 replicates: a normal quantile in place of t gives ~0.88, a
+        // confidence band used for prediction far less.
+        let c = coverage(6, 400, 1000);
+        for (name, x) in ["a", "b", "mean curve", "new observation"].iter().zip(c) {
+            assert!((0.92..=0.98).contains(&x), "{name}: coverage {x}");
+        }
+        // Sharper: n = 4 (2 dof), 4000 replicates (binomial sd 0.0034), window ±3 sd.
+        // Here the normal quantile gives ~0.81 and s² = RSS/n gives ~0.91.
+        let c = coverage(4, 4000, 20_000);
+        for (name, x) in ["a", "b", "mean curve", "new observation"].iter().zip(c) {
+            assert!((0.94..=0.96).contains(&x), "n = 4, {name}: coverage {x}");
+        }
+    }
+
+    #[test]
+    fn intervals_have_nominal_coverage_with_many_points() {
+        let c = coverage(40, 400, 5000);
+        for (name, x) in ["a", "b", "mean curve", "new observation"].iter().zip(c) {
+            assert!((0.92..=0.98).contains(&x), "{name}: coverage {x}");
+        }
+    }
+
+    #[test]
+    fn prediction_band_is_wider_than_confidence_band() {
+        let v = [1.0, 2.0, 3.0, 4.0];
+        let fit = fit_through_origin(&v, &[3.0, 9.0, 20.0, 33.0]).unwrap();
+        let band = Band::linspace(&fit, 0.0, 5.0, 11, 0.95);
+        assert_eq!(band.v.len(), 11);
+        assert_eq!((band.v[0], band.v[10]), (0.0, 5.0));
+        assert!((band.v[3] - 1.5).abs() < 1e-15);
+        for i in 0..11 {
+            let x = band.v[i];
+            assert_eq!(band.fit[i], fit.eval(x));
+            assert!(band.pred_lo[i] < band.conf_lo[i] || x == 0.0);
+            assert!(band.conf_lo[i] <= band.fit[i] && band.fit[i] <= band.conf_hi[i]);
+            assert!(band.conf_hi[i] < band.pred_hi[i]);
+            assert_eq!(
+                (band.conf_lo[i], band.conf_hi[i]),
+                fit.confidence_band(x, 0.95)
+            );
+            assert_eq!(
+                (band.pred_lo[i], band.pred_hi[i]),
+                fit.prediction_band(x, 0.95)
+            );
+        }
+        // The curve passes through the origin exactly: no mean uncertainty there.
+        assert_eq!((band.conf_lo[0], band.conf_hi[0]), (0.0, 0.0));
+    }
+
+    #[test]
+    fn force_is_thickness_times_work_derivative() {
+        let (a, b, h) = (1.8e3, 2.4e4, 0.5);
+        let v = sample_volumes(20);
+        let y: Vec<f64> = v.iter().map(|&x| x * (a * x + b)).collect();
+        let fit = fit_through_origin(&v, &y).unwrap();
+        for x in [0.0, 1.0, 7.5] {
+            // Eq (15), and the central difference h·ΔW/ΔV (exact for a quadratic).
+            assert!(rel(force(&fit, h, x), h * (2.0 * a * x + b)) < 1e-10);
+            let d = 1e-2;
+            let fd = h * (fit.eval(x + d) - fit.eval(x - d)) / (2.0 * d);
+            assert!(rel(force(&fit, h, x), fd) < 1e-8);
+        }
+        // Noiseless data: no uncertainty.
+        assert!(force_std_error(&fit, h, 3.0) < 1e-6 * force(&fit, h, 3.0));
+        // Hand example: se(F) at V = 2.5, h = 0.3 = 0.3·sqrt(s²·gᵀ(XᵀX)⁻¹g), g = (5, 1).
+        let fit = fit_through_origin(&[1.0, 2.0, 3.0, 4.0], &[3.0, 9.0, 20.0, 33.0]).unwrap();
+        let q: f64 = (30.0 * 25.0 - 2.0 * 100.0 * 5.0 + 354.0) / 620.0;
+        assert!(
+            rel(
+                force_std_error(&fit, 0.3, 2.5),
+                0.3 * (71.0 / 310.0 * q).sqrt()
+            ) < 1e-12
+        );
+    }
+
+    #[test]
+    fn ratios_of_fits_and_data() {
+        let v = sample_volumes(30);
+        let (aw, bw, ap, bp) = (1.8e3, 2.4e4, 400.0, 1.0e3);
+        let w: Vec<f64> = v.iter().map(|&x| x * (aw * x + bw)).collect();
+        let pe: Vec<f64> = v.iter().map(|&x| x * (ap * x + bp)).collect();
+        let fw = fit_through_origin(&v, &w).unwrap();
+        let fp = fit_through_origin(&v, &pe).unwrap();
+        for x in [0.0, 2.0, 9.0] {
+            let r16 = (2.0 * aw * x + bw) / (2.0 * ap * x + bp);
+            assert!(rel(ratio(&fw, &fp, x), r16) < 1e-10);
+            assert!(rel(fitted_ratio(&fw, &fp, x), (aw * x + bw) / (ap * x + bp)) < 1e-10);
+        }
+        assert!(rel(fitted_ratio(&fw, &fp, 0.0), bw / bp) < 1e-10);
+        let dr = data_ratio(&w, &pe).unwrap();
+        for (i, &x) in v.iter().enumerate() {
+            assert!(rel(dr[i], fitted_ratio(&fw, &fp, x)) < 1e-10);
+        }
+    }
+
+    #[test]
+    fn ratio_std_error_matches_monte_carlo_spread() {
+        // W and PE share part of their noise (PE is part of the work), so the
+        // cross-covariance matters; the delta-method standard error must reproduce the
+        // scatter of the eq (16) ratio over replicates, and ignoring the correlation must not.
+        let v = sample_volumes(40);
+        let (aw, bw, ap, bp) = (1.8e3, 2.4e4, 400.0, 1.0e3);
+        let x0 = 5.0;
+        let reps = 2000;
+        let (mut sum, mut sum2, mut se_corr, mut se_ind) = (0.0, 0.0, 0.0, 0.0);
+        let (mut w, mut pe) = (vec![0.0; 40], vec![0.0; 40]);
+        for r in 0..reps {
+            let mut rng = Xoshiro256PlusPlus::seed_from_u64(90_000 + r);
+            for i in 0..40 {
+                let common = normal(&mut rng);
+                let x = v[i];
+                pe[i] = x * (ap * x + bp) + 60.0 * common;
+                w[i] = x * (aw * x + bw) + 240.0 * common + 60.0 * normal(&mut rng);
+            }
+            let fw = fit_through_origin(&v, &w).unwrap();
+            let fp = fit_through_origin(&v, &pe).unwrap();
+            let c = cross_covariance(&v, &w, &pe, &fw, &fp).unwrap();
+            let rr = ratio(&fw, &fp, x0);
+            sum += rr;
+            sum2 += rr * rr;
+            se_corr += ratio_std_error(&fw, &fp, Some(&c), x0);
+            se_ind += ratio_std_error(&fw, &fp, None, x0);
+        }
+        let n = reps as f64;
+        let sd = (sum2 / n - (sum / n).powi(2)).sqrt();
+        let (se_corr, se_ind) = (se_corr / n, se_ind / n);
+        assert!(
+            (se_corr / sd - 1.0).abs() < 0.1,
+            "delta {se_corr} vs MC {sd}"
+        );
+        assert!(
+            (se_ind / sd - 1.0).abs() > 0.3,
+            "independent {se_ind} vs MC {sd}"
+        );
+    }
+}

@@ -1,0 +1,6 @@
+//! Tabulation of ridging ensembles for large-scale ice models.
+//!
+//! - [`fit`] — least-squares fits of work and potential energy against ridged volume
+//!   (Hopkins 1994, eqs 13–16), with confidence and prediction bands.
+
+pub mod fit;
