@@ -270,8 +270,10 @@ pub struct FloeSection {
     /// Tensile strength at the bottom (Pa). Default 350e3, the sheet's.
     pub strength_bottom: f64,
     /// Stiffness of the vertical support spring per metre of floe (N/m per m of depth,
-    /// i.e. N/m²). Default 3e4: with buoyancy (ρ_w·g ≈ 1e4 N/m²) a floe piece carrying a
-    /// 70 kN/m sail over 5 m subsides ≈ 0.35 m, inside the paper's "half a meter or less".
+    /// i.e. N/m²). Default 3e4: with buoyancy (ρ_w·g ≈ 1e4 N/m² while the 0.18 m
+    /// freeboard lasts) a broken floe piece under a 2.4 m sail of rubble packed at 60 %
+    /// (13 kN per metre of floe) subsides 0.37 m, inside the paper's "half a meter or less"
+    /// (`tests/ridging.rs::broken_floe_piece_subsides_at_most_half_a_metre`).
     pub support_stiffness: f64,
     /// Damping of the support as a fraction of critical for spring plus buoyancy. Default
     /// 0.5.

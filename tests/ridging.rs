@@ -110,3 +110,45 @@ fn ridging_is_reproducible_and_seed_dependent() {
         "a different seed must give different rubble"
     );
 }
+
+/// A broken piece of the floe (one 1 m block on its support spring, no pin) under the weight
+/// of a sail subsides at most 0.5 m, as the paper chose its support stiffness to ensure.
+/// Per metre of piece the resistance is the spring k plus buoyancy ρ_w·g while the top is
+/// above water, the spring alone once the 0.18 m freeboard is under: δ = F/(k + ρ_w·g) up to
+/// the freeboard f, then f + (F − (k + ρ_w·g)·f)/k. A 2.4 m sail of rubble packed at 60 %
+/// weighs 0.6·2.4·920·9.81 ≈ 13 kN per metre of floe.
+#[test]
+fn broken_floe_piece_subsides_at_most_half_a_metre() {
+    use pressridge::dem::{Role, V2};
+    let scene = Scene::default()
+        .with_overrides(&["floe.length=1.0", "floe.pin=false", "duration=30"])
+        .unwrap();
+    let mut scene = scene;
+    scene.sheet = None;
+    let mut w = scene.build().unwrap();
+    let id = (0..w.bodies.len())
+        .find(|&i| w.bodies.role[i] == Role::Floe)
+        .unwrap();
+    let y0 = w.bodies.pos[id].y;
+    let f = scene.floe.as_ref().unwrap();
+    let k = f.support_stiffness * f.block_width;
+    let kb = 1010.0 * 9.81 * f.block_width;
+    let freeboard = f.thickness * (1.0 - 920.0 / 1010.0);
+    let load = 0.6 * 2.4 * 920.0 * 9.81 * f.block_width;
+    w.set_load(id as u32, V2::new(0.0, -load));
+    while w.time() < 30.0 {
+        w.step();
+    }
+    let got = y0 - w.bodies.pos[id].y;
+    let want = if load <= (k + kb) * freeboard {
+        load / (k + kb)
+    } else {
+        freeboard + (load - (k + kb) * freeboard) / k
+    };
+    eprintln!("broken floe piece subsided {got} m (expected {want} m)");
+    assert!(
+        (got - want).abs() < 0.02 * want,
+        "subsided {got} m, expected {want} m"
+    );
+    assert!(got <= 0.5, "subsided {got} m");
+}
