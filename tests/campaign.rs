@@ -89,6 +89,73 @@ fn tiny_campaign_is_resumable_and_complete() {
         assert_eq!(r.profile.sail.len(), 32);
         assert!(out.join("runs").join(&r.id).join("state.json").is_file());
     }
+    // Tabulate: dimensions, units, fits, and a C_f table the strength routine reads.
+    let table = dir.join("table.nc");
+    let res = bin()
+        .arg("tabulate")
+        .arg("--campaign")
+        .arg(&out)
+        .arg("--out")
+        .arg(&table)
+        .args(["--points", "11"])
+        .output()
+        .unwrap();
+    assert!(
+        res.status.success(),
+        "{}",
+        String::from_utf8_lossy(&res.stderr)
+    );
+    let nc = netcdf::open(&table).unwrap();
+    let dim = |n: &str| nc.dimension(n).unwrap().len();
+    assert_eq!((dim("set"), dim("thickness"), dim("volume")), (1, 2, 11));
+    let units = |v: &str| match nc
+        .variable(v)
+        .unwrap()
+        .attribute_value("units")
+        .unwrap()
+        .unwrap()
+    {
+        netcdf::AttributeValue::Str(s) => s,
+        other => panic!("{other:?}"),
+    };
+    assert_eq!(units("thickness"), "m");
+    assert_eq!(units("volume"), "m3 m-1");
+    assert_eq!(units("work_mean"), "J m-1");
+    assert_eq!(units("force_fit"), "N m-1");
+    assert_eq!(units("cf"), "1");
+    let th: Vec<f64> = nc.variable("thickness").unwrap().get_values(..).unwrap();
+    assert_eq!(th, vec![0.25, 0.35]);
+    let cf: Vec<f64> = nc.variable("cf").unwrap().get_values(..).unwrap();
+    assert!(cf.iter().all(|c| c.is_finite() && *c > 1.0), "{cf:?}");
+    let runs: Vec<f64> = nc.variable("runs").unwrap().get_values(..).unwrap();
+    assert_eq!(runs[0], 2.0, "both seeds behind V = 0");
+    for attr in [
+        "campaign_spec",
+        "scene",
+        "history",
+        "seeds",
+        "pressridge_version",
+    ] {
+        assert!(nc.attribute(attr).is_some(), "missing provenance {attr}");
+    }
+    drop(nc);
+    let sample = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data/sample_itd.nc");
+    let res = bin()
+        .arg("strength")
+        .arg("--input")
+        .arg(&sample)
+        .arg("--output")
+        .arg(dir.join("p.nc"))
+        .arg("--cf-table")
+        .arg(&table)
+        .output()
+        .unwrap();
+    assert!(
+        res.status.success(),
+        "{}",
+        String::from_utf8_lossy(&res.stderr)
+    );
+
     // Runs are reproducible: a third invocation does nothing.
     let res = bin()
         .args(["campaign", "--spec"])

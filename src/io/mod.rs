@@ -4,6 +4,7 @@
 pub mod itd_netcdf;
 pub mod series;
 pub mod state;
+pub mod table_netcdf;
 
 use std::path::{Path, PathBuf};
 

@@ -12,6 +12,7 @@ mod render;
 mod ridge_step;
 mod simulate;
 mod strength;
+mod tabulate;
 
 /// Error type of the subcommands: any error with a readable message.
 pub type BoxError = Box<dyn std::error::Error + Send + Sync>;
@@ -35,6 +36,8 @@ enum Command {
     Render(render::Args),
     /// Run a seeded ensemble over a parameter grid (resumable).
     Campaign(campaign::Args),
+    /// Tabulate a campaign into a NetCDF lookup table (fits, bands, C_f).
+    Tabulate(tabulate::Args),
     /// Ice strength P (N/m) of a gridded thickness distribution (NetCDF in and out).
     Strength(strength::Args),
     /// One ridging step on a gridded thickness distribution (NetCDF in and out).
@@ -49,6 +52,7 @@ fn main() {
         Command::Simulate(a) => simulate::run(a),
         Command::Render(a) => render::run(a),
         Command::Campaign(a) => campaign::run(a),
+        Command::Tabulate(a) => tabulate::run(a),
         Command::Strength(a) => strength::run(a),
         Command::RidgeStep(a) => ridge_step::run(a),
         Command::PlotStrength(a) => plot_strength::run(a),

@@ -1,0 +1,69 @@
+//! `pressridge tabulate`: a campaign directory to a NetCDF lookup table.
+
+use crate::BoxError;
+use pressridge::campaign::read_records;
+use pressridge::io::table_netcdf::{Provenance, write_ridge_table};
+use pressridge::table::tabulate::tabulate;
+use std::path::PathBuf;
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// Campaign result directory (from `pressridge campaign`).
+    #[arg(long)]
+    campaign: PathBuf,
+    /// Output NetCDF table.
+    #[arg(long)]
+    out: PathBuf,
+    /// Points of the ridged-volume grid.
+    #[arg(long, default_value_t = 41)]
+    points: usize,
+}
+
+/// Today's date (UTC) as YYYY-MM-DD, from the system clock.
+fn today() -> String {
+    let secs = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs()) as i64;
+    // Civil date from days since 1970-01-01 (Hinnant's algorithm).
+    let z = secs.div_euclid(86_400) + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z - era * 146_097;
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let d = doy - (153 * mp + 2) / 5 + 1;
+    let m = if mp < 10 { mp + 3 } else { mp - 9 };
+    let y = yoe + era * 400 + i64::from(m <= 2);
+    format!("{y:04}-{m:02}-{d:02}")
+}
+
+pub fn run(a: Args) -> Result<(), BoxError> {
+    let (spec, records) = read_records(&a.campaign)?;
+    let table = tabulate(&records, a.points)?;
+    let prov = Provenance {
+        campaign_spec: toml::to_string(&spec)?,
+        scene: records
+            .first()
+            .map(|r| r.scene.to_toml())
+            .unwrap_or_default(),
+        command: std::env::args().collect::<Vec<_>>().join(" "),
+        date: today(),
+    };
+    write_ridge_table(&a.out, &table, &prov)?;
+    println!(
+        "{}: {} runs, {} sets × {} thicknesses × {} volumes -> {}",
+        spec.name,
+        records.len(),
+        table.sets.len(),
+        table.thickness.len(),
+        table.volume.len(),
+        a.out.display()
+    );
+    for (si, set) in table.sets.iter().enumerate() {
+        let label = if set.is_empty() { "all" } else { set.as_str() };
+        for (hi, h) in table.thickness.iter().enumerate() {
+            println!("  [{label}] h = {h} m: C_f = {:.2}", table.cf[si][hi]);
+        }
+    }
+    Ok(())
+}

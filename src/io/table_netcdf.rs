@@ -1,0 +1,326 @@
+//! The ridging lookup table as NetCDF (CF-1.8 conventions, 64-bit-offset format, NaN marks
+//! cells that no run reached).
+//!
+//! Dimensions `set`, `thickness` (m), `volume` (m³/m). The 1-D variables `thickness` and `cf`
+//! (the first set's C_f per thickness) make the file usable directly as a `--cf-table` of
+//! `pressridge strength`; `cf_by_set(set, thickness)` holds every set's.
+
+use super::itd_netcdf::NetcdfError;
+use crate::table::tabulate::RidgeTable;
+use std::path::Path;
+
+fn nc_err(path: &Path) -> impl Fn(netcdf::Error) -> NetcdfError + '_ {
+    move |source| NetcdfError::Netcdf {
+        path: path.to_path_buf(),
+        source,
+    }
+}
+
+/// Provenance written as global attributes.
+#[derive(Clone, Debug, Default)]
+pub struct Provenance {
+    /// The campaign spec (TOML text).
+    pub campaign_spec: String,
+    /// The scene of the first run (TOML text), the base the grid varies.
+    pub scene: String,
+    /// The command that made the table.
+    pub command: String,
+    /// Creation date (ISO 8601).
+    pub date: String,
+}
+
+/// Writes a [`RidgeTable`] to `path`.
+pub fn write_ridge_table(
+    path: &Path,
+    t: &RidgeTable,
+    prov: &Provenance,
+) -> Result<(), NetcdfError> {
+    let e = nc_err(path);
+    let (ns, nh, nv) = (t.sets.len(), t.thickness.len(), t.volume.len());
+    let mut f = netcdf::create_with(path, netcdf::Options::_64BIT_OFFSET).map_err(&e)?;
+    f.add_dimension("set", ns).map_err(&e)?;
+    f.add_dimension("thickness", nh).map_err(&e)?;
+    f.add_dimension("volume", nv).map_err(&e)?;
+    type Var<'a> = (&'a str, &'a [&'a str], &'a str, &'a str, Vec<f64>);
+    let flat3 =
+        |x: &Vec<Vec<Vec<f64>>>| x.iter().flatten().flatten().copied().collect::<Vec<f64>>();
+    let flat2 = |x: &Vec<Vec<f64>>| x.iter().flatten().copied().collect::<Vec<f64>>();
+    let coef = |g: &dyn Fn(&super::super::table::tabulate::SetFits) -> f64| -> Vec<f64> {
+        t.fits
+            .iter()
+            .flatten()
+            .map(|x| x.as_ref().map_or(f64::NAN, g))
+            .collect()
+    };
+    let pooled = |g: &dyn Fn(&super::super::table::tabulate::SetFits) -> f64| -> Vec<f64> {
+        t.pooled
+            .iter()
+            .map(|x| x.as_ref().map_or(f64::NAN, g))
+            .collect()
+    };
+    let band = |g: &dyn Fn(&crate::table::fit::Band) -> &Vec<f64>| -> Vec<f64> {
+        t.work_band
+            .iter()
+            .flat_map(|b| match b {
+                Some(b) => g(b).clone(),
+                None => vec![f64::NAN; nv],
+            })
+            .collect()
+    };
+    let s3: &[&str] = &["set", "thickness", "volume"];
+    let s2: &[&str] = &["set", "thickness"];
+    let sv: &[&str] = &["set", "volume"];
+    let s1: &[&str] = &["set"];
+    let vars: Vec<Var> = vec![
+        (
+            "thickness",
+            &["thickness"],
+            "m",
+            "lead-ice sheet thickness",
+            t.thickness.clone(),
+        ),
+        (
+            "volume",
+            &["volume"],
+            "m3 m-1",
+            "ridged-ice volume per metre of ridge V = U h t",
+            t.volume.clone(),
+        ),
+        (
+            "work_mean",
+            s3,
+            "J m-1",
+            "ensemble mean ridging work, eq (9)",
+            flat3(&t.work_mean),
+        ),
+        (
+            "work_std",
+            s3,
+            "J m-1",
+            "ensemble standard deviation of the ridging work",
+            flat3(&t.work_std),
+        ),
+        (
+            "potential_energy_mean",
+            s3,
+            "J m-1",
+            "ensemble mean potential energy change, eq (10)",
+            flat3(&t.pe_mean),
+        ),
+        (
+            "potential_energy_std",
+            s3,
+            "J m-1",
+            "ensemble standard deviation of the potential energy change",
+            flat3(&t.pe_std),
+        ),
+        (
+            "ratio_mean",
+            s3,
+            "1",
+            "ensemble mean of work over potential energy change",
+            flat3(&t.ratio_mean),
+        ),
+        (
+            "force_mean",
+            s3,
+            "N m-1",
+            "ensemble mean ridging force over the sampling interval",
+            flat3(&t.force_mean),
+        ),
+        (
+            "runs",
+            s3,
+            "1",
+            "number of runs behind each ensemble value",
+            t.runs
+                .iter()
+                .flatten()
+                .flatten()
+                .map(|&n| n as f64)
+                .collect(),
+        ),
+        (
+            "force_fit",
+            s3,
+            "N m-1",
+            "ridging force from the pooled work fit, eq (15)",
+            flat3(&t.force_fit),
+        ),
+        (
+            "work_a",
+            s2,
+            "J m-7",
+            "work fit W = V(a V + b), coefficient a, eq (13)",
+            coef(&|x| x.work.a),
+        ),
+        (
+            "work_b",
+            s2,
+            "J m-4",
+            "work fit coefficient b, eq (13)",
+            coef(&|x| x.work.b),
+        ),
+        (
+            "work_a_se",
+            s2,
+            "J m-7",
+            "standard error of work_a",
+            coef(&|x| x.work.standard_errors()[0]),
+        ),
+        (
+            "work_b_se",
+            s2,
+            "J m-4",
+            "standard error of work_b",
+            coef(&|x| x.work.standard_errors()[1]),
+        ),
+        (
+            "potential_energy_a",
+            s2,
+            "J m-7",
+            "potential energy fit PE = V(a V + b), coefficient a, eq (14)",
+            coef(&|x| x.potential_energy.a),
+        ),
+        (
+            "potential_energy_b",
+            s2,
+            "J m-4",
+            "potential energy fit coefficient b, eq (14)",
+            coef(&|x| x.potential_energy.b),
+        ),
+        (
+            "cf_by_set",
+            s2,
+            "1",
+            "C_f: ensemble mean of final work over potential energy change",
+            flat2(&t.cf),
+        ),
+        (
+            "cf",
+            &["thickness"],
+            "1",
+            "C_f of the first set: ratio of ridging work to potential energy change",
+            t.cf[0].clone(),
+        ),
+        (
+            "pooled_work_a",
+            s1,
+            "J m-7",
+            "work fit pooled over thicknesses, coefficient a, eq (13)",
+            pooled(&|x| x.work.a),
+        ),
+        (
+            "pooled_work_b",
+            s1,
+            "J m-4",
+            "work fit pooled over thicknesses, coefficient b, eq (13)",
+            pooled(&|x| x.work.b),
+        ),
+        (
+            "pooled_work_a_se",
+            s1,
+            "J m-7",
+            "standard error of pooled_work_a",
+            pooled(&|x| x.work.standard_errors()[0]),
+        ),
+        (
+            "pooled_work_b_se",
+            s1,
+            "J m-4",
+            "standard error of pooled_work_b",
+            pooled(&|x| x.work.standard_errors()[1]),
+        ),
+        (
+            "pooled_potential_energy_a",
+            s1,
+            "J m-7",
+            "pooled potential energy fit, coefficient a, eq (14)",
+            pooled(&|x| x.potential_energy.a),
+        ),
+        (
+            "pooled_potential_energy_b",
+            s1,
+            "J m-4",
+            "pooled potential energy fit, coefficient b, eq (14)",
+            pooled(&|x| x.potential_energy.b),
+        ),
+        (
+            "work_fit",
+            sv,
+            "J m-1",
+            "pooled work fit, eq (13)",
+            band(&|b| &b.fit),
+        ),
+        (
+            "work_conf_lo",
+            sv,
+            "J m-1",
+            "lower edge of the 95 % confidence band of the pooled work fit",
+            band(&|b| &b.conf_lo),
+        ),
+        (
+            "work_conf_hi",
+            sv,
+            "J m-1",
+            "upper edge of the 95 % confidence band of the pooled work fit",
+            band(&|b| &b.conf_hi),
+        ),
+        (
+            "work_pred_lo",
+            sv,
+            "J m-1",
+            "lower edge of the 95 % prediction band of the pooled work fit",
+            band(&|b| &b.pred_lo),
+        ),
+        (
+            "work_pred_hi",
+            sv,
+            "J m-1",
+            "upper edge of the 95 % prediction band of the pooled work fit",
+            band(&|b| &b.pred_hi),
+        ),
+        (
+            "ratio_fit",
+            sv,
+            "1",
+            "dWork/dPE from the pooled fits, eq (16)",
+            flat2(&t.ratio_fit),
+        ),
+    ];
+    for (name, dims, units, long, _) in &vars {
+        let mut v = f.add_variable::<f64>(name, dims).map_err(&e)?;
+        v.put_attribute("units", *units).map_err(&e)?;
+        v.put_attribute("long_name", *long).map_err(&e)?;
+        v.put_attribute("_FillValue", f64::NAN).map_err(&e)?;
+    }
+    f.add_attribute("Conventions", "CF-1.8").map_err(&e)?;
+    f.add_attribute(
+        "title",
+        "pressridge ridging lookup table (Hopkins 1994, eqs 13-17)",
+    )
+    .map_err(&e)?;
+    f.add_attribute("pressridge_version", env!("CARGO_PKG_VERSION"))
+        .map_err(&e)?;
+    f.add_attribute("sets", t.sets.join("; ").as_str())
+        .map_err(&e)?;
+    let seeds: Vec<String> = t.seeds.iter().map(u64::to_string).collect();
+    f.add_attribute("seeds", seeds.join(" ").as_str())
+        .map_err(&e)?;
+    f.add_attribute("campaign_spec", prov.campaign_spec.as_str())
+        .map_err(&e)?;
+    f.add_attribute("scene", prov.scene.as_str()).map_err(&e)?;
+    f.add_attribute(
+        "history",
+        format!("{} {}", prov.date, prov.command).as_str(),
+    )
+    .map_err(&e)?;
+    f.enddef().map_err(&e)?;
+    for (name, _, _, _, data) in &vars {
+        let mut v = f.variable_mut(name).expect("just defined");
+        v.put_values(data, ..).map_err(&e)?;
+    }
+    f.close().map_err(&e)?;
+    let _ = (ns, nh);
+    Ok(())
+}

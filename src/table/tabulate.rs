@@ -1,0 +1,276 @@
+//! From campaign records to a lookup table of ridging energetics (Hopkins 1994, eqs 13–17).
+//!
+//! Runs are grouped into *sets* by their grid settings other than the sheet thickness (and
+//! the block width tied to it), e.g. one set per friction pair. Within a set:
+//!
+//! - every run's samples (W, ΔPE, mean force against ridged volume V = U·h·t) are
+//!   interpolated linearly onto a common volume grid, within the volumes the run reached; the
+//!   ensemble mean and standard deviation over the runs of each thickness are tabulated, with
+//!   the number of runs behind each value (cells no run reached hold NaN, the CF fill value);
+//! - eqs (13)–(14) are fitted by least squares through the origin ([`super::fit`]) per
+//!   thickness and pooled over all thicknesses of the set (the paper's Figure 12), with
+//!   standard errors and 95 % confidence and prediction bands of the pooled work curve; the
+//!   force of eq (15) and the ratio dW/dPE of eq (16) follow from the pooled fits;
+//! - C_f per thickness is the ensemble mean of the runs' final W/ΔPE: the ratio the strength
+//!   routine multiplies the potential-energy term by.
+
+use super::fit::{Band, FitError, QuadFit, fit_through_origin, force, ratio};
+use crate::campaign::RunRecord;
+
+/// The fits of one group of samples (J/m against m³/m).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SetFits {
+    /// Work, eq (13): W = V(a·V + b).
+    pub work: QuadFit,
+    /// Potential energy, eq (14): PE = V(a·V + b).
+    pub potential_energy: QuadFit,
+}
+
+/// A tabulated campaign.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RidgeTable {
+    /// Set labels (the settings other than thickness, `key=value` joined by `, `).
+    pub sets: Vec<String>,
+    /// Sheet thicknesses (m).
+    pub thickness: Vec<f64>,
+    /// Ridged-volume grid (m³/m).
+    pub volume: Vec<f64>,
+    /// Ensemble statistics, indexed `[set][thickness][volume]`.
+    pub work_mean: Vec<Vec<Vec<f64>>>,
+    /// Standard deviation of the work over the runs (J/m).
+    pub work_std: Vec<Vec<Vec<f64>>>,
+    /// Mean potential energy (J/m).
+    pub pe_mean: Vec<Vec<Vec<f64>>>,
+    /// Standard deviation of the potential energy (J/m).
+    pub pe_std: Vec<Vec<Vec<f64>>>,
+    /// Mean W/ΔPE (dimensionless).
+    pub ratio_mean: Vec<Vec<Vec<f64>>>,
+    /// Mean ridging force over the sampling interval (N/m).
+    pub force_mean: Vec<Vec<Vec<f64>>>,
+    /// Number of runs behind each value.
+    pub runs: Vec<Vec<Vec<u32>>>,
+    /// Fits per set and thickness (`None` where there were too few samples).
+    pub fits: Vec<Vec<Option<SetFits>>>,
+    /// Fits per set pooled over thicknesses.
+    pub pooled: Vec<Option<SetFits>>,
+    /// Bands of the pooled work fit per set on the volume grid.
+    pub work_band: Vec<Option<Band>>,
+    /// Force of eq (15) from the pooled work fit, `[set][thickness][volume]` (N/m).
+    pub force_fit: Vec<Vec<Vec<f64>>>,
+    /// dW/dPE of eq (16) from the pooled fits, `[set][volume]`.
+    pub ratio_fit: Vec<Vec<f64>>,
+    /// C_f = mean final W/ΔPE per set and thickness.
+    pub cf: Vec<Vec<f64>>,
+    /// Seeds used.
+    pub seeds: Vec<u64>,
+}
+
+/// Errors of tabulation.
+#[derive(Debug, thiserror::Error)]
+pub enum TabulateError {
+    /// No usable run.
+    #[error("no finished run with a sheet to tabulate")]
+    Empty,
+    /// A fit failed.
+    #[error("fit: {0}")]
+    Fit(#[from] FitError),
+}
+
+fn is_thickness_key(s: &str) -> bool {
+    s.starts_with("sheet.thickness=") || s.starts_with("sheet.block_width=")
+}
+
+/// Linear interpolation of `ys(xs)` at `x` within [xs[0], xs[last]], else NaN.
+fn interp(xs: &[f64], ys: &[f64], x: f64) -> f64 {
+    if xs.is_empty() || x < xs[0] || x > xs[xs.len() - 1] {
+        return f64::NAN;
+    }
+    let k = xs.partition_point(|&v| v < x);
+    if k == 0 {
+        return ys[0];
+    }
+    let (x0, x1) = (xs[k - 1], xs[k]);
+    if x1 == x0 {
+        return ys[k];
+    }
+    ys[k - 1] + (ys[k] - ys[k - 1]) * (x - x0) / (x1 - x0)
+}
+
+/// Tabulates campaign records on a volume grid of `points` points from 0 to the largest
+/// volume reached.
+pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, TabulateError> {
+    let recs: Vec<&RunRecord> = records
+        .iter()
+        .filter(|r| r.scene.sheet.is_some() && r.samples.len() >= 2)
+        .collect();
+    if recs.is_empty() {
+        return Err(TabulateError::Empty);
+    }
+    let set_of = |r: &RunRecord| {
+        r.settings
+            .iter()
+            .filter(|s| !is_thickness_key(s))
+            .cloned()
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let h_of = |r: &RunRecord| r.scene.sheet.as_ref().expect("filtered").thickness;
+    let mut sets: Vec<String> = Vec::new();
+    let mut thickness: Vec<f64> = Vec::new();
+    let mut seeds: Vec<u64> = Vec::new();
+    for r in &recs {
+        let s = set_of(r);
+        if !sets.contains(&s) {
+            sets.push(s);
+        }
+        let h = h_of(r);
+        if !thickness.contains(&h) {
+            thickness.push(h);
+        }
+        if !seeds.contains(&r.seed) {
+            seeds.push(r.seed);
+        }
+    }
+    thickness.sort_by(f64::total_cmp);
+    seeds.sort_unstable();
+    let vmax = recs
+        .iter()
+        .flat_map(|r| r.samples.iter().map(|s| s.volume))
+        .fold(0.0, f64::max);
+    let points = points.max(2);
+    let volume: Vec<f64> = (0..points)
+        .map(|k| vmax * k as f64 / (points - 1) as f64)
+        .collect();
+    let (ns, nh, nv) = (sets.len(), thickness.len(), points);
+    let grid = || vec![vec![vec![f64::NAN; nv]; nh]; ns];
+    let mut t = RidgeTable {
+        sets: sets.clone(),
+        thickness: thickness.clone(),
+        volume: volume.clone(),
+        work_mean: grid(),
+        work_std: grid(),
+        pe_mean: grid(),
+        pe_std: grid(),
+        ratio_mean: grid(),
+        force_mean: grid(),
+        runs: vec![vec![vec![0; nv]; nh]; ns],
+        fits: vec![vec![None; nh]; ns],
+        pooled: vec![None; ns],
+        work_band: vec![None; ns],
+        force_fit: grid(),
+        ratio_fit: vec![vec![f64::NAN; nv]; ns],
+        cf: vec![vec![f64::NAN; nh]; ns],
+        seeds,
+    };
+    let mean_std = |xs: &[f64]| -> (f64, f64) {
+        let n = xs.len() as f64;
+        let m = xs.iter().sum::<f64>() / n;
+        let var = if xs.len() > 1 {
+            xs.iter().map(|x| (x - m).powi(2)).sum::<f64>() / (n - 1.0)
+        } else {
+            0.0
+        };
+        (m, var.sqrt())
+    };
+    for (si, set) in sets.iter().enumerate() {
+        let (mut pv, mut pw, mut pp) = (Vec::new(), Vec::new(), Vec::new());
+        for (hi, &h) in thickness.iter().enumerate() {
+            let group: Vec<&&RunRecord> = recs
+                .iter()
+                .filter(|r| &set_of(r) == set && h_of(r) == h)
+                .collect();
+            if group.is_empty() {
+                continue;
+            }
+            for (vi, &v) in volume.iter().enumerate() {
+                let (mut w, mut p, mut q, mut f) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+                for r in &group {
+                    let xs: Vec<f64> = r.samples.iter().map(|s| s.volume).collect();
+                    let get = |g: fn(&crate::campaign::RunSample) -> f64| {
+                        let ys: Vec<f64> = r.samples.iter().map(g).collect();
+                        interp(&xs, &ys, v)
+                    };
+                    let (wv, pv_) = (get(|s| s.work), get(|s| s.potential_energy));
+                    if wv.is_finite() && pv_.is_finite() {
+                        w.push(wv);
+                        p.push(pv_);
+                        if pv_ > 0.0 {
+                            q.push(wv / pv_);
+                        }
+                        let fv = get(|s| s.mean_force);
+                        if fv.is_finite() && v > 0.0 {
+                            f.push(fv);
+                        }
+                    }
+                }
+                if !w.is_empty() {
+                    t.runs[si][hi][vi] = w.len() as u32;
+                    (t.work_mean[si][hi][vi], t.work_std[si][hi][vi]) = mean_std(&w);
+                    (t.pe_mean[si][hi][vi], t.pe_std[si][hi][vi]) = mean_std(&p);
+                }
+                if !q.is_empty() {
+                    t.ratio_mean[si][hi][vi] = mean_std(&q).0;
+                }
+                if !f.is_empty() {
+                    t.force_mean[si][hi][vi] = mean_std(&f).0;
+                }
+            }
+            // Fits over every sample of every run of this thickness (V > 0).
+            let (mut fv, mut fw, mut fp) = (Vec::new(), Vec::new(), Vec::new());
+            let mut finals = Vec::new();
+            for r in &group {
+                for s in r.samples.iter().filter(|s| s.volume > 0.0) {
+                    fv.push(s.volume);
+                    fw.push(s.work);
+                    fp.push(s.potential_energy);
+                }
+                let last = r.samples.last().expect("≥ 2 samples");
+                if last.potential_energy > 0.0 {
+                    finals.push(last.work / last.potential_energy);
+                }
+            }
+            if !finals.is_empty() {
+                t.cf[si][hi] = mean_std(&finals).0;
+            }
+            if let (Ok(work), Ok(pe)) = (fit_through_origin(&fv, &fw), fit_through_origin(&fv, &fp))
+            {
+                t.fits[si][hi] = Some(SetFits {
+                    work,
+                    potential_energy: pe,
+                });
+            }
+            pv.extend(fv);
+            pw.extend(fw);
+            pp.extend(fp);
+        }
+        if let (Ok(work), Ok(pe)) = (fit_through_origin(&pv, &pw), fit_through_origin(&pv, &pp)) {
+            t.work_band[si] = Some(Band::new(&work, &volume, 0.95));
+            for (vi, &v) in volume.iter().enumerate() {
+                t.ratio_fit[si][vi] = ratio(&work, &pe, v);
+                for (hi, &h) in thickness.iter().enumerate() {
+                    t.force_fit[si][hi][vi] = force(&work, h, v);
+                }
+            }
+            t.pooled[si] = Some(SetFits {
+                work,
+                potential_energy: pe,
+            });
+        }
+    }
+    Ok(t)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn interpolation_inside_and_outside() {
+        let xs = [0.0, 1.0, 3.0];
+        let ys = [0.0, 2.0, 6.0];
+        assert_eq!(interp(&xs, &ys, 2.0), 4.0);
+        assert_eq!(interp(&xs, &ys, 0.0), 0.0);
+        assert_eq!(interp(&xs, &ys, 3.0), 6.0);
+        assert!(interp(&xs, &ys, 3.5).is_nan());
+    }
+}
