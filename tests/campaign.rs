@@ -98,6 +98,8 @@ fn tiny_campaign_is_resumable_and_complete() {
         .arg("--out")
         .arg(&table)
         .args(["--points", "11"])
+        .arg("--figures")
+        .arg(dir.join("fig"))
         .output()
         .unwrap();
     assert!(
@@ -105,6 +107,9 @@ fn tiny_campaign_is_resumable_and_complete() {
         "{}",
         String::from_utf8_lossy(&res.stderr)
     );
+    for f in ["work_set0.png", "force_set0.png", "profiles.png"] {
+        assert!(dir.join("fig").join(f).is_file(), "missing figure {f}");
+    }
     let nc = netcdf::open(&table).unwrap();
     let dim = |n: &str| nc.dimension(n).unwrap().len();
     assert_eq!((dim("set"), dim("thickness"), dim("volume")), (1, 2, 11));
@@ -218,6 +223,7 @@ fn shipped_specs_plan_the_papers_sets() {
         plan.len()
     };
     assert_eq!(count("thickness.toml"), 6 * 7);
+    assert_eq!(count("default-table.toml"), 6 * 3);
     assert_eq!(count("friction.toml"), 8 * 7);
     assert_eq!(count("speed.toml"), 2 * 7);
     assert_eq!(count("modulus.toml"), 3 * 7);

@@ -6,6 +6,7 @@
 
 pub mod render;
 pub mod series;
+pub mod table;
 
 use std::sync::OnceLock;
 

@@ -3,6 +3,7 @@
 use crate::BoxError;
 use pressridge::campaign::read_records;
 use pressridge::io::table_netcdf::{Provenance, write_ridge_table};
+use pressridge::plot;
 use pressridge::table::tabulate::tabulate;
 use std::path::PathBuf;
 
@@ -17,6 +18,10 @@ pub struct Args {
     /// Points of the ridged-volume grid.
     #[arg(long, default_value_t = 41)]
     points: usize,
+    /// Also draw figures into this directory: work against volume with the fit and its
+    /// bands, force against volume and thickness (per set), averaged final profiles.
+    #[arg(long)]
+    figures: Option<PathBuf>,
 }
 
 /// Today's date (UTC) as YYYY-MM-DD, from the system clock.
@@ -50,6 +55,34 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         date: today(),
     };
     write_ridge_table(&a.out, &table, &prov)?;
+    if let Some(dir) = &a.figures {
+        std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+        for s in 0..table.sets.len() {
+            plot::table::plot_work(&table, s, &dir.join(format!("work_set{s}.png")))?;
+            plot::table::plot_force(&table, s, &dir.join(format!("force_set{s}.png")))?;
+        }
+        // Averaged final profiles per grid point (all seeds of a setting).
+        let mut groups: Vec<(String, Vec<pressridge::observe::Profile>)> = Vec::new();
+        for r in &records {
+            let label = if r.settings.is_empty() {
+                "all".to_string()
+            } else {
+                r.settings.join(", ")
+            };
+            match groups.iter_mut().find(|(l, _)| *l == label) {
+                Some((_, v)) => v.push(r.profile.clone()),
+                None => groups.push((label, vec![r.profile.clone()])),
+            }
+        }
+        let profiles: Vec<(String, pressridge::observe::Profile)> = groups
+            .into_iter()
+            .filter_map(|(l, ps)| {
+                let n = ps.len();
+                pressridge::observe::mean_profile(&ps).map(|p| (format!("{l} ({n} runs)"), p))
+            })
+            .collect();
+        plot::table::plot_profiles(&profiles, &dir.join("profiles.png"))?;
+    }
     println!(
         "{}: {} runs, {} sets × {} thicknesses × {} volumes -> {}",
         spec.name,
