@@ -68,16 +68,6 @@ pub struct RidgeMetrics {
     pub length_to_thickness: f64,
 }
 
-fn world_outline(b: &crate::dem::world::BodyState) -> Vec<V2> {
-    let (s, c) = b.theta.sin_cos();
-    b.shape
-        .outline()
-        .verts()
-        .iter()
-        .map(|q| q.rotate(c, s) + b.pos)
-        .collect()
-}
-
 /// Lowest and highest y (m) where the vertical line at `x` meets a convex polygon.
 fn vertical_extent(v: &[V2], x: f64) -> Option<(f64, f64)> {
     let n = v.len();
@@ -108,7 +98,8 @@ pub fn profile(s: &Snapshot, x0: f64, dx: f64, strips: usize, lines: usize) -> P
         .iter()
         .filter(|b| b.role != Role::Wall && !b.drive.is_kinematic())
         .map(|b| {
-            let v = world_outline(b);
+            let o = b.world_outline();
+            let v = o.verts().to_vec();
             let lo = v.iter().map(|p| p.x).fold(f64::INFINITY, f64::min);
             let hi = v.iter().map(|p| p.x).fold(f64::NEG_INFINITY, f64::max);
             (b.role, v, lo, hi)
@@ -239,9 +230,7 @@ pub fn metrics(p: &Profile, state: Option<(&Snapshot, &[f64], f64)>) -> RidgeMet
     if let Some((s, lengths, thickness)) = state {
         let level = s.params.water.as_ref().map_or(0.0, |w| w.level);
         for b in s.bodies.iter().filter(|b| b.role == Role::Rubble) {
-            let v = world_outline(b);
-            let o = crate::dem::geometry::Outline::from_slice(&v);
-            let (below, _) = crate::dem::geometry::below_line(&o, level);
+            let (below, _) = crate::dem::geometry::below_line(&b.world_outline(), level);
             m.keel_ice_area += below;
             m.sail_ice_area += b.shape.area() - below;
         }

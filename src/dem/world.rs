@@ -701,12 +701,10 @@ impl World {
             }
             pe += b.mass[i] * g * b.pos[i].y;
             if let Some(w) = &self.params.water {
-                let mut o = b.shape[i].outline().verts().to_vec();
                 let (s, c) = b.theta[i].sin_cos();
-                for q in o.iter_mut() {
-                    *q = q.rotate(c, s) + b.pos[i];
-                }
-                let (a, cen) = below_line(&super::geometry::Outline::from_slice(&o), w.level);
+                let mut o = super::geometry::Outline::default();
+                o.set_transformed(b.shape[i].outline(), c, s, b.pos[i]);
+                let (a, cen) = below_line(&o, w.level);
                 pe -= w.density * g * a * (cen.y - w.level);
             }
         }
@@ -817,6 +815,16 @@ pub struct BodyState {
     /// Nominal rectangle and bevels, for rectangular blocks.
     #[serde(default)]
     pub block: Option<Block>,
+}
+
+impl BodyState {
+    /// The body's outline in world coordinates (m).
+    pub fn world_outline(&self) -> super::geometry::Outline {
+        let (s, c) = self.theta.sin_cos();
+        let mut o = super::geometry::Outline::default();
+        o.set_transformed(self.shape.outline(), c, s, self.pos);
+        o
+    }
 }
 
 /// The complete state of a [`World`], serialisable (JSON via [`crate::io`]).

@@ -1,7 +1,7 @@
 //! Ridge snapshots: blocks, the water, axes in metres (cf. Hopkins 1994, Figure 5).
 
 use super::{PlotError, draw_err, ensure_font};
-use crate::dem::{Role, Snapshot, V2};
+use crate::dem::{Role, Snapshot};
 use plotters::prelude::*;
 use std::path::Path;
 
@@ -29,7 +29,7 @@ impl Window {
             y1: f64::NEG_INFINITY,
         };
         for b in s.bodies.iter().filter(|b| !b.drive.is_kinematic()) {
-            for p in world_vertices(b) {
+            for &p in b.world_outline().verts() {
                 w.x0 = w.x0.min(p.x);
                 w.x1 = w.x1.max(p.x);
                 w.y0 = w.y0.min(p.y);
@@ -51,16 +51,6 @@ impl Window {
             y1: w.y1 + margin,
         }
     }
-}
-
-fn world_vertices(b: &crate::dem::world::BodyState) -> Vec<V2> {
-    let (s, c) = b.theta.sin_cos();
-    b.shape
-        .outline()
-        .verts()
-        .iter()
-        .map(|q| q.rotate(c, s) + b.pos)
-        .collect()
 }
 
 /// Draws a saved state into a PNG (or SVG, by the file extension) of `width_px` pixels
@@ -129,7 +119,8 @@ where
     let sheet = RGBColor(214, 236, 250);
     let floe = RGBColor(205, 205, 215);
     for b in &s.bodies {
-        let v = world_vertices(b);
+        let o = b.world_outline();
+        let v = o.verts();
         let pts: Vec<(f64, f64)> = v
             .iter()
             .map(|p| (p.x.clamp(win.x0, win.x1), p.y.clamp(win.y0, win.y1)))
