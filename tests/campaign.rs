@@ -143,7 +143,27 @@ fn tiny_campaign_is_resumable_and_complete() {
     ] {
         assert!(nc.attribute(attr).is_some(), "missing provenance {attr}");
     }
+    // Read back through the lookup API: nodes give the stored values, C_f matches `cf`,
+    // outside the range is clamped and flagged.
+    let work: Vec<f64> = nc.variable("work_mean").unwrap().get_values(..).unwrap();
+    let vol: Vec<f64> = nc.variable("volume").unwrap().get_values(..).unwrap();
     drop(nc);
+    let lut = pressridge::table::lookup::RidgeLookup::open(&table).unwrap();
+    assert_eq!(lut.thickness(), th.as_slice());
+    assert_eq!(lut.volume(), vol.as_slice());
+    assert!(lut.attribute("campaign_spec").unwrap().contains("tiny"));
+    for (ih, &h) in th.iter().enumerate() {
+        for (iv, &v) in vol.iter().enumerate() {
+            let got = lut.value("work_mean", 0, h, v).unwrap();
+            let want = work[ih * vol.len() + iv];
+            assert!(got.value.to_bits() == want.to_bits(), "{got:?} vs {want}");
+            assert!(!got.clamped);
+        }
+        assert_eq!(lut.cf(0, h).unwrap().value, cf[ih]);
+    }
+    let out_of_range = lut.cf(0, 1.0).unwrap();
+    assert!(out_of_range.clamped && out_of_range.value == cf[1]);
+    assert_eq!(lut.cf_table(0).unwrap().values(), cf.as_slice());
     let sample = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data/sample_itd.nc");
     let res = bin()
         .arg("strength")

@@ -324,3 +324,81 @@ pub fn write_ridge_table(
     let _ = (ns, nh);
     Ok(())
 }
+
+impl crate::table::lookup::RidgeLookup {
+    /// Reads a table written by [`write_ridge_table`] (`pressridge tabulate`): every variable
+    /// on the dimensions (`set`, `thickness`, `volume`) or an ordered subset of them becomes a
+    /// field, string global attributes become the provenance. Errors name the file and the
+    /// missing or malformed variable.
+    pub fn open(path: &Path) -> Result<Self, NetcdfError> {
+        use crate::table::lookup::{Axes, Field, RidgeLookup};
+        let e = nc_err(path);
+        let file = netcdf::open(path).map_err(&e)?;
+        let missing = |var: &str| NetcdfError::MissingVariable {
+            path: path.to_path_buf(),
+            var: var.into(),
+        };
+        let axis = |name: &str| -> Result<Vec<f64>, NetcdfError> {
+            let v = file.variable(name).ok_or_else(|| missing(name))?;
+            let d: Vec<String> = v.dimensions().iter().map(|d| d.name()).collect();
+            if d != [name] {
+                return Err(NetcdfError::Shape {
+                    path: path.to_path_buf(),
+                    var: name.into(),
+                    expected: format!("({name})"),
+                    found: format!("({})", d.join(", ")),
+                });
+            }
+            v.get_values::<f64, _>(..).map_err(&e)
+        };
+        let thickness = axis("thickness")?;
+        let volume = axis("volume")?;
+        let nsets = file.dimension("set").ok_or_else(|| missing("set"))?.len();
+        let mut attributes = std::collections::BTreeMap::new();
+        for a in file.attributes() {
+            if let Ok(netcdf::AttributeValue::Str(s)) = a.value() {
+                attributes.insert(a.name().to_string(), s);
+            }
+        }
+        let mut sets: Vec<String> = attributes
+            .get("sets")
+            .map(|s| s.split("; ").map(str::to_string).collect())
+            .unwrap_or_default();
+        if sets.len() != nsets {
+            sets = (0..nsets).map(|k| format!("set {k}")).collect();
+        }
+        let mut fields = Vec::new();
+        for v in file.variables() {
+            let name = v.name();
+            if name == "thickness" || name == "volume" {
+                continue;
+            }
+            let d: Vec<String> = v.dimensions().iter().map(|d| d.name()).collect();
+            let axes = Axes {
+                set: d.iter().any(|x| x == "set"),
+                thickness: d.iter().any(|x| x == "thickness"),
+                volume: d.iter().any(|x| x == "volume"),
+            };
+            if d.is_empty() || axes.names() != d {
+                continue; // not a lookup field (another layout)
+            }
+            let text = |a: &str| match v.attribute_value(a) {
+                Some(Ok(netcdf::AttributeValue::Str(s))) => s,
+                _ => String::new(),
+            };
+            let data = v.get_values::<f64, _>(..).map_err(&e)?;
+            fields.push((
+                name,
+                Field::new(axes, &text("units"), &text("long_name"), data),
+            ));
+        }
+        RidgeLookup::new(sets, thickness, volume, fields, attributes).map_err(|err| {
+            NetcdfError::Shape {
+                path: path.to_path_buf(),
+                var: "(table)".into(),
+                expected: "a consistent ridging table".into(),
+                found: err.to_string(),
+            }
+        })
+    }
+}

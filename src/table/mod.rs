@@ -3,7 +3,10 @@
 //! - [`fit`] — least-squares fits of work and potential energy against ridged volume
 //!   (Hopkins 1994, eqs 13–16), with confidence and prediction bands;
 //! - [`tabulate`] — campaign records to a lookup table (ensemble statistics on a volume
-//!   grid, fits per thickness and pooled, C_f per thickness).
+//!   grid, fits per thickness and pooled, C_f per thickness);
+//! - [`lookup`] — interpolation in a tabulated campaign (clamped and flagged outside its
+//!   range, NaN where no run reached), read back from NetCDF by `RidgeLookup::open`.
 
 pub mod fit;
+pub mod lookup;
 pub mod tabulate;
