@@ -20,12 +20,14 @@
 //!   redistribution, ice strength, the ridging step, on plain per-column slices;
 //! - [`io`] — files (JSON states and summaries, CSV time series, NetCDF distributions);
 //! - [`plot`] — figures;
+//! - [`ffi`] — the C ABI (`include/pressridge.h`) for C and Fortran host models;
 //! - [`table`] — regressions of ridging ensembles (work and potential energy against ridged
 //!   volume, eqs 13–16) for tabulation.
 //!
 
 pub mod campaign;
 pub mod dem;
+pub mod ffi;
 pub mod io;
 pub mod itd;
 pub mod observe;

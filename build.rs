@@ -1,0 +1,50 @@
+//! Generates the C header of the C ABI (`src/ffi/`) with cbindgen.
+//!
+//! The header is written to `$OUT_DIR/pressridge.h` on every build that changes `src/ffi/`.
+//! The committed copy `include/pressridge.h` is only rewritten when the environment variable
+//! `PRESSRIDGE_WRITE_HEADER=1` is set (`make -C fortran-bridge header`), so that CI never
+//! overwrites it silently: `tests/ffi_header.rs` compares the two and fails when the committed
+//! header is out of date.
+
+use std::path::PathBuf;
+
+fn main() {
+    println!("cargo:rerun-if-changed=src/ffi");
+    println!("cargo:rerun-if-changed=cbindgen.toml");
+    println!("cargo:rerun-if-changed=build.rs");
+    println!("cargo:rerun-if-env-changed=PRESSRIDGE_WRITE_HEADER");
+    let dir = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").expect("set by cargo"));
+    let out = PathBuf::from(std::env::var("OUT_DIR").expect("set by cargo")).join("pressridge.h");
+    let config = match cbindgen::Config::from_file(dir.join("cbindgen.toml")) {
+        Ok(c) => c,
+        Err(e) => {
+            println!("cargo:warning=cbindgen.toml: {e}");
+            return;
+        }
+    };
+    // Only the files of the C ABI are parsed, so that no other item of the crate leaks into
+    // the header.
+    let mut files: Vec<PathBuf> = std::fs::read_dir(dir.join("src").join("ffi"))
+        .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).collect())
+        .unwrap_or_default();
+    files.retain(|p| p.extension().is_some_and(|e| e == "rs"));
+    // mod.rs (status codes, errors) first, then the others by name.
+    files.sort_by_key(|p| (!p.ends_with("mod.rs"), p.clone()));
+    let mut builder = cbindgen::Builder::new().with_config(config);
+    for f in &files {
+        builder = builder.with_src(f);
+    }
+    match builder.generate() {
+        Ok(bindings) => {
+            bindings.write_to_file(&out);
+            if std::env::var("PRESSRIDGE_WRITE_HEADER").is_ok_and(|v| v == "1") {
+                bindings.write_to_file(dir.join("include").join("pressridge.h"));
+            }
+        }
+        Err(e) => {
+            // Leave no stale header behind: tests/ffi_header.rs then fails with this cause.
+            let _ = std::fs::remove_file(&out);
+            println!("cargo:warning=cbindgen could not generate pressridge.h: {e}");
+        }
+    }
+}

@@ -1,0 +1,556 @@
+//! Ice strength and the ridging step through the C ABI: options in C layout, and batched
+//! calls over `ncol` columns laid out as a [`PressridgeGrid`] describes.
+
+use std::sync::Arc;
+
+use ndarray::{Array1, ArrayViewMut1};
+
+use super::layout::{Layout, Region, check_disjoint, check_ptr};
+use super::tables::PressridgeCfTable;
+use super::{FfiError, FfiResult, PRESSRIDGE_ERR_BAD_VALUE, PressridgeGrid, guard, put};
+use crate::itd::{
+    CategoryBounds, Cf, CfPreset, ItdParams, Participation, Redistribution, RidgeOptions,
+    RidgeRatesMut, StrengthFormula, StrengthOptions, category_bounds, ridge_batch_masked,
+    strength_batch_masked,
+};
+
+/// Participation function of Thorndike et al. (1975), G* (CICE `krdg_partic = 0`).
+pub const PRESSRIDGE_PARTICIPATION_THORNDIKE: i32 = 0;
+/// Exponential participation of Lipscomb et al. (2007), a* (CICE `krdg_partic = 1`, default).
+pub const PRESSRIDGE_PARTICIPATION_EXPONENTIAL: i32 = 1;
+/// Uniform redistribution of Hibler (1980), H* (CICE `krdg_redist = 0`).
+pub const PRESSRIDGE_REDISTRIBUTION_UNIFORM: i32 = 0;
+/// Exponential redistribution of Lipscomb et al. (2007), μ (CICE `krdg_redist = 1`, default).
+pub const PRESSRIDGE_REDISTRIBUTION_EXPONENTIAL: i32 = 1;
+/// Strength of Hibler (1979), P = P*·h·exp(−C*(1 − A)) (CICE `kstrength = 0`).
+pub const PRESSRIDGE_STRENGTH_HIBLER1979: i32 = 0;
+/// Strength of Rothrock (1975) with the frictional factor C_f (CICE `kstrength = 1`, default).
+pub const PRESSRIDGE_STRENGTH_ROTHROCK: i32 = 1;
+/// C_f is the constant `PressridgeOptions::cf`.
+pub const PRESSRIDGE_CF_CONSTANT: i32 = 0;
+/// C_f is looked up in `PressridgeOptions::cf_table` at the ridging category's thickness.
+pub const PRESSRIDGE_CF_TABLE: i32 = 1;
+/// C_f of Hibler (1980) (dimensionless).
+pub const PRESSRIDGE_CF_HIBLER1980: f64 = 2.0;
+/// C_f of Flato (1991) (dimensionless).
+pub const PRESSRIDGE_CF_FLATO1991: f64 = 15.0;
+/// C_f of CICE/Icepack, the default (dimensionless).
+pub const PRESSRIDGE_CF_CICE: f64 = 17.0;
+
+/// Physical constants and tunables (the fields of `pressridge::itd::ItdParams`, CICE's
+/// defaults from [`pressridge_options_default`]).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PressridgeParams {
+    /// Density of sea ice ρ_i (kg/m³), CICE `rhoi` = 917.
+    pub rhoi: f64,
+    /// Density of sea water ρ_w (kg/m³), CICE `rhow` = 1026.
+    pub rhow: f64,
+    /// Gravitational acceleration g (m/s²), CICE `gravit` = 9.80616.
+    pub gravit: f64,
+    /// Participation cut-off G* (dimensionless), CICE `Gstar` = 0.15.
+    pub gstar: f64,
+    /// Exponential participation scale a* (dimensionless), CICE `astar` = 0.05.
+    pub astar: f64,
+    /// Ridge thickness scale H* of the uniform redistribution (m), CICE `Hstar` = 25.
+    pub hstar: f64,
+    /// Largest thickness of ice that rafts (m), CICE `maxraft` = 1.
+    pub maxraft: f64,
+    /// e-folding parameter μ of the exponential redistribution (m^½), CICE `mu_rdg` = 3.
+    pub mu_rdg: f64,
+    /// Fraction of shear energy that goes into ridging C_s (dimensionless), CICE `Cs` = 0.25.
+    pub cs: f64,
+    /// Hibler (1979) P* (N/m²), CICE `Pstar` = 2.75e4.
+    pub pstar: f64,
+    /// Hibler (1979) C* (dimensionless), CICE `Cstar` = 20.
+    pub cstar: f64,
+    /// Smallest area treated as non-zero (dimensionless), CICE `puny` = 1e-11.
+    pub puny: f64,
+    /// Largest argument of the exponentials (dimensionless), CICE `exp_argmax` = 100.
+    pub exp_argmax: f64,
+    /// Upper bound given to the thickest category in the ridging step (m), 1e8.
+    pub big: f64,
+    /// Tolerance on |aice0 + Σ aicen − 1| of the strength input (dimensionless), 1e-6.
+    pub area_tolerance: f64,
+    /// Largest total area accepted by the ridging step (dimensionless), 2.
+    pub max_area_before_ridging: f64,
+    /// Maximum number of ridging iterations, CICE `nitermax` = 20.
+    pub nitermax: i64,
+}
+
+/// Options of the strength and ridging calls; fill with [`pressridge_options_default`]
+/// (CICE's defaults), then change fields. The ridging step uses `participation`,
+/// `redistribution` and `params` only.
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct PressridgeOptions {
+    /// `PRESSRIDGE_PARTICIPATION_*` (CICE `krdg_partic`: 0 Thorndike, 1 exponential).
+    pub participation: i32,
+    /// `PRESSRIDGE_REDISTRIBUTION_*` (CICE `krdg_redist`: 0 uniform, 1 exponential).
+    pub redistribution: i32,
+    /// `PRESSRIDGE_STRENGTH_*` (CICE `kstrength`: 0 Hibler 1979, 1 Rothrock 1975).
+    pub strength_law: i32,
+    /// `PRESSRIDGE_CF_CONSTANT` or `PRESSRIDGE_CF_TABLE`.
+    pub cf_source: i32,
+    /// Constant C_f (dimensionless, finite, > 0), used with `PRESSRIDGE_CF_CONSTANT`;
+    /// presets `PRESSRIDGE_CF_HIBLER1980`, `PRESSRIDGE_CF_FLATO1991`, `PRESSRIDGE_CF_CICE`.
+    pub cf: f64,
+    /// Value written to the outputs of columns whose `valid` flag is 0 (N/m for strength,
+    /// 1/s or m/s for the ridging rates). Default 0.
+    pub fill: f64,
+    /// C_f table handle used with `PRESSRIDGE_CF_TABLE` (borrowed, not freed by the call).
+    pub cf_table: *const PressridgeCfTable,
+    /// Physical constants and tunables.
+    pub params: PressridgeParams,
+}
+
+impl From<&ItdParams> for PressridgeParams {
+    fn from(p: &ItdParams) -> Self {
+        Self {
+            rhoi: p.rhoi,
+            rhow: p.rhow,
+            gravit: p.gravit,
+            gstar: p.gstar,
+            astar: p.astar,
+            hstar: p.hstar,
+            maxraft: p.maxraft,
+            mu_rdg: p.mu_rdg,
+            cs: p.cs,
+            pstar: p.pstar,
+            cstar: p.cstar,
+            puny: p.puny,
+            exp_argmax: p.exp_argmax,
+            big: p.big,
+            area_tolerance: p.area_tolerance,
+            max_area_before_ridging: p.max_area_before_ridging,
+            nitermax: p.nitermax as i64,
+        }
+    }
+}
+
+impl PressridgeParams {
+    /// The library's parameters, every field checked by `ItdParams::set`.
+    fn to_itd(self) -> FfiResult<ItdParams> {
+        if self.nitermax < 1 {
+            return Err(FfiError::new(
+                PRESSRIDGE_ERR_BAD_VALUE,
+                format!(
+                    "invalid parameter nitermax = {}: must be >= 1",
+                    self.nitermax
+                ),
+            ));
+        }
+        let p = ItdParams {
+            rhoi: self.rhoi,
+            rhow: self.rhow,
+            gravit: self.gravit,
+            gstar: self.gstar,
+            astar: self.astar,
+            hstar: self.hstar,
+            maxraft: self.maxraft,
+            mu_rdg: self.mu_rdg,
+            cs: self.cs,
+            pstar: self.pstar,
+            cstar: self.cstar,
+            puny: self.puny,
+            exp_argmax: self.exp_argmax,
+            big: self.big,
+            nitermax: self.nitermax as usize,
+            area_tolerance: self.area_tolerance,
+            max_area_before_ridging: self.max_area_before_ridging,
+        };
+        // `set` validates one field against the others, which already hold their final
+        // values, so the order of the checks does not matter.
+        let mut checked = p;
+        let values = [
+            p.rhoi,
+            p.rhow,
+            p.gravit,
+            p.gstar,
+            p.astar,
+            p.hstar,
+            p.maxraft,
+            p.mu_rdg,
+            p.cs,
+            p.pstar,
+            p.cstar,
+            p.puny,
+            p.exp_argmax,
+            p.big,
+            p.nitermax as f64,
+            p.area_tolerance,
+            p.max_area_before_ridging,
+        ];
+        for (name, v) in ItdParams::NAMES.iter().zip(values) {
+            checked.set(name, v)?;
+        }
+        debug_assert_eq!(checked, p);
+        Ok(p)
+    }
+}
+
+impl Default for PressridgeOptions {
+    fn default() -> Self {
+        let s = StrengthOptions::default();
+        Self {
+            participation: participation_code(s.participation),
+            redistribution: redistribution_code(s.redistribution),
+            strength_law: match s.formula {
+                StrengthFormula::Hibler1979 => PRESSRIDGE_STRENGTH_HIBLER1979,
+                StrengthFormula::Rothrock => PRESSRIDGE_STRENGTH_ROTHROCK,
+            },
+            cf_source: PRESSRIDGE_CF_CONSTANT,
+            cf: match s.cf {
+                Cf::Constant(c) => c,
+                _ => CfPreset::Cice.value(),
+            },
+            fill: 0.0,
+            cf_table: std::ptr::null(),
+            params: PressridgeParams::from(&s.params),
+        }
+    }
+}
+
+fn participation_code(p: Participation) -> i32 {
+    match p {
+        Participation::Thorndike => PRESSRIDGE_PARTICIPATION_THORNDIKE,
+        Participation::Exponential => PRESSRIDGE_PARTICIPATION_EXPONENTIAL,
+    }
+}
+
+fn redistribution_code(r: Redistribution) -> i32 {
+    match r {
+        Redistribution::Uniform => PRESSRIDGE_REDISTRIBUTION_UNIFORM,
+        Redistribution::Exponential => PRESSRIDGE_REDISTRIBUTION_EXPONENTIAL,
+    }
+}
+
+fn bad_code(name: &str, v: i32, allowed: &str) -> FfiError {
+    FfiError::new(
+        PRESSRIDGE_ERR_BAD_VALUE,
+        format!("options.{name} = {v} is not one of {allowed}"),
+    )
+}
+
+impl PressridgeOptions {
+    fn participation(&self) -> FfiResult<Participation> {
+        match self.participation {
+            PRESSRIDGE_PARTICIPATION_THORNDIKE => Ok(Participation::Thorndike),
+            PRESSRIDGE_PARTICIPATION_EXPONENTIAL => Ok(Participation::Exponential),
+            v => Err(bad_code(
+                "participation",
+                v,
+                "0 (Thorndike), 1 (exponential)",
+            )),
+        }
+    }
+
+    fn redistribution(&self) -> FfiResult<Redistribution> {
+        match self.redistribution {
+            PRESSRIDGE_REDISTRIBUTION_UNIFORM => Ok(Redistribution::Uniform),
+            PRESSRIDGE_REDISTRIBUTION_EXPONENTIAL => Ok(Redistribution::Exponential),
+            v => Err(bad_code(
+                "redistribution",
+                v,
+                "0 (uniform), 1 (exponential)",
+            )),
+        }
+    }
+
+    /// The library's strength options (C_f table shared, not copied).
+    ///
+    /// # Safety
+    /// `cf_table` must be null or a live handle.
+    pub(crate) unsafe fn strength_options(&self) -> FfiResult<StrengthOptions> {
+        let formula = match self.strength_law {
+            PRESSRIDGE_STRENGTH_HIBLER1979 => StrengthFormula::Hibler1979,
+            PRESSRIDGE_STRENGTH_ROTHROCK => StrengthFormula::Rothrock,
+            v => return Err(bad_code("strength_law", v, "0 (Hibler 1979), 1 (Rothrock)")),
+        };
+        let cf = match self.cf_source {
+            PRESSRIDGE_CF_CONSTANT => Cf::Constant(self.cf),
+            PRESSRIDGE_CF_TABLE => {
+                check_ptr(self.cf_table, "options.cf_table")?;
+                // SAFETY: checked non-null; a live handle is the caller's promise.
+                Cf::Table(Arc::clone(unsafe { &(*self.cf_table).table }))
+            }
+            v => return Err(bad_code("cf_source", v, "0 (constant), 1 (table)")),
+        };
+        Ok(StrengthOptions {
+            participation: self.participation()?,
+            redistribution: self.redistribution()?,
+            formula,
+            cf,
+            params: self.params.to_itd()?,
+        })
+    }
+
+    pub(crate) fn ridge_options(&self) -> FfiResult<RidgeOptions> {
+        Ok(RidgeOptions {
+            participation: self.participation()?,
+            redistribution: self.redistribution()?,
+            params: self.params.to_itd()?,
+        })
+    }
+
+    /// The options behind a caller's pointer, or the defaults for null.
+    ///
+    /// # Safety
+    /// `p` must be null or point to valid options.
+    unsafe fn from_ptr(p: *const PressridgeOptions) -> FfiResult<Self> {
+        if p.is_null() {
+            return Ok(Self::default());
+        }
+        check_ptr(p, "options")?;
+        // SAFETY: checked non-null and aligned; validity is the caller's promise.
+        Ok(unsafe { *p })
+    }
+}
+
+/// Fills `*options` with CICE/Icepack's defaults: exponential participation and
+/// redistribution, Rothrock strength, constant C_f = 17, fill 0, the `ItdParams` defaults.
+///
+/// # Safety
+/// `options` must be valid for one write.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pressridge_options_default(options: *mut PressridgeOptions) -> i32 {
+    // SAFETY: checked by `put`.
+    guard(|| unsafe { put(options, PressridgeOptions::default(), "options") })
+}
+
+/// Validity flags (nonzero = compute the column) as the library's mask; one allocation per
+/// call, not per column.
+///
+/// # Safety
+/// `valid` must be null or valid for the layout's per-column reads.
+unsafe fn mask(l: &Layout, valid: *const i32) -> FfiResult<Option<Array1<bool>>> {
+    if valid.is_null() {
+        return Ok(None);
+    }
+    // SAFETY: forwarded.
+    let v = unsafe { l.view1(valid, "valid")? };
+    Ok(Some(v.mapv(|x| x != 0)))
+}
+
+/// Ice strength P (N/m) of `grid->ncol` columns of `grid->ncat` categories: Rothrock (1975)
+/// or Hibler (1979) as CICE/Icepack `icepack_ice_strength`, with the options' participation,
+/// redistribution and C_f.
+///
+/// Inputs, laid out as `grid` says: `aicen` (ice area fraction per category, dimensionless),
+/// `vicen` (ice volume per unit area per category, m), optional `aice0` (open-water fraction,
+/// dimensionless; null: 1 − Σ aicen), optional `valid` (per column, nonzero = compute; null:
+/// all columns; other columns get `options->fill` and are not checked), optional `options`
+/// (null: CICE defaults). Output: `strength` (N/m, per column) and, if not null,
+/// `*cf_clamped_columns` = number of columns where a C_f table was queried outside its
+/// thickness range (values clamped to the end nodes).
+///
+/// Errors: null or misaligned pointers, a bad grid, overlapping output, a bad option, and the
+/// first column with a NaN/infinite or negative value or with |aice0 + Σ aicen − 1| >
+/// `params.area_tolerance` (the column index is in [`super::pressridge_last_error_info`]).
+/// On error the contents of `strength` are unspecified. No allocation per column.
+///
+/// # Safety
+/// Every non-null pointer must be valid for the reads (writes for `strength`,
+/// `cf_clamped_columns`) that `grid` describes; `options->cf_table`, when used, must be a
+/// live handle.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pressridge_strength(
+    grid: *const PressridgeGrid,
+    aicen: *const f64,
+    vicen: *const f64,
+    aice0: *const f64,
+    valid: *const i32,
+    options: *const PressridgeOptions,
+    strength: *mut f64,
+    cf_clamped_columns: *mut i64,
+) -> i32 {
+    // SAFETY: every pointer is checked for null and alignment before use; validity for the
+    // extent of the grid is the caller's promise.
+    guard(|| unsafe {
+        let l = Layout::from_ptr(grid)?;
+        let o = PressridgeOptions::from_ptr(options)?;
+        check_disjoint(
+            &[l.region_1d(strength, "strength")],
+            &[
+                l.region_2d(aicen, "aicen"),
+                l.region_2d(vicen, "vicen"),
+                l.region_1d(aice0, "aice0"),
+                l.region_1d(valid, "valid"),
+            ],
+        )?;
+        let a = l.view2(aicen, "aicen")?;
+        let v = l.view2(vicen, "vicen")?;
+        let a0 = if aice0.is_null() {
+            None
+        } else {
+            Some(l.view1(aice0, "aice0")?)
+        };
+        let m = mask(&l, valid)?;
+        let out = l.view1_mut(strength, "strength")?;
+        let so = o.strength_options()?;
+        let s = strength_batch_masked(a, v, a0, m.as_ref().map(|m| m.view()), o.fill, &so, out)?;
+        if !cf_clamped_columns.is_null() {
+            put(
+                cf_clamped_columns,
+                s.cf_clamped_columns as i64,
+                "cf_clamped_columns",
+            )?;
+        }
+        Ok(())
+    })
+}
+
+/// Caller-owned outputs of [`pressridge_ridge_step`], one value per column laid out as the
+/// grid's per-column arrays. Any pointer may be null (that rate is not returned).
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct PressridgeRidgeRates {
+    /// Net closing rate (1/s).
+    pub closing: *mut f64,
+    /// Opening rate (1/s).
+    pub opening: *mut f64,
+    /// Rate of area loss by ridging ice (1/s), CICE `dardg1dt`.
+    pub dardg1dt: *mut f64,
+    /// Rate of area gain by new ridges (1/s), CICE `dardg2dt`.
+    pub dardg2dt: *mut f64,
+    /// Rate of ice volume ridged (m/s), CICE `dvirdgdt`.
+    pub dvirdgdt: *mut f64,
+}
+
+/// One ridging step of `dt` seconds over `grid->ncol` columns, in place: CICE/Icepack
+/// `ridge_ice` without snow and tracers (see `docs/strength.md`).
+///
+/// In/out: `aicen` (dimensionless), `vicen` (m) as `grid` says, `aice0` (per column,
+/// dimensionless). Inputs: `hin_max` (`nbounds = ncat + 1` category bounds in m, shared by
+/// all columns; null: CICE's default bounds for `ncat`, `kcatbound = 1`, and `nbounds` is
+/// ignored), `convergence` and `shear` (per column, 1/s, ≥ 0), `dt` (s, > 0), optional
+/// `valid` (nonzero = step the column; others untouched, their rates set to
+/// `options->fill`), optional `options` (null: CICE defaults), optional `rates`.
+///
+/// Errors as [`pressridge_strength`], plus a bad `hin_max`, a total area above
+/// `params.max_area_before_ridging` and [`super::PRESSRIDGE_ERR_NUMERICAL`] when the
+/// iteration does not converge. On error the columns before the failing one have been
+/// stepped; the failing one and those after it are unchanged.
+///
+/// # Safety
+/// Every non-null pointer must be valid for the reads and writes that `grid` describes
+/// (`hin_max` for `nbounds` reads); outputs must not overlap inputs (checked).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pressridge_ridge_step(
+    grid: *const PressridgeGrid,
+    aicen: *mut f64,
+    vicen: *mut f64,
+    aice0: *mut f64,
+    hin_max: *const f64,
+    nbounds: i64,
+    convergence: *const f64,
+    shear: *const f64,
+    dt: f64,
+    valid: *const i32,
+    options: *const PressridgeOptions,
+    rates: *const PressridgeRidgeRates,
+) -> i32 {
+    // SAFETY: as `pressridge_strength`.
+    guard(|| unsafe {
+        let l = Layout::from_ptr(grid)?;
+        let o = PressridgeOptions::from_ptr(options)?;
+        let r = if rates.is_null() {
+            PressridgeRidgeRates {
+                closing: std::ptr::null_mut(),
+                opening: std::ptr::null_mut(),
+                dardg1dt: std::ptr::null_mut(),
+                dardg2dt: std::ptr::null_mut(),
+                dvirdgdt: std::ptr::null_mut(),
+            }
+        } else {
+            check_ptr(rates, "rates")?;
+            *rates
+        };
+        let bounds: Vec<f64> = if hin_max.is_null() {
+            category_bounds(&CategoryBounds::RoundNumbers, l.ncat)?
+        } else {
+            check_ptr(hin_max, "hin_max")?;
+            if nbounds != l.ncat as i64 + 1 {
+                return Err(FfiError::new(
+                    super::PRESSRIDGE_ERR_BAD_SIZE,
+                    format!(
+                        "nbounds = {nbounds}: hin_max must have ncat + 1 = {} values",
+                        l.ncat + 1
+                    ),
+                ));
+            }
+            std::slice::from_raw_parts(hin_max, nbounds as usize).to_vec()
+        };
+        let hin_region = Region::new(hin_max, bounds.len(), "hin_max");
+        check_disjoint(
+            &[
+                l.region_2d(aicen, "aicen"),
+                l.region_2d(vicen, "vicen"),
+                l.region_1d(aice0, "aice0"),
+                l.region_1d(r.closing, "rates.closing"),
+                l.region_1d(r.opening, "rates.opening"),
+                l.region_1d(r.dardg1dt, "rates.dardg1dt"),
+                l.region_1d(r.dardg2dt, "rates.dardg2dt"),
+                l.region_1d(r.dvirdgdt, "rates.dvirdgdt"),
+            ],
+            &[
+                l.region_1d(convergence, "convergence"),
+                l.region_1d(shear, "shear"),
+                l.region_1d(valid, "valid"),
+                if hin_max.is_null() {
+                    Region::new(hin_max, 0, "hin_max")
+                } else {
+                    hin_region
+                },
+            ],
+        )?;
+        let a = l.view2_mut(aicen, "aicen")?;
+        let v = l.view2_mut(vicen, "vicen")?;
+        let a0 = l.view1_mut(aice0, "aice0")?;
+        let conv = l.view1(convergence, "convergence")?;
+        let sh = l.view1(shear, "shear")?;
+        let m = mask(&l, valid)?;
+        // Rates the caller did not ask for go to scratch space (one allocation per call).
+        let ptrs = [
+            (r.closing, "rates.closing"),
+            (r.opening, "rates.opening"),
+            (r.dardg1dt, "rates.dardg1dt"),
+            (r.dardg2dt, "rates.dardg2dt"),
+            (r.dvirdgdt, "rates.dvirdgdt"),
+        ];
+        let mut scratch: [Array1<f64>; 5] = Default::default();
+        let mut views: Vec<ArrayViewMut1<'_, f64>> = Vec::with_capacity(5);
+        for ((p, name), s) in ptrs.into_iter().zip(scratch.iter_mut()) {
+            if p.is_null() {
+                *s = Array1::zeros(l.ncol);
+                views.push(s.view_mut());
+            } else {
+                views.push(l.view1_mut(p, name)?);
+            }
+        }
+        let [closing, opening, dardg1dt, dardg2dt, dvirdgdt]: [ArrayViewMut1<'_, f64>; 5] =
+            views.try_into().expect("five views");
+        let rates = RidgeRatesMut {
+            closing,
+            opening,
+            dardg1dt,
+            dardg2dt,
+            dvirdgdt,
+        };
+        let ro = o.ridge_options()?;
+        ridge_batch_masked(
+            a,
+            v,
+            a0,
+            &bounds,
+            conv,
+            sh,
+            m.as_ref().map(|m| m.view()),
+            o.fill,
+            dt,
+            &ro,
+            rates,
+        )?;
+        Ok(())
+    })
+}

@@ -1,0 +1,31 @@
+//! The committed C header `include/pressridge.h` must be what cbindgen generates from
+//! `src/ffi/` now (build.rs writes it to `$OUT_DIR`). Regenerate with
+//! `make -C fortran-bridge header` (or `PRESSRIDGE_WRITE_HEADER=1 cargo build --lib`).
+
+#[test]
+fn committed_header_is_up_to_date() {
+    let generated = std::path::Path::new(env!("OUT_DIR")).join("pressridge.h");
+    let committed = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("include/pressridge.h");
+    let generated = std::fs::read_to_string(&generated).unwrap_or_else(|e| {
+        panic!(
+            "{}: {e}: cbindgen did not generate the header (see the build script's warnings)",
+            generated.display()
+        )
+    });
+    let committed = std::fs::read_to_string(&committed)
+        .unwrap_or_else(|e| panic!("{}: {e}", committed.display()));
+    if generated != committed {
+        let line = generated
+            .lines()
+            .zip(committed.lines())
+            .position(|(a, b)| a != b)
+            .map_or_else(
+                || generated.lines().count().min(committed.lines().count()) + 1,
+                |i| i + 1,
+            );
+        panic!(
+            "include/pressridge.h is out of date with src/ffi/ (first difference at line \
+             {line}); regenerate it with `make -C fortran-bridge header` and commit it"
+        );
+    }
+}
