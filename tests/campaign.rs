@@ -89,6 +89,19 @@ fn tiny_campaign_is_resumable_and_complete() {
         assert_eq!(r.profile.sail.len(), 32);
         assert!(out.join("runs").join(&r.id).join("state.json").is_file());
     }
+    // Ensemble statistics per grid point: two points of two seeds, means over the records.
+    let points = pressridge::table::ensemble::summarise(&records);
+    assert_eq!(points.len(), 2);
+    for (p, rs) in points.iter().zip(records.chunks(2)) {
+        assert_eq!(p.seeds, vec![1, 2]);
+        let w = p.get("work").unwrap();
+        assert_eq!(w.n, 2);
+        let mean = 0.5 * (rs[0].summary.work + rs[1].summary.work);
+        assert!((w.mean - mean).abs() <= 1e-12 * mean.abs());
+        let f = p.get("friction_fraction").unwrap();
+        assert!(f.mean > 0.0 && f.mean < 1.0, "{f:?}");
+        assert!(p.get("residual_fraction").unwrap().mean < 0.01);
+    }
     // Tabulate: dimensions, units, fits, and a C_f table the strength routine reads.
     let table = dir.join("table.nc");
     let res = bin()
@@ -100,6 +113,8 @@ fn tiny_campaign_is_resumable_and_complete() {
         .args(["--points", "11"])
         .arg("--figures")
         .arg(dir.join("fig"))
+        .arg("--report")
+        .arg(dir.join("report.md"))
         .output()
         .unwrap();
     assert!(
@@ -107,6 +122,15 @@ fn tiny_campaign_is_resumable_and_complete() {
         "{}",
         String::from_utf8_lossy(&res.stderr)
     );
+    let report = std::fs::read_to_string(dir.join("report.md")).unwrap();
+    for want in [
+        "# Campaign `tiny`: 4 runs",
+        "## Energy budget",
+        "## Ridge metrics",
+        "pooled",
+    ] {
+        assert!(report.contains(want), "report lacks {want}:\n{report}");
+    }
     for f in ["work_set0.png", "force_set0.png", "profiles.png"] {
         assert!(dir.join("fig").join(f).is_file(), "missing figure {f}");
     }

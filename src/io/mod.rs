@@ -2,6 +2,7 @@
 //! this module touches NetCDF.
 
 pub mod itd_netcdf;
+pub mod report;
 pub mod series;
 pub mod state;
 pub mod table_netcdf;

@@ -416,7 +416,7 @@ mod tests {
                 ),
                 (
                     "pooled_work_a".into(),
-                    Field::new(Axes::SET, "J m-7", "a", vec![3.0, 4.0]),
+                    Field::new(Axes::SET, "J m-5", "a", vec![3.0, 4.0]),
                 ),
             ],
             BTreeMap::new(),

@@ -1,5 +1,7 @@
 //! Tabulation of ridging ensembles for large-scale ice models.
 //!
+//! - [`ensemble`] — per grid point, mean and spread over the seeds of the final energy
+//!   budget, W/ΔPE and the ridge metrics;
 //! - [`fit`] — least-squares fits of work and potential energy against ridged volume
 //!   (Hopkins 1994, eqs 13–16), with confidence and prediction bands;
 //! - [`tabulate`] — campaign records to a lookup table (ensemble statistics on a volume
@@ -7,6 +9,7 @@
 //! - [`lookup`] — interpolation in a tabulated campaign (clamped and flagged outside its
 //!   range, NaN where no run reached), read back from NetCDF by `RidgeLookup::open`.
 
+pub mod ensemble;
 pub mod fit;
 pub mod lookup;
 pub mod tabulate;

@@ -22,6 +22,10 @@ pub struct Args {
     /// bands, force against volume and thickness (per set), averaged final profiles.
     #[arg(long)]
     figures: Option<PathBuf>,
+    /// Also write a Markdown report: per grid point the mean and spread over the seeds of
+    /// the energy budget, W/ΔPE and the ridge metrics; the fits of eqs (13)–(16).
+    #[arg(long)]
+    report: Option<PathBuf>,
 }
 
 /// Today's date (UTC) as YYYY-MM-DD, from the system clock.
@@ -82,6 +86,11 @@ pub fn run(a: Args) -> Result<(), BoxError> {
             })
             .collect();
         plot::table::plot_profiles(&profiles, &dir.join("profiles.png"))?;
+    }
+    if let Some(path) = &a.report {
+        let points = pressridge::table::ensemble::summarise(&records);
+        let text = pressridge::io::report::campaign_report(&spec.name, &points, &table);
+        pressridge::io::write_atomic(path, text.as_bytes())?;
     }
     println!(
         "{}: {} runs, {} sets × {} thicknesses × {} volumes -> {}",

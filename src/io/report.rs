@@ -1,0 +1,153 @@
+//! A campaign as a Markdown report: the ensemble statistics of every grid point
+//! ([`crate::table::ensemble`]) and the fits of eqs (13)–(16) ([`crate::table::tabulate`]),
+//! the tables `docs/validation.md` quotes.
+
+use crate::table::ensemble::{PointStats, Stat};
+use crate::table::tabulate::RidgeTable;
+use std::fmt::Write;
+
+/// `mean ± std` of `s` scaled by `k`, with `prec` decimals; `–` when no run had a value.
+fn pm(s: Option<Stat>, k: f64, prec: usize) -> String {
+    match s {
+        Some(s) if s.n > 0 && s.mean.is_finite() => {
+            format!("{:.prec$} ± {:.prec$}", s.mean * k, s.std * k)
+        }
+        _ => "–".into(),
+    }
+}
+
+/// A slope column: `mean ± std (n)` where fewer runs than the point has gave a slope.
+fn slope(p: &PointStats, key: &str) -> String {
+    let s = p.get(key);
+    let mut t = pm(s, 1.0, 1);
+    if let Some(s) = s
+        && s.n > 0
+        && s.n < p.seeds.len()
+    {
+        let _ = write!(t, " ({} runs)", s.n);
+    }
+    t
+}
+
+/// The report for campaign `name`, its grid points and its table.
+pub fn campaign_report(name: &str, points: &[PointStats], table: &RidgeTable) -> String {
+    let mut o = String::new();
+    let runs: usize = points.iter().map(|p| p.seeds.len()).sum();
+    let _ = writeln!(o, "# Campaign `{name}`: {runs} runs\n");
+    let _ = writeln!(
+        o,
+        "Means ± sample standard deviations over the seeds of each grid point, at the end of \
+         the runs. Energies per metre of ridge.\n"
+    );
+    let _ = writeln!(o, "## Energy budget\n");
+    let _ = writeln!(
+        o,
+        "| point | seeds | W (kJ/m) | ΔPE (kJ/m) | Φ_f/W | ΔPE/W | Φ_i/W | drag/W | abs(residual)/W | W/ΔPE | mean force (kN/m) |"
+    );
+    let _ = writeln!(o, "|---|---|---|---|---|---|---|---|---|---|---|");
+    for p in points {
+        let g = |k: &str| p.get(k);
+        let _ = writeln!(
+            o,
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {:.1e} | {} | {} |",
+            p.label,
+            p.seeds.len(),
+            pm(g("work"), 1e-3, 1),
+            pm(g("potential_energy"), 1e-3, 1),
+            pm(g("friction_fraction"), 1.0, 2),
+            pm(g("pe_fraction"), 1.0, 3),
+            pm(g("viscous_fraction"), 1.0, 3),
+            pm(g("drag_fraction"), 1.0, 3),
+            g("residual_fraction").map_or(f64::NAN, |s| s.mean),
+            pm(g("ratio_work_to_pe"), 1.0, 1),
+            pm(g("mean_force"), 1e-3, 2),
+        );
+    }
+    let _ = writeln!(
+        o,
+        "\n## Ridge metrics (final rubble profile in 1-m strips)\n"
+    );
+    let _ = writeln!(
+        o,
+        "| point | sail height (m) | keel depth (m) | sail area (m²/m) | keel area (m²/m) | θ₁ lead sail (°) | θ₂ floe sail (°) | φ₁ lead keel (°) | φ₂ floe keel (°) | L/h |"
+    );
+    let _ = writeln!(o, "|---|---|---|---|---|---|---|---|---|---|");
+    for p in points {
+        let g = |k: &str| p.get(k);
+        let _ = writeln!(
+            o,
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            p.label,
+            pm(g("max_sail_height"), 1.0, 2),
+            pm(g("max_keel_depth"), 1.0, 2),
+            pm(g("sail_area"), 1.0, 1),
+            pm(g("keel_area"), 1.0, 1),
+            slope(p, "sail_slope_lead"),
+            slope(p, "sail_slope_floe"),
+            slope(p, "keel_slope_lead"),
+            slope(p, "keel_slope_floe"),
+            pm(g("length_to_thickness"), 1.0, 2),
+        );
+    }
+    let _ = writeln!(
+        o,
+        "\n## Fits of eqs (13)–(14): W = V(a_W V + b_W), PE = V(a_P V + b_P)\n\n\
+         Least squares through the origin over every sample (at the campaign's interval) of every run; ± one \
+         standard error (which assumes independent residuals: see docs/tables.md).\n"
+    );
+    let _ = writeln!(
+        o,
+        "| set | thickness (m) | samples | a_W (J/m⁵) | b_W (J/m³) | R²(W) | a_P (J/m⁵) | b_P (J/m³) | R²(PE) |"
+    );
+    let _ = writeln!(o, "|---|---|---|---|---|---|---|---|---|");
+    let fit_row = |o: &mut String, set: &str, h: &str, f: &crate::table::tabulate::SetFits| {
+        let (w, p) = (&f.work, &f.potential_energy);
+        let (we, pe) = (w.standard_errors(), p.standard_errors());
+        let _ = writeln!(
+            o,
+            "| {set} | {h} | {} | {:.0} ± {:.0} | {:.0} ± {:.0} | {:.3} | {:.1} ± {:.1} | {:.0} ± {:.0} | {:.3} |",
+            w.n, w.a, we[0], w.b, we[1], w.r_squared, p.a, pe[0], p.b, pe[1], p.r_squared
+        );
+    };
+    for (si, set) in table.sets.iter().enumerate() {
+        let label = if set.is_empty() { "all" } else { set.as_str() };
+        for (hi, h) in table.thickness.iter().enumerate() {
+            if let Some(f) = &table.fits[si][hi] {
+                fit_row(&mut o, label, &format!("{h}"), f);
+            }
+        }
+        if let Some(f) = &table.pooled[si] {
+            fit_row(&mut o, label, "pooled", f);
+        }
+    }
+    let _ = writeln!(
+        o,
+        "\n## Eq (16): dW/dPE from the pooled fits, and C_f per thickness\n"
+    );
+    let nv = table.volume.len();
+    let picks: Vec<usize> = [0.25, 0.5, 0.75, 1.0]
+        .iter()
+        .map(|f| ((nv - 1) as f64 * f).round() as usize)
+        .collect();
+    let _ = write!(o, "| set |");
+    for &k in &picks {
+        let _ = write!(o, " dW/dPE at V = {:.2} m³/m |", table.volume[k]);
+    }
+    let _ = writeln!(o, " C_f = mean final W/ΔPE per thickness |");
+    let _ = writeln!(o, "|---|{}---|", "---|".repeat(picks.len()));
+    for (si, set) in table.sets.iter().enumerate() {
+        let label = if set.is_empty() { "all" } else { set.as_str() };
+        let _ = write!(o, "| {label} |");
+        for &k in &picks {
+            let _ = write!(o, " {:.1} |", table.ratio_fit[si][k]);
+        }
+        let cf: Vec<String> = table
+            .thickness
+            .iter()
+            .zip(&table.cf[si])
+            .map(|(h, c)| format!("{h} m: {c:.1}"))
+            .collect();
+        let _ = writeln!(o, " {} |", cf.join(", "));
+    }
+    o
+}

@@ -1,0 +1,200 @@
+//! Ensemble statistics of a campaign per grid point: the final energy budget, W/ΔPE and the
+//! ridge metrics over the seeds of each setting (Hopkins 1994, "Numerical Ridge Growth
+//! Experiments", Tables 2–5 report such means per set).
+//!
+//! Means and sample standard deviations (n − 1) over the runs; a metric that is undefined for
+//! a run (a flank slope with fewer than two strips in the 20–80 % band) is left out of that
+//! metric's statistics only, and its count says how many runs were behind it.
+
+use crate::campaign::RunRecord;
+
+/// Mean, sample standard deviation and count of one quantity over runs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Stat {
+    /// Mean over the runs (units of the quantity).
+    pub mean: f64,
+    /// Sample standard deviation (n − 1; 0 for one run) (units of the quantity).
+    pub std: f64,
+    /// Number of runs behind the value.
+    pub n: usize,
+}
+
+impl Stat {
+    /// Statistics of `xs` (NaN mean for an empty slice).
+    pub fn of(xs: &[f64]) -> Stat {
+        let n = xs.len();
+        if n == 0 {
+            return Stat {
+                mean: f64::NAN,
+                std: f64::NAN,
+                n,
+            };
+        }
+        let mean = xs.iter().sum::<f64>() / n as f64;
+        let std = if n > 1 {
+            (xs.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1) as f64).sqrt()
+        } else {
+            0.0
+        };
+        Stat { mean, std, n }
+    }
+}
+
+/// The quantities summarised, in report order: (key, unit, description).
+pub const QUANTITIES: [(&str, &str, &str); 24] = [
+    ("work", "J/m", "ridging work W, eq (9)"),
+    (
+        "potential_energy",
+        "J/m",
+        "potential energy change ΔPE, eq (10)",
+    ),
+    (
+        "friction_dissipation",
+        "J/m",
+        "frictional dissipation Φ_f, eq (11)",
+    ),
+    (
+        "viscous_dissipation",
+        "J/m",
+        "viscous contact dissipation Φ_i, eq (12)",
+    ),
+    ("drag_dissipation", "J/m", "water drag dissipation"),
+    (
+        "other_dissipation",
+        "J/m",
+        "joints, fracture, boundary forces",
+    ),
+    ("kinetic_energy", "J/m", "kinetic energy change"),
+    ("residual_fraction", "1", "|W − sinks| / W at the end"),
+    ("pe_fraction", "1", "ΔPE / W"),
+    ("friction_fraction", "1", "Φ_f / W"),
+    ("viscous_fraction", "1", "Φ_i / W"),
+    ("drag_fraction", "1", "drag / W"),
+    ("ratio_work_to_pe", "1", "W / ΔPE at the end"),
+    ("mean_force", "N/m", "mean ridging force W / (U t)"),
+    ("blocks_broken", "1", "joints severed"),
+    (
+        "max_sail_height",
+        "m",
+        "largest strip-mean rubble sail height",
+    ),
+    (
+        "max_keel_depth",
+        "m",
+        "largest strip-mean rubble keel depth",
+    ),
+    ("sail_area", "m²/m", "sail cross-section (envelope)"),
+    ("keel_area", "m²/m", "keel cross-section (envelope)"),
+    ("sail_slope_lead", "°", "lead-side sail slope θ₁"),
+    ("sail_slope_floe", "°", "floe-side sail slope θ₂"),
+    ("keel_slope_lead", "°", "lead-side keel slope φ₁"),
+    ("keel_slope_floe", "°", "floe-side keel slope φ₂"),
+    (
+        "length_to_thickness",
+        "1",
+        "rubble piece length over sheet thickness L/h",
+    ),
+];
+
+/// The value of quantity `key` (see [`QUANTITIES`]) for one run, `None` where undefined.
+pub fn quantity(r: &RunRecord, key: &str) -> Option<f64> {
+    let s = &r.summary;
+    let m = &r.metrics;
+    let frac = |x: f64| (s.work != 0.0).then(|| x / s.work);
+    match key {
+        "work" => Some(s.work),
+        "potential_energy" => Some(s.potential_energy),
+        "friction_dissipation" => Some(s.friction_dissipation),
+        "viscous_dissipation" => Some(s.viscous_dissipation),
+        "drag_dissipation" => Some(s.drag_dissipation),
+        "other_dissipation" => Some(s.other_dissipation),
+        "kinetic_energy" => Some(s.kinetic_energy),
+        "residual_fraction" => frac(s.residual.abs()),
+        "pe_fraction" => frac(s.potential_energy),
+        "friction_fraction" => frac(s.friction_dissipation),
+        "viscous_fraction" => frac(s.viscous_dissipation),
+        "drag_fraction" => frac(s.drag_dissipation),
+        "ratio_work_to_pe" => (s.potential_energy > 0.0).then_some(s.ratio_work_to_pe),
+        "mean_force" => {
+            let u = r.scene.sheet.as_ref().map_or(0.0, |sh| sh.speed);
+            (u * s.time > 0.0).then(|| s.work / (u * s.time))
+        }
+        "blocks_broken" => Some(s.blocks_broken as f64),
+        "max_sail_height" => Some(m.max_sail_height),
+        "max_keel_depth" => Some(m.max_keel_depth),
+        "sail_area" => Some(m.sail_area),
+        "keel_area" => Some(m.keel_area),
+        "sail_slope_lead" => m.sail_slope_lead,
+        "sail_slope_floe" => m.sail_slope_floe,
+        "keel_slope_lead" => m.keel_slope_lead,
+        "keel_slope_floe" => m.keel_slope_floe,
+        "length_to_thickness" => Some(m.length_to_thickness),
+        _ => None,
+    }
+}
+
+/// Statistics of one grid point (all seeds of one setting).
+#[derive(Clone, Debug, PartialEq)]
+pub struct PointStats {
+    /// The point's settings, `key=value` joined by `, ` (`all` for a grid of one point).
+    pub label: String,
+    /// Seeds of its runs.
+    pub seeds: Vec<u64>,
+    /// One [`Stat`] per entry of [`QUANTITIES`], in that order.
+    pub stats: Vec<Stat>,
+}
+
+impl PointStats {
+    /// The statistics of quantity `key`.
+    pub fn get(&self, key: &str) -> Option<Stat> {
+        QUANTITIES
+            .iter()
+            .position(|(k, _, _)| *k == key)
+            .map(|i| self.stats[i])
+    }
+}
+
+/// Groups `records` by their settings (in first-seen order) and summarises each group.
+pub fn summarise(records: &[RunRecord]) -> Vec<PointStats> {
+    let mut groups: Vec<(String, Vec<&RunRecord>)> = Vec::new();
+    for r in records {
+        let label = if r.settings.is_empty() {
+            "all".to_string()
+        } else {
+            r.settings.join(", ")
+        };
+        match groups.iter_mut().find(|(l, _)| *l == label) {
+            Some((_, v)) => v.push(r),
+            None => groups.push((label, vec![r])),
+        }
+    }
+    groups
+        .into_iter()
+        .map(|(label, rs)| PointStats {
+            label,
+            seeds: rs.iter().map(|r| r.seed).collect(),
+            stats: QUANTITIES
+                .iter()
+                .map(|(k, _, _)| {
+                    let xs: Vec<f64> = rs.iter().filter_map(|r| quantity(r, k)).collect();
+                    Stat::of(&xs)
+                })
+                .collect(),
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stat_is_the_sample_mean_and_deviation() {
+        let s = Stat::of(&[1.0, 2.0, 3.0, 4.0]);
+        assert_eq!(s.mean, 2.5);
+        assert!((s.std - (5.0f64 / 3.0).sqrt()).abs() < 1e-15);
+        assert_eq!(s.n, 4);
+        assert_eq!(Stat::of(&[7.0]).std, 0.0);
+        assert!(Stat::of(&[]).mean.is_nan());
+    }
+}
