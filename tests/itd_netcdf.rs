@@ -358,6 +358,30 @@ fn cli_strength_ridge_step_and_plot() {
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(std::fs::metadata(&png).unwrap().len() > 1000);
+    // A constant-17 table drawn beside C_f = 17 gives the same statistics row.
+    let o = cli(&[
+        "plot-strength",
+        "--input",
+        s,
+        "--output",
+        png.to_str().unwrap(),
+        "--cf",
+        "17",
+        "--cf-table",
+        table.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8_lossy(&o.stdout);
+    let row = |label: &str| {
+        text.lines()
+            .find(|l| l.starts_with(&format!("| {label} |")))
+            .unwrap_or_else(|| panic!("no row {label} in\n{text}"))
+            .split_once(" | ")
+            .unwrap()
+            .1
+            .to_string()
+    };
+    assert_eq!(row("C_f = 17"), row("C_f from cf_table.nc"));
 
     // Bad input: the error names the variable and the spatial index, exit status 1.
     let bad = tmp("cli_bad.nc");

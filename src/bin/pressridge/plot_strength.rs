@@ -1,8 +1,9 @@
 //! `pressridge plot-strength`: a PNG map of ice strength on a 2-D grid.
 //!
 //! Either plots the `strength` variable of a file written by `pressridge strength`, or, with
-//! one or more `--cf`, computes the strength of a thickness-distribution file for each C_f
-//! and draws the panels side by side on one colour scale, printing a summary table.
+//! one or more `--cf` (constant C_f) or `--cf-table` (C_f of the ridging ice's thickness from a
+//! table), computes the strength of a thickness-distribution file for each and draws the
+//! panels side by side on one colour scale, printing a summary table.
 
 use std::path::PathBuf;
 
@@ -27,6 +28,10 @@ pub struct Args {
     /// Compute and draw the Rothrock strength for this C_f (repeatable: one panel each).
     #[arg(long)]
     pub cf: Vec<f64>,
+    /// Compute and draw the Rothrock strength with the thickness-dependent C_f of this table
+    /// (a `--cf-table` of `pressridge strength`, e.g. from `pressridge tabulate`; repeatable).
+    #[arg(long)]
+    pub cf_table: Vec<PathBuf>,
     /// Participation function (with --cf).
     #[arg(long, value_enum, default_value = "exponential")]
     pub participation: PartArg,
@@ -63,7 +68,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
     let mut titles = Vec::new();
     let mut fields = Vec::new();
     let (ny, nx, ice): (usize, usize, Vec<bool>);
-    if args.cf.is_empty() {
+    if args.cf.is_empty() && args.cf_table.is_empty() {
         if !has_variable(&args.input, "strength")? {
             return Err(format!(
                 "{}: no `strength` variable; run `pressridge strength` first or pass --cf",
@@ -98,14 +103,25 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         ice = (0..grid.ncol())
             .map(|c| grid.aicen.column(c).sum() > 0.0)
             .collect();
-        for &cf in &args.cf {
+        let constants = args
+            .cf
+            .iter()
+            .map(|&cf| (format!("C_f = {cf}"), Some(cf), None));
+        let tables = args.cf_table.iter().map(|t| {
+            let name = t.file_name().map_or_else(
+                || t.display().to_string(),
+                |n| n.to_string_lossy().into_owned(),
+            );
+            (format!("C_f from {name}"), None, Some(t.as_path()))
+        });
+        for (title, cf, table) in constants.chain(tables) {
             let o = options(
                 args.participation,
                 args.redistribution,
                 FormulaArg::Rothrock,
-                Some(cf),
+                cf,
                 None,
-                None,
+                table,
             )?;
             let mut p = Array1::zeros(grid.ncol());
             strength_batch_masked(
@@ -118,7 +134,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
                 p.view_mut(),
             )
             .map_err(|e| grid.locate(&args.input, e))?;
-            titles.push(format!("C_f = {cf}"));
+            titles.push(title);
             fields.push(p.to_vec());
         }
     }
