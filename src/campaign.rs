@@ -138,8 +138,10 @@ pub struct CampaignSpec {
     pub profile: ProfileSpec,
 }
 
-/// One planned run.
-#[derive(Clone, Debug, PartialEq)]
+/// One planned run. It serialises (JSON) so that a run can be sent to another process or
+/// machine and run there with [`run_planned`].
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct PlannedRun {
     /// Directory below `runs/`, e.g. `thickness=0.3__block_width=0.25/seed-01`.
     pub id: String,
@@ -431,17 +433,28 @@ pub fn read_records(out: &Path) -> Result<(CampaignSpec, Vec<RunRecord>), Campai
     Ok((spec, records))
 }
 
-/// Runs a campaign into `out` on `threads` worker threads, skipping runs already written.
-/// `progress` is called from the workers (it must be cheap and thread-safe). `stop` ends the
-/// campaign after the runs in flight when set. Returns the number of runs (skipped, done).
-pub fn run_campaign(
+/// A campaign directory made ready by [`prepare_campaign`]: the whole plan and the runs it
+/// still lacks.
+#[derive(Clone, Debug)]
+pub struct PreparedCampaign {
+    /// Every planned run, in plan order.
+    pub plan: Vec<PlannedRun>,
+    /// The runs without a record yet, in plan order.
+    pub todo: Vec<PlannedRun>,
+    /// Runs whose record was already written (and matches the plan).
+    pub skipped: usize,
+}
+
+/// Prepares the result directory `out` of a campaign: plans the runs (`base_dir` resolves a
+/// relative scene path), refuses a directory that holds another grid or runs of another
+/// scene, writes `campaign.json` and `plan.json` (atomically), and returns the runs still to
+/// do. Running each of them with [`run_planned`], in any order, on any machine that sees
+/// `out`, completes the campaign; calling this again then finds nothing to do.
+pub fn prepare_campaign(
     spec: &CampaignSpec,
     base_dir: &Path,
     out: &Path,
-    threads: usize,
-    progress: &(dyn Fn(Progress) + Sync),
-    stop: &AtomicBool,
-) -> Result<(usize, usize), CampaignError> {
+) -> Result<PreparedCampaign, CampaignError> {
     let plan = spec.plan(base_dir)?;
     let spec_path = out.join("campaign.json");
     if spec_path.is_file() {
@@ -475,9 +488,52 @@ pub fn run_campaign(
             }
             skipped += 1;
         } else {
-            todo.push(p);
+            todo.push(p.clone());
         }
     }
+    Ok(PreparedCampaign {
+        plan,
+        todo,
+        skipped,
+    })
+}
+
+/// Runs one planned run of a campaign prepared by [`prepare_campaign`] and writes it into
+/// `out`: `runs/<id>/state.json` first, then `runs/<id>/run.json`, each atomically, so a
+/// record on disk is always complete and always has its state. `progress` gets the simulated
+/// seconds since its previous call. Runs are deterministic: the same planned run gives the
+/// same record (but for `summary.wall_seconds`) wherever it is run.
+pub fn run_planned(
+    plan: &PlannedRun,
+    spec: &CampaignSpec,
+    out: &Path,
+    progress: &dyn Fn(f64),
+) -> Result<(), CampaignError> {
+    let (rec, state) = run_one(plan, spec, progress)?;
+    let path = record_path(out, &plan.id);
+    // The state first: a record on disk always has its state.
+    save_state(&path.with_file_name("state.json"), &state)?;
+    write_json(&path, &rec)?;
+    Ok(())
+}
+
+/// Runs a campaign into `out` on `threads` worker threads, skipping runs already written
+/// ([`prepare_campaign`], then [`run_planned`] for each run still to do).
+/// `progress` is called from the workers (it must be cheap and thread-safe). `stop` ends the
+/// campaign after the runs in flight when set. Returns the number of runs (skipped, done).
+pub fn run_campaign(
+    spec: &CampaignSpec,
+    base_dir: &Path,
+    out: &Path,
+    threads: usize,
+    progress: &(dyn Fn(Progress) + Sync),
+    stop: &AtomicBool,
+) -> Result<(usize, usize), CampaignError> {
+    let PreparedCampaign {
+        plan,
+        todo,
+        skipped,
+    } = prepare_campaign(spec, base_dir, out)?;
     let total = plan.len();
     let next = AtomicUsize::new(0);
     let done = AtomicUsize::new(0);
@@ -508,13 +564,7 @@ pub fn run_campaign(
                         *simulated.lock().expect("progress lock") += dt;
                         report(done.load(Ordering::Relaxed));
                     };
-                    let result = run_one(p, spec, &tick).and_then(|(rec, state)| {
-                        let path = record_path(out, &p.id);
-                        // The state first: a record on disk always has its state.
-                        save_state(&path.with_file_name("state.json"), &state)?;
-                        write_json(&path, &rec)?;
-                        Ok(())
-                    });
+                    let result = run_planned(p, spec, out, &tick);
                     match result {
                         Ok(()) => {
                             let d = done.fetch_add(1, Ordering::Relaxed) + 1;
@@ -533,4 +583,25 @@ pub fn run_campaign(
         return Err(e);
     }
     Ok((skipped, done.load(Ordering::Relaxed)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A planned run survives JSON exactly, so it can be run in another process.
+    #[test]
+    fn planned_run_round_trips_through_json() {
+        let spec = CampaignSpec::from_toml(
+            "name = \"x\"\nseeds = 2\n[[axis]]\nkey = \"contact.mu\"\nvalues = [0.4, 1.0]",
+        )
+        .unwrap();
+        let plan = spec.plan(Path::new(".")).unwrap();
+        assert_eq!(plan.len(), 4);
+        for p in &plan {
+            let text = serde_json::to_string(p).unwrap();
+            let back: PlannedRun = serde_json::from_str(&text).unwrap();
+            assert_eq!(&back, p);
+        }
+    }
 }
