@@ -1,0 +1,94 @@
+!> Cost per column of the C ABI from Fortran (ncat = 5): the batched strength call, the
+!> Icepack-style per-cell call, and the batched ridging step. Workload as benches/strength.rs:
+!> deterministic pseudo-random columns, 5-20 % open water, category thicknesses near 0.3, 1,
+!> 1.9, 3, 4.5 m. Single thread. Prints nanoseconds per column; no assertions.
+!>
+!> Usage: bench_strength [NCOL]   (default 1000000)
+program bench_strength
+  use, intrinsic :: iso_c_binding, only: c_double
+  use, intrinsic :: iso_fortran_env, only: int64
+  use pressridge
+  implicit none
+  integer, parameter :: ncat = 5
+  real(c_double), parameter :: hmid(ncat) = [0.3_c_double, 1.0_c_double, 1.9_c_double, &
+       3.0_c_double, 4.5_c_double]
+  integer :: ncol, c, n, rep, nrep
+  character(len=32) :: arg
+  real(c_double), allocatable :: a(:, :), v(:, :), a0(:), p(:), aw(:, :), vw(:, :), a0w(:), &
+       conv(:), shear(:)
+  real(c_double) :: r, w(ncat), s, t
+  integer(int64) :: t0, t1, rate
+
+  ncol = 1000000
+  if (command_argument_count() > 0) then
+     call get_command_argument(1, arg)
+     read (arg, *) ncol
+  end if
+  allocate(a(ncat, ncol), v(ncat, ncol), a0(ncol), p(ncol), aw(ncat, ncol), vw(ncat, ncol), &
+       a0w(ncol), conv(ncol), shear(ncol))
+  r = 0.5_c_double
+  do c = 1, ncol
+     r = lcg(r)
+     a0(c) = 0.05_c_double + 0.15_c_double * r
+     do n = 1, ncat
+        r = lcg(r)
+        w(n) = 0.2_c_double + r
+     end do
+     s = sum(w)
+     do n = 1, ncat
+        a(n, c) = (1.0_c_double - a0(c)) * w(n) / s
+        r = lcg(r)
+        v(n, c) = a(n, c) * hmid(n) * (0.8_c_double + 0.4_c_double * r)
+     end do
+     a0(c) = 1.0_c_double - sum(a(:, c))
+  end do
+  conv = 2.0e-6_c_double
+  shear = 4.0e-6_c_double
+  call system_clock(count_rate=rate)
+  print '(a, i0, a)', 'pressridge '//pressridge_version()//', ncat = 5, ', ncol, ' columns'
+
+  ! Batched strength (CICE defaults: exponential/exponential, Rothrock, C_f = 17).
+  call pressridge_strength(a, v, p, aice0=a0) ! warm-up
+  nrep = 5
+  call system_clock(t0)
+  do rep = 1, nrep
+     call pressridge_strength(a, v, p, aice0=a0)
+  end do
+  call system_clock(t1)
+  t = real(t1 - t0, c_double) / rate / nrep
+  print '(a, f8.1, a)', 'batched strength, one call for all columns:  ', 1e9 * t / ncol, ' ns/column'
+
+  ! Per cell, as CICE calls icepack_ice_strength.
+  call system_clock(t0)
+  do c = 1, ncol
+     p(c) = 0
+     call pressridge_ice_strength(0.0_c_double, 0.0_c_double, a0(c), a(:, c), v(:, c), p(c))
+  end do
+  call system_clock(t1)
+  t = real(t1 - t0, c_double) / rate
+  print '(a, f8.1, a)', 'pressridge_ice_strength, one call per cell:  ', 1e9 * t / ncol, ' ns/column'
+
+  ! Batched ridging step (on a fresh copy each repetition).
+  nrep = 2
+  t = 0
+  do rep = 1, nrep
+     aw = a
+     vw = v
+     a0w = a0
+     call system_clock(t0)
+     call pressridge_ridge_step(aw, vw, a0w, conv, shear, 3600.0_c_double)
+     call system_clock(t1)
+     t = t + real(t1 - t0, c_double) / rate
+  end do
+  t = t / nrep
+  print '(a, f8.1, a)', 'batched ridging step, one call for all:      ', 1e9 * t / ncol, ' ns/column'
+
+contains
+
+  !> A deterministic pseudo-random number in [0, 1).
+  real(c_double) function lcg(x)
+    real(c_double), intent(in) :: x
+    lcg = modulo(x * 9301.0_c_double + 0.49297_c_double, 1.0_c_double)
+  end function lcg
+
+end program bench_strength

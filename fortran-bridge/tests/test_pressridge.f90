@@ -1,0 +1,356 @@
+!> Tests of the Fortran module `pressridge`: values agree with the Rust API (the files the
+!> `pressridge` command line writes from data/sample_itd.nc) to round-off, in both array
+!> layouts and through the Icepack-style per-cell calls; errors come back as ierr with a
+!> message; tables and simulator runs work from Fortran.
+!>
+!> Usage: test_pressridge SAMPLE.nc REFDIR (REFDIR holds strength_*.nc, ridged.nc,
+!> cf_table.nc and ridge_table.nc made by the Makefile).
+program test_pressridge
+  use, intrinsic :: iso_c_binding, only: c_double
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+  use pressridge
+  use sample_io
+  implicit none
+
+  character(len=1024) :: sample, dir
+  integer :: ni, nj, ncat, ncol, i, j, e, passed = 0, failed = 0
+  real(c_double), allocatable :: aicen(:, :, :), vicen(:, :, :), aice0(:, :), divu(:, :), &
+       shear(:, :), conv(:, :), hin_max(:), p(:, :), pref(:, :), pcell(:, :), a2(:, :), &
+       v2(:, :), p1(:), a0_1(:)
+  type(pressridge_options) :: o, d
+  type(pressridge_cf_table) :: cft, cft2
+  type(pressridge_ridge_table) :: rt
+  type(pressridge_run) :: run
+  character(len=:), allocatable :: s
+  real(c_double) :: x, y
+  real(c_double), allocatable :: th(:), cf(:), vol(:)
+  logical :: clamped
+  integer :: ns, nh, nv, nf
+
+  call get_command_argument(1, sample)
+  call get_command_argument(2, dir)
+  call read_grid(trim(sample), ni, nj, ncat)
+  ncol = ni * nj
+  allocate(aicen(ni, nj, ncat), vicen(ni, nj, ncat), aice0(ni, nj), divu(ni, nj), &
+       shear(ni, nj), conv(ni, nj), hin_max(ncat + 1), p(ni, nj), pref(ni, nj), pcell(ni, nj))
+  call read_3d(trim(sample), 'aicen', aicen)
+  call read_3d(trim(sample), 'vicen', vicen)
+  call read_2d(trim(sample), 'aice0', aice0)
+  call read_2d(trim(sample), 'divu', divu)
+  call read_2d(trim(sample), 'shear', shear)
+  call read_1d(trim(sample), 'hin_max', hin_max)
+  conv = max(-divu, 0.0_c_double)
+
+  ! --- version, ABI, defaults
+  s = pressridge_version()
+  call check('version is not empty', len(s) > 0)
+  call check('linked ABI version equals the module''s', &
+       pressridge_linked_abi_version() == PRESSRIDGE_ABI_VERSION)
+  call pressridge_default_options(d)
+  call check('Fortran initial options equal the library defaults', same_options(o, d))
+
+  ! --- strength, default options, CICE block layout, against `pressridge strength`
+  call pressridge_strength(aicen, vicen, p, aice0=aice0, ierr=e)
+  call check('strength (block layout) succeeds', e == PRESSRIDGE_OK)
+  call read_2d(trim(dir)//'/strength_default.nc', 'strength', pref)
+  call check('strength = pressridge strength (defaults)', agree(p, pref))
+
+  ! The same through the Icepack-style call, cell by cell, as CICE would call it.
+  do j = 1, nj
+     do i = 1, ni
+        pcell(i, j) = 0
+        call pressridge_ice_strength(aice=sum(aicen(i, j, :)), vice=sum(vicen(i, j, :)), &
+             aice0=aice0(i, j), aicen=aicen(i, j, :), vicen=vicen(i, j, :), &
+             strength=pcell(i, j), ierr=e)
+        if (e /= PRESSRIDGE_OK) exit
+     end do
+  end do
+  call check('pressridge_ice_strength per cell succeeds', e == PRESSRIDGE_OK)
+  call check('per-cell strength = batched strength (bit for bit)', all(pcell == p))
+
+  ! Layout aicen(ncat, ncol).
+  allocate(a2(ncat, ncol), v2(ncat, ncol), p1(ncol), a0_1(ncol))
+  a2 = transpose(reshape(aicen, [ncol, ncat]))
+  v2 = transpose(reshape(vicen, [ncol, ncat]))
+  a0_1 = reshape(aice0, [ncol])
+  call pressridge_strength(a2, v2, p1, aice0=a0_1, ierr=e)
+  call check('strength (ncat, ncol) layout = block layout', &
+       e == PRESSRIDGE_OK .and. all(p1 == reshape(p, [ncol])))
+  ! Without aice0 (1 - sum(aicen)), within round-off of the given aice0.
+  call pressridge_strength(a2, v2, p1, ierr=e)
+  call check('strength without aice0 agrees to round-off', &
+       e == PRESSRIDGE_OK .and. agree(reshape(p1, [ni, nj]), p, 1.0e-9_c_double))
+
+  ! --- other options against the command line
+  o%participation = PRESSRIDGE_PARTICIPATION_THORNDIKE
+  o%redistribution = PRESSRIDGE_REDISTRIBUTION_UNIFORM
+  call pressridge_strength(aicen, vicen, p, aice0=aice0, options=o, ierr=e)
+  call read_2d(trim(dir)//'/strength_thorndike_uniform.nc', 'strength', pref)
+  call check('Thorndike + uniform = pressridge strength', e == 0 .and. agree(p, pref))
+  call pressridge_init_parameters(krdg_partic=0, krdg_redist=0)
+  do j = 1, nj
+     do i = 1, ni
+        call pressridge_ice_strength(0.0_c_double, 0.0_c_double, aice0(i, j), aicen(i, j, :), &
+             vicen(i, j, :), pcell(i, j))
+     end do
+  end do
+  call check('pressridge_init_parameters(krdg_partic=0, krdg_redist=0) per cell', &
+       all(pcell == p))
+  call pressridge_init_parameters(options=d)
+
+  o = d
+  o%strength_law = PRESSRIDGE_STRENGTH_HIBLER1979
+  call pressridge_strength(aicen, vicen, p, aice0=aice0, options=o, ierr=e)
+  call read_2d(trim(dir)//'/strength_hibler.nc', 'strength', pref)
+  call check('Hibler (1979) = pressridge strength --strength hibler', e == 0 .and. agree(p, pref))
+
+  call pressridge_cf_table_open(trim(dir)//'/cf_table.nc', cft, e)
+  call check('C_f table opens', e == PRESSRIDGE_OK)
+  o = d
+  call pressridge_options_set_cf_table(o, cft)
+  call pressridge_strength(aicen, vicen, p, aice0=aice0, options=o, cf_clamped_columns=nf, ierr=e)
+  call read_2d(trim(dir)//'/strength_cf_table.nc', 'strength', pref)
+  call check('C_f table = pressridge strength --cf-table', e == 0 .and. agree(p, pref))
+  call check('clamped columns are counted', nf >= 0 .and. nf <= ncol)
+  call pressridge_cf_table_lookup(cft, 1.4_c_double, x, clamped)
+  call check('C_f table lookup interpolates', abs(x - 13.5_c_double) < 1e-12 .and. .not. clamped)
+  call pressridge_cf_table_lookup(cft, 9.0_c_double, x, clamped)
+  call check('C_f table lookup clamps', x == 18.0_c_double .and. clamped)
+  call pressridge_cf_table_nodes(cft, th, cf)
+  call check('C_f table nodes', size(th) == 4 .and. th(4) == 4.0_c_double .and. cf(1) == 6.0_c_double)
+  call pressridge_cf_table_new(th, cf, cft2, e)
+  o = d
+  call pressridge_options_set_cf_table(o, cft2)
+  call pressridge_strength(aicen, vicen, pcell, aice0=aice0, options=o, ierr=e)
+  call check('C_f table from nodes gives the same strength', e == 0 .and. all(pcell == p))
+  call pressridge_cf_table_free(cft2)
+  call pressridge_cf_table_free(cft)
+
+  ! Mask: invalid columns get the fill value and are not checked.
+  block
+    logical :: valid(ni, nj)
+    real(c_double) :: bad(ni, nj, ncat)
+    valid = .true.
+    valid(1:3, 2) = .false.
+    bad = aicen
+    bad(1:3, 2, :) = -1.0_c_double
+    o = d
+    o%fill = -9.0_c_double
+    call pressridge_strength(bad, vicen, p, aice0=aice0, options=o, valid=valid, ierr=e)
+    call read_2d(trim(dir)//'/strength_default.nc', 'strength', pref)
+    call check('masked columns get the fill value', e == 0 .and. all(p(1:3, 2) == -9.0_c_double))
+    call check('unmasked columns unchanged', all(p(4:, 2) == pref(4:, 2)) .and. &
+         all(p(:, 3:) == pref(:, 3:)))
+  end block
+
+  ! --- ridging step against `pressridge ridge-step --dt 3600`
+  block
+    real(c_double) :: a(ni, nj, ncat), v(ni, nj, ncat), a0(ni, nj), ra(ni, nj, ncat), &
+         rv(ni, nj, ncat), ra0(ni, nj), cl(ni, nj), rcl(ni, nj), a1(ncat), v1(ncat), a01, c1
+    a = aicen
+    v = vicen
+    a0 = aice0
+    call pressridge_ridge_step(a, v, a0, conv, shear, 3600.0_c_double, hin_max=hin_max, &
+         closing=cl, ierr=e)
+    call check('ridging step (block layout) succeeds', e == PRESSRIDGE_OK)
+    call read_3d(trim(dir)//'/ridged.nc', 'aicen', ra)
+    call read_3d(trim(dir)//'/ridged.nc', 'vicen', rv)
+    call read_2d(trim(dir)//'/ridged.nc', 'aice0', ra0)
+    call read_2d(trim(dir)//'/ridged.nc', 'closing', rcl)
+    call check('ridged aicen = pressridge ridge-step', agree3(a, ra))
+    call check('ridged vicen = pressridge ridge-step', agree3(v, rv))
+    call check('ridged aice0 = pressridge ridge-step', agree(a0, ra0))
+    call check('closing rate = pressridge ridge-step', agree(cl, rcl))
+    call check('ice volume conserved', &
+         abs(sum(v) - sum(vicen)) <= 1e-12_c_double * sum(vicen))
+    ! Per cell, Icepack style.
+    e = 0
+    do j = 1, nj
+       do i = 1, ni
+          a1 = aicen(i, j, :)
+          v1 = vicen(i, j, :)
+          a01 = aice0(i, j)
+          call pressridge_ridge_ice(3600.0_c_double, hin_max, conv(i, j), shear(i, j), a1, v1, &
+               a01, closing=c1, ierr=e)
+          if (e /= 0) exit
+          if (any(a1 /= a(i, j, :)) .or. any(v1 /= v(i, j, :)) .or. a01 /= a0(i, j) .or. &
+               c1 /= cl(i, j)) e = -1
+       end do
+    end do
+    call check('pressridge_ridge_ice per cell = batched step', e == 0)
+    ! Default bounds (no hin_max) are the sample's (CICE kcatbound = 1).
+    a = aicen
+    v = vicen
+    a0 = aice0
+    call pressridge_ridge_step(a, v, a0, conv, shear, 3600.0_c_double, ierr=e)
+    call check('default bounds = the sample''s bounds', e == 0 .and. agree3(a, ra))
+  end block
+
+  ! --- errors come back as ierr, with a message
+  block
+    real(c_double) :: a(ncat, 3), v(ncat, 3), out(3), out2(2), a0(3), nan
+    nan = ieee_value(nan, ieee_quiet_nan)
+    a = 0.1_c_double
+    v = 0.2_c_double
+    a0 = 0.5_c_double
+    call pressridge_strength(a, v, out, aice0=a0, ierr=e)
+    call check('a valid call has ierr = 0 and no message', e == PRESSRIDGE_OK .and. &
+         pressridge_last_error_message() == '')
+    a(2, 3) = nan
+    call pressridge_strength(a, v, out, aice0=a0, ierr=e)
+    call check('NaN: PRESSRIDGE_ERR_NOT_FINITE', e == PRESSRIDGE_ERR_NOT_FINITE)
+    call check('NaN: message names the value', index(pressridge_last_error_message(), &
+         'not finite') > 0)
+    call check('NaN: column 3 reported', pressridge_last_error_column() == 3)
+    a(2, 3) = -0.1_c_double
+    call pressridge_strength(a, v, out, aice0=a0, ierr=e)
+    call check('negative area: PRESSRIDGE_ERR_BAD_VALUE', e == PRESSRIDGE_ERR_BAD_VALUE .and. &
+         index(pressridge_last_error_message(), 'negative') > 0)
+    a(2, 3) = 0.1_c_double
+    a0(1) = 0.9_c_double
+    call pressridge_strength(a, v, out, aice0=a0, ierr=e)
+    call check('area sum /= 1: PRESSRIDGE_ERR_BAD_VALUE', e == PRESSRIDGE_ERR_BAD_VALUE .and. &
+         pressridge_last_error_column() == 1)
+    a0(1) = 0.5_c_double
+    call pressridge_strength(a, v, out2, aice0=a0, ierr=e)
+    call check('wrong output size: PRESSRIDGE_ERR_BAD_SIZE', e == PRESSRIDGE_ERR_BAD_SIZE .and. &
+         index(pressridge_last_error_message(), 'strength') > 0)
+    call pressridge_strength(a(:, 1:0), v(:, 1:0), out(1:0), ierr=e)
+    call check('zero columns: PRESSRIDGE_ERR_BAD_SIZE', e == PRESSRIDGE_ERR_BAD_SIZE)
+    o = d
+    o%participation = 5
+    call pressridge_strength(a, v, out, aice0=a0, options=o, ierr=e)
+    call check('bad option: PRESSRIDGE_ERR_BAD_VALUE', e == PRESSRIDGE_ERR_BAD_VALUE .and. &
+         index(pressridge_last_error_message(), 'participation') > 0)
+    o = d
+    o%params%rhow = 800.0_c_double
+    call pressridge_strength(a, v, out, aice0=a0, options=o, ierr=e)
+    call check('rhow < rhoi: PRESSRIDGE_ERR_BAD_VALUE', e == PRESSRIDGE_ERR_BAD_VALUE)
+    o = d
+    o%cf_source = PRESSRIDGE_CF_SOURCE_TABLE
+    call pressridge_strength(a, v, out, aice0=a0, options=o, ierr=e)
+    call check('C_f table missing: PRESSRIDGE_ERR_NULL_POINTER', e == PRESSRIDGE_ERR_NULL_POINTER)
+    call pressridge_ice_strength(0.0_c_double, 0.0_c_double, 0.5_c_double, a(:, 1), &
+         v(1:2, 1), x, ierr=e)
+    call check('per cell, sizes differ: PRESSRIDGE_ERR_BAD_SIZE', e == PRESSRIDGE_ERR_BAD_SIZE)
+    call pressridge_cf_table_open('no/such/file.nc', cft, e)
+    call check('missing C_f table: PRESSRIDGE_ERR_IO', e == PRESSRIDGE_ERR_IO .and. &
+         index(pressridge_last_error_message(), 'no/such/file.nc') > 0)
+    call pressridge_cf_table_open(trim(sample), cft, e)
+    call check('not a C_f table: PRESSRIDGE_ERR_IO', e == PRESSRIDGE_ERR_IO)
+    call pressridge_cf_table_new([1.0_c_double, 0.5_c_double], [2.0_c_double, 3.0_c_double], &
+         cft, e)
+    call check('unsorted C_f nodes: PRESSRIDGE_ERR_BAD_VALUE', e == PRESSRIDGE_ERR_BAD_VALUE)
+    rdg: block
+      real(c_double) :: aa(ncat), vv(ncat), aa0
+      aa = 0.1_c_double
+      vv = 0.2_c_double
+      aa0 = 0.5_c_double
+      call pressridge_ridge_ice(0.0_c_double, hin_max, 1e-6_c_double, 0.0_c_double, aa, vv, &
+           aa0, ierr=e)
+      call check('ridging with dt = 0: PRESSRIDGE_ERR_BAD_VALUE', e == PRESSRIDGE_ERR_BAD_VALUE)
+      call pressridge_ridge_ice(3600.0_c_double, hin_max(1:ncat), 1e-6_c_double, 0.0_c_double, &
+           aa, vv, aa0, ierr=e)
+      call check('ridging with ncat bounds: PRESSRIDGE_ERR_BAD_SIZE', e == PRESSRIDGE_ERR_BAD_SIZE)
+    end block rdg
+  end block
+
+  ! --- ridging lookup tables
+  call pressridge_ridge_table_open(trim(dir)//'/ridge_table.nc', rt, e)
+  call check('ridging table opens', e == PRESSRIDGE_OK)
+  call pressridge_ridge_table_dims(rt, ns, nh, nv, nf)
+  call check('ridging table dims', ns == 2 .and. nh == 3 .and. nv == 2 .and. nf == 2)
+  call pressridge_ridge_table_axes(rt, th, vol)
+  call check('ridging table axes', all(th == [0.2_c_double, 0.3_c_double, 0.45_c_double]) .and. &
+       all(vol == [0.0_c_double, 10.0_c_double]))
+  call pressridge_ridge_table_set_name(rt, 2, s)
+  call check('set names', s == 'contact.mu=0.5')
+  call pressridge_ridge_table_variable_name(rt, 2, s)
+  call check('variable names', s == 'work_mean')
+  call pressridge_ridge_table_value(rt, 'work_mean', 2, 0.3_c_double, 5.0_c_double, x, clamped)
+  call check('table value interpolates', x == 8500.0_c_double .and. .not. clamped)
+  call pressridge_ridge_table_value(rt, 'nope', 1, 0.3_c_double, 5.0_c_double, x, ierr=e)
+  call check('unknown field: PRESSRIDGE_ERR_NOT_FOUND', e == PRESSRIDGE_ERR_NOT_FOUND)
+  call pressridge_ridge_table_value(rt, 'work_mean', 3, 0.3_c_double, 5.0_c_double, x, ierr=e)
+  call check('set out of range: PRESSRIDGE_ERR_BAD_VALUE', e == PRESSRIDGE_ERR_BAD_VALUE)
+  call pressridge_ridge_table_cf(rt, 1, 1.0_c_double, x, clamped)
+  call check('table C_f clamps', x == 14.0_c_double .and. clamped)
+  call pressridge_ridge_table_cf_table(rt, 2, cft)
+  call pressridge_ridge_table_free(rt)
+  call pressridge_cf_table_lookup(cft, 0.3_c_double, y)
+  call check('C_f table of a set', y == 7.0_c_double)
+  call pressridge_cf_table_free(cft)
+  call pressridge_ridge_table_open('missing.nc', rt, e)
+  call check('missing ridging table: PRESSRIDGE_ERR_IO', e == PRESSRIDGE_ERR_IO)
+
+  ! --- a simulator run
+  block
+    character(len=*), parameter :: tiny = 'name = "tiny"'//new_line('a')//'duration = 0.05' &
+         //new_line('a')//'[pile]'//new_line('a')//'blocks = 4'//new_line('a')//'columns = 2'
+    call pressridge_run_scene(tiny, s, e)
+    call check('scene runs, summary as JSON', e == PRESSRIDGE_OK .and. &
+         index(s, '"scene": "tiny"') > 0)
+    call pressridge_scene_run(tiny, run, e)
+    call pressridge_run_summary_value(run, 'time', x, e)
+    call pressridge_run_summary_value(run, 'steps', y)
+    call check('summary values', e == 0 .and. abs(x - 0.05_c_double) < 1e-3_c_double .and. &
+         y > 0)
+    call pressridge_run_free(run)
+  end block
+  call pressridge_run_scene('durration = 1', s, e)
+  call check('unknown scene key: PRESSRIDGE_ERR_PARSE', e == PRESSRIDGE_ERR_PARSE .and. &
+       index(pressridge_last_error_message(), 'durration') > 0)
+
+  print '(i0, a, i0, a)', passed, ' passed, ', failed, ' failed'
+  if (failed > 0) error stop 1
+
+contains
+
+  subroutine check(name, ok)
+    character(len=*), intent(in) :: name
+    logical, intent(in) :: ok
+    if (ok) then
+       passed = passed + 1
+       print '(a)', 'ok     '//name
+    else
+       failed = failed + 1
+       print '(a)', 'FAILED '//name
+       print '(a)', '       last error: '//pressridge_last_error_message()
+    end if
+  end subroutine check
+
+  !> Agreement to round-off: |a - b| <= tol * max|b| (default tol 1e-13).
+  logical function agree(a, b, tol)
+    real(c_double), intent(in) :: a(:, :), b(:, :)
+    real(c_double), intent(in), optional :: tol
+    real(c_double) :: t
+    t = 1.0e-13_c_double
+    if (present(tol)) t = tol
+    agree = maxval(abs(a - b)) <= t * max(maxval(abs(b)), tiny(1.0_c_double))
+    if (.not. agree) print '(a, es10.3)', '       max |difference| = ', maxval(abs(a - b))
+  end function agree
+
+  logical function agree3(a, b)
+    real(c_double), intent(in) :: a(:, :, :), b(:, :, :)
+    agree3 = maxval(abs(a - b)) <= 1.0e-13_c_double * maxval(abs(b))
+    if (.not. agree3) print '(a, es10.3)', '       max |difference| = ', maxval(abs(a - b))
+  end function agree3
+
+  logical function same_options(a, b)
+    type(pressridge_options), intent(in) :: a, b
+    same_options = a%participation == b%participation .and. &
+         a%redistribution == b%redistribution .and. a%strength_law == b%strength_law .and. &
+         a%cf_source == b%cf_source .and. a%cf == b%cf .and. a%fill == b%fill .and. &
+         a%params%rhoi == b%params%rhoi .and. a%params%rhow == b%params%rhow .and. &
+         a%params%gravit == b%params%gravit .and. a%params%gstar == b%params%gstar .and. &
+         a%params%astar == b%params%astar .and. a%params%hstar == b%params%hstar .and. &
+         a%params%maxraft == b%params%maxraft .and. a%params%mu_rdg == b%params%mu_rdg .and. &
+         a%params%cs == b%params%cs .and. a%params%pstar == b%params%pstar .and. &
+         a%params%cstar == b%params%cstar .and. a%params%puny == b%params%puny .and. &
+         a%params%exp_argmax == b%params%exp_argmax .and. a%params%big == b%params%big .and. &
+         a%params%area_tolerance == b%params%area_tolerance .and. &
+         a%params%max_area_before_ridging == b%params%max_area_before_ridging .and. &
+         a%params%nitermax == b%params%nitermax
+  end function same_options
+
+end program test_pressridge
