@@ -73,10 +73,10 @@
 #define PRESSRIDGE_STRENGTH_ROTHROCK 1
 
 // C_f is the constant `PressridgeOptions::cf`.
-#define PRESSRIDGE_CF_CONSTANT 0
+#define PRESSRIDGE_CF_SOURCE_CONSTANT 0
 
 // C_f is looked up in `PressridgeOptions::cf_table` at the ridging category's thickness.
-#define PRESSRIDGE_CF_TABLE 1
+#define PRESSRIDGE_CF_SOURCE_TABLE 1
 
 // C_f of Hibler (1980) (dimensionless).
 #define PRESSRIDGE_CF_HIBLER1980 2.0
@@ -150,15 +150,17 @@ typedef struct PressridgeOptions {
   int32_t redistribution;
   // `PRESSRIDGE_STRENGTH_*` (CICE `kstrength`: 0 Hibler 1979, 1 Rothrock 1975).
   int32_t strength_law;
-  // `PRESSRIDGE_CF_CONSTANT` or `PRESSRIDGE_CF_TABLE`.
+  // `PRESSRIDGE_CF_SOURCE_CONSTANT` or `PRESSRIDGE_CF_SOURCE_TABLE`.
   int32_t cf_source;
-  // Constant C_f (dimensionless, finite, > 0), used with `PRESSRIDGE_CF_CONSTANT`;
-  // presets `PRESSRIDGE_CF_HIBLER1980`, `PRESSRIDGE_CF_FLATO1991`, `PRESSRIDGE_CF_CICE`.
+  // Constant C_f (dimensionless, finite, > 0), used with
+  // `PRESSRIDGE_CF_SOURCE_CONSTANT`; presets `PRESSRIDGE_CF_HIBLER1980`,
+  // `PRESSRIDGE_CF_FLATO1991`, `PRESSRIDGE_CF_CICE`.
   double cf;
   // Value written to the outputs of columns whose `valid` flag is 0 (N/m for strength,
   // 1/s or m/s for the ridging rates). Default 0.
   double fill;
-  // C_f table handle used with `PRESSRIDGE_CF_TABLE` (borrowed, not freed by the call).
+  // C_f table handle used with `PRESSRIDGE_CF_SOURCE_TABLE` (borrowed, not freed by the
+  // call).
   const struct PressridgeCfTable *cf_table;
   // Physical constants and tunables.
   struct PressridgeParams params;
@@ -234,6 +236,17 @@ int32_t pressridge_last_error(char *buf, int64_t len, int64_t *required);
 // # Safety
 // `code` and `column` must each be null or valid for one write.
 int32_t pressridge_last_error_info(int32_t *code, int64_t *column);
+
+// Records an error found by a language binding (for example the Fortran module's shape
+// checks) as the calling thread's last error, so that [`pressridge_last_error`] reports
+// it like the library's own: `code` (one of the `PRESSRIDGE_ERR_*` codes) and `message_len`
+// bytes of UTF-8 at `message` (invalid bytes are replaced). Returns [`PRESSRIDGE_OK`] when
+// recorded, [`PRESSRIDGE_ERR_BAD_VALUE`] (recording nothing) when `code` is not an error
+// code.
+//
+// # Safety
+// `message` must be valid for `message_len` bytes, or null with `message_len` 0.
+int32_t pressridge_set_error(int32_t code, const char *message, int64_t message_len);
 
 // The name of a status code (`"PRESSRIDGE_ERR_BAD_SIZE"`, ...) by the required-length
 // protocol of [`pressridge_last_error`]; unknown codes give `"unknown status"`.

@@ -221,7 +221,8 @@ fn strength_errors_are_codes_with_messages() {
     let a0 = vec![0.5; ncol];
     let mut out = vec![0.0; ncol];
     let g = fortran_grid(ncat, ncol);
-    let call = |g: &PressridgeGrid, a: *const f64, v: *const f64, a0: *const f64, out: *mut f64| unsafe {
+    type P = *const f64;
+    let call = |g: &PressridgeGrid, a: P, v: P, a0: P, out: *mut f64| unsafe {
         pressridge_strength(g, a, v, a0, null(), null(), out, null_mut())
     };
     assert_eq!(
@@ -381,7 +382,7 @@ fn strength_errors_are_codes_with_messages() {
     assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
     assert!(last_error().contains("rhow"), "{}", last_error());
     let mut o = default_options();
-    o.cf_source = PRESSRIDGE_CF_TABLE;
+    o.cf_source = PRESSRIDGE_CF_SOURCE_TABLE;
     let rc = unsafe {
         pressridge_strength(
             &g,

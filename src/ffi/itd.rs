@@ -27,9 +27,9 @@ pub const PRESSRIDGE_STRENGTH_HIBLER1979: i32 = 0;
 /// Strength of Rothrock (1975) with the frictional factor C_f (CICE `kstrength = 1`, default).
 pub const PRESSRIDGE_STRENGTH_ROTHROCK: i32 = 1;
 /// C_f is the constant `PressridgeOptions::cf`.
-pub const PRESSRIDGE_CF_CONSTANT: i32 = 0;
+pub const PRESSRIDGE_CF_SOURCE_CONSTANT: i32 = 0;
 /// C_f is looked up in `PressridgeOptions::cf_table` at the ridging category's thickness.
-pub const PRESSRIDGE_CF_TABLE: i32 = 1;
+pub const PRESSRIDGE_CF_SOURCE_TABLE: i32 = 1;
 /// C_f of Hibler (1980) (dimensionless).
 pub const PRESSRIDGE_CF_HIBLER1980: f64 = 2.0;
 /// C_f of Flato (1991) (dimensionless).
@@ -90,15 +90,17 @@ pub struct PressridgeOptions {
     pub redistribution: i32,
     /// `PRESSRIDGE_STRENGTH_*` (CICE `kstrength`: 0 Hibler 1979, 1 Rothrock 1975).
     pub strength_law: i32,
-    /// `PRESSRIDGE_CF_CONSTANT` or `PRESSRIDGE_CF_TABLE`.
+    /// `PRESSRIDGE_CF_SOURCE_CONSTANT` or `PRESSRIDGE_CF_SOURCE_TABLE`.
     pub cf_source: i32,
-    /// Constant C_f (dimensionless, finite, > 0), used with `PRESSRIDGE_CF_CONSTANT`;
-    /// presets `PRESSRIDGE_CF_HIBLER1980`, `PRESSRIDGE_CF_FLATO1991`, `PRESSRIDGE_CF_CICE`.
+    /// Constant C_f (dimensionless, finite, > 0), used with
+    /// `PRESSRIDGE_CF_SOURCE_CONSTANT`; presets `PRESSRIDGE_CF_HIBLER1980`,
+    /// `PRESSRIDGE_CF_FLATO1991`, `PRESSRIDGE_CF_CICE`.
     pub cf: f64,
     /// Value written to the outputs of columns whose `valid` flag is 0 (N/m for strength,
     /// 1/s or m/s for the ridging rates). Default 0.
     pub fill: f64,
-    /// C_f table handle used with `PRESSRIDGE_CF_TABLE` (borrowed, not freed by the call).
+    /// C_f table handle used with `PRESSRIDGE_CF_SOURCE_TABLE` (borrowed, not freed by the
+    /// call).
     pub cf_table: *const PressridgeCfTable,
     /// Physical constants and tunables.
     pub params: PressridgeParams,
@@ -199,7 +201,7 @@ impl Default for PressridgeOptions {
                 StrengthFormula::Hibler1979 => PRESSRIDGE_STRENGTH_HIBLER1979,
                 StrengthFormula::Rothrock => PRESSRIDGE_STRENGTH_ROTHROCK,
             },
-            cf_source: PRESSRIDGE_CF_CONSTANT,
+            cf_source: PRESSRIDGE_CF_SOURCE_CONSTANT,
             cf: match s.cf {
                 Cf::Constant(c) => c,
                 _ => CfPreset::Cice.value(),
@@ -268,8 +270,8 @@ impl PressridgeOptions {
             v => return Err(bad_code("strength_law", v, "0 (Hibler 1979), 1 (Rothrock)")),
         };
         let cf = match self.cf_source {
-            PRESSRIDGE_CF_CONSTANT => Cf::Constant(self.cf),
-            PRESSRIDGE_CF_TABLE => {
+            PRESSRIDGE_CF_SOURCE_CONSTANT => Cf::Constant(self.cf),
+            PRESSRIDGE_CF_SOURCE_TABLE => {
                 check_ptr(self.cf_table, "options.cf_table")?;
                 // SAFETY: checked non-null; a live handle is the caller's promise.
                 Cf::Table(Arc::clone(unsafe { &(*self.cf_table).table }))

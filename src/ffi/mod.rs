@@ -278,6 +278,41 @@ pub unsafe extern "C" fn pressridge_last_error_info(code: *mut i32, column: *mut
     })
 }
 
+/// Records an error found by a language binding (for example the Fortran module's shape
+/// checks) as the calling thread's last error, so that [`pressridge_last_error`] reports
+/// it like the library's own: `code` (one of the `PRESSRIDGE_ERR_*` codes) and `message_len`
+/// bytes of UTF-8 at `message` (invalid bytes are replaced). Returns [`PRESSRIDGE_OK`] when
+/// recorded, [`PRESSRIDGE_ERR_BAD_VALUE`] (recording nothing) when `code` is not an error
+/// code.
+///
+/// # Safety
+/// `message` must be valid for `message_len` bytes, or null with `message_len` 0.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pressridge_set_error(
+    code: i32,
+    message: *const c_char,
+    message_len: i64,
+) -> i32 {
+    guard_keep(|| {
+        if !(PRESSRIDGE_ERR_NULL_POINTER..=PRESSRIDGE_ERR_PANIC).contains(&code) {
+            return Err(FfiError::new(
+                PRESSRIDGE_ERR_BAD_VALUE,
+                "unknown status code",
+            ));
+        }
+        let text = if message.is_null() || message_len <= 0 {
+            String::new()
+        } else {
+            // SAFETY: the caller promises `message_len` readable bytes.
+            let b =
+                unsafe { std::slice::from_raw_parts(message.cast::<u8>(), message_len as usize) };
+            String::from_utf8_lossy(b).into_owned()
+        };
+        record(code, &text, None);
+        Ok(())
+    })
+}
+
 /// The name of a status code (`"PRESSRIDGE_ERR_BAD_SIZE"`, ...) by the required-length
 /// protocol of [`pressridge_last_error`]; unknown codes give `"unknown status"`.
 ///
@@ -348,6 +383,13 @@ mod tests {
         let rc = guard(|| Err(FfiError::new(PRESSRIDGE_ERR_IO, "x.nc: no such file")));
         assert_eq!(rc, PRESSRIDGE_ERR_IO);
         assert_eq!(message(), "x.nc: no such file");
+        let m = "shape of vicen";
+        let rc = unsafe { pressridge_set_error(PRESSRIDGE_ERR_BAD_SIZE, m.as_ptr().cast(), 14) };
+        assert_eq!(rc, PRESSRIDGE_OK);
+        assert_eq!(message(), m);
+        let rc = unsafe { pressridge_set_error(PRESSRIDGE_OK, m.as_ptr().cast(), 14) };
+        assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
+        assert_eq!(message(), m, "unchanged");
     }
 
     #[test]
