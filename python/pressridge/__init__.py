@@ -1,0 +1,543 @@
+"""pressridge for Python: ice strength and the ridging step on numpy arrays, the
+Hopkins (1994) pressure-ridge simulator, seeded campaigns and their lookup tables.
+
+Everything here calls the Rust library ``pressridge`` (the compiled module
+:mod:`pressridge._core`); no physics is done in Python. Units are SI throughout:
+area fractions are dimensionless, ``vicen`` is ice volume per unit grid-cell area (m),
+thicknesses are m, rates 1/s, strength N/m; the simulator's energies are J per metre of
+ridge and its forces N/m.
+
+Arrays of a thickness distribution have the category axis first and any spatial shape
+after it, e.g. ``aicen[ncat, nj, ni]``. C- and Fortran-ordered float64 arrays reach the
+library without a copy; other layouts and dtypes are converted first. Long calls release
+the GIL. Bad input raises :class:`ValueError` (or :class:`OSError` for files) with the
+library's message.
+
+The xarray/dask face is :mod:`pressridge.xr`.
+"""
+
+from __future__ import annotations
+
+import datetime as _dt
+import json as _json
+import os as _os
+import warnings as _warnings
+from typing import Any, Callable, NamedTuple, Optional, Sequence, Tuple, Union
+
+import numpy as _np
+
+from . import _core
+from ._table import Table
+
+__version__: str = _core.__version__
+
+__all__ = [
+    "CfClampedWarning",
+    "RidgeStepResult",
+    "Simulation",
+    "CampaignResult",
+    "Table",
+    "strength",
+    "ridge_step",
+    "category_bounds",
+    "simulate",
+    "scene",
+    "campaign",
+    "tabulate",
+    "PARAMETERS",
+    "DEFAULT_PARAMETERS",
+    "CF_PRESETS",
+]
+
+#: Names of the ITD parameters accepted as keywords by :func:`strength` and
+#: :func:`ridge_step` (the fields of the Rust ``ItdParams``).
+PARAMETERS: Tuple[str, ...] = tuple(_core.param_names())
+#: CICE/Icepack's default value of every parameter (SI units, see ``docs/strength.md``).
+DEFAULT_PARAMETERS: dict = dict(_core.default_params())
+#: Named constant values of C_f (dimensionless): ``hibler1980`` = 2, ``flato1991`` = 15,
+#: ``cice`` = 17.
+CF_PRESETS: dict = dict(_core.cf_presets())
+
+PathLike = Union[str, "_os.PathLike[str]"]
+CfLike = Union[None, float, str, "_os.PathLike[str]", Table, Tuple[Any, Any]]
+
+
+class CfClampedWarning(UserWarning):
+    """Some columns had ridging-ice thicknesses outside the C_f table: C_f was clamped to
+    the table's end values there."""
+
+
+def _f64(x: Any, name: str) -> _np.ndarray:
+    try:
+        a = _np.asarray(x, dtype=_np.float64)
+    except (TypeError, ValueError) as e:
+        raise ValueError(f"{name} must be an array of numbers: {e}") from None
+    return a
+
+
+def _bool(x: Any, name: str) -> _np.ndarray:
+    a = _np.asarray(x)
+    if a.dtype != _np.bool_:
+        raise ValueError(f"{name} must be a boolean array, got dtype {a.dtype}")
+    return a
+
+
+def _params(params: dict) -> list:
+    out = []
+    for k, v in params.items():
+        if k not in PARAMETERS:
+            raise ValueError(
+                f"unknown keyword or parameter `{k}`; parameters are: {', '.join(PARAMETERS)}"
+            )
+        try:
+            out.append((k, float(v)))
+        except (TypeError, ValueError):
+            raise ValueError(f"parameter `{k}` must be a number, got {v!r}") from None
+    return out
+
+
+def _cf_args(cf: CfLike) -> Tuple[Optional[float], Optional[tuple], Optional[str]]:
+    """Normalises ``cf`` to (constant, (thickness, cf) nodes, file) for the core."""
+    if cf is None:
+        return None, None, None
+    if isinstance(cf, Table):
+        return None, cf.cf_nodes(0), None
+    if isinstance(cf, (bool, _np.bool_)):
+        raise ValueError("cf must be a number, a preset name, a table or a file, not a bool")
+    if isinstance(cf, (int, float, _np.integer, _np.floating)):
+        return float(cf), None, None
+    if isinstance(cf, str) and cf in CF_PRESETS:
+        return CF_PRESETS[cf], None, None
+    if isinstance(cf, (str, _os.PathLike)):
+        p = _os.fspath(cf)
+        if isinstance(cf, str) and not _os.path.exists(p):
+            raise ValueError(
+                f"cf = {cf!r} is neither a C_f preset ({', '.join(CF_PRESETS)}) nor an "
+                "existing C_f table file"
+            )
+        return None, None, p
+    if isinstance(cf, tuple) and len(cf) == 2:
+        h = _f64(cf[0], "cf thickness nodes").ravel().tolist()
+        c = _f64(cf[1], "cf values").ravel().tolist()
+        return None, (h, c), None
+    raise ValueError(
+        "cf must be a number, a preset name "
+        f"({', '.join(CF_PRESETS)}), a (thickness, cf) pair of arrays, a pressridge.Table "
+        f"or the path of a C_f table file; got {type(cf).__name__}"
+    )
+
+
+def _resolve_cf(cf: CfLike) -> CfLike:
+    """``cf`` with files read into (thickness, cf) nodes, so that it pickles cheaply."""
+    value, nodes, path = _cf_args(cf)
+    if path is not None:
+        h, c = _core.read_cf_table(path)
+        return (h, c)
+    if nodes is not None:
+        return (_np.asarray(nodes[0]), _np.asarray(nodes[1]))
+    return value
+
+
+def _scalar_if_0d(a: _np.ndarray) -> Any:
+    return a[()] if a.ndim == 0 else a
+
+
+def strength(
+    aicen: Any,
+    vicen: Any,
+    aice0: Any = None,
+    *,
+    participation: str = "exponential",
+    redistribution: str = "exponential",
+    law: str = "rothrock",
+    cf: CfLike = None,
+    valid: Any = None,
+    **params: float,
+) -> Any:
+    """Ice strength P (N/m) of thickness distributions, as CICE/Icepack
+    ``icepack_ice_strength``.
+
+    Parameters
+    ----------
+    aicen : array_like, shape (ncat, ...)
+        Ice area fraction of each category (dimensionless), category axis first, then any
+        spatial shape.
+    vicen : array_like, same shape as ``aicen``
+        Ice volume per unit grid-cell area of each category (m).
+    aice0 : array_like, shape ``aicen.shape[1:]``, optional
+        Open-water fraction (dimensionless). Default: 1 - sum(aicen) (then sum(aicen) may
+        not exceed 1). When given, aice0 + sum(aicen) must be 1 within
+        ``area_tolerance`` (1e-6). A column with aice0 and every aicen exactly 0 (land)
+        has strength 0.
+    participation : {"exponential", "thorndike"}
+        Participation function: Lipscomb et al. (2007) (CICE ``krdg_partic = 1``, default)
+        or Thorndike et al. (1975) (0).
+    redistribution : {"exponential", "uniform"}
+        Ridged-ice redistribution: Lipscomb et al. (2007) (``krdg_redist = 1``, default)
+        or Hibler (1980) (0).
+    law : {"rothrock", "hibler"}
+        Rothrock (1975) energetics with C_f (``kstrength = 1``, default) or Hibler (1979)
+        P = P* h exp(-C* (1 - A)) (0).
+    cf : float, str, Table, path or (thickness, cf) pair, optional
+        Frictional factor C_f (dimensionless; Rothrock only): a number; a preset
+        ``"cice"`` (17, the default), ``"flato1991"`` (15), ``"hibler1980"`` (2); a
+        :class:`Table` (its first set's C_f against the ridging ice's thickness); the path
+        of a C_f table file (``thickness`` in m and ``cf``, as ``--cf-table``); or node
+        arrays ``(thickness_m, cf)``. Tables are interpolated linearly in the thickness of
+        the ridging category and clamped outside their range (with a
+        :class:`CfClampedWarning`).
+    valid : array_like of bool, shape ``aicen.shape[1:]``, optional
+        Columns to compute; the others (land, missing data) are not checked and get NaN.
+    **params : float
+        Overrides of the ITD parameters by name (see :data:`PARAMETERS`,
+        e.g. ``mu_rdg=4.0``, ``pstar=2.75e4``); defaults are CICE's.
+
+    Returns
+    -------
+    numpy.ndarray of shape ``aicen.shape[1:]`` (a float for 1-D input)
+        Strength P (N/m), in the memory order of ``aicen`` (C or Fortran).
+
+    Raises
+    ------
+    ValueError
+        NaN, infinite or negative values (naming the spatial index and category), areas
+        that do not sum to 1, mismatched shapes, unknown options or parameters.
+    OSError
+        An unreadable C_f table file (FileNotFoundError if it does not exist).
+    """
+    a = _f64(aicen, "aicen")
+    v = _f64(vicen, "vicen")
+    a0 = None if aice0 is None else _f64(aice0, "aice0")
+    ok = None if valid is None else _bool(valid, "valid")
+    value, nodes, path = _cf_args(cf)
+    out, clamped = _core.strength(
+        a,
+        v,
+        a0,
+        ok,
+        participation,
+        redistribution,
+        law,
+        value,
+        nodes,
+        path,
+        _params(params),
+    )
+    if clamped:
+        ncol = int(_np.prod(a.shape[1:], dtype=_np.int64))
+        _warnings.warn(
+            f"{clamped} of {ncol} columns had ridging-ice thicknesses outside the C_f "
+            "table; C_f was clamped to the table's end values there",
+            CfClampedWarning,
+            stacklevel=2,
+        )
+    return _scalar_if_0d(out)
+
+
+class RidgeStepResult(NamedTuple):
+    """The outcome of :func:`ridge_step`: the updated distribution and the rates."""
+
+    #: Area fraction of each category after the step (dimensionless), shape (ncat, ...).
+    aicen: Any
+    #: Ice volume per unit area of each category after the step (m).
+    vicen: Any
+    #: Open-water fraction after the step (dimensionless).
+    aice0: Any
+    #: Net closing rate requested at the start of the step (1/s).
+    closing: Any
+    #: Opening rate (1/s).
+    opening: Any
+    #: Rate of fractional area loss by ridging ice (1/s, CICE ``dardg1dt``).
+    dardg1dt: Any
+    #: Rate of fractional area gain by new ridges (1/s, CICE ``dardg2dt``).
+    dardg2dt: Any
+    #: Rate of ice volume ridged (m/s, CICE ``dvirdgdt``).
+    dvirdgdt: Any
+
+
+def ridge_step(
+    aicen: Any,
+    vicen: Any,
+    aice0: Any = None,
+    *,
+    dt: float,
+    convergence: Any,
+    shear: Any = 0.0,
+    hin_max: Any = None,
+    participation: str = "exponential",
+    redistribution: str = "exponential",
+    valid: Any = None,
+    **params: float,
+) -> RidgeStepResult:
+    """One ridging step, as CICE/Icepack ``ridge_ice``; the inputs are not modified.
+
+    Parameters
+    ----------
+    aicen, vicen : array_like, shape (ncat, ...)
+        Area fractions (dimensionless) and ice volumes per unit area (m) per category.
+    aice0 : array_like, shape ``aicen.shape[1:]``, optional
+        Open-water fraction; default max(1 - sum(aicen), 0). The total area may exceed 1
+        (up to ``max_area_before_ridging`` = 2, what advection leaves) or fall below it.
+    dt : float
+        Time step (s, > 0).
+    convergence : float or array_like
+        Convergence rate -min(div u, 0) (1/s, >= 0), a scalar or of the spatial shape.
+    shear : float or array_like
+        Shear term (Delta - |div u|)/2 (1/s, >= 0); a fraction ``cs`` of it ridges.
+        Default 0.
+    hin_max : array_like of ncat + 1 floats, optional
+        Category bounds (m); default CICE's ``kcatbound = 1`` bounds
+        (:func:`category_bounds`).
+    participation, redistribution : str
+        As in :func:`strength`.
+    valid : array_like of bool, optional
+        Columns to step; the others are left unchanged and their aice0 and rates are NaN.
+    **params : float
+        ITD parameter overrides (:data:`PARAMETERS`), e.g. ``cs=0.5``.
+
+    Returns
+    -------
+    RidgeStepResult
+        New arrays ``aicen``, ``vicen`` (in the memory order of the input), ``aice0`` and
+        the rates ``closing``, ``opening``, ``dardg1dt``, ``dardg2dt`` (1/s) and
+        ``dvirdgdt`` (m/s). Area and volume are conserved to round-off.
+    """
+    a = _f64(aicen, "aicen")
+    v = _f64(vicen, "vicen")
+    if a.ndim == 0:
+        raise ValueError("aicen has shape (); it needs the category axis first")
+    spatial = a.shape[1:]
+    a0 = None if aice0 is None else _f64(aice0, "aice0")
+    ok = None if valid is None else _bool(valid, "valid")
+
+    def field(x: Any, name: str) -> _np.ndarray:
+        f = _f64(x, name)
+        try:
+            return _np.broadcast_to(f, spatial)
+        except ValueError:
+            raise ValueError(
+                f"{name} has shape {f.shape}, which does not broadcast to the spatial "
+                f"shape of aicen {spatial}"
+            ) from None
+
+    conv = field(convergence, "convergence")
+    shr = field(shear, "shear")
+    h = None if hin_max is None else _f64(hin_max, "hin_max").ravel().tolist()
+    try:
+        dt_f = float(dt)
+    except (TypeError, ValueError):
+        raise ValueError(f"dt must be a number of seconds, got {dt!r}") from None
+    a_new, v_new, a0_new, rates = _core.ridge_step(
+        a,
+        v,
+        a0,
+        h,
+        conv,
+        shr,
+        dt_f,
+        ok,
+        participation,
+        redistribution,
+        _params(params),
+    )
+    return RidgeStepResult(
+        a_new, v_new, _scalar_if_0d(a0_new), *[_scalar_if_0d(r) for r in rates]
+    )
+
+
+def category_bounds(ncat: int, scheme: str = "round_numbers") -> _np.ndarray:
+    """The ``ncat + 1`` category bounds hin_max (m) of CICE's ``kcatbound`` options:
+    ``"round_numbers"`` (1, default: 0, 0.6, 1.4, 2.4, 3.6, 5 m for 5 categories),
+    ``"original"`` (0), ``"wmo"`` (2), ``"asymptotic"`` (3), ``"single"`` (-1)."""
+    return _core.category_bounds(int(ncat), scheme)
+
+
+# ---------------------------------------------------------------------------------------
+# The simulator
+
+
+def _toml_value(v: Any) -> str:
+    if isinstance(v, (bool, _np.bool_)):
+        return "true" if v else "false"
+    if isinstance(v, (int, _np.integer)):
+        return str(int(v))
+    if isinstance(v, (float, _np.floating)):
+        f = float(v)
+        if _np.isnan(f):
+            return "nan"
+        if _np.isinf(f):
+            return "inf" if f > 0 else "-inf"
+        return repr(f)
+    if isinstance(v, str):
+        return _json.dumps(v)
+    if isinstance(v, (list, tuple, _np.ndarray)):
+        return "[" + ", ".join(_toml_value(x) for x in v) + "]"
+    raise ValueError(f"cannot use {v!r} ({type(v).__name__}) as a scene value")
+
+
+def _overrides(overrides: dict, sets: Optional[Sequence[str]]) -> list:
+    out = list(sets or [])
+    for k, v in overrides.items():
+        out.append(f"{k.replace('__', '.')}={_toml_value(v)}")
+    return out
+
+
+class Simulation(NamedTuple):
+    """The outcome of :func:`simulate`."""
+
+    #: Headline numbers of the run (as ``summary.json`` of ``pressridge simulate``):
+    #: energies in J/m, times in s, volume in m³/m.
+    summary: dict
+    #: Time series sampled every ``numerics.sample_interval``: ``time`` (s), the energy
+    #: budget (J/m) and the forces ``ridging_force``, ``mean_force`` (N/m), as in
+    #: ``series.csv``.
+    series: dict
+    #: Unit of every series column.
+    units: dict
+    #: The resolved scene as TOML text.
+    scene: str
+
+
+def scene(scene: Optional[PathLike] = None, *, sets: Optional[Sequence[str]] = None, **overrides: Any) -> str:
+    """The resolved scene as TOML text (as ``pressridge simulate --print-scene``), with the
+    same arguments as :func:`simulate`."""
+    path = None if scene is None else _os.fspath(scene)
+    return _core.scene_toml(path, _overrides(overrides, sets))
+
+
+def simulate(
+    scene: Optional[PathLike] = None,
+    *,
+    sets: Optional[Sequence[str]] = None,
+    **overrides: Any,
+) -> Simulation:
+    """Runs the discrete-element ridge simulator on a scene.
+
+    Parameters
+    ----------
+    scene : path, optional
+        A scene file (TOML, e.g. ``data/scenes/figure5.toml``); the built-in default (the
+        paper's Figure 5 experiment, 400 s) when omitted.
+    sets : list of str, optional
+        Overrides as on the command line, ``"contact.mu=0.4"``.
+    **overrides
+        Overrides by keyword; a dotted key is written with ``__`` (``contact__mu=0.4``) or
+        passed as ``**{"contact.mu": 0.4}``. Values are numbers, booleans, strings or
+        lists, in the scene's units (SI: m, s, Pa, kg/m³).
+
+    Returns
+    -------
+    Simulation
+        ``summary`` (dict), ``series`` (dict of 1-D numpy arrays), ``units``, ``scene``.
+
+    The run releases the GIL; Ctrl-C stops it at the next sample with
+    :class:`KeyboardInterrupt`. Unknown keys and bad values raise :class:`ValueError`.
+    """
+    path = None if scene is None else _os.fspath(scene)
+    summary, toml, series = _core.simulate(path, _overrides(overrides, sets))
+    return Simulation(
+        summary=_json.loads(summary),
+        series=dict(series),
+        units=dict(_core.series_units()),
+        scene=toml,
+    )
+
+
+# ---------------------------------------------------------------------------------------
+# Campaigns and tables
+
+
+class CampaignResult(NamedTuple):
+    """Counts of a :func:`campaign` call."""
+
+    #: Runs found finished in the result directory and skipped.
+    skipped: int
+    #: Runs made by this call.
+    done: int
+    #: Runs in the campaign.
+    total: int
+
+
+def _run_planned_on_worker(run_json: str, spec_json: str, out: str) -> str:
+    """Runs one planned run on a dask worker and writes it into ``out``."""
+    from pressridge import _core as core
+
+    return core.campaign_run_planned(spec_json, run_json, out)
+
+
+def campaign(
+    spec: PathLike,
+    out: PathLike,
+    client: Any = None,
+    *,
+    threads: Optional[int] = None,
+    progress: Optional[Callable[[dict], None]] = None,
+) -> CampaignResult:
+    """Runs a seeded campaign (a spec TOML, as ``pressridge campaign``) into the result
+    directory ``out``, skipping runs already there.
+
+    With ``client=None`` the runs go to ``threads`` threads of this process (all cores by
+    default). With a :class:`dask.distributed.Client` every run still to do becomes one
+    task on the cluster; the workers must see ``out`` (a shared file system). Either way
+    the directory is the command line's: ``campaign.json``, ``plan.json`` and
+    ``runs/<id>/run.json`` with ``state.json``, each written atomically, so a campaign
+    interrupted anywhere resumes by calling this again. Runs are deterministic: the
+    records equal the command line's bit for bit (but for the wall-clock time).
+
+    ``progress``, if given, is called with a dict (``skipped``, ``done``, ``total``, and
+    without a client ``simulated`` seconds) as runs finish.
+
+    Raises :class:`ValueError` for a bad spec or a directory holding another campaign,
+    :class:`OSError` for files.
+    """
+    spec_p = _os.path.abspath(_os.fspath(spec))
+    out_p = _os.path.abspath(_os.fspath(out))
+    if client is None:
+        n = threads if threads is not None else (_os.cpu_count() or 1)
+        if int(n) < 1:
+            raise ValueError(f"threads must be at least 1, got {threads}")
+        skipped, done = _core.campaign_local(spec_p, out_p, int(n), progress)
+        return CampaignResult(skipped, done, skipped + done)
+    spec_json, todo, skipped, total = _core.campaign_prepare(spec_p, out_p)
+    if not todo:
+        return CampaignResult(skipped, 0, total)
+    from distributed import as_completed
+
+    futures = [
+        client.submit(
+            _run_planned_on_worker,
+            run_json,
+            spec_json,
+            out_p,
+            key=f"pressridge-run-{_json.loads(run_json)['id']}-{_os.urandom(4).hex()}",
+            pure=False,
+        )
+        for run_json in todo
+    ]
+    done = 0
+    try:
+        for fut in as_completed(futures):
+            fut.result()  # re-raises the worker's error (ValueError/OSError) here
+            done += 1
+            if progress is not None:
+                progress({"skipped": skipped, "done": done, "total": total})
+    finally:
+        for f in futures:
+            if not f.done():
+                f.cancel()
+    return CampaignResult(skipped, done, total)
+
+
+def tabulate(campaign_dir: PathLike, out: PathLike, *, points: int = 41) -> Table:
+    """Tabulates a campaign directory into a NetCDF lookup table, as ``pressridge
+    tabulate``: ensemble statistics of work (J/m), potential energy (J/m), their ratio and
+    the ridging force (N/m) on a grid of ``points`` ridged volumes (m³/m), fits (eqs
+    13-16) and C_f per thickness. Returns the table, opened."""
+    if int(points) < 2:
+        raise ValueError(f"points must be at least 2, got {points}")
+    cdir = _os.fspath(campaign_dir)
+    outp = _os.fspath(out)
+    command = f"pressridge.tabulate({cdir!r}, {outp!r}, points={int(points)}) (Python)"
+    date = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d")
+    _core.tabulate(cdir, outp, int(points), command, date)
+    return Table.open(outp)

@@ -1,0 +1,94 @@
+"""Type stubs of the compiled module ``pressridge._core`` (python/src/lib.rs).
+
+These functions take already-normalised arguments; the documented API is in
+``pressridge/__init__.py``, ``pressridge/_table.py`` and ``pressridge/xr.py``.
+"""
+
+from os import PathLike
+from typing import Callable, List, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+_Path = Union[str, PathLike[str]]
+_F64 = npt.NDArray[np.float64]
+_Bool = npt.NDArray[np.bool_]
+
+__version__: str
+
+def strength(
+    aicen: _F64,
+    vicen: _F64,
+    aice0: Optional[_F64],
+    valid: Optional[_Bool],
+    participation_name: str,
+    redistribution_name: str,
+    law_name: str,
+    cf_value: Optional[float],
+    cf_nodes: Optional[Tuple[Sequence[float], Sequence[float]]],
+    cf_file: Optional[_Path],
+    params: Sequence[Tuple[str, float]],
+) -> Tuple[_F64, int]:
+    """Strength P (N/m) of shape ``aicen.shape[1:]`` and the number of columns where a
+    C_f table was clamped."""
+
+def _layout(aicen: _F64) -> Tuple[str, str]:
+    """("view" | "copy", "C" | "F"): how ``aicen`` reaches the batch routines."""
+
+def ridge_step(
+    aicen: _F64,
+    vicen: _F64,
+    aice0: Optional[_F64],
+    hin_max: Optional[Sequence[float]],
+    convergence: _F64,
+    shear: _F64,
+    dt: float,
+    valid: Optional[_Bool],
+    participation_name: str,
+    redistribution_name: str,
+    params: Sequence[Tuple[str, float]],
+) -> Tuple[_F64, _F64, _F64, List[_F64]]:
+    """(aicen, vicen, aice0, [closing, opening, dardg1dt, dardg2dt, dvirdgdt])."""
+
+def category_bounds(ncat: int, scheme: str = "round_numbers") -> _F64: ...
+def param_names() -> List[str]: ...
+def cf_presets() -> List[Tuple[str, float]]: ...
+def read_cf_table(path: _Path) -> Tuple[_F64, _F64]: ...
+def default_params() -> dict[str, float]: ...
+def scene_toml(scene: Optional[_Path], sets: Sequence[str]) -> str: ...
+def simulate(
+    scene: Optional[_Path], sets: Sequence[str]
+) -> Tuple[str, str, List[Tuple[str, _F64]]]:
+    """(summary JSON, resolved scene TOML, [(series column, values)])."""
+
+def series_units() -> List[Tuple[str, str]]: ...
+def campaign_local(
+    spec: _Path, out: _Path, threads: int, progress: Optional[Callable[[dict], object]]
+) -> Tuple[int, int]:
+    """(skipped, done)."""
+
+def campaign_prepare(spec: _Path, out: _Path) -> Tuple[str, List[str], int, int]:
+    """(spec JSON, [planned run JSON still to do], skipped, total)."""
+
+def campaign_run_planned(spec_json: str, run_json: str, out: _Path) -> str:
+    """Runs one planned run, writes it; returns its id."""
+
+def tabulate(
+    campaign_dir: _Path, out: _Path, points: int, command: str, date: str
+) -> List[Tuple[str, float, float]]:
+    """[(set, thickness (m), C_f)]."""
+
+class RidgeLookup:
+    @staticmethod
+    def open(path: _Path) -> "RidgeLookup": ...
+    def sets(self) -> List[str]: ...
+    def thickness(self) -> _F64: ...
+    def volume(self) -> _F64: ...
+    def variables(self) -> List[str]: ...
+    def attribute(self, name: str) -> Optional[str]: ...
+    def field(self, name: str) -> Tuple[List[str], str, str, _F64]: ...
+    def value(
+        self, name: str, set: int, thickness: _F64, volume: _F64
+    ) -> Tuple[_F64, _Bool]: ...
+    def cf(self, set: int, thickness: _F64) -> Tuple[_F64, _Bool]: ...
+    def cf_nodes(self, set: int) -> Tuple[_F64, _F64]: ...

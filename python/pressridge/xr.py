@@ -1,0 +1,303 @@
+"""xarray and dask face of pressridge: ice strength and the ridging step on an
+:class:`xarray.Dataset` holding a thickness distribution.
+
+The dataset has ``aicen`` (dimensionless) and ``vicen`` (m) with the category dimension
+first (as ``data/sample_itd.nc`` and CICE history files, ``aicen(ncat, nj, ni)``), and
+optionally ``aice0``, ``hin_max`` (m, ncat + 1 values), ``divu`` and ``shear`` (1/s). The
+functions go through :func:`xarray.apply_ufunc` with ``dask="parallelized"``: on
+dask-backed data they stay lazy and work chunk by chunk, chunked over the spatial
+dimensions only (the category dimension is gathered into one chunk). Coordinates are kept;
+the outputs carry CF ``units`` and ``long_name`` and the options used as attributes.
+
+Missing data: when ``aicen``, ``vicen`` or ``aice0`` has a ``_FillValue`` or
+``missing_value`` (so that xarray decoded missing cells to NaN), columns with a NaN are
+treated as masked (land) and give NaN, as ``pressridge strength`` does with fill values.
+Otherwise a NaN is an error. ``mask=True``/``False`` forces either behaviour.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Hashable, List, Optional, Union
+
+import numpy as np
+import xarray as xr
+
+import pressridge as _pr
+
+__all__ = ["strength", "ridge_step"]
+
+
+def _category_vars(ds: xr.Dataset, category_dim: Optional[Hashable]):
+    for name in ("aicen", "vicen"):
+        if name not in ds:
+            raise ValueError(f"the dataset has no variable `{name}`")
+    aicen = ds["aicen"]
+    if aicen.ndim == 0:
+        raise ValueError("aicen is a scalar; it needs a category dimension")
+    cat = aicen.dims[0] if category_dim is None else category_dim
+    if cat not in aicen.dims:
+        raise ValueError(f"aicen has no dimension {cat!r} (dims {aicen.dims})")
+    vicen = ds["vicen"]
+    if set(vicen.dims) != set(aicen.dims):
+        raise ValueError(f"vicen has dimensions {vicen.dims}, expected those of aicen {aicen.dims}")
+    spatial = [d for d in aicen.dims if d != cat]
+    aice0 = ds["aice0"] if "aice0" in ds else None
+    if aice0 is not None and set(aice0.dims) != set(spatial):
+        raise ValueError(
+            f"aice0 has dimensions {aice0.dims}, expected the spatial dimensions {tuple(spatial)}"
+        )
+    # Category dimension whole, so chunks split the spatial dimensions only.
+    if aicen.chunks is not None:
+        aicen = aicen.chunk({cat: -1})
+    if vicen.chunks is not None:
+        vicen = vicen.chunk({cat: -1})
+    return aicen, vicen, aice0, cat, spatial
+
+
+def _has_fill(*vars: Optional[xr.DataArray]) -> bool:
+    keys = ("_FillValue", "missing_value")
+    return any(
+        v is not None and any(k in v.encoding or k in v.attrs for k in keys) for v in vars
+    )
+
+
+def _mask_flag(mask: Union[str, bool], *vars: Optional[xr.DataArray]) -> bool:
+    if mask == "auto":
+        return _has_fill(*vars)
+    if isinstance(mask, bool):
+        return mask
+    raise ValueError(f"mask must be 'auto', True or False, got {mask!r}")
+
+
+def _valid(a: np.ndarray, v: np.ndarray, a0: Optional[np.ndarray]) -> np.ndarray:
+    """Columns without a missing (NaN) value; a, v have the category axis first."""
+    bad = np.isnan(a).any(axis=0) | np.isnan(v).any(axis=0)
+    if a0 is not None:
+        bad |= np.isnan(a0)
+    return ~bad
+
+
+def _strength_block(a, v, *rest, has_aice0, mask, options):
+    # apply_ufunc moved the category axis last; put it first again (a view, no copy).
+    a = np.moveaxis(a, -1, 0)
+    v = np.moveaxis(v, -1, 0)
+    a0 = rest[0] if has_aice0 else None
+    valid = _valid(a, v, a0) if mask else None
+    return np.asarray(_pr.strength(a, v, a0, valid=valid, **options))
+
+
+def strength(
+    ds: xr.Dataset,
+    *,
+    participation: str = "exponential",
+    redistribution: str = "exponential",
+    law: str = "rothrock",
+    cf: Any = None,
+    category_dim: Optional[Hashable] = None,
+    mask: Union[str, bool] = "auto",
+    **params: float,
+) -> xr.DataArray:
+    """Ice strength P (N/m) of the thickness distribution in ``ds``.
+
+    Options and parameters as :func:`pressridge.strength` (``cf`` may be a number, a preset
+    name, a :class:`pressridge.Table`, a C_f table file or (thickness, cf) nodes).
+    ``category_dim`` names the category dimension (default: the first dimension of
+    ``aicen``); every other dimension is a column dimension.
+
+    Returns a :class:`xarray.DataArray` named ``strength`` on the spatial dimensions of
+    ``aicen``, with their coordinates; lazy (dask) when the input is. Errors in the data
+    raise :class:`ValueError` when computed.
+    """
+    aicen, vicen, aice0, cat, spatial = _category_vars(ds, category_dim)
+    use_mask = _mask_flag(mask, ds["aicen"], ds["vicen"], aice0)
+    # Read a C_f file once here, so that the tasks carry only small arrays.
+    options = dict(
+        participation=participation,
+        redistribution=redistribution,
+        law=law,
+        cf=_pr._resolve_cf(cf),
+        **params,
+    )
+    _pr._params(params)  # unknown names fail now, not at compute time
+    args: List[xr.DataArray] = [aicen, vicen]
+    if aice0 is not None:
+        args.append(aice0)
+    out = xr.apply_ufunc(
+        _strength_block,
+        *args,
+        input_core_dims=[[cat], [cat]] + [[]] * (len(args) - 2),
+        output_core_dims=[[]],
+        dask="parallelized",
+        output_dtypes=[np.float64],
+        kwargs=dict(has_aice0=aice0 is not None, mask=use_mask, options=options),
+        keep_attrs=True,  # keeps the coordinates' attributes; data attributes set below
+    )
+    out = out.transpose(*spatial)
+    out.name = "strength"
+    cf_desc = options["cf"]
+    out.attrs = {
+        "units": "N m-1",
+        "long_name": "compressive ice strength P",
+        "participation": participation,
+        "redistribution": redistribution,
+        "strength_formula": law,
+        "cf": _describe_cf(cf, cf_desc),
+        "parameter_overrides": ", ".join(f"{k}={v}" for k, v in params.items()) or "none",
+        "source": f"pressridge {_pr.__version__} (Python)",
+    }
+    return out
+
+
+def _describe_cf(cf: Any, resolved: Any) -> str:
+    if resolved is None:
+        return f"constant {_pr.CF_PRESETS['cice']}"
+    if isinstance(resolved, float):
+        return f"constant {resolved}"
+    h = np.asarray(resolved[0])
+    where = f" from {getattr(cf, 'path', cf)}" if not isinstance(cf, tuple) else ""
+    return f"table of {h.size} nodes, thickness {h.min()} to {h.max()} m{where}"
+
+
+_RATES = [
+    ("closing", "s-1", "net closing rate"),
+    ("opening", "s-1", "opening rate"),
+    ("dardg1dt", "s-1", "rate of area loss by ridging ice"),
+    ("dardg2dt", "s-1", "rate of area gain by new ridges"),
+    ("dvirdgdt", "m s-1", "rate of ice volume ridged"),
+]
+
+
+def _ridge_block(a, v, *rest, names, scalars, mask, options):
+    a = np.moveaxis(a, -1, 0)
+    v = np.moveaxis(v, -1, 0)
+    fields = dict(zip(names, rest))
+    fields.update(scalars)
+    a0 = fields.get("aice0")
+    valid = _valid(a, v, a0) if mask else None
+    r = _pr.ridge_step(
+        a,
+        v,
+        a0,
+        convergence=fields["convergence"],
+        shear=fields["shear"],
+        valid=valid,
+        **options,
+    )
+    return (
+        np.moveaxis(r.aicen, 0, -1),
+        np.moveaxis(r.vicen, 0, -1),
+        *[np.broadcast_to(np.asarray(x), a.shape[1:]) for x in r[2:]],
+    )
+
+
+def ridge_step(
+    ds: xr.Dataset,
+    *,
+    dt: float,
+    convergence: Any = None,
+    shear: Any = None,
+    hin_max: Any = None,
+    participation: str = "exponential",
+    redistribution: str = "exponential",
+    category_dim: Optional[Hashable] = None,
+    mask: Union[str, bool] = "auto",
+    **params: float,
+) -> xr.Dataset:
+    """One ridging step (``dt`` in s) of the thickness distribution in ``ds``.
+
+    ``convergence`` (1/s): a number or a DataArray on the spatial dimensions; default
+    max(-divu, 0) from the dataset's ``divu``. ``shear`` (1/s): likewise; default the
+    dataset's ``shear``, else 0. ``hin_max`` (m): default the dataset's, else CICE's
+    ``kcatbound = 1`` bounds. ``aice0`` defaults to max(1 - sum(aicen), 0). Other options as
+    :func:`pressridge.ridge_step`.
+
+    Returns a copy of ``ds`` (coordinates, attributes and other variables kept) with
+    ``aicen``, ``vicen``, ``aice0`` after the step and the rates ``closing``, ``opening``,
+    ``dardg1dt``, ``dardg2dt`` (1/s) and ``dvirdgdt`` (m/s); lazy when the input is dask.
+    """
+    aicen, vicen, aice0, cat, spatial = _category_vars(ds, category_dim)
+    use_mask = _mask_flag(mask, ds["aicen"], ds["vicen"], aice0)
+    _pr._params(params)
+    conv_desc = "max(-divu, 0) from input"
+    if convergence is None:
+        if "divu" not in ds:
+            raise ValueError("no convergence: pass convergence= or put `divu` in the dataset")
+        convergence = (-ds["divu"]).clip(min=0.0)
+    elif not isinstance(convergence, xr.DataArray):
+        conv_desc = f"{float(convergence)} s-1"
+    shear_desc = "from input (or 0)"
+    if shear is None:
+        shear = ds["shear"] if "shear" in ds else 0.0
+    elif not isinstance(shear, xr.DataArray):
+        shear_desc = f"{float(shear)} s-1"
+    if hin_max is None and "hin_max" in ds:
+        hin_max = ds["hin_max"].values
+    options = dict(
+        dt=dt,
+        hin_max=None if hin_max is None else np.asarray(hin_max, dtype=np.float64),
+        participation=participation,
+        redistribution=redistribution,
+        **params,
+    )
+    names: List[str] = []
+    arrays: List[xr.DataArray] = []
+    scalars = {}
+    for name, x in (("aice0", aice0), ("convergence", convergence), ("shear", shear)):
+        if x is None:
+            continue
+        if isinstance(x, xr.DataArray):
+            names.append(name)
+            arrays.append(x)
+        else:
+            scalars[name] = float(x)
+    results = xr.apply_ufunc(
+        _ridge_block,
+        aicen,
+        vicen,
+        *arrays,
+        input_core_dims=[[cat], [cat]] + [[]] * len(arrays),
+        output_core_dims=[[cat], [cat]] + [[]] * 6,
+        dask="parallelized",
+        output_dtypes=[np.float64] * 8,
+        kwargs=dict(names=tuple(names), scalars=scalars, mask=use_mask, options=options),
+        keep_attrs=True,  # keeps the coordinates' attributes; data attributes set below
+    )
+    out = ds.copy()
+    dims_cat = list(ds["aicen"].dims)
+    def with_attrs(r: xr.DataArray, dims: List[Hashable], attrs: dict) -> xr.DataArray:
+        r = r.transpose(*dims)
+        r.attrs = dict(attrs)
+        return r
+
+    for name in ("aicen", "vicen"):
+        out[name] = with_attrs(results[0 if name == "aicen" else 1], dims_cat, ds[name].attrs)
+    a0_attrs = (
+        ds["aice0"].attrs
+        if "aice0" in ds
+        else {"units": "1", "long_name": "open water fraction"}
+    )
+    out["aice0"] = with_attrs(results[2], spatial, a0_attrs)
+    for (name, units, long_name), r in zip(_RATES, results[3:]):
+        out[name] = with_attrs(r, spatial, {"units": units, "long_name": long_name})
+    if "hin_max" not in out:
+        h = (
+            _pr.category_bounds(ds.sizes[cat])
+            if options["hin_max"] is None
+            else options["hin_max"]
+        )
+        out["hin_max"] = xr.DataArray(
+            h, dims=[f"{cat}_bounds"], attrs={"units": "m", "long_name": "thickness category bounds"}
+        )
+    out.attrs.update(
+        {
+            "participation": participation,
+            "redistribution": redistribution,
+            "dt": f"{float(dt)} s",
+            "convergence": conv_desc,
+            "shear": shear_desc,
+            "parameter_overrides": ", ".join(f"{k}={v}" for k, v in params.items()) or "none",
+            "history": (ds.attrs.get("history", "") + "\n" if ds.attrs.get("history") else "")
+            + f"pressridge.xr.ridge_step (pressridge {_pr.__version__})",
+        }
+    )
+    return out

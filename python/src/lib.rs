@@ -1,0 +1,1145 @@
+//! `pressridge._core`: the compiled half of the Python package `pressridge`.
+//!
+//! A thin face over the library, like the command line: it converts numpy arrays to
+//! `ndarray` views (no copy for C- or F-ordered input), Python values to the library's
+//! options, calls the library with the GIL released, and turns the library's errors into
+//! `ValueError`/`OSError` with the library's message. No physics lives here. The Python
+//! modules `pressridge/__init__.py` and `pressridge/xr.py` hold the documented API; the
+//! functions here take already-normalised arguments.
+
+use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::Duration;
+
+use ndarray::{
+    ArrayBase, ArrayView, ArrayViewD, ArrayViewMut, ArrayViewMut1, ArrayViewMut2, ArrayViewMutD,
+    CowArray, Dimension, Ix1, Ix2, IxDyn, RawData,
+};
+use numpy::{PyArray1, PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn, PyUntypedArrayMethods};
+use pyo3::exceptions::{PyFileNotFoundError, PyOSError, PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use pressridge::campaign::{
+    self, CampaignError, CampaignSpec, PlannedRun, Progress, prepare_campaign, run_campaign,
+    run_planned,
+};
+use pressridge::io::IoError;
+use pressridge::io::itd_netcdf::{NetcdfError, read_cf_table};
+use pressridge::io::series::ENERGY_COLUMNS;
+use pressridge::io::table_netcdf::{Provenance, write_ridge_table};
+use pressridge::itd::{
+    CategoryBounds, Cf, CfPreset, CfTable, ItdError, ItdParams, Participation, Redistribution,
+    RidgeOptions, RidgeRatesMut, StrengthFormula, StrengthOptions, category_bounds,
+    ridge_batch_masked, strength_batch_masked,
+};
+use pressridge::scene::{Scene, SceneError};
+use pressridge::simulation;
+use pressridge::table::lookup::{LookupError, RidgeLookup};
+use pressridge::table::tabulate::tabulate as tabulate_records;
+
+// ---------------------------------------------------------------------------------------
+// Errors
+
+/// An error on its way to Python; `Send`, so it can leave a GIL-free section.
+#[derive(Debug)]
+enum BindError {
+    Value(String),
+    Os(String),
+    NotFound(String),
+    Internal(String),
+    Interrupted(PyErr),
+}
+
+impl From<BindError> for PyErr {
+    fn from(e: BindError) -> PyErr {
+        match e {
+            BindError::Value(m) => PyValueError::new_err(m),
+            BindError::Os(m) => PyOSError::new_err(m),
+            BindError::NotFound(m) => PyFileNotFoundError::new_err(m),
+            BindError::Internal(m) => PyRuntimeError::new_err(format!(
+                "pressridge internal error (a bug: please report it): {m}"
+            )),
+            BindError::Interrupted(e) => e,
+        }
+    }
+}
+
+fn value_err(m: impl ToString) -> BindError {
+    BindError::Value(m.to_string())
+}
+
+impl From<IoError> for BindError {
+    fn from(e: IoError) -> Self {
+        match &e {
+            IoError::Os { source, .. } if source.kind() == std::io::ErrorKind::NotFound => {
+                BindError::NotFound(e.to_string())
+            }
+            IoError::Os { .. } => BindError::Os(e.to_string()),
+            IoError::Format { .. } => BindError::Value(e.to_string()),
+        }
+    }
+}
+
+impl From<NetcdfError> for BindError {
+    fn from(e: NetcdfError) -> Self {
+        match &e {
+            NetcdfError::Netcdf { .. } => BindError::Os(e.to_string()),
+            _ => BindError::Value(e.to_string()),
+        }
+    }
+}
+
+impl From<CampaignError> for BindError {
+    fn from(e: CampaignError) -> Self {
+        match e {
+            CampaignError::Io(io) => io.into(),
+            other => BindError::Value(other.to_string()),
+        }
+    }
+}
+
+impl From<SceneError> for BindError {
+    fn from(e: SceneError) -> Self {
+        BindError::Value(e.to_string())
+    }
+}
+
+/// Runs `f`, turning a panic into [`BindError::Internal`] so that none reaches Python.
+fn guarded<T>(f: impl FnOnce() -> Result<T, BindError>) -> Result<T, BindError> {
+    match catch_unwind(AssertUnwindSafe(f)) {
+        Ok(r) => r,
+        Err(payload) => {
+            let msg = payload
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "panic".into());
+            Err(BindError::Internal(msg))
+        }
+    }
+}
+
+/// Runs `f` without the GIL and without letting a panic out.
+fn detached<T: Send>(
+    py: Python<'_>,
+    f: impl FnOnce() -> Result<T, BindError> + Send,
+) -> PyResult<T> {
+    py.detach(|| guarded(f)).map_err(PyErr::from)
+}
+
+fn file_missing(path: &Path) -> Result<(), BindError> {
+    if path.exists() {
+        Ok(())
+    } else {
+        Err(BindError::NotFound(format!(
+            "{}: No such file or directory",
+            path.display()
+        )))
+    }
+}
+
+/// Two 1-D arrays: node pairs, or lookup values with their clamp flags.
+type Pair<'py, T> = (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<T>>);
+
+// ---------------------------------------------------------------------------------------
+// Arrays: (ncat, spatial...) numpy arrays as (ncat, ncol) views
+
+/// How the spatial axes of an array are flattened into columns.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Order {
+    /// Last spatial axis fastest (C order).
+    C,
+    /// First spatial axis fastest (Fortran order): the spatial axes reversed, then C order.
+    F,
+}
+
+/// Merges the axes `first..` of `a` into one, in row-major order (the last axis fastest),
+/// without copying; `None` when the strides do not allow it. An array with no axis at
+/// `first` gets one of length 1.
+fn merge_tail<S: RawData>(a: ArrayBase<S, IxDyn>, first: usize) -> Option<ArrayBase<S, IxDyn>> {
+    let n = a.ndim();
+    if n <= first {
+        return Some(a.insert_axis(ndarray::Axis(first)));
+    }
+    let mut a = a;
+    for k in first..n - 1 {
+        if !a.merge_axes(ndarray::Axis(k), ndarray::Axis(k + 1)) {
+            return None;
+        }
+    }
+    for _ in first..n - 1 {
+        a = a.index_axis_move(ndarray::Axis(first), 0);
+    }
+    Some(a)
+}
+
+/// The axes of `a` (ndim axes, the first `lead` kept in place) in the order that flattens the
+/// others in `order`.
+fn flatten_perm(ndim: usize, lead: usize, order: Order) -> IxDyn {
+    let mut p: Vec<usize> = (0..ndim).collect();
+    if order == Order::F && ndim > lead {
+        p[lead..].reverse();
+    }
+    IxDyn(&p)
+}
+
+/// `a` with the axes after the first `lead` flattened in `order`: a view when the layout
+/// allows, else a copy.
+fn flatten<'a, T: Clone, D: Dimension>(
+    a: ArrayView<'a, T, IxDyn>,
+    lead: usize,
+    order: Order,
+) -> CowArray<'a, T, D> {
+    let perm = flatten_perm(a.ndim(), lead, order);
+    let p = a.permuted_axes(perm);
+    if let Some(m) = merge_tail(p.clone(), lead) {
+        return CowArray::from(m.into_dimensionality::<D>().expect("merged rank"));
+    }
+    let mut shape: Vec<usize> = p.shape()[..lead].to_vec();
+    shape.push(p.shape()[lead..].iter().product());
+    let owned = p
+        .to_shape((IxDyn(&shape), ndarray::Order::RowMajor))
+        .expect("element count is unchanged")
+        .into_owned();
+    CowArray::from(owned.into_dimensionality::<D>().expect("merged rank"))
+}
+
+/// `a` (ncat, spatial...) as (ncat, ncol), the spatial axes flattened in `order`.
+fn columns<'a>(a: ArrayViewD<'a, f64>, order: Order) -> CowArray<'a, f64, Ix2> {
+    flatten(a, 1, order)
+}
+
+/// A spatial array (no category axis) flattened in `order`.
+fn flat<'a>(a: ArrayViewD<'a, f64>, order: Order) -> CowArray<'a, f64, Ix1> {
+    flatten(a, 0, order)
+}
+
+fn flat_bool<'a>(a: ArrayViewD<'a, bool>, order: Order) -> CowArray<'a, bool, Ix1> {
+    flatten(a, 0, order)
+}
+
+/// The flattening order that makes `aicen` a view: C if its spatial axes merge in C order,
+/// else F if they merge in Fortran order, else C (and a copy).
+fn choose_order(a: &ArrayViewD<'_, f64>) -> Order {
+    if a.ndim() <= 2 || columns(a.view(), Order::C).is_view() {
+        Order::C
+    } else if columns(a.view(), Order::F).is_view() {
+        Order::F
+    } else {
+        Order::C
+    }
+}
+
+/// A new numpy array of `shape` laid out so that flattening its spatial axes in `order` is a
+/// view (C order for [`Order::C`], Fortran order for [`Order::F`]).
+fn new_array<'py>(py: Python<'py>, shape: &[usize], order: Order) -> Bound<'py, PyArrayDyn<f64>> {
+    PyArrayDyn::<f64>::zeros(py, IxDyn(shape), order == Order::F)
+}
+
+/// A freshly made `out` with the axes after the first `lead` flattened in `order`.
+fn flatten_mut<'a, D: Dimension>(
+    a: ArrayViewMutD<'a, f64>,
+    lead: usize,
+    order: Order,
+) -> ArrayViewMut<'a, f64, D> {
+    let perm = flatten_perm(a.ndim(), lead, order);
+    let p = a.permuted_axes(perm);
+    merge_tail(p, lead)
+        .expect("a freshly made array in the chosen order flattens without a copy")
+        .into_dimensionality::<D>()
+        .expect("merged rank")
+}
+
+fn columns_mut<'a>(a: ArrayViewMutD<'a, f64>, order: Order) -> ArrayViewMut2<'a, f64> {
+    flatten_mut(a, 1, order)
+}
+
+fn flat_mut<'a>(a: ArrayViewMutD<'a, f64>, order: Order) -> ArrayViewMut1<'a, f64> {
+    flatten_mut(a, 0, order)
+}
+
+/// The spatial index of flat column `c` (flattened in `order`), as `(i, j, ...)`.
+fn spatial_index(spatial: &[usize], order: Order, c: usize) -> String {
+    let mut dims: Vec<usize> = spatial.to_vec();
+    if order == Order::F {
+        dims.reverse();
+    }
+    let mut idx = vec![0; dims.len()];
+    let mut rem = c;
+    for k in (0..dims.len()).rev() {
+        idx[k] = rem % dims[k];
+        rem /= dims[k];
+    }
+    if order == Order::F {
+        idx.reverse();
+    }
+    let parts: Vec<String> = idx.iter().map(|i| i.to_string()).collect();
+    if parts.len() == 1 {
+        format!("({},)", parts[0])
+    } else {
+        format!("({})", parts.join(", "))
+    }
+}
+
+/// A physics error with the column located by its index in the caller's spatial axes.
+fn itd_err(e: ItdError, spatial: &[usize], order: Order) -> BindError {
+    match e {
+        ItdError::Column { column, source } => {
+            if spatial.is_empty() {
+                value_err(source)
+            } else {
+                value_err(format!(
+                    "at spatial index {}: {source}",
+                    spatial_index(spatial, order, column)
+                ))
+            }
+        }
+        other => value_err(other),
+    }
+}
+
+fn check_shape(var: &str, found: &[usize], expected: &[usize], what: &str) -> PyResult<()> {
+    if found != expected {
+        return Err(value_err(format!(
+            "{var} has shape {}, expected {what} {}",
+            shape_str(found),
+            shape_str(expected)
+        ))
+        .into());
+    }
+    Ok(())
+}
+
+fn shape_str(s: &[usize]) -> String {
+    match s.len() {
+        1 => format!("({},)", s[0]),
+        _ => format!(
+            "({})",
+            s.iter()
+                .map(|x| x.to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+    }
+}
+
+/// Checks aicen/vicen and returns the spatial shape.
+fn category_shapes(
+    aicen: &PyReadonlyArrayDyn<'_, f64>,
+    vicen: &PyReadonlyArrayDyn<'_, f64>,
+) -> PyResult<Vec<usize>> {
+    let shape = aicen.shape().to_vec();
+    if shape.is_empty() || shape[0] == 0 {
+        return Err(value_err(format!(
+            "aicen has shape {}; it needs the category axis first, of length >= 1, then any spatial axes",
+            shape_str(&shape)
+        ))
+        .into());
+    }
+    check_shape("vicen", vicen.shape(), &shape, "the shape of aicen")?;
+    Ok(shape[1..].to_vec())
+}
+
+// ---------------------------------------------------------------------------------------
+// Options
+
+fn participation(name: &str) -> PyResult<Participation> {
+    match name {
+        "exponential" => Ok(Participation::Exponential),
+        "thorndike" => Ok(Participation::Thorndike),
+        _ => Err(value_err(format!(
+            "unknown participation `{name}`; use \"exponential\" (Lipscomb et al. 2007, CICE default) or \"thorndike\" (Thorndike et al. 1975)"
+        ))
+        .into()),
+    }
+}
+
+fn redistribution(name: &str) -> PyResult<Redistribution> {
+    match name {
+        "exponential" => Ok(Redistribution::Exponential),
+        "uniform" => Ok(Redistribution::Uniform),
+        _ => Err(value_err(format!(
+            "unknown redistribution `{name}`; use \"exponential\" (Lipscomb et al. 2007, CICE default) or \"uniform\" (Hibler 1980)"
+        ))
+        .into()),
+    }
+}
+
+fn law(name: &str) -> PyResult<StrengthFormula> {
+    match name {
+        "rothrock" => Ok(StrengthFormula::Rothrock),
+        "hibler" => Ok(StrengthFormula::Hibler1979),
+        _ => Err(value_err(format!(
+            "unknown strength law `{name}`; use \"rothrock\" (Rothrock 1975, CICE default) or \"hibler\" (Hibler 1979)"
+        ))
+        .into()),
+    }
+}
+
+fn itd_params(params: Vec<(String, f64)>) -> PyResult<ItdParams> {
+    let mut p = ItdParams::default();
+    for (name, value) in params {
+        if !ItdParams::NAMES.contains(&name.as_str()) {
+            return Err(value_err(format!(
+                "unknown parameter `{name}`; known parameters: {}",
+                ItdParams::NAMES.join(", ")
+            ))
+            .into());
+        }
+        p.set(&name, value).map_err(value_err)?;
+    }
+    Ok(p)
+}
+
+/// The frictional factor from the normalised Python argument: a number, node arrays, a
+/// C_f-table file, or a lookup table object's set.
+fn cf_from(
+    py: Python<'_>,
+    cf_value: Option<f64>,
+    cf_nodes: Option<(Vec<f64>, Vec<f64>)>,
+    cf_file: Option<PathBuf>,
+) -> PyResult<Cf> {
+    match (cf_value, cf_nodes, cf_file) {
+        (Some(v), None, None) => Ok(Cf::Constant(v)),
+        (None, Some((h, c)), None) => {
+            Ok(Cf::Table(Arc::new(CfTable::new(h, c).map_err(value_err)?)))
+        }
+        (None, None, Some(path)) => {
+            let t = detached(py, || {
+                file_missing(&path)?;
+                read_cf_table(&path).map_err(BindError::from)
+            })?;
+            Ok(Cf::Table(Arc::new(t)))
+        }
+        (None, None, None) => Ok(Cf::default()),
+        _ => Err(value_err("give C_f one way only").into()),
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Strength and ridging
+
+/// Ice strength P (N/m); see `pressridge.strength`. Returns (P, columns with a clamped C_f).
+#[pyfunction]
+#[pyo3(signature = (aicen, vicen, aice0, valid, participation_name, redistribution_name, law_name, cf_value, cf_nodes, cf_file, params))]
+#[allow(clippy::too_many_arguments)]
+fn strength<'py>(
+    py: Python<'py>,
+    aicen: PyReadonlyArrayDyn<'py, f64>,
+    vicen: PyReadonlyArrayDyn<'py, f64>,
+    aice0: Option<PyReadonlyArrayDyn<'py, f64>>,
+    valid: Option<PyReadonlyArrayDyn<'py, bool>>,
+    participation_name: &str,
+    redistribution_name: &str,
+    law_name: &str,
+    cf_value: Option<f64>,
+    cf_nodes: Option<(Vec<f64>, Vec<f64>)>,
+    cf_file: Option<PathBuf>,
+    params: Vec<(String, f64)>,
+) -> PyResult<(Bound<'py, PyArrayDyn<f64>>, usize)> {
+    let spatial = category_shapes(&aicen, &vicen)?;
+    if let Some(a0) = &aice0 {
+        check_shape("aice0", a0.shape(), &spatial, "the spatial shape of aicen")?;
+    }
+    if let Some(v) = &valid {
+        check_shape("valid", v.shape(), &spatial, "the spatial shape of aicen")?;
+    }
+    let opts = StrengthOptions {
+        participation: participation(participation_name)?,
+        redistribution: redistribution(redistribution_name)?,
+        formula: law(law_name)?,
+        cf: cf_from(py, cf_value, cf_nodes, cf_file)?,
+        params: itd_params(params)?,
+    };
+    let a = aicen.as_array();
+    let order = choose_order(&a);
+    let out = new_array(py, &spatial, order);
+    let mut out_rw = out.readwrite();
+    let out_view = flat_mut(out_rw.as_array_mut(), order);
+    let a2 = columns(a, order);
+    let v2 = columns(vicen.as_array(), order);
+    let a0 = aice0.as_ref().map(|x| flat(x.as_array(), order));
+    let ok = valid.as_ref().map(|x| flat_bool(x.as_array(), order));
+    let summary = detached(py, || {
+        strength_batch_masked(
+            a2.view(),
+            v2.view(),
+            a0.as_ref().map(|x| x.view()),
+            ok.as_ref().map(|x| x.view()),
+            f64::NAN,
+            &opts,
+            out_view,
+        )
+        .map_err(|e| itd_err(e, &spatial, order))
+    })?;
+    drop(out_rw);
+    Ok((out, summary.cf_clamped_columns))
+}
+
+/// Whether `aicen` passes to the batch routines as a view ("view") or is copied ("copy"),
+/// and the flattening order; for tests of the no-copy promise.
+#[pyfunction]
+#[pyo3(name = "_layout")]
+fn layout(aicen: PyReadonlyArrayDyn<'_, f64>) -> (String, String) {
+    let a = aicen.as_array();
+    let order = choose_order(&a);
+    let kind = if a.ndim() == 0 || columns(a.view(), order).is_view() {
+        "view"
+    } else {
+        "copy"
+    };
+    (kind.into(), format!("{order:?}"))
+}
+
+type RidgeOut<'py> = (
+    Bound<'py, PyArrayDyn<f64>>,
+    Bound<'py, PyArrayDyn<f64>>,
+    Bound<'py, PyArrayDyn<f64>>,
+    [Bound<'py, PyArrayDyn<f64>>; 5],
+);
+
+/// One ridging step; see `pressridge.ridge_step`. Returns new arrays (aicen, vicen, aice0,
+/// [closing, opening, dardg1dt, dardg2dt, dvirdgdt]); the inputs are not modified.
+#[pyfunction]
+#[pyo3(signature = (aicen, vicen, aice0, hin_max, convergence, shear, dt, valid, participation_name, redistribution_name, params))]
+#[allow(clippy::too_many_arguments)]
+fn ridge_step<'py>(
+    py: Python<'py>,
+    aicen: PyReadonlyArrayDyn<'py, f64>,
+    vicen: PyReadonlyArrayDyn<'py, f64>,
+    aice0: Option<PyReadonlyArrayDyn<'py, f64>>,
+    hin_max: Option<Vec<f64>>,
+    convergence: PyReadonlyArrayDyn<'py, f64>,
+    shear: PyReadonlyArrayDyn<'py, f64>,
+    dt: f64,
+    valid: Option<PyReadonlyArrayDyn<'py, bool>>,
+    participation_name: &str,
+    redistribution_name: &str,
+    params: Vec<(String, f64)>,
+) -> PyResult<RidgeOut<'py>> {
+    let spatial = category_shapes(&aicen, &vicen)?;
+    let full = aicen.shape().to_vec();
+    let ncat = full[0];
+    for (var, x) in [("convergence", &convergence), ("shear", &shear)] {
+        check_shape(var, x.shape(), &spatial, "the spatial shape of aicen")?;
+    }
+    if let Some(a0) = &aice0 {
+        check_shape("aice0", a0.shape(), &spatial, "the spatial shape of aicen")?;
+    }
+    if let Some(v) = &valid {
+        check_shape("valid", v.shape(), &spatial, "the spatial shape of aicen")?;
+    }
+    let opts = RidgeOptions {
+        participation: participation(participation_name)?,
+        redistribution: redistribution(redistribution_name)?,
+        params: itd_params(params)?,
+    };
+    let hin_max = match hin_max {
+        Some(h) => h,
+        None => category_bounds(&CategoryBounds::RoundNumbers, ncat).map_err(value_err)?,
+    };
+    let a = aicen.as_array();
+    let order = choose_order(&a);
+    // Outputs in the input's layout; the step works on them in place.
+    let a_out = new_array(py, &full, order);
+    let v_out = new_array(py, &full, order);
+    let a0_out = new_array(py, &spatial, order);
+    let rates: [Bound<'py, PyArrayDyn<f64>>; 5] =
+        std::array::from_fn(|_| new_array(py, &spatial, order));
+    {
+        let mut a_rw = a_out.readwrite();
+        let mut v_rw = v_out.readwrite();
+        let mut a0_rw = a0_out.readwrite();
+        let mut a_cols = columns_mut(a_rw.as_array_mut(), order);
+        let mut v_cols = columns_mut(v_rw.as_array_mut(), order);
+        let mut a0_flat = flat_mut(a0_rw.as_array_mut(), order);
+        a_cols.assign(&columns(a, order));
+        v_cols.assign(&columns(vicen.as_array(), order));
+        match &aice0 {
+            Some(x) => a0_flat.assign(&flat(x.as_array(), order)),
+            // The open water the categories leave, none when they fill the cell (round-off
+            // or advection), as the strength routine's default.
+            None => {
+                for (c, x) in a0_flat.iter_mut().enumerate() {
+                    *x = f64::max(1.0 - a_cols.column(c).sum(), 0.0);
+                }
+            }
+        }
+        let conv = flat(convergence.as_array(), order);
+        let shr = flat(shear.as_array(), order);
+        let ok = valid.as_ref().map(|x| flat_bool(x.as_array(), order));
+        let mut r_rw: Vec<_> = rates.iter().map(|r| r.readwrite()).collect();
+        let mut r_views: Vec<ArrayViewMut1<'_, f64>> = r_rw
+            .iter_mut()
+            .map(|r| flat_mut(r.as_array_mut(), order))
+            .collect();
+        let dvirdgdt = r_views.pop().expect("five rates");
+        let dardg2dt = r_views.pop().expect("five rates");
+        let dardg1dt = r_views.pop().expect("five rates");
+        let opening = r_views.pop().expect("five rates");
+        let closing = r_views.pop().expect("five rates");
+        detached(py, || {
+            ridge_batch_masked(
+                a_cols,
+                v_cols,
+                a0_flat.view_mut(),
+                &hin_max,
+                conv.view(),
+                shr.view(),
+                ok.as_ref().map(|x| x.view()),
+                f64::NAN,
+                dt,
+                &opts,
+                RidgeRatesMut {
+                    closing,
+                    opening,
+                    dardg1dt,
+                    dardg2dt,
+                    dvirdgdt,
+                },
+            )
+            .map_err(|e| itd_err(e, &spatial, order))?;
+            // Masked columns keep their (missing) values, like their rates.
+            if let Some(ok) = &ok {
+                for (x, &good) in a0_flat.iter_mut().zip(ok.iter()) {
+                    if !good {
+                        *x = f64::NAN;
+                    }
+                }
+            }
+            Ok(())
+        })?;
+    }
+    Ok((a_out, v_out, a0_out, rates))
+}
+
+/// The `ncat + 1` category bounds hin_max (m) of a CICE `kcatbound` option.
+#[pyfunction]
+#[pyo3(name = "category_bounds", signature = (ncat, scheme = "round_numbers"))]
+fn category_bounds_py<'py>(
+    py: Python<'py>,
+    ncat: usize,
+    scheme: &str,
+) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    let b = match scheme {
+        "original" => CategoryBounds::Original,
+        "round_numbers" => CategoryBounds::RoundNumbers,
+        "wmo" => CategoryBounds::Wmo,
+        "asymptotic" => CategoryBounds::Asymptotic,
+        "single" => CategoryBounds::SingleCategory,
+        _ => {
+            return Err(value_err(format!(
+                "unknown category-bounds scheme `{scheme}`; use \"round_numbers\" (CICE kcatbound = 1, default), \"original\" (0), \"wmo\" (2), \"asymptotic\" (3) or \"single\" (-1)"
+            ))
+            .into());
+        }
+    };
+    let h = category_bounds(&b, ncat).map_err(value_err)?;
+    Ok(PyArray1::from_vec(py, h))
+}
+
+/// The named constant values of C_f (dimensionless): (name, value) pairs.
+#[pyfunction]
+fn cf_presets() -> Vec<(&'static str, f64)> {
+    vec![
+        ("hibler1980", CfPreset::Hibler1980.value()),
+        ("flato1991", CfPreset::Flato1991.value()),
+        ("cice", CfPreset::Cice.value()),
+    ]
+}
+
+/// Reads a C_f table file (1-D `thickness` in m and `cf`, as `--cf-table` of the command
+/// line); returns its nodes (thickness, cf), validated.
+#[pyfunction]
+#[pyo3(name = "read_cf_table")]
+fn read_cf_table_py<'py>(py: Python<'py>, path: PathBuf) -> PyResult<Pair<'py, f64>> {
+    let t = detached(py, || {
+        file_missing(&path)?;
+        read_cf_table(&path).map_err(BindError::from)
+    })?;
+    Ok((
+        PyArray1::from_slice(py, t.thickness()),
+        PyArray1::from_slice(py, t.values()),
+    ))
+}
+
+/// Names of the parameters that `strength` and `ridge_step` accept as keywords.
+#[pyfunction]
+fn param_names() -> Vec<&'static str> {
+    ItdParams::NAMES.to_vec()
+}
+
+/// CICE's default value of every parameter, as a dict.
+#[pyfunction]
+fn default_params<'py>(py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+    let p = ItdParams::default();
+    let d = PyDict::new(py);
+    for (k, v) in [
+        ("rhoi", p.rhoi),
+        ("rhow", p.rhow),
+        ("gravit", p.gravit),
+        ("gstar", p.gstar),
+        ("astar", p.astar),
+        ("hstar", p.hstar),
+        ("maxraft", p.maxraft),
+        ("mu_rdg", p.mu_rdg),
+        ("cs", p.cs),
+        ("pstar", p.pstar),
+        ("cstar", p.cstar),
+        ("puny", p.puny),
+        ("exp_argmax", p.exp_argmax),
+        ("big", p.big),
+        ("nitermax", p.nitermax as f64),
+        ("area_tolerance", p.area_tolerance),
+        ("max_area_before_ridging", p.max_area_before_ridging),
+    ] {
+        d.set_item(k, v)?;
+    }
+    Ok(d)
+}
+
+// ---------------------------------------------------------------------------------------
+// The simulator
+
+/// The resolved scene: a TOML file (or the built-in default) with `key=value` overrides.
+fn load_scene(path: Option<&Path>, sets: &[String]) -> Result<Scene, BindError> {
+    let base = match path {
+        Some(p) => {
+            let text = std::fs::read_to_string(p).map_err(|e| IoError::Os {
+                path: p.to_path_buf(),
+                source: e,
+            })?;
+            Scene::from_toml(&text).map_err(|e| value_err(format!("{}: {e}", p.display())))?
+        }
+        None => Scene::default(),
+    };
+    Ok(base.with_overrides(sets)?)
+}
+
+/// The resolved scene as TOML text.
+#[pyfunction]
+#[pyo3(signature = (scene, sets))]
+fn scene_toml(scene: Option<PathBuf>, sets: Vec<String>) -> PyResult<String> {
+    Ok(guarded(|| load_scene(scene.as_deref(), &sets))?.to_toml())
+}
+
+type SimOut<'py> = (String, String, Vec<(String, Bound<'py, PyArray1<f64>>)>);
+
+/// Runs a scene; returns (summary JSON, resolved scene TOML, [(column, samples)]).
+/// Ctrl-C stops the run at the next sample with `KeyboardInterrupt`.
+#[pyfunction]
+#[pyo3(signature = (scene, sets))]
+fn simulate<'py>(
+    py: Python<'py>,
+    scene: Option<PathBuf>,
+    sets: Vec<String>,
+) -> PyResult<SimOut<'py>> {
+    let sc = guarded(|| load_scene(scene.as_deref(), &sets))?;
+    let out = detached(py, || {
+        let mut interrupted: Option<PyErr> = None;
+        let out = simulation::run(&sc, &mut |_| {
+            let r = Python::attach(|py| py.check_signals());
+            match r {
+                Ok(()) => true,
+                Err(e) => {
+                    interrupted = Some(e);
+                    false
+                }
+            }
+        })?;
+        match interrupted {
+            Some(e) => Err(BindError::Interrupted(e)),
+            None => Ok(out),
+        }
+    })?;
+    let summary = serde_json::to_string(&out.summary).map_err(value_err)?;
+    let mut cols: Vec<Vec<f64>> = vec![Vec::with_capacity(out.series.len()); ENERGY_COLUMNS.len()];
+    for s in &out.series {
+        let e = &s.energy;
+        let row = [
+            e.time,
+            e.work,
+            e.potential_energy,
+            e.kinetic_energy,
+            e.friction_dissipation,
+            e.viscous_dissipation,
+            e.drag_dissipation,
+            e.elastic_energy,
+            e.other_dissipation,
+            e.residual,
+            s.ridging_force,
+            s.mean_force,
+        ];
+        for (c, x) in cols.iter_mut().zip(row) {
+            c.push(x);
+        }
+    }
+    let series = ENERGY_COLUMNS
+        .iter()
+        .zip(cols)
+        .map(|((name, _), c)| (name.to_string(), PyArray1::from_vec(py, c)))
+        .collect();
+    Ok((summary, sc.to_toml(), series))
+}
+
+/// Units of the time-series columns, as (name, unit) pairs.
+#[pyfunction]
+fn series_units() -> Vec<(&'static str, &'static str)> {
+    ENERGY_COLUMNS.to_vec()
+}
+
+// ---------------------------------------------------------------------------------------
+// Campaigns and tables
+
+fn read_spec(spec: &Path) -> Result<(CampaignSpec, PathBuf), BindError> {
+    let s = CampaignSpec::read(spec)?;
+    let base = spec.parent().map(|p| p.to_path_buf()).unwrap_or_default();
+    Ok((s, base))
+}
+
+/// Runs a campaign on `threads` threads in this process (`run_campaign`); returns
+/// (skipped, done). Ctrl-C ends it after the runs in flight, with `KeyboardInterrupt`.
+/// `progress`, if given, is called about once a second with a dict (skipped, done, total,
+/// simulated seconds).
+#[pyfunction]
+#[pyo3(signature = (spec, out, threads, progress))]
+fn campaign_local(
+    py: Python<'_>,
+    spec: PathBuf,
+    out: PathBuf,
+    threads: usize,
+    progress: Option<Py<PyAny>>,
+) -> PyResult<(usize, usize)> {
+    let (spec_v, base) = guarded(|| read_spec(&spec))?;
+    let stop = AtomicBool::new(false);
+    let latest = std::sync::Mutex::new(None::<Progress>);
+    let mut interrupted: Option<PyErr> = None;
+    let mut callback_err: Option<PyErr> = None;
+    let result = py.detach(|| {
+        std::thread::scope(|s| {
+            let worker = s.spawn(|| {
+                guarded(|| {
+                    run_campaign(
+                        &spec_v,
+                        &base,
+                        &out,
+                        threads,
+                        &|p| *latest.lock().expect("progress lock") = Some(p),
+                        &stop,
+                    )
+                    .map_err(BindError::from)
+                })
+            });
+            let mut ticks = 0u32;
+            while !worker.is_finished() {
+                std::thread::sleep(Duration::from_millis(50));
+                ticks += 1;
+                Python::attach(|py| {
+                    if interrupted.is_none()
+                        && let Err(e) = py.check_signals()
+                    {
+                        interrupted = Some(e);
+                        stop.store(true, Ordering::Relaxed);
+                    }
+                    if ticks % 20 == 0
+                        && callback_err.is_none()
+                        && let Some(cb) = &progress
+                        && let Some(p) = *latest.lock().expect("progress lock")
+                    {
+                        let d = PyDict::new(py);
+                        let r = d
+                            .set_item("skipped", p.skipped)
+                            .and_then(|_| d.set_item("done", p.done))
+                            .and_then(|_| d.set_item("total", p.total))
+                            .and_then(|_| d.set_item("simulated", p.simulated))
+                            .and_then(|_| cb.call1(py, (d,)).map(|_| ()));
+                        if let Err(e) = r {
+                            callback_err = Some(e);
+                            stop.store(true, Ordering::Relaxed);
+                        }
+                    }
+                });
+            }
+            worker
+                .join()
+                .unwrap_or_else(|_| Err(BindError::Internal("campaign thread panicked".into())))
+        })
+    });
+    if let Some(e) = interrupted {
+        return Err(e);
+    }
+    if let Some(e) = callback_err {
+        return Err(e);
+    }
+    Ok(result?)
+}
+
+/// Prepares a campaign directory (`prepare_campaign`); returns (spec JSON, [planned run
+/// JSON] still to do, skipped, total).
+#[pyfunction]
+fn campaign_prepare(
+    py: Python<'_>,
+    spec: PathBuf,
+    out: PathBuf,
+) -> PyResult<(String, Vec<String>, usize, usize)> {
+    detached(py, || {
+        let (s, base) = read_spec(&spec)?;
+        let prepared = prepare_campaign(&s, &base, &out)?;
+        let todo = prepared
+            .todo
+            .iter()
+            .map(|p| serde_json::to_string(p).map_err(value_err))
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok((
+            serde_json::to_string(&s).map_err(value_err)?,
+            todo,
+            prepared.skipped,
+            prepared.plan.len(),
+        ))
+    })
+}
+
+/// Runs one planned run (JSON from `campaign_prepare`) and writes it into `out`
+/// (`run_planned`); returns the run id. Meant to run on a dask worker.
+#[pyfunction]
+fn campaign_run_planned(
+    py: Python<'_>,
+    spec_json: &str,
+    run_json: &str,
+    out: PathBuf,
+) -> PyResult<String> {
+    let spec: CampaignSpec = serde_json::from_str(spec_json)
+        .map_err(|e| value_err(format!("campaign spec JSON: {e}")))?;
+    let run: PlannedRun =
+        serde_json::from_str(run_json).map_err(|e| value_err(format!("planned run JSON: {e}")))?;
+    detached(py, || {
+        run_planned(&run, &spec, &out, &|_| {})?;
+        Ok(run.id.clone())
+    })
+}
+
+/// Tabulates a campaign directory into a NetCDF lookup table (as `pressridge tabulate`);
+/// returns one line per set and thickness with its C_f.
+#[pyfunction]
+#[pyo3(signature = (campaign_dir, out, points, command, date))]
+fn tabulate(
+    py: Python<'_>,
+    campaign_dir: PathBuf,
+    out: PathBuf,
+    points: usize,
+    command: String,
+    date: String,
+) -> PyResult<Vec<(String, f64, f64)>> {
+    detached(py, || {
+        file_missing(&campaign_dir)?;
+        let (spec, records) = campaign::read_records(&campaign_dir)?;
+        let table = tabulate_records(&records, points).map_err(value_err)?;
+        let prov = Provenance {
+            campaign_spec: toml_text(&spec)?,
+            scene: records
+                .first()
+                .map(|r| r.scene.to_toml())
+                .unwrap_or_default(),
+            command,
+            date,
+        };
+        write_ridge_table(&out, &table, &prov)?;
+        let mut lines = Vec::new();
+        for (si, set) in table.sets.iter().enumerate() {
+            for (hi, &h) in table.thickness.iter().enumerate() {
+                lines.push((set.clone(), h, table.cf[si][hi]));
+            }
+        }
+        Ok(lines)
+    })
+}
+
+/// The spec as `pressridge tabulate` stores it in the table's provenance.
+fn toml_text(spec: &CampaignSpec) -> Result<String, BindError> {
+    toml::to_string(spec).map_err(value_err)
+}
+
+// ---------------------------------------------------------------------------------------
+// Lookup tables
+
+fn lookup_err(e: LookupError) -> BindError {
+    value_err(e)
+}
+
+/// A ridging lookup table (`pressridge::table::lookup::RidgeLookup`) opened from the NetCDF
+/// file that `pressridge tabulate` writes. Wrapped by `pressridge.Table`.
+#[pyclass(frozen, name = "RidgeLookup", module = "pressridge._core")]
+struct PyRidgeLookup {
+    inner: Arc<RidgeLookup>,
+}
+
+#[pymethods]
+impl PyRidgeLookup {
+    /// Reads a table file.
+    #[staticmethod]
+    fn open(py: Python<'_>, path: PathBuf) -> PyResult<Self> {
+        let t = detached(py, || {
+            file_missing(&path)?;
+            RidgeLookup::open(&path).map_err(BindError::from)
+        })?;
+        Ok(Self { inner: Arc::new(t) })
+    }
+
+    /// Set labels.
+    fn sets(&self) -> Vec<String> {
+        self.inner.sets().to_vec()
+    }
+
+    /// Thickness axis (m).
+    fn thickness<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        PyArray1::from_slice(py, self.inner.thickness())
+    }
+
+    /// Volume axis (m³/m).
+    fn volume<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        PyArray1::from_slice(py, self.inner.volume())
+    }
+
+    /// Field names, sorted.
+    fn variables(&self) -> Vec<String> {
+        self.inner.variables().map(str::to_string).collect()
+    }
+
+    /// A global attribute, or None.
+    fn attribute(&self, name: &str) -> Option<String> {
+        self.inner.attribute(name).map(str::to_string)
+    }
+
+    /// (axis names, units, long_name, values with the field's shape) of a field.
+    #[allow(clippy::type_complexity)]
+    fn field<'py>(
+        &self,
+        py: Python<'py>,
+        name: &str,
+    ) -> PyResult<(
+        Vec<&'static str>,
+        String,
+        String,
+        Bound<'py, PyArrayDyn<f64>>,
+    )> {
+        let f = self.inner.field(name).ok_or_else(|| {
+            value_err(format!(
+                "the table has no field `{name}` (it has: {})",
+                self.inner.variables().collect::<Vec<_>>().join(", ")
+            ))
+        })?;
+        let t = &self.inner;
+        let mut shape = Vec::new();
+        if f.axes.set {
+            shape.push(t.sets().len());
+        }
+        if f.axes.thickness {
+            shape.push(t.thickness().len());
+        }
+        if f.axes.volume {
+            shape.push(t.volume().len());
+        }
+        let data = ndarray::ArrayD::from_shape_vec(IxDyn(&shape), f.data.clone())
+            .map_err(|e| BindError::Internal(e.to_string()))?;
+        Ok((
+            f.axes.names(),
+            f.units.clone(),
+            f.long_name.clone(),
+            PyArrayDyn::from_owned_array(py, data),
+        ))
+    }
+
+    /// Field `name` of set `set` interpolated at every (thickness, volume) pair of two
+    /// equally long 1-D arrays; returns (values, clamped).
+    fn value<'py>(
+        &self,
+        py: Python<'py>,
+        name: &str,
+        set: usize,
+        thickness: numpy::PyReadonlyArray1<'py, f64>,
+        volume: numpy::PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Pair<'py, bool>> {
+        let h = thickness.as_array();
+        let v = volume.as_array();
+        if h.len() != v.len() {
+            return Err(value_err("thickness and volume differ in length").into());
+        }
+        let t = self.inner.clone();
+        let (vals, clamped) = detached(py, || {
+            let mut vals = Vec::with_capacity(h.len());
+            let mut clamped = Vec::with_capacity(h.len());
+            for (&x, &y) in h.iter().zip(v.iter()) {
+                let l = t.value(name, set, x, y).map_err(lookup_err)?;
+                vals.push(l.value);
+                clamped.push(l.clamped);
+            }
+            Ok((vals, clamped))
+        })?;
+        Ok((
+            PyArray1::from_vec(py, vals),
+            PyArray1::from_vec(py, clamped),
+        ))
+    }
+
+    /// C_f of set `set` at every thickness (m) of a 1-D array; returns (values, clamped).
+    fn cf<'py>(
+        &self,
+        py: Python<'py>,
+        set: usize,
+        thickness: numpy::PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Pair<'py, bool>> {
+        let h = thickness.as_array();
+        let t = self.inner.clone();
+        let (vals, clamped) = detached(py, || {
+            let mut vals = Vec::with_capacity(h.len());
+            let mut clamped = Vec::with_capacity(h.len());
+            for &x in h.iter() {
+                let l = t.cf(set, x).map_err(lookup_err)?;
+                vals.push(l.value);
+                clamped.push(l.clamped);
+            }
+            Ok((vals, clamped))
+        })?;
+        Ok((
+            PyArray1::from_vec(py, vals),
+            PyArray1::from_vec(py, clamped),
+        ))
+    }
+
+    /// The nodes (thickness in m, C_f) of set `set`'s C_f table for the strength routine.
+    fn cf_nodes<'py>(&self, py: Python<'py>, set: usize) -> PyResult<Pair<'py, f64>> {
+        let c = self.inner.cf_table(set).map_err(lookup_err)?;
+        Ok((
+            PyArray1::from_slice(py, c.thickness()),
+            PyArray1::from_slice(py, c.values()),
+        ))
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+
+/// The compiled core of the `pressridge` Python package.
+#[pymodule]
+fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add_function(wrap_pyfunction!(strength, m)?)?;
+    m.add_function(wrap_pyfunction!(layout, m)?)?;
+    m.add_function(wrap_pyfunction!(ridge_step, m)?)?;
+    m.add_function(wrap_pyfunction!(category_bounds_py, m)?)?;
+    m.add_function(wrap_pyfunction!(param_names, m)?)?;
+    m.add_function(wrap_pyfunction!(cf_presets, m)?)?;
+    m.add_function(wrap_pyfunction!(read_cf_table_py, m)?)?;
+    m.add_function(wrap_pyfunction!(default_params, m)?)?;
+    m.add_function(wrap_pyfunction!(scene_toml, m)?)?;
+    m.add_function(wrap_pyfunction!(simulate, m)?)?;
+    m.add_function(wrap_pyfunction!(series_units, m)?)?;
+    m.add_function(wrap_pyfunction!(campaign_local, m)?)?;
+    m.add_function(wrap_pyfunction!(campaign_prepare, m)?)?;
+    m.add_function(wrap_pyfunction!(campaign_run_planned, m)?)?;
+    m.add_function(wrap_pyfunction!(tabulate, m)?)?;
+    m.add_class::<PyRidgeLookup>()?;
+    Ok(())
+}

@@ -1,0 +1,125 @@
+"""pressridge.campaign and pressridge.tabulate: the same result directory and table as the
+command line, through a dask LocalCluster with two worker processes and through threads."""
+
+from __future__ import annotations
+
+import json
+import shutil
+
+import numpy as np
+import pytest
+import xarray as xr
+
+import pressridge as pr
+
+
+def records(out):
+    """{run id: (run.json without the wall-clock time, state.json bytes)}."""
+    ids = json.loads((out / "plan.json").read_text())
+    recs = {}
+    for i in ids:
+        rec = json.loads((out / "runs" / i / "run.json").read_text())
+        rec["summary"].pop("wall_seconds")
+        recs[i] = (rec, (out / "runs" / i / "state.json").read_bytes())
+    return recs
+
+
+def assert_same_directory(a, b):
+    assert (a / "campaign.json").read_bytes() == (b / "campaign.json").read_bytes()
+    assert (a / "plan.json").read_bytes() == (b / "plan.json").read_bytes()
+    ra, rb = records(a), records(b)
+    assert list(ra) == list(rb) and len(ra) == 4
+    for i in ra:
+        assert ra[i][0] == rb[i][0], i  # every number equal, to the bit (JSON round-trips)
+        assert ra[i][1] == rb[i][1], i
+
+
+def assert_same_table(a, b):
+    ta, tb = xr.load_dataset(a), xr.load_dataset(b)
+    xr.testing.assert_identical(ta.drop_attrs(), tb.drop_attrs())
+    for k in set(ta.attrs) | set(tb.attrs):
+        if k != "history":  # date and command
+            assert ta.attrs[k] == tb.attrs[k], k
+    assert "pressridge.tabulate" in tb.attrs["history"] or "pressridge.tabulate" in ta.attrs["history"]
+
+
+@pytest.fixture(scope="module")
+def cluster():
+    from distributed import Client, LocalCluster
+
+    with LocalCluster(
+        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
+    ) as c, Client(c) as client:
+        yield client
+
+
+def test_local_cluster_equals_command_line(cluster, cli_campaign, tiny_spec, tmp_path):
+    cli_out, cli_table = cli_campaign
+    out = tmp_path / "dask"
+    from distributed import get_task_stream
+
+    seen = []
+    with get_task_stream(cluster) as ts:
+        r = pr.campaign(tiny_spec, out, client=cluster, progress=seen.append)
+    assert r == pr.CampaignResult(skipped=0, done=4, total=4)
+    assert [p["done"] for p in seen] == [1, 2, 3, 4]
+    assert len({t["worker"] for t in ts.data}) == 2  # both worker processes ran runs
+    assert_same_directory(cli_out, out)
+    table = pr.tabulate(out, tmp_path / "table.nc", points=11)
+    assert isinstance(table, pr.Table)
+    assert_same_table(cli_table, tmp_path / "table.nc")
+
+    # Resumable: nothing to do, then only the missing run is redone.
+    assert pr.campaign(tiny_spec, out, client=cluster) == pr.CampaignResult(4, 0, 4)
+    victim = json.loads((out / "plan.json").read_text())[2]
+    shutil.rmtree(out / "runs" / victim)
+    assert pr.campaign(tiny_spec, out, client=cluster) == pr.CampaignResult(3, 1, 4)
+    assert_same_directory(cli_out, out)
+    # The command line resumes a directory made through dask.
+    from conftest import _binary
+    import subprocess
+
+    res = subprocess.run(
+        [str(_binary()), "campaign", "--spec", str(tiny_spec), "--out", str(out)],
+        capture_output=True, text=True, check=True,
+    )
+    assert "4 already done, 0 run now" in res.stdout
+
+
+def test_threads_equal_command_line(cli_campaign, tiny_spec, tmp_path):
+    cli_out, _ = cli_campaign
+    out = tmp_path / "threads"
+    seen = []
+    r = pr.campaign(tiny_spec, out, threads=2, progress=seen.append)
+    assert r == pr.CampaignResult(0, 4, 4)
+    assert_same_directory(cli_out, out)
+    assert pr.campaign(tiny_spec, out, threads=1) == pr.CampaignResult(4, 0, 4)
+
+
+def test_errors(cluster, tiny_spec, tmp_path):
+    with pytest.raises(FileNotFoundError, match="nope.toml"):
+        pr.campaign(tmp_path / "nope.toml", tmp_path / "o")
+    bad = tmp_path / "bad.toml"
+    bad.write_text('name = "x"\nseedz = 2\n')
+    with pytest.raises(ValueError, match="seedz"):
+        pr.campaign(bad, tmp_path / "o", client=cluster)
+    unknown = tmp_path / "unknown.toml"
+    unknown.write_text('name = "x"\nset = ["sheet.thicknes=0.3"]\n')
+    with pytest.raises(ValueError, match="thicknes"):
+        pr.campaign(unknown, tmp_path / "o")
+    # A directory holding another grid is refused, with either runner.
+    other = tmp_path / "other.toml"
+    other.write_text(tiny_spec.read_text().replace("0.35", "0.40"))
+    out = tmp_path / "o2"
+    (out).mkdir()
+    shutil.copy(tiny_spec.parent / "tiny.toml", tmp_path / "tiny.toml")
+    pr.campaign(tmp_path / "tiny.toml", out, threads=2)
+    for client in (None, cluster):
+        with pytest.raises(ValueError, match="another grid"):
+            pr.campaign(other, out, client=client)
+    with pytest.raises(ValueError, match="threads must be at least 1"):
+        pr.campaign(tiny_spec, out, threads=0)
+    with pytest.raises(FileNotFoundError):
+        pr.tabulate(tmp_path / "no-campaign", tmp_path / "t.nc")
+    with pytest.raises(ValueError, match="points"):
+        pr.tabulate(out, tmp_path / "t.nc", points=1)

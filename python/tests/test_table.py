@@ -1,0 +1,94 @@
+"""pressridge.Table: the lookup table `pressridge tabulate` writes, read back by the Rust
+RidgeLookup and interpolated; strength with the simulator's C_f."""
+
+from __future__ import annotations
+
+import pickle
+
+import numpy as np
+import pytest
+import xarray as xr
+
+import pressridge as pr
+import pressridge.xr as prx
+
+
+@pytest.fixture(scope="module")
+def table(cli_campaign):
+    return pr.Table.open(cli_campaign[1])
+
+
+def test_axes_and_fields(table, cli_campaign):
+    ds = xr.load_dataset(cli_campaign[1])
+    assert table.sets == [""] or len(table.sets) == 1
+    np.testing.assert_array_equal(table.thickness, [0.25, 0.35])
+    np.testing.assert_array_equal(table.volume, ds.volume.values)
+    assert {"work_mean", "cf", "cf_by_set", "force_fit"} <= set(table.variables)
+    f = table.field("work_mean")
+    assert f["dims"] == ("set", "thickness", "volume") and f["units"] == "J m-1"
+    np.testing.assert_array_equal(f["data"], ds.work_mean.values)
+    assert "tiny" in table.attribute("campaign_spec")
+    assert table.attribute("no such attribute") is None
+    xr.testing.assert_identical(table.to_xarray(), ds)
+    assert "2 thicknesses" in repr(table)
+
+
+def test_interpolation(table, cli_campaign):
+    ds = xr.load_dataset(cli_campaign[1])
+    w = ds.work_mean.values[0]
+    h, v = np.meshgrid(table.thickness, table.volume, indexing="ij")
+    vals, clamped = table.value("work_mean", h, v, return_clamped=True)
+    np.testing.assert_array_equal(vals, w)  # nodes give the stored values (NaN included)
+    assert not clamped.any()
+    # Half way in thickness at the first volumes (where both thicknesses have data).
+    mid = table.value("work_mean", 0.30, table.volume[:3])
+    np.testing.assert_allclose(mid, 0.5 * (w[0, :3] + w[1, :3]), rtol=1e-14)
+    # Outside the axes: clamped and flagged.
+    val, c = table.value("work_mean", 1.0, table.volume[1], return_clamped=True)
+    assert c and val == w[1, 1]
+    np.testing.assert_array_equal(table.cf(table.thickness), ds.cf.values)
+    cf, c = table.cf(0.1, return_clamped=True)
+    assert c and cf == ds.cf.values[0]
+    h_nodes, cf_nodes = table.cf_nodes()
+    np.testing.assert_array_equal(cf_nodes, ds.cf.values)
+
+
+def test_strength_with_the_table_equals_command_line(table, cli_campaign, cli, sample, tmp_path):
+    out = tmp_path / "p.nc"
+    cli("strength", "--input", sample, "--output", out, "--cf-table", cli_campaign[1])
+    want = xr.load_dataset(out).strength.values
+    itd = xr.load_dataset(sample)
+    with pytest.warns(pr.CfClampedWarning):
+        got = pr.strength(itd.aicen.values, itd.vicen.values, itd.aice0.values, cf=table)
+    np.testing.assert_array_equal(got, want)
+    with pytest.warns(pr.CfClampedWarning):
+        by_path = pr.strength(itd.aicen.values, itd.vicen.values, itd.aice0.values, cf=table.path)
+    np.testing.assert_array_equal(by_path, want)
+    lazy = prx.strength(itd.chunk({"nj": 30}), cf=table)
+    assert "table of 2 nodes" in lazy.attrs["cf"]
+    np.testing.assert_array_equal(lazy.values, want)
+
+
+def test_pickles(table):
+    back = pickle.loads(pickle.dumps(table))
+    assert back.path == table.path
+    np.testing.assert_array_equal(back.volume, table.volume)
+
+
+def test_errors(table, sample, tmp_path):
+    with pytest.raises(FileNotFoundError, match="missing.nc"):
+        pr.Table.open(tmp_path / "missing.nc")
+    with pytest.raises(ValueError, match="missing variable `thickness`"):
+        pr.Table.open(sample)
+    not_nc = tmp_path / "text.nc"
+    not_nc.write_text("not a NetCDF file")
+    with pytest.raises(OSError):
+        pr.Table.open(not_nc)
+    with pytest.raises(ValueError, match="no field `work`"):
+        table.value("work", 0.3, 1.0)
+    with pytest.raises(ValueError, match="set index 3 is out of range"):
+        table.value("work_mean", 0.3, 1.0, set=3)
+    with pytest.raises(ValueError, match="no set 'mu=1'"):
+        table.cf(0.3, set="mu=1")
+    with pytest.raises(ValueError, match="thickness = NaN is not finite"):
+        table.value("work_mean", np.nan, 1.0)
