@@ -962,6 +962,19 @@ fn toml_text(spec: &CampaignSpec) -> Result<String, BindError> {
     toml::to_string(spec).map_err(value_err)
 }
 
+/// Test hook: panics inside the library-call guard, with (`detach = true`) or without the
+/// GIL released; must raise `RuntimeError`, never abort the interpreter.
+#[pyfunction]
+#[pyo3(name = "_panic_for_test")]
+fn panic_for_test(py: Python<'_>, detach: bool) -> PyResult<()> {
+    let boom = || -> Result<(), BindError> { panic!("deliberate test panic") };
+    if detach {
+        detached(py, boom)
+    } else {
+        guarded(boom).map_err(PyErr::from)
+    }
+}
+
 // ---------------------------------------------------------------------------------------
 // Lookup tables
 
@@ -1141,5 +1154,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(campaign_run_planned, m)?)?;
     m.add_function(wrap_pyfunction!(tabulate, m)?)?;
     m.add_class::<PyRidgeLookup>()?;
+    m.add_function(wrap_pyfunction!(panic_for_test, m)?)?;
     Ok(())
 }

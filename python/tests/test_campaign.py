@@ -123,3 +123,19 @@ def test_errors(cluster, tiny_spec, tmp_path):
         pr.tabulate(tmp_path / "no-campaign", tmp_path / "t.nc")
     with pytest.raises(ValueError, match="points"):
         pr.tabulate(out, tmp_path / "t.nc", points=1)
+
+
+def test_ctrl_c_stops_a_threaded_campaign_after_the_runs_in_flight(tiny_spec, tmp_path):
+    import _thread
+    import threading
+
+    out = tmp_path / "interrupted"
+    timer = threading.Timer(0.2, _thread.interrupt_main)
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        pr.campaign(tiny_spec, out, threads=1)
+    timer.join()
+    finished = list(out.glob("runs/*/*/run.json"))
+    assert 1 <= len(finished) < 4  # the run in flight was finished and written
+    r = pr.campaign(tiny_spec, out, threads=2)
+    assert r.skipped == len(finished) and r.skipped + r.done == 4

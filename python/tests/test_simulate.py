@@ -71,3 +71,15 @@ def test_releases_the_gil():
     assert result["sim"].summary["steps"] > 0
     assert elapsed > 0.05
     assert ticks > 0.3 * elapsed / 0.0011, (ticks, elapsed)
+
+
+def test_ctrl_c_stops_a_run():
+    import _thread
+
+    timer = threading.Timer(0.3, _thread.interrupt_main)
+    t0 = time.perf_counter()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        pr.simulate()  # the 400 s default scene: minutes if not stopped
+    timer.join()
+    assert time.perf_counter() - t0 < 10.0

@@ -197,3 +197,9 @@ def test_releases_the_gil():
     # With the GIL held for the whole call the loop could not tick during it.
     assert elapsed > 0.05, "too fast to tell"
     assert ticks > 0.3 * elapsed / 0.0011, (ticks, elapsed)
+
+
+@pytest.mark.parametrize("detach", [False, True])
+def test_a_rust_panic_becomes_runtime_error(detach):
+    with pytest.raises(RuntimeError, match="internal error .*deliberate test panic"):
+        pr._core._panic_for_test(detach)

@@ -53,6 +53,7 @@ def test_interpolation(table, cli_campaign):
     np.testing.assert_array_equal(cf_nodes, ds.cf.values)
 
 
+@pytest.mark.filterwarnings("ignore::pressridge.CfClampedWarning")  # from dask's threads
 def test_strength_with_the_table_equals_command_line(table, cli_campaign, cli, sample, tmp_path):
     out = tmp_path / "p.nc"
     cli("strength", "--input", sample, "--output", out, "--cf-table", cli_campaign[1])
