@@ -158,6 +158,90 @@ fn strength_matches_rust_api_in_every_layout_and_option() {
 }
 
 #[test]
+fn single_column_calls_equal_the_batch() {
+    // Icepack-style hosts call once per cell: that path (a reused per-thread workspace) must
+    // give the batch's numbers and errors.
+    let (a, v, a0) = sample();
+    let (ncat, ncol) = a.dim();
+    let af = fortran_order(&a);
+    let vf = fortran_order(&v);
+    let mut table = null_mut();
+    let (h, c) = ([0.5, 2.0], [10.0, 20.0]);
+    unsafe { pressridge_cf_table_new(h.as_ptr(), c.as_ptr(), 2, &mut table) };
+    for cf_source in [PRESSRIDGE_CF_SOURCE_CONSTANT, PRESSRIDGE_CF_SOURCE_TABLE] {
+        let mut o = default_options();
+        o.cf_source = cf_source;
+        o.cf_table = table;
+        let g = fortran_grid(ncat, ncol);
+        let mut batch = vec![0.0; ncol];
+        let rc = unsafe {
+            pressridge_strength(
+                &g,
+                af.as_ptr(),
+                vf.as_ptr(),
+                a0.as_ptr(),
+                null(),
+                &o,
+                batch.as_mut_ptr(),
+                null_mut(),
+            )
+        };
+        assert_eq!(rc, PRESSRIDGE_OK);
+        let g1 = fortran_grid(ncat, 1);
+        for col in 0..ncol {
+            let (mut p, mut clamped) = (f64::NAN, -1i64);
+            let rc = unsafe {
+                pressridge_strength(
+                    &g1,
+                    af[col * ncat..].as_ptr(),
+                    vf[col * ncat..].as_ptr(),
+                    &a0[col],
+                    null(),
+                    &o,
+                    &mut p,
+                    &mut clamped,
+                )
+            };
+            assert_eq!(rc, PRESSRIDGE_OK);
+            assert_eq!(p.to_bits(), batch[col].to_bits(), "column {col}");
+            assert!(clamped == 0 || clamped == 1);
+        }
+    }
+    unsafe { pressridge_cf_table_free(table) };
+    // Errors of a single column, and a different ncat afterwards on the same thread.
+    let bad = [0.1, -0.2, 0.1];
+    let mut p = 0.0;
+    let rc = unsafe {
+        pressridge_strength(
+            &fortran_grid(3, 1),
+            bad.as_ptr(),
+            bad.as_ptr(),
+            null(),
+            null(),
+            null(),
+            &mut p,
+            null_mut(),
+        )
+    };
+    assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
+    assert_eq!(last_column(), 0);
+    let one = [0.5];
+    let rc = unsafe {
+        pressridge_strength(
+            &fortran_grid(1, 1),
+            one.as_ptr(),
+            one.as_ptr(),
+            null(),
+            null(),
+            null(),
+            &mut p,
+            null_mut(),
+        )
+    };
+    assert_eq!(rc, PRESSRIDGE_OK, "{}", last_error());
+}
+
+#[test]
 fn strided_per_column_arrays_and_mask() {
     // Every other column of the sample, per-column arrays with stride 3, a mask.
     let (a, v, a0) = sample();
@@ -586,6 +670,104 @@ fn ridge_step_matches_rust_api_and_conserves() {
         PRESSRIDGE_ERR_BAD_SIZE
     );
     assert!(last_error().contains("overlap"));
+}
+
+#[test]
+fn single_column_ridging_equals_the_batch_and_leaves_bad_columns_unchanged() {
+    let g = read_itd(&Path::new(env!("CARGO_MANIFEST_DIR")).join("data/sample_itd.nc")).unwrap();
+    let (ncat, ncol) = g.aicen.dim();
+    let conv: Vec<f64> = g
+        .divu
+        .as_ref()
+        .unwrap()
+        .iter()
+        .map(|x| f64::max(-x, 0.0))
+        .collect();
+    let shear = g.shear.clone().unwrap().to_vec();
+    let mut ab = fortran_order(&g.aicen);
+    let mut vb = fortran_order(&g.vicen);
+    let mut a0b = g.aice0.clone().unwrap().to_vec();
+    let mut cb = vec![0.0; ncol];
+    let rb = PressridgeRidgeRates {
+        closing: cb.as_mut_ptr(),
+        opening: null_mut(),
+        dardg1dt: null_mut(),
+        dardg2dt: null_mut(),
+        dvirdgdt: null_mut(),
+    };
+    let (mut a1, mut v1, mut a01) = (ab.clone(), vb.clone(), a0b.clone());
+    let rc = unsafe {
+        pressridge_ridge_step(
+            &fortran_grid(ncat, ncol),
+            ab.as_mut_ptr(),
+            vb.as_mut_ptr(),
+            a0b.as_mut_ptr(),
+            null(),
+            0,
+            conv.as_ptr(),
+            shear.as_ptr(),
+            1800.0,
+            null(),
+            null(),
+            &rb,
+        )
+    };
+    assert_eq!(rc, PRESSRIDGE_OK);
+    let g1 = fortran_grid(ncat, 1);
+    for c in 0..ncol {
+        let mut closing = f64::NAN;
+        let r1 = PressridgeRidgeRates {
+            closing: &mut closing,
+            ..rb
+        };
+        let rc = unsafe {
+            pressridge_ridge_step(
+                &g1,
+                a1[c * ncat..].as_mut_ptr(),
+                v1[c * ncat..].as_mut_ptr(),
+                &mut a01[c],
+                null(),
+                0,
+                &conv[c],
+                &shear[c],
+                1800.0,
+                null(),
+                null(),
+                &r1,
+            )
+        };
+        assert_eq!(rc, PRESSRIDGE_OK);
+        assert_eq!(closing.to_bits(), cb[c].to_bits());
+    }
+    assert!(a1.iter().zip(&ab).all(|(x, y)| x.to_bits() == y.to_bits()));
+    assert!(v1.iter().zip(&vb).all(|(x, y)| x.to_bits() == y.to_bits()));
+    assert!(
+        a01.iter()
+            .zip(&a0b)
+            .all(|(x, y)| x.to_bits() == y.to_bits())
+    );
+    // A bad column is left as it was.
+    let mut a = [0.2, 0.2, f64::NAN, 0.1, 0.1];
+    let mut v = [0.1; 5];
+    let mut a0 = 0.3;
+    let rc = unsafe {
+        pressridge_ridge_step(
+            &fortran_grid(5, 1),
+            a.as_mut_ptr(),
+            v.as_mut_ptr(),
+            &mut a0,
+            null(),
+            0,
+            &1e-6,
+            &0.0,
+            60.0,
+            null(),
+            null(),
+            null(),
+        )
+    };
+    assert_eq!(rc, PRESSRIDGE_ERR_NOT_FINITE);
+    assert_eq!((a[0], v[0], a0), (0.2, 0.1, 0.3));
 }
 
 #[test]

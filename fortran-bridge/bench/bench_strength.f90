@@ -1,5 +1,5 @@
 !> Cost per column of the C ABI from Fortran (ncat = 5): the batched strength call, the
-!> Icepack-style per-cell call, and the batched ridging step. Workload as benches/strength.rs:
+!> Icepack-style per-cell call, and the ridging step batched and per cell. Workload as benches/strength.rs:
 !> deterministic pseudo-random columns, 5-20 % open water, category thicknesses near 0.3, 1,
 !> 1.9, 3, 4.5 m. Single thread. Prints nanoseconds per column; no assertions.
 !>
@@ -17,6 +17,9 @@ program bench_strength
   real(c_double), allocatable :: a(:, :), v(:, :), a0(:), p(:), aw(:, :), vw(:, :), a0w(:), &
        conv(:), shear(:)
   real(c_double) :: r, w(ncat), s, t
+  ! CICE's default category bounds for ncat = 5 (kcatbound = 1), m.
+  real(c_double), parameter :: hin(0:ncat) = [0.0_c_double, 0.6_c_double, 1.4_c_double, &
+       2.4_c_double, 3.6_c_double, 5.0_c_double]
   integer(int64) :: t0, t1, rate
 
   ncol = 1000000
@@ -82,6 +85,19 @@ program bench_strength
   end do
   t = t / nrep
   print '(a, f8.1, a)', 'batched ridging step, one call for all:      ', 1e9 * t / ncol, ' ns/column'
+
+  ! Per cell, as an Icepack-style host would call ridge_ice.
+  aw = a
+  vw = v
+  a0w = a0
+  call system_clock(t0)
+  do c = 1, ncol
+     call pressridge_ridge_ice(3600.0_c_double, hin, conv(c), shear(c), aw(:, c), vw(:, c), &
+          a0w(c))
+  end do
+  call system_clock(t1)
+  t = real(t1 - t0, c_double) / rate
+  print '(a, f8.1, a)', 'pressridge_ridge_ice, one call per cell:     ', 1e9 * t / ncol, ' ns/column'
 
 contains
 

@@ -1,6 +1,7 @@
 //! Ice strength and the ridging step through the C ABI: options in C layout, and batched
 //! calls over `ncol` columns laid out as a [`PressridgeGrid`] describes.
 
+use std::cell::RefCell;
 use std::sync::Arc;
 
 use ndarray::{Array1, ArrayViewMut1};
@@ -8,11 +9,88 @@ use ndarray::{Array1, ArrayViewMut1};
 use super::layout::{Layout, Region, check_disjoint, check_ptr};
 use super::tables::PressridgeCfTable;
 use super::{FfiError, FfiResult, PRESSRIDGE_ERR_BAD_VALUE, PressridgeGrid, guard, put};
+use crate::itd::bounds::validate_bounds;
 use crate::itd::{
-    CategoryBounds, Cf, CfPreset, ItdParams, Participation, Redistribution, RidgeOptions,
-    RidgeRatesMut, StrengthFormula, StrengthOptions, category_bounds, ridge_batch_masked,
-    strength_batch_masked,
+    CategoryBounds, Cf, CfPreset, ColumnStrength, ItdError, ItdParams, Participation,
+    Redistribution, RidgeDiagnostics, RidgeForcing, RidgeOptions, RidgeRatesMut, StrengthFormula,
+    StrengthOptions, Workspace, category_bounds, ridge_batch_masked, ridge_column,
+    strength_batch_masked, strength_column,
 };
+
+/// Scratch space of the single-column strength call (Icepack-style hosts call once per
+/// cell): one per thread, reused, so that such calls do not allocate.
+struct ColumnScratch {
+    ws: Workspace,
+    a: Vec<f64>,
+    v: Vec<f64>,
+}
+
+thread_local! {
+    static SCRATCH: RefCell<Option<ColumnScratch>> = const { RefCell::new(None) };
+    /// The parameters this thread last found valid (compared bit for bit; NaN never equals).
+    static LAST_VALID_PARAMS: std::cell::Cell<Option<PressridgeParams>> =
+        const { std::cell::Cell::new(None) };
+}
+
+/// Runs `f` with the calling thread's scratch space for `ncat` categories.
+fn with_scratch<T>(ncat: usize, f: impl FnOnce(&mut ColumnScratch) -> T) -> T {
+    SCRATCH.with(|cell| {
+        let mut slot = cell.borrow_mut();
+        if slot.as_ref().is_none_or(|sc| sc.ws.ncat() != ncat) {
+            *slot = Some(ColumnScratch {
+                ws: Workspace::new(ncat),
+                a: vec![0.0; ncat],
+                v: vec![0.0; ncat],
+            });
+        }
+        f(slot.as_mut().expect("just filled"))
+    })
+}
+
+/// One ridging step of one column with the calling thread's reusable workspace: the same
+/// checks and call (`ridge_column`) that `ridge_batch` makes for a single column, without its
+/// per-call allocations. On error the column is left unchanged, as in `ridge_batch`.
+fn ridge_one(
+    mut a: ndarray::ArrayViewMut1<'_, f64>,
+    mut v: ndarray::ArrayViewMut1<'_, f64>,
+    aice0: &mut f64,
+    hin_max: &[f64],
+    forcing: RidgeForcing,
+    opts: &RidgeOptions,
+) -> FfiResult<RidgeDiagnostics> {
+    validate_bounds(hin_max)?;
+    with_scratch(a.len(), |sc| {
+        sc.a.iter_mut().zip(a.iter()).for_each(|(d, s)| *d = *s);
+        sc.v.iter_mut().zip(v.iter()).for_each(|(d, s)| *d = *s);
+        let mut a0 = *aice0;
+        let d = ridge_column(
+            &mut sc.a, &mut sc.v, &mut a0, hin_max, forcing, opts, &mut sc.ws,
+        )
+        .map_err(|source| FfiError::from(ItdError::Column { column: 0, source }))?;
+        a.iter_mut().zip(&sc.a).for_each(|(d, s)| *d = *s);
+        v.iter_mut().zip(&sc.v).for_each(|(d, s)| *d = *s);
+        *aice0 = a0;
+        Ok(d)
+    })
+}
+
+/// Strength of one column with the calling thread's reusable workspace: the same call
+/// (`strength_column`) and checks that `strength_batch` makes for a single column, without
+/// its per-call allocations.
+fn strength_one(
+    a: ndarray::ArrayView1<'_, f64>,
+    v: ndarray::ArrayView1<'_, f64>,
+    a0: Option<f64>,
+    opts: &StrengthOptions,
+) -> FfiResult<ColumnStrength> {
+    opts.validate()?;
+    with_scratch(a.len(), |sc| {
+        sc.a.iter_mut().zip(a.iter()).for_each(|(d, s)| *d = *s);
+        sc.v.iter_mut().zip(v.iter()).for_each(|(d, s)| *d = *s);
+        strength_column(&sc.a, &sc.v, a0, opts, &mut sc.ws)
+            .map_err(|source| ItdError::Column { column: 0, source }.into())
+    })
+}
 
 /// Participation function of Thorndike et al. (1975), G* (CICE `krdg_partic = 0`).
 pub const PRESSRIDGE_PARTICIPATION_THORNDIKE: i32 = 0;
@@ -161,6 +239,11 @@ impl PressridgeParams {
             area_tolerance: self.area_tolerance,
             max_area_before_ridging: self.max_area_before_ridging,
         };
+        // Hosts pass the same parameters on every call: skip the checks for the parameters
+        // this thread validated last time.
+        if LAST_VALID_PARAMS.with(|c| c.get() == Some(self)) {
+            return Ok(p);
+        }
         // `set` validates one field against the others, which already hold their final
         // values, so the order of the checks does not matter.
         let mut checked = p;
@@ -187,6 +270,7 @@ impl PressridgeParams {
             checked.set(name, v)?;
         }
         debug_assert_eq!(checked, p);
+        LAST_VALID_PARAMS.with(|c| c.set(Some(self)));
         Ok(p)
     }
 }
@@ -388,15 +472,18 @@ pub unsafe extern "C" fn pressridge_strength(
             Some(l.view1(aice0, "aice0")?)
         };
         let m = mask(&l, valid)?;
-        let out = l.view1_mut(strength, "strength")?;
+        let mut out = l.view1_mut(strength, "strength")?;
         let so = o.strength_options()?;
-        let s = strength_batch_masked(a, v, a0, m.as_ref().map(|m| m.view()), o.fill, &so, out)?;
+        let clamped = if l.ncol == 1 && m.is_none() {
+            let r = strength_one(a.column(0), v.column(0), a0.map(|x| x[0]), &so)?;
+            out[0] = r.strength;
+            usize::from(r.cf_clamped)
+        } else {
+            strength_batch_masked(a, v, a0, m.as_ref().map(|m| m.view()), o.fill, &so, out)?
+                .cf_clamped_columns
+        };
         if !cf_clamped_columns.is_null() {
-            put(
-                cf_clamped_columns,
-                s.cf_clamped_columns as i64,
-                "cf_clamped_columns",
-            )?;
+            put(cf_clamped_columns, clamped as i64, "cf_clamped_columns")?;
         }
         Ok(())
     })
@@ -512,6 +599,38 @@ pub unsafe extern "C" fn pressridge_ridge_step(
         let conv = l.view1(convergence, "convergence")?;
         let sh = l.view1(shear, "shear")?;
         let m = mask(&l, valid)?;
+        if l.ncol == 1 && m.is_none() {
+            // One cell (Icepack-style hosts): no allocation.
+            let mut a = a;
+            let mut v = v;
+            let mut a0 = a0;
+            let forcing = RidgeForcing {
+                convergence: conv[0],
+                shear: sh[0],
+                dt,
+            };
+            let ro = o.ridge_options()?;
+            let d = ridge_one(
+                a.column_mut(0),
+                v.column_mut(0),
+                &mut a0[0],
+                &bounds,
+                forcing,
+                &ro,
+            )?;
+            for (p, x, name) in [
+                (r.closing, d.closing, "rates.closing"),
+                (r.opening, d.opening, "rates.opening"),
+                (r.dardg1dt, d.dardg1dt, "rates.dardg1dt"),
+                (r.dardg2dt, d.dardg2dt, "rates.dardg2dt"),
+                (r.dvirdgdt, d.dvirdgdt, "rates.dvirdgdt"),
+            ] {
+                if !p.is_null() {
+                    put(p, x, name)?;
+                }
+            }
+            return Ok(());
+        }
         // Rates the caller did not ask for go to scratch space (one allocation per call).
         let ptrs = [
             (r.closing, "rates.closing"),
