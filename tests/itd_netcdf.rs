@@ -121,6 +121,44 @@ fn raw_file(path: &Path, dims: &[(&str, usize)], vars: &[(&str, &[&str], Vec<f64
     }
 }
 
+/// Without `aice0`, open water is 1 − Σ aicen clamped at 0, as in the strength routine: the
+/// sample file without its `aice0` ridges, although some fully covered columns sum to
+/// 1 + 2e-16 (e.g. nj = 20, ni = 38).
+#[test]
+fn ridge_step_without_aice0_accepts_full_cover_round_off() {
+    let g = read_itd(&sample()).unwrap();
+    let (ncat, ncol) = (g.ncat(), g.ncol());
+    let (ny, nx) = (g.spatial_dims[0].1, g.spatial_dims[1].1);
+    assert!((0..ncol).any(|c| g.aicen.column(c).sum() > 1.0));
+    let p = tmp("noaice0.nc");
+    let flat = |a: &ndarray::Array2<f64>| a.iter().copied().collect::<Vec<f64>>();
+    let (_, divu) = read_field(&sample(), "divu").unwrap();
+    let (_, shear) = read_field(&sample(), "shear").unwrap();
+    raw_file(
+        &p,
+        &[("nc", ncat), ("nj", ny), ("ni", nx)],
+        &[
+            ("aicen", &["nc", "nj", "ni"], flat(&g.aicen)),
+            ("vicen", &["nc", "nj", "ni"], flat(&g.vicen)),
+            ("divu", &["nj", "ni"], divu),
+            ("shear", &["nj", "ni"], shear),
+        ],
+    );
+    let out = tmp("noaice0_out.nc");
+    let o = cli(&[
+        "ridge-step",
+        "--input",
+        p.to_str().unwrap(),
+        "--output",
+        out.to_str().unwrap(),
+        "--dt",
+        "3600",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (_, a0) = read_field(&out, "aice0").unwrap();
+    assert!(a0.iter().all(|&a| a >= 0.0));
+}
+
 #[test]
 fn missing_and_mismatched_variables_are_named() {
     // No vicen.

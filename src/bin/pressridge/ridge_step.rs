@@ -66,7 +66,11 @@ pub fn run(args: Args) -> Result<(), BoxError> {
     };
     let mut aice0 = match &grid.aice0 {
         Some(a) => a.clone(),
-        None => Array1::from_iter((0..ncol).map(|c| 1.0 - grid.aicen.column(c).sum())),
+        // As the strength routine: 1 − Σ aicen, never below 0 (full cover can sum to
+        // 1 + 2e-16; a total above 1 is excess area that ridging removes).
+        None => {
+            Array1::from_iter((0..ncol).map(|c| f64::max(1.0 - grid.aicen.column(c).sum(), 0.0)))
+        }
     };
     let fill = grid.fill_value.unwrap_or(NC_FILL_DOUBLE);
     let o = RidgeOptions {
