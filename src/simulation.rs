@@ -80,6 +80,44 @@ pub struct Sample {
     pub mean_force: f64,
 }
 
+/// Column names and units of a [`Sample`] as [`Sample::row`] lays it out (the CSV time
+/// series and the Python `simulate` use this one list).
+pub const SERIES_COLUMNS: [(&str, &str); 12] = [
+    ("time", "s"),
+    ("work", "J/m"),
+    ("potential_energy", "J/m"),
+    ("kinetic_energy", "J/m"),
+    ("friction_dissipation", "J/m"),
+    ("viscous_dissipation", "J/m"),
+    ("drag_dissipation", "J/m"),
+    ("elastic_energy", "J/m"),
+    ("other_dissipation", "J/m"),
+    ("residual", "J/m"),
+    ("ridging_force", "N/m"),
+    ("mean_force", "N/m"),
+];
+
+impl Sample {
+    /// The sample's values in the order and units of [`SERIES_COLUMNS`].
+    pub fn row(&self) -> [f64; SERIES_COLUMNS.len()] {
+        let e = &self.energy;
+        [
+            e.time,
+            e.work,
+            e.potential_energy,
+            e.kinetic_energy,
+            e.friction_dissipation,
+            e.viscous_dissipation,
+            e.drag_dissipation,
+            e.elastic_energy,
+            e.other_dissipation,
+            e.residual,
+            self.ridging_force,
+            self.mean_force,
+        ]
+    }
+}
+
 /// Everything a run produces.
 #[derive(Clone, Debug)]
 pub struct RunOutput {

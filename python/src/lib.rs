@@ -758,21 +758,7 @@ fn simulate<'py>(
     let summary = serde_json::to_string(&out.summary).map_err(value_err)?;
     let mut cols: Vec<Vec<f64>> = vec![Vec::with_capacity(out.series.len()); ENERGY_COLUMNS.len()];
     for s in &out.series {
-        let e = &s.energy;
-        let row = [
-            e.time,
-            e.work,
-            e.potential_energy,
-            e.kinetic_energy,
-            e.friction_dissipation,
-            e.viscous_dissipation,
-            e.drag_dissipation,
-            e.elastic_energy,
-            e.other_dissipation,
-            e.residual,
-            s.ridging_force,
-            s.mean_force,
-        ];
+        let row = s.row();
         for (c, x) in cols.iter_mut().zip(row) {
             c.push(x);
         }
