@@ -33,6 +33,34 @@ def test_axes_and_fields(table, cli_campaign):
     assert "2 thicknesses" in repr(table)
 
 
+def test_table_opens_in_xarray_with_its_dimensions_and_units(cli_campaign):
+    """Issue 5: the tiny campaign's table (2 thicknesses, one set, 11 volumes) is a CF file
+    that xarray opens, with units on every variable."""
+    with xr.open_dataset(cli_campaign[1]) as ds:
+        assert dict(ds.sizes) == {"set": 1, "thickness": 2, "volume": 11}
+        assert ds.attrs["Conventions"] == "CF-1.8"
+        assert ds.work_mean.dims == ("set", "thickness", "volume")
+        assert ds.work_fit.dims == ("set", "volume")
+        assert ds.cf.dims == ("thickness",)
+        for name, var in ds.variables.items():
+            assert var.attrs.get("units"), f"{name} has no units"
+            assert var.attrs.get("long_name"), f"{name} has no long_name"
+        want = {
+            "thickness": "m",
+            "volume": "m3 m-1",
+            "work_mean": "J m-1",
+            "potential_energy_mean": "J m-1",
+            "ratio_mean": "1",
+            "force_mean": "N m-1",
+            "force_fit": "N m-1",
+            "work_a": "J m-5",  # W = V(aV + b), W in J/m, V in m3/m
+            "work_b": "J m-3",
+            "cf": "1",
+        }
+        assert {k: ds[k].attrs["units"] for k in want} == want
+        assert ds.volume.values[0] == 0.0 and np.all(np.diff(ds.volume.values) > 0)
+
+
 def test_interpolation(table, cli_campaign):
     ds = xr.load_dataset(cli_campaign[1])
     w = ds.work_mean.values[0]
