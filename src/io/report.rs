@@ -24,7 +24,7 @@ fn slope(p: &PointStats, key: &str) -> String {
         && s.n > 0
         && s.n < p.seeds.len()
     {
-        let _ = write!(t, " ({} runs)", s.n);
+        let _ = write!(t, " ({} run{})", s.n, if s.n == 1 { "" } else { "s" });
     }
     t
 }

@@ -212,7 +212,7 @@ pub fn plot_profiles(profiles: &[(String, Profile)], path: &Path) -> Result<(), 
         .margin(12)
         .x_label_area_size(45)
         .y_label_area_size(60)
-        .build_cartesian_2d(first.x0..x1, -(bottom * 1.1)..(top * 1.2))
+        .build_cartesian_2d(first.x0..x1, -(bottom * 1.1)..(top * 1.8))
         .map_err(draw_err)?;
     chart
         .configure_mesh()
@@ -264,7 +264,7 @@ pub fn plot_profiles(profiles: &[(String, Profile)], path: &Path) -> Result<(), 
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
         .label_font(("sans-serif", 13))
-        .position(SeriesLabelPosition::LowerRight)
+        .position(SeriesLabelPosition::UpperLeft)
         .draw()
         .map_err(draw_err)?;
     root.present().map_err(draw_err)?;
