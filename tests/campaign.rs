@@ -158,6 +158,13 @@ fn tiny_campaign_is_resumable_and_complete() {
     assert!(cf.iter().all(|c| c.is_finite() && *c > 1.0), "{cf:?}");
     let runs: Vec<f64> = nc.variable("runs").unwrap().get_values(..).unwrap();
     assert_eq!(runs[0], 2.0, "both seeds behind V = 0");
+    // Eq (15) is tabulated only where runs of that thickness reached (the thinner sheet
+    // stops short of the grid's end): no extrapolation.
+    let ffit: Vec<f64> = nc.variable("force_fit").unwrap().get_values(..).unwrap();
+    assert!(runs.contains(&0.0), "the thin sheet should stop short: {runs:?}");
+    for (f, n) in ffit.iter().zip(&runs) {
+        assert_eq!(f.is_finite(), *n > 0.0, "force_fit {f} with {n} runs");
+    }
     for attr in [
         "campaign_spec",
         "scene",

@@ -144,7 +144,7 @@ pub fn write_ridge_table(
             "force_fit",
             s3,
             "N m-1",
-            "ridging force from the pooled work fit, eq (15)",
+            "ridging force from the pooled work fit, eq (15), within the volumes the runs of each thickness reached",
             flat3(&t.force_fit),
         ),
         (

@@ -14,6 +14,7 @@
 //! - C_f per thickness is the ensemble mean of the runs' final W/ΔPE: the ratio the strength
 //!   routine multiplies the potential-energy term by.
 
+use super::ensemble::Stat;
 use super::fit::{Band, FitError, QuadFit, fit_through_origin, force, ratio};
 use crate::campaign::RunRecord;
 
@@ -55,7 +56,8 @@ pub struct RidgeTable {
     pub pooled: Vec<Option<SetFits>>,
     /// Bands of the pooled work fit per set on the volume grid.
     pub work_band: Vec<Option<Band>>,
-    /// Force of eq (15) from the pooled work fit, `[set][thickness][volume]` (N/m).
+    /// Force of eq (15) from the pooled work fit, `[set][thickness][volume]` (N/m); NaN at
+    /// volumes no run of that thickness reached.
     pub force_fit: Vec<Vec<Vec<f64>>>,
     /// dW/dPE of eq (16) from the pooled fits, `[set][volume]`.
     pub ratio_fit: Vec<Vec<f64>>,
@@ -163,14 +165,8 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
         seeds,
     };
     let mean_std = |xs: &[f64]| -> (f64, f64) {
-        let n = xs.len() as f64;
-        let m = xs.iter().sum::<f64>() / n;
-        let var = if xs.len() > 1 {
-            xs.iter().map(|x| (x - m).powi(2)).sum::<f64>() / (n - 1.0)
-        } else {
-            0.0
-        };
-        (m, var.sqrt())
+        let s = Stat::of(xs);
+        (s.mean, s.std)
     };
     for (si, set) in sets.iter().enumerate() {
         let (mut pv, mut pw, mut pp) = (Vec::new(), Vec::new(), Vec::new());
@@ -248,7 +244,11 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
             for (vi, &v) in volume.iter().enumerate() {
                 t.ratio_fit[si][vi] = ratio(&work, &pe, v);
                 for (hi, &h) in thickness.iter().enumerate() {
-                    t.force_fit[si][hi][vi] = force(&work, h, v);
+                    // Only where this thickness's runs reached: eq (15) holds for primary
+                    // ridge growth, which a thin sheet may have left at larger volumes.
+                    if t.runs[si][hi][vi] > 0 {
+                        t.force_fit[si][hi][vi] = force(&work, h, v);
+                    }
                 }
             }
             t.pooled[si] = Some(SetFits {
