@@ -102,6 +102,30 @@ fn tiny_campaign_is_resumable_and_complete() {
         assert!(f.mean > 0.0 && f.mean < 1.0, "{f:?}");
         assert!(p.get("residual_fraction").unwrap().mean < 0.01);
     }
+    // The physical-consistency gate: a negative dissipation (an energy source) leaves a run
+    // out of the table; round-off does not.
+    {
+        use pressridge::table::ensemble::dissipation_violation;
+        use pressridge::table::tabulate::tabulate;
+        assert!(records.iter().all(|r| dissipation_violation(r).is_none()));
+        let mut bad = records.clone();
+        let w = bad[0].summary.work;
+        bad[0].summary.viscous_dissipation = -0.01 * w;
+        let why = dissipation_violation(&bad[0]).expect("negative Φ_i must be caught");
+        assert!(why.contains("viscous_dissipation"), "{why}");
+        let t = tabulate(&bad, 11).unwrap();
+        assert_eq!(t.excluded.len(), 1);
+        assert_eq!(t.excluded[0].0, records[0].id);
+        assert_eq!(t.runs[0][0][0], 1, "one seed left at the first thickness");
+        bad[0].summary.viscous_dissipation = -1e-9 * w;
+        assert!(
+            dissipation_violation(&bad[0]).is_none(),
+            "round-off is tolerated"
+        );
+        bad[0].samples[2].friction_dissipation = -0.5 * w;
+        assert!(dissipation_violation(&bad[0]).unwrap().contains("at t ="));
+        assert!(tabulate(&records, 11).unwrap().excluded.is_empty());
+    }
     // Tabulate: dimensions, units, fits, and a C_f table the strength routine reads.
     let table = dir.join("table.nc");
     let res = bin()
@@ -124,7 +148,7 @@ fn tiny_campaign_is_resumable_and_complete() {
     );
     let report = std::fs::read_to_string(dir.join("report.md")).unwrap();
     for want in [
-        "# Campaign `tiny`: 4 runs",
+        "# Campaign `tiny`: 4 runs tabulated, 0 left out",
         "## Energy budget",
         "## Ridge metrics",
         "pooled",
@@ -161,7 +185,10 @@ fn tiny_campaign_is_resumable_and_complete() {
     // Eq (15) is tabulated only where runs of that thickness reached (the thinner sheet
     // stops short of the grid's end): no extrapolation.
     let ffit: Vec<f64> = nc.variable("force_fit").unwrap().get_values(..).unwrap();
-    assert!(runs.contains(&0.0), "the thin sheet should stop short: {runs:?}");
+    assert!(
+        runs.contains(&0.0),
+        "the thin sheet should stop short: {runs:?}"
+    );
     for (f, n) in ffit.iter().zip(&runs) {
         assert_eq!(f.is_finite(), *n > 0.0, "force_fit {f} with {n} runs");
     }

@@ -26,6 +26,20 @@ fn check_finite_and_closed(out: &RunOutput, what: &str) {
         "{what}: budget does not close: {s:?}"
     );
     assert!(s.blocks_broken > 0, "{what}: the sheet never broke");
+    // A closing ledger can hide an energy source: every dissipation must be non-negative.
+    for (name, d) in [
+        ("friction", s.friction_dissipation),
+        ("viscous", s.viscous_dissipation),
+        ("drag", s.drag_dissipation),
+        ("joint", s.joint_dissipation),
+        ("boundary", s.boundary_dissipation),
+        ("fracture", s.fracture_dissipation),
+    ] {
+        assert!(
+            d >= -1e-6 * s.work,
+            "{what}: {name} dissipation {d} J/m < 0: {s:?}"
+        );
+    }
 }
 
 /// A 20-s ridging run (5 m of sheet) closes its budget within 1 % of the work, breaks the

@@ -33,12 +33,28 @@ fn slope(p: &PointStats, key: &str) -> String {
 pub fn campaign_report(name: &str, points: &[PointStats], table: &RidgeTable) -> String {
     let mut o = String::new();
     let runs: usize = points.iter().map(|p| p.seeds.len()).sum();
-    let _ = writeln!(o, "# Campaign `{name}`: {runs} runs\n");
+    let _ = writeln!(
+        o,
+        "# Campaign `{name}`: {runs} runs tabulated, {} left out\n",
+        table.excluded.len()
+    );
     let _ = writeln!(
         o,
         "Means ± sample standard deviations over the seeds of each grid point, at the end of \
          the runs. Energies per metre of ridge.\n"
     );
+    if !table.excluded.is_empty() {
+        let _ = writeln!(
+            o,
+            "## Runs left out\n\nA dissipation cannot be negative: a run in which one is (below \
+             −1e-6 of the work) booked a numerical energy source and went unstable. These runs \
+             are in neither the statistics nor the table:\n"
+        );
+        for (id, why) in &table.excluded {
+            let _ = writeln!(o, "- `{id}`: {why}");
+        }
+        let _ = writeln!(o);
+    }
     let _ = writeln!(o, "## Energy budget\n");
     let _ = writeln!(
         o,

@@ -307,6 +307,13 @@ pub fn write_ridge_table(
     let seeds: Vec<String> = t.seeds.iter().map(u64::to_string).collect();
     f.add_attribute("seeds", seeds.join(" ").as_str())
         .map_err(&e)?;
+    let excluded: Vec<String> = t
+        .excluded
+        .iter()
+        .map(|(id, why)| format!("{id}: {why}"))
+        .collect();
+    f.add_attribute("excluded_runs", excluded.join("; ").as_str())
+        .map_err(&e)?;
     f.add_attribute("campaign_spec", prov.campaign_spec.as_str())
         .map_err(&e)?;
     f.add_attribute("scene", prov.scene.as_str()).map_err(&e)?;

@@ -133,6 +133,47 @@ pub fn quantity(r: &RunRecord, key: &str) -> Option<f64> {
     }
 }
 
+/// Relative tolerance of [`dissipation_violation`]: a dissipation may be negative by this
+/// fraction of the work (round-off of sums over millions of steps), no more.
+pub const DISSIPATION_TOLERANCE: f64 = 1e-6;
+
+/// Why run `r` cannot be physical, or `None`: every dissipation (friction Φ_f, eq 11;
+/// viscous contact Φ_i, eq 12; drag; joint viscosity; boundary dashpots; crack release) is
+/// work turned into heat and can only grow from zero. A ledger that closes while one of them
+/// is negative (below −[`DISSIPATION_TOLERANCE`]·|W|, at the end or at any sample) books a
+/// numerical energy source: the run went unstable, and its energetics are not ridging.
+pub fn dissipation_violation(r: &RunRecord) -> Option<String> {
+    let s = &r.summary;
+    let tol = DISSIPATION_TOLERANCE * s.work.abs().max(1.0);
+    let finals = [
+        ("friction_dissipation", s.friction_dissipation),
+        ("viscous_dissipation", s.viscous_dissipation),
+        ("drag_dissipation", s.drag_dissipation),
+        ("joint_dissipation", s.joint_dissipation),
+        ("boundary_dissipation", s.boundary_dissipation),
+        ("fracture_dissipation", s.fracture_dissipation),
+    ];
+    for (name, v) in finals {
+        if v < -tol || !v.is_finite() {
+            return Some(format!(
+                "{name} = {v:.4e} J/m at the end (work {:.4e} J/m)",
+                s.work
+            ));
+        }
+    }
+    for x in &r.samples {
+        for (name, v) in [
+            ("friction_dissipation", x.friction_dissipation),
+            ("viscous_dissipation", x.viscous_dissipation),
+        ] {
+            if v < -tol || !v.is_finite() {
+                return Some(format!("{name} = {v:.4e} J/m at t = {} s", x.time));
+            }
+        }
+    }
+    None
+}
+
 /// Statistics of one grid point (all seeds of one setting).
 #[derive(Clone, Debug, PartialEq)]
 pub struct PointStats {

@@ -14,7 +14,7 @@
 //! - C_f per thickness is the ensemble mean of the runs' final W/ΔPE: the ratio the strength
 //!   routine multiplies the potential-energy term by.
 
-use super::ensemble::Stat;
+use super::ensemble::{Stat, dissipation_violation};
 use super::fit::{Band, FitError, QuadFit, fit_through_origin, force, ratio};
 use crate::campaign::RunRecord;
 
@@ -65,6 +65,9 @@ pub struct RidgeTable {
     pub cf: Vec<Vec<f64>>,
     /// Seeds used.
     pub seeds: Vec<u64>,
+    /// Runs left out, with the reason: those whose dissipation went negative
+    /// ([`super::ensemble::dissipation_violation`]).
+    pub excluded: Vec<(String, String)>,
 }
 
 /// Errors of tabulation.
@@ -99,11 +102,20 @@ fn interp(xs: &[f64], ys: &[f64], x: f64) -> f64 {
 }
 
 /// Tabulates campaign records on a volume grid of `points` points from 0 to the largest
-/// volume reached.
+/// volume reached. Runs whose dissipation went negative (a numerical energy source, see
+/// [`dissipation_violation`]) are left out and listed in [`RidgeTable::excluded`].
 pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, TabulateError> {
+    let mut excluded = Vec::new();
     let recs: Vec<&RunRecord> = records
         .iter()
         .filter(|r| r.scene.sheet.is_some() && r.samples.len() >= 2)
+        .filter(|r| match dissipation_violation(r) {
+            Some(why) => {
+                excluded.push((r.id.clone(), why));
+                false
+            }
+            None => true,
+        })
         .collect();
     if recs.is_empty() {
         return Err(TabulateError::Empty);
@@ -163,6 +175,7 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
         ratio_fit: vec![vec![f64::NAN; nv]; ns],
         cf: vec![vec![f64::NAN; nh]; ns],
         seeds,
+        excluded,
     };
     let mean_std = |xs: &[f64]| -> (f64, f64) {
         let s = Stat::of(xs);

@@ -87,8 +87,18 @@ pub fn run(a: Args) -> Result<(), BoxError> {
             .collect();
         plot::table::plot_profiles(&profiles, &dir.join("profiles.png"))?;
     }
+    for (id, why) in &table.excluded {
+        eprintln!(
+            "pressridge: warning: run {id} left out: its {why}; a dissipation cannot be negative, so the run went numerically unstable"
+        );
+    }
     if let Some(path) = &a.report {
-        let points = pressridge::table::ensemble::summarise(&records);
+        let kept: Vec<_> = records
+            .iter()
+            .filter(|r| !table.excluded.iter().any(|(id, _)| *id == r.id))
+            .cloned()
+            .collect();
+        let points = pressridge::table::ensemble::summarise(&kept);
         let text = pressridge::io::report::campaign_report(&spec.name, &points, &table);
         pressridge::io::write_atomic(path, text.as_bytes())?;
     }
