@@ -103,9 +103,10 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         pressridge::io::write_atomic(path, text.as_bytes())?;
     }
     println!(
-        "{}: {} runs, {} sets × {} thicknesses × {} volumes -> {}",
+        "{}: {} runs ({} left out), {} sets × {} thicknesses × {} volumes -> {}",
         spec.name,
-        records.len(),
+        records.len() - table.excluded.len(),
+        table.excluded.len(),
         table.sets.len(),
         table.thickness.len(),
         table.volume.len(),
