@@ -9,6 +9,23 @@ use std::sync::Arc;
 
 use super::ItdError;
 
+/// Checks that a table axis `name` is finite and strictly increasing; the message names the
+/// first offending index. Shared by [`CfTable`] and the ridging lookup table.
+pub(crate) fn check_axis(name: &str, xs: &[f64]) -> Result<(), String> {
+    for (i, &x) in xs.iter().enumerate() {
+        if !x.is_finite() {
+            return Err(format!("{name}[{i}] = {x} is not finite"));
+        }
+        if i > 0 && x <= xs[i - 1] {
+            return Err(format!(
+                "{name} is not strictly increasing at index {i} ({} then {x})",
+                xs[i - 1]
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// Named constant values of C_f (dimensionless).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum CfPreset {
@@ -76,23 +93,15 @@ impl CfTable {
                 cf.len()
             )));
         }
-        for (i, (&h, &c)) in thickness.iter().zip(&cf).enumerate() {
-            if !h.is_finite() {
-                return Err(ItdError::CfTable(format!(
-                    "thickness[{i}] = {h} is not finite"
-                )));
-            }
-            if !(c.is_finite() && c > 0.0) {
-                return Err(ItdError::CfTable(format!(
-                    "cf[{i}] = {c} is not finite and positive"
-                )));
-            }
-            if i > 0 && h <= thickness[i - 1] {
-                return Err(ItdError::CfTable(format!(
-                    "thickness is not strictly increasing at index {i} ({} then {h})",
-                    thickness[i - 1]
-                )));
-            }
+        check_axis("thickness", &thickness).map_err(ItdError::CfTable)?;
+        if let Some((i, c)) = cf
+            .iter()
+            .enumerate()
+            .find(|(_, c)| !(c.is_finite() && **c > 0.0))
+        {
+            return Err(ItdError::CfTable(format!(
+                "cf[{i}] = {c} is not finite and positive"
+            )));
         }
         Ok(Self { thickness, cf })
     }

@@ -174,20 +174,7 @@ fn check_axis(name: &str, xs: &[f64]) -> Result<(), LookupError> {
     if xs.is_empty() {
         return Err(LookupError::Invalid(format!("the {name} axis is empty")));
     }
-    for (i, &x) in xs.iter().enumerate() {
-        if !x.is_finite() {
-            return Err(LookupError::Invalid(format!(
-                "{name}[{i}] = {x} is not finite"
-            )));
-        }
-        if i > 0 && x <= xs[i - 1] {
-            return Err(LookupError::Invalid(format!(
-                "{name} is not strictly increasing at index {i} ({} then {x})",
-                xs[i - 1]
-            )));
-        }
-    }
-    Ok(())
+    crate::itd::cf::check_axis(name, xs).map_err(LookupError::Invalid)
 }
 
 /// Where `x` falls on the axis `xs`: value = y[i]·(1 − w) + y[i + 1]·w (w = 0 uses y[i]
