@@ -22,18 +22,12 @@ fn main() {
             return;
         }
     };
-    // Only the files of the C ABI are parsed, so that no other item of the crate leaks into
-    // the header.
-    let mut files: Vec<PathBuf> = std::fs::read_dir(dir.join("src").join("ffi"))
-        .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).collect())
-        .unwrap_or_default();
-    files.retain(|p| p.extension().is_some_and(|e| e == "rs"));
-    // mod.rs (status codes, errors) first, then the others by name.
-    files.sort_by_key(|p| (!p.ends_with("mod.rs"), p.clone()));
-    let mut builder = cbindgen::Builder::new().with_config(config);
-    for f in &files {
-        builder = builder.with_src(f);
-    }
+    // Only the C ABI is parsed: its root `src/ffi/mod.rs`, from which cbindgen follows the
+    // `mod` declarations into the submodules (passing those files too would declare every
+    // item twice), so that no other item of the crate leaks into the header.
+    let builder = cbindgen::Builder::new()
+        .with_config(config)
+        .with_src(dir.join("src").join("ffi").join("mod.rs"));
     match builder.generate() {
         Ok(bindings) => {
             bindings.write_to_file(&out);

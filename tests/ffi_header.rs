@@ -29,3 +29,26 @@ fn committed_header_is_up_to_date() {
         );
     }
 }
+
+/// Every function, struct and constant is declared once (cbindgen parsing a module twice
+/// repeats the whole API: legal C, but a header no one should ship).
+#[test]
+fn committed_header_declares_each_item_once() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("include/pressridge.h");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let mut seen = std::collections::HashSet::new();
+    let mut count = 0;
+    for line in text.lines() {
+        let decl = line.starts_with("int32_t pressridge_")
+            || line.starts_with("typedef struct")
+            || line.starts_with("#define PRESSRIDGE_");
+        if decl {
+            count += 1;
+            assert!(seen.insert(line.to_string()), "declared twice: {line}");
+        }
+    }
+    assert!(
+        count > 20,
+        "only {count} declarations found: the header looks empty"
+    );
+}
