@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import os
 import subprocess
+import threading
 from pathlib import Path
 
 import pytest
@@ -75,3 +76,32 @@ def cli_campaign(cli, tiny_spec, tmp_path_factory):
     table = d / "table.nc"
     cli("tabulate", "--campaign", out, "--out", table, "--points", "11")
     return out, table
+
+
+# A call that holds the GIL throughout lets this thread tick at most once at each of its two
+# boundaries (a thread switch just before or just after it); a call that releases the GIL
+# for a fraction of a second lets it tick hundreds of times.
+MIN_TICKS = 5
+
+
+def ticks_during(call):
+    """Runs `call()` in a worker thread while this thread counts ticks; returns (the call's
+    result, the ticks counted between the call's start and its end, as the worker saw them).
+    A call that held the GIL throughout would see none: this thread cannot run Python then.
+    Nothing here depends on how long anything takes."""
+    state = {"ticks": 0}
+    done = threading.Event()
+
+    def work():
+        before = state["ticks"]
+        state["result"] = call()
+        state["during"] = state["ticks"] - before
+        done.set()
+
+    t = threading.Thread(target=work)
+    t.start()
+    while not done.is_set():
+        state["ticks"] += 1
+        done.wait(0.001)
+    t.join()
+    return state["result"], state["during"]

@@ -3,14 +3,13 @@ sample distribution, for every layout, with clear errors."""
 
 from __future__ import annotations
 
-import threading
-import time
 
 import numpy as np
 import pytest
 import xarray as xr
 
 import pressridge as pr
+from conftest import MIN_TICKS, ticks_during
 
 
 @pytest.fixture(scope="module")
@@ -178,25 +177,16 @@ def test_releases_the_gil():
     rng = np.random.default_rng(1)
     a = rng.uniform(0, 0.2, (5, 400_000))
     v = a * rng.uniform(0.2, 4.0, a.shape)
-    ticks = 0
-    done = threading.Event()
 
     def work():
         for _ in range(5):
             pr.strength(a, v, law="rothrock", participation="thorndike", cf=([0.1, 5.0], [10.0, 20.0]))
-        done.set()
+        return True
 
-    t = threading.Thread(target=work)
-    t0 = time.perf_counter()
-    t.start()
-    while not done.is_set():
-        ticks += 1
-        time.sleep(0.001)
-    t.join()
-    elapsed = time.perf_counter() - t0
-    # With the GIL held for the whole call the loop could not tick during it.
-    assert elapsed > 0.05, "too fast to tell"
-    assert ticks > 0.3 * elapsed / 0.0011, (ticks, elapsed)
+    done, during = ticks_during(work)
+    assert done
+    # With the GIL held for the whole call this thread could not tick during it.
+    assert during >= MIN_TICKS, during
 
 
 @pytest.mark.parametrize("detach", [False, True])
