@@ -64,6 +64,13 @@ pub struct Summary {
     pub ridged_volume: f64,
     /// Number of joints severed (blocks broken from the sheet, floe or rubble).
     pub blocks_broken: u64,
+    /// Severed joints whose two blocks overlapped at severance; their contacts were born
+    /// with that overlap forgiven (see [`crate::dem::contact`]). Absent in older runs.
+    #[serde(default)]
+    pub handover_contacts: u64,
+    /// Largest overlap forgiven at a severance (m²).
+    #[serde(default)]
+    pub max_handover_overlap: f64,
     /// Length of every rubble piece at the end (m).
     pub rubble_block_lengths: Vec<f64>,
 }
@@ -219,6 +226,8 @@ pub fn run_world(
         },
         ridged_volume: speed * thickness * (world.time() - t0),
         blocks_broken: world.blocks_broken(),
+        handover_contacts: world.handovers().count,
+        max_handover_overlap: world.handovers().max_area,
         rubble_block_lengths: rubble_lengths(world),
     };
     RunOutput {

@@ -4,6 +4,16 @@
 //!
 //! Forces are per metre of depth (N/m); they act at the centroid of the overlap polygon
 //! along the contact normal `n` (from body `a` to body `b`) and tangent `t = n⊥`.
+//!
+//! Contacts born from a severed joint. Blocks held by a joint are exempt from contact, so
+//! where a piece bends sharply the corners of two joined blocks may interpenetrate. When
+//! that joint severs, the contact the two blocks form would be born deep and pre-loaded: the
+//! elastic law (2) would push with k_ne·A at once and the viscous law (3) would read the
+//! whole area as a one-step approach (k_nv·A/dt), both injecting energy the joint never
+//! held. Such a contact is instead born with its overlap forgiven ([`Contact::forgiven`]):
+//! it resists only further penetration, F_e = k_ne·max(A − A_f, 0), starts its rate from
+//! A₀ = A, and A_f only ever decreases (A_f ← min(A_f, A)), so once the blocks separate it
+//! is an ordinary contact. The paper does not discuss this hand-over.
 
 use super::body::Bodies;
 use super::broadphase::{pair_key, unpack};
@@ -89,6 +99,11 @@ pub struct Contact {
     /// Elastic normal work absorbed while this contact has been active (J/m): the energy it
     /// holds as a compressed spring.
     pub stored: f64,
+    /// Forgiven overlap A_f (m²): the overlap a contact born from a severed joint had at
+    /// birth, which the elastic law does not push against; it only decreases. Zero for
+    /// every contact born by approach.
+    #[serde(default)]
+    pub forgiven: f64,
     /// Point of action: the overlap centroid (m).
     pub point: V2,
     /// Unit normal from `a` to `b`.
@@ -131,6 +146,24 @@ impl ContactSet {
     pub fn restore(&mut self, mut c: Vec<Contact>) {
         c.sort_by_key(|c| c.key);
         self.cur = c;
+    }
+
+    /// Records the pair `key` of a joint that has just severed, whose blocks overlap by
+    /// `area` (m²) at centroid `point` with normal `normal`: the contact they form is born
+    /// with that overlap forgiven and A₀ = `area` (see the module docs). Applies no force.
+    pub fn hand_over(&mut self, key: u64, area: f64, point: V2, normal: V2) {
+        let c = Contact {
+            key,
+            area,
+            forgiven: area,
+            point,
+            normal,
+            ..Contact::default()
+        };
+        match self.cur.binary_search_by_key(&key, |c| c.key) {
+            Ok(i) => self.cur[i] = c,
+            Err(i) => self.cur.insert(i, c),
+        }
     }
 
     /// Tests the candidate `pairs`, updates every contact's force from eqs (2)–(4) with the
@@ -176,11 +209,14 @@ impl ContactSet {
                 }
                 continue;
             };
-            let (area0, ft0, stored) = old.map_or((0.0, 0.0, 0.0), |o| (o.area, o.ft, o.stored));
+            let (area0, ft0, stored, forgiven) = old.map_or((0.0, 0.0, 0.0, 0.0), |o| {
+                (o.area, o.ft, o.stored, o.forgiven)
+            });
+            let forgiven = forgiven.min(ov.area);
             let n = ov.normal;
             let t = n.perp();
-            // Eq (2) and (3); the sum never pulls.
-            let fe = k_ne * ov.area;
+            // Eq (2), less any forgiven overlap, and eq (3); the sum never pulls.
+            let fe = k_ne * (ov.area - forgiven);
             let fv_raw = k_nv * (ov.area - area0) / dt;
             let fv = if fe + fv_raw < 0.0 { -fe } else { fv_raw };
             let fnorm = fe + fv;
@@ -201,6 +237,7 @@ impl ContactSet {
                 area: ov.area,
                 ft,
                 stored,
+                forgiven,
                 point: ov.centroid,
                 normal: n,
                 fn_elastic: fe,

@@ -15,10 +15,10 @@
 
 use super::body::{Block, Bodies, BodyId, Drive, Role, Shape, ShapeError};
 use super::boundary::Boundary;
-use super::broadphase::SweepAndPrune;
+use super::broadphase::{SweepAndPrune, pair_key};
 use super::contact::{Contact, ContactParams, ContactSet};
 use super::fracture::JointSet;
-use super::geometry::{V2, below_line};
+use super::geometry::{V2, below_line, overlap};
 use super::joint::{Joint, JointMaterial};
 use super::ledger::{Accumulators, EnergyBudget, Stored};
 use super::water::{WaterForces, WaterParams};
@@ -158,6 +158,7 @@ pub struct World {
     water: WaterForces,
     acc: Accumulators,
     blocks_broken: u64,
+    handovers: Handovers,
     dt: f64,
     time: f64,
     steps: u64,
@@ -185,6 +186,7 @@ impl World {
             water: WaterForces::default(),
             acc: Accumulators::default(),
             blocks_broken: 0,
+            handovers: Handovers::default(),
             dt: 0.0,
             time: 0.0,
             steps: 0,
@@ -274,6 +276,12 @@ impl World {
     /// Number of joints severed so far.
     pub fn blocks_broken(&self) -> u64 {
         self.blocks_broken
+    }
+
+    /// Severed joints whose blocks overlapped, and the largest such overlap (m²): see
+    /// [`crate::dem::contact`] on contacts born from a severed joint.
+    pub fn handovers(&self) -> Handovers {
+        self.handovers
     }
 
     /// Applies a constant external force `f` (N/m) at the centroid of body `id` from now
@@ -570,6 +578,28 @@ impl World {
                     self.bevel(b, [corner, 0.0, 0.0, corner]);
                 }
             }
+            // Blocks that were joined may overlap (joined blocks are exempt from contact):
+            // their contact is born with that overlap forgiven, see `contact`.
+            self.bodies.update_world(a);
+            self.bodies.update_world(b);
+            self.hand_over(a, b);
+        }
+    }
+
+    /// Hands the overlap of bodies `a` and `b` (outlines up to date), if any, to a contact
+    /// born with that overlap forgiven (see [`crate::dem::contact`]), and counts it.
+    fn hand_over(&mut self, a: usize, b: usize) {
+        let (lo, hi) = (a.min(b), a.max(b));
+        let bd = &self.bodies;
+        if let Some(ov) = overlap(&bd.world[lo], &bd.world[hi], bd.pos[lo], bd.pos[hi]) {
+            self.contacts.hand_over(
+                pair_key(lo as u32, hi as u32),
+                ov.area,
+                ov.centroid,
+                ov.normal,
+            );
+            self.handovers.count += 1;
+            self.handovers.max_area = self.handovers.max_area.max(ov.area);
         }
     }
 
@@ -653,6 +683,19 @@ impl World {
         let sh = self.boundary.sheet.as_mut().expect("sheet present");
         sh.joints_made += 1;
         sh.blocks.insert(0, id);
+        // A block grown where rubble already lies (a sheet that rafted far enough for its
+        // driven end to reach the ridge) starts with its overlaps forgiven, see `contact`.
+        let id = id as usize;
+        self.bodies.update_world(id);
+        for i in 0..self.bodies.len() {
+            if i == id || i == first {
+                continue;
+            }
+            self.bodies.update_world(i);
+            if self.bodies.aabb[i].overlaps(&self.bodies.aabb[id]) {
+                self.hand_over(i, id);
+            }
+        }
     }
 
     /// The energy budget now (J/m).
@@ -738,6 +781,7 @@ impl World {
             boundary: self.boundary.clone(),
             loads: self.loads.clone(),
             blocks_broken: self.blocks_broken,
+            handovers: self.handovers,
             ledger: self.acc,
         }
     }
@@ -770,6 +814,7 @@ impl World {
         w.boundary = s.boundary.clone();
         w.loads = s.loads.clone();
         w.blocks_broken = s.blocks_broken;
+        w.handovers = s.handovers;
         let nb = w.bodies.len() as u64;
         if s.contacts
             .iter()
@@ -784,6 +829,16 @@ impl World {
         w.dt = s.dt;
         Ok(w)
     }
+}
+
+/// Joints that severed while their blocks overlapped (see [`crate::dem::contact`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Handovers {
+    /// How many severed joints left their two blocks overlapping.
+    pub count: u64,
+    /// The largest such overlap (m² per metre of depth, i.e. the overlap area).
+    pub max_area: f64,
 }
 
 /// Version of the [`Snapshot`] layout.
@@ -853,6 +908,10 @@ pub struct Snapshot {
     pub loads: Vec<(BodyId, V2)>,
     /// Joints severed so far.
     pub blocks_broken: u64,
+    /// Overlapping blocks handed from a joint to a contact so far (absent in older
+    /// snapshots, which predate the hand-over).
+    #[serde(default)]
+    pub handovers: Handovers,
     /// Ledger integrals.
     pub ledger: Accumulators,
 }
