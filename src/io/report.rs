@@ -55,17 +55,23 @@ pub fn campaign_report(name: &str, points: &[PointStats], table: &RidgeTable) ->
         }
         let _ = writeln!(o);
     }
-    let _ = writeln!(o, "## Energy budget\n");
     let _ = writeln!(
         o,
-        "| point | seeds | W (kJ/m) | ΔPE (kJ/m) | Φ_f/W | ΔPE/W | Φ_i/W | drag/W | abs(residual)/W | W/ΔPE | mean force (kN/m) |"
+        "## Energy budget\n\n\"Born overlapping\" counts contacts that started with their \
+         overlap forgiven (a joint severed with its blocks overlapping, or a sheet block grown \
+         where rubble lay; docs/model.md): many of them mean the sheet rafted until its driven \
+         end reached the ridge.\n"
     );
-    let _ = writeln!(o, "|---|---|---|---|---|---|---|---|---|---|---|");
+    let _ = writeln!(
+        o,
+        "| point | seeds | W (kJ/m) | ΔPE (kJ/m) | Φ_f/W | ΔPE/W | Φ_i/W | drag/W | abs(residual)/W | W/ΔPE | mean force (kN/m) | joints severed | born overlapping |"
+    );
+    let _ = writeln!(o, "|---|---|---|---|---|---|---|---|---|---|---|---|---|");
     for p in points {
         let g = |k: &str| p.get(k);
         let _ = writeln!(
             o,
-            "| {} | {} | {} | {} | {} | {} | {} | {} | {:.1e} | {} | {} |",
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {:.1e} | {} | {} | {} | {} |",
             p.label,
             p.seeds.len(),
             pm(g("work"), 1e-3, 1),
@@ -77,6 +83,8 @@ pub fn campaign_report(name: &str, points: &[PointStats], table: &RidgeTable) ->
             g("residual_fraction").map_or(f64::NAN, |s| s.mean),
             pm(g("ratio_work_to_pe"), 1.0, 1),
             pm(g("mean_force"), 1e-3, 2),
+            pm(g("blocks_broken"), 1.0, 0),
+            pm(g("handover_contacts"), 1.0, 1),
         );
     }
     let _ = writeln!(

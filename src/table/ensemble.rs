@@ -41,7 +41,7 @@ impl Stat {
 }
 
 /// The quantities summarised, in report order: (key, unit, description).
-pub const QUANTITIES: [(&str, &str, &str); 24] = [
+pub const QUANTITIES: [(&str, &str, &str); 25] = [
     ("work", "J/m", "ridging work W, eq (9)"),
     (
         "potential_energy",
@@ -73,6 +73,11 @@ pub const QUANTITIES: [(&str, &str, &str); 24] = [
     ("ratio_work_to_pe", "1", "W / ΔPE at the end"),
     ("mean_force", "N/m", "mean ridging force W / (U t)"),
     ("blocks_broken", "1", "joints severed"),
+    (
+        "handover_contacts",
+        "1",
+        "contacts born overlapping, their overlap forgiven",
+    ),
     (
         "max_sail_height",
         "m",
@@ -120,6 +125,7 @@ pub fn quantity(r: &RunRecord, key: &str) -> Option<f64> {
             (u * s.time > 0.0).then(|| s.work / (u * s.time))
         }
         "blocks_broken" => Some(s.blocks_broken as f64),
+        "handover_contacts" => Some(s.handover_contacts as f64),
         "max_sail_height" => Some(m.max_sail_height),
         "max_keel_depth" => Some(m.max_keel_depth),
         "sail_area" => Some(m.sail_area),
