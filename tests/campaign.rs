@@ -306,6 +306,24 @@ fn shipped_specs_plan_the_papers_sets() {
     assert_eq!(count("speed.toml"), 2 * 7);
     assert_eq!(count("modulus.toml"), 3 * 7);
     assert_eq!(count("floe.toml"), 2 * 7);
+    assert_eq!(count("floe-3seeds.toml"), 2 * 3);
+    // The three-seed copies run exactly the first seeds of the paper's sets.
+    for (short, full) in [
+        ("default-table.toml", "thickness.toml"),
+        ("floe-3seeds.toml", "floe.toml"),
+    ] {
+        let plan = |f: &str| {
+            CampaignSpec::read(&dir.join(f))
+                .unwrap()
+                .plan(&dir)
+                .unwrap()
+        };
+        let all = plan(full);
+        for p in plan(short) {
+            let q = all.iter().find(|q| q.id == p.id).expect(&p.id);
+            assert_eq!(q.scene, p.scene, "{}", p.id);
+        }
+    }
     // 100 m of sheet in every run of the speed set.
     let spec = CampaignSpec::read(&dir.join("speed.toml")).unwrap();
     for p in spec.plan(&dir).unwrap() {
