@@ -5,12 +5,13 @@
 //! Forces are per metre of depth (N/m); they act at the centroid of the overlap polygon
 //! along the contact normal `n` (from body `a` to body `b`) and tangent `t = n⊥`.
 //!
-//! Contacts born from a severed joint. Blocks held by a joint are exempt from contact, so
-//! where a piece bends sharply the corners of two joined blocks may interpenetrate. When
-//! that joint severs, the contact the two blocks form would be born deep and pre-loaded: the
-//! elastic law (2) would push with k_ne·A at once and the viscous law (3) would read the
-//! whole area as a one-step approach (k_nv·A/dt), both injecting energy the joint never
-//! held. Such a contact is instead born with its overlap forgiven ([`Contact::forgiven`]):
+//! Contacts born overlapping. Blocks held by a joint are exempt from contact, so where a
+//! piece bends the corners of two joined blocks may interpenetrate; and a block grown at the
+//! sheet's driven end may land on rubble (a sheet that rafted until its driven end reached
+//! the ridge). The contact such a pair forms would be born deep and pre-loaded: the elastic
+//! law (2) would push with k_ne·A at once and the viscous law (3) would read the whole area
+//! as a one-step approach (k_nv·A/dt), both injecting energy no one stored. Such a contact
+//! is instead born with its overlap forgiven ([`Contact::forgiven`]):
 //! it resists only further penetration, F_e = k_ne·max(A − A_f, 0), starts its rate from
 //! A₀ = A, and A_f only ever decreases (A_f ← min(A_f, A)), so once the blocks separate it
 //! is an ordinary contact. The paper does not discuss this hand-over.
@@ -99,9 +100,9 @@ pub struct Contact {
     /// Elastic normal work absorbed while this contact has been active (J/m): the energy it
     /// holds as a compressed spring.
     pub stored: f64,
-    /// Forgiven overlap A_f (m²): the overlap a contact born from a severed joint had at
-    /// birth, which the elastic law does not push against; it only decreases. Zero for
-    /// every contact born by approach.
+    /// Forgiven overlap A_f (m²): the overlap a contact born overlapping (severed joint,
+    /// grown block) had at birth, which the elastic law does not push against; it only
+    /// decreases. Zero for every contact born by approach.
     #[serde(default)]
     pub forgiven: f64,
     /// Point of action: the overlap centroid (m).
@@ -148,9 +149,10 @@ impl ContactSet {
         self.cur = c;
     }
 
-    /// Records the pair `key` of a joint that has just severed, whose blocks overlap by
-    /// `area` (m²) at centroid `point` with normal `normal`: the contact they form is born
-    /// with that overlap forgiven and A₀ = `area` (see the module docs). Applies no force.
+    /// Records the pair `key` whose bodies overlap by `area` (m²) at centroid `point` with
+    /// normal `normal` without having approached (a severed joint, a grown block): the
+    /// contact they form is born with that overlap forgiven and A₀ = `area` (see the module
+    /// docs). Applies no force.
     pub fn hand_over(&mut self, key: u64, area: f64, point: V2, normal: V2) {
         let c = Contact {
             key,

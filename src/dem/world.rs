@@ -278,8 +278,8 @@ impl World {
         self.blocks_broken
     }
 
-    /// Severed joints whose blocks overlapped, and the largest such overlap (m²): see
-    /// [`crate::dem::contact`] on contacts born from a severed joint.
+    /// Contacts born overlapping so far (from a severed joint, or a sheet block grown
+    /// through rubble), and the largest such overlap (m²): see [`crate::dem::contact`].
     pub fn handovers(&self) -> Handovers {
         self.handovers
     }
@@ -539,6 +539,11 @@ impl World {
     /// Handles joints severed in the last step: bevels the corners of the broken faces,
     /// turns what broke off the sheet into rubble, and grows the sheet at its left end.
     fn after_fracture(&mut self) {
+        // Outlines at the new positions, once: the hand-overs below test overlaps, and
+        // reshaping or adding a body keeps its own outline current.
+        for i in 0..self.bodies.len() {
+            self.bodies.update_world(i);
+        }
         let severed: Vec<usize> = self.joints.severed().to_vec();
         for k in severed {
             self.blocks_broken += 1;
@@ -580,13 +585,11 @@ impl World {
             }
             // Blocks that were joined may overlap (joined blocks are exempt from contact):
             // their contact is born with that overlap forgiven, see `contact`.
-            self.bodies.update_world(a);
-            self.bodies.update_world(b);
             self.hand_over(a, b);
         }
     }
 
-    /// Hands the overlap of bodies `a` and `b` (outlines up to date), if any, to a contact
+    /// Hands the overlap of bodies `a` and `b` (outlines current), if any, to a contact
     /// born with that overlap forgiven (see [`crate::dem::contact`]), and counts it.
     fn hand_over(&mut self, a: usize, b: usize) {
         let (lo, hi) = (a.min(b), a.max(b));
@@ -685,13 +688,12 @@ impl World {
         sh.blocks.insert(0, id);
         // A block grown where rubble already lies (a sheet that rafted far enough for its
         // driven end to reach the ridge) starts with its overlaps forgiven, see `contact`.
+        // Outlines are current here (see `after_fracture`).
         let id = id as usize;
-        self.bodies.update_world(id);
         for i in 0..self.bodies.len() {
             if i == id || i == first {
                 continue;
             }
-            self.bodies.update_world(i);
             if self.bodies.aabb[i].overlaps(&self.bodies.aabb[id]) {
                 self.hand_over(i, id);
             }
@@ -831,11 +833,12 @@ impl World {
     }
 }
 
-/// Joints that severed while their blocks overlapped (see [`crate::dem::contact`]).
+/// Contacts born overlapping, their overlap forgiven (see [`crate::dem::contact`]): from a
+/// joint that severed while its blocks overlapped, or a sheet block grown through rubble.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Handovers {
-    /// How many severed joints left their two blocks overlapping.
+    /// How many contacts were born overlapping.
     pub count: u64,
     /// The largest such overlap (m² per metre of depth, i.e. the overlap area).
     pub max_area: f64,
@@ -908,8 +911,8 @@ pub struct Snapshot {
     pub loads: Vec<(BodyId, V2)>,
     /// Joints severed so far.
     pub blocks_broken: u64,
-    /// Overlapping blocks handed from a joint to a contact so far (absent in older
-    /// snapshots, which predate the hand-over).
+    /// Contacts born overlapping so far (absent in older snapshots, which predate the
+    /// hand-over).
     #[serde(default)]
     pub handovers: Handovers,
     /// Ledger integrals.
