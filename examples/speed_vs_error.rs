@@ -1,75 +1,141 @@
-//! Speed against error of the ridging simulation (docs/performance.md).
+//! Speed against error of the ridging simulation, judged on ensembles
+//! (docs/speed-vs-error.md).
 //!
-//! Runs a 60-s ridging scene at time-step safety factors of 1, 1/2 and 1/4 of the default,
-//! for block widths W and W/2, and reports the wall time and the relative difference of the
-//! work W, ΔPE and Φ_f from the finest run of the same width. For scale it also runs the
-//! default configuration with other seeds: a ridge is a chaotic pile, so differences smaller
-//! than the seed-to-seed spread are not resolved by any time step.
+//! A ridge is chaotic: two runs that differ in the last bit diverge, so a numerical change
+//! (time step, dashpot scheme) is judged by the difference of ensemble means from the
+//! reference configuration, with a 95 % confidence interval. Each configuration is a
+//! campaign directory (`pressridge campaign`, specs in `data/campaigns/speed-vs-error/`)
+//! over the same thicknesses and seeds; the first is the reference.
 //!
-//! `cargo run --release --example speed_vs_error [-- DURATION]`
+//! For each thickness and configuration the table gives the runs, the steps and the mean
+//! wall time of a run, and for W, ΔPE, W/ΔPE, Φ_f/W, L/h, sail height and keel depth the
+//! difference of the configuration's mean from the reference mean, in % of the reference
+//! mean, with its 95 % interval by Welch's t (unequal variances, Welch–Satterthwaite degrees
+//! of freedom; the reference mean in the denominator is taken as exact), and the worst
+//! closure residual |W − sinks| / largest term over all samples of all runs.
+//!
+//! ```sh
+//! cargo run --release --example speed_vs_error -- \
+//!     reference=runs/sve-reference implicit-0.8=runs/sve-implicit-0.8 > table.md
+//! ```
 
-use pressridge::scene::Scene;
-use pressridge::simulation::{self, Summary};
+use pressridge::campaign::{RunRecord, read_records};
+use pressridge::table::ensemble::{Stat, quantity};
+use pressridge::table::fit::student_t_quantile;
+use std::collections::BTreeMap;
+use std::path::Path;
 
-fn run(sets: &[String]) -> Summary {
-    let scene = Scene::default().with_overrides(sets).unwrap();
-    simulation::run(&scene, &mut |_| true).unwrap().summary
+/// The quantities compared: key of [`quantity`], label, and the bound (%) the new default
+/// must hold (issue 13), if any.
+const QUANTITIES: [(&str, &str, Option<f64>); 7] = [
+    ("work", "W", Some(10.0)),
+    ("potential_energy", "ΔPE", Some(20.0)),
+    ("ratio_work_to_pe", "W/ΔPE", Some(20.0)),
+    ("friction_fraction", "Φ_f/W", None),
+    ("length_to_thickness", "L/h", None),
+    ("max_sail_height", "sail", None),
+    ("max_keel_depth", "keel", None),
+];
+
+/// Difference of means (b − a) and the half-width of its 95 % Welch interval.
+fn welch(a: &Stat, b: &Stat) -> (f64, f64) {
+    let (va, vb) = (a.std.powi(2) / a.n as f64, b.std.powi(2) / b.n as f64);
+    let se = (va + vb).sqrt();
+    let dof = (va + vb).powi(2)
+        / (va.powi(2) / (a.n as f64 - 1.0) + vb.powi(2) / (b.n as f64 - 1.0)).max(1e-300);
+    (b.mean - a.mean, student_t_quantile(0.975, dof) * se)
 }
 
-fn main() {
-    let duration: f64 = std::env::args()
-        .nth(1)
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(60.0);
-    let base = Scene::default();
-    let safety = base.numerics.time_step_safety;
-    let w0 = base.sheet.as_ref().unwrap().block_width;
-    println!(
-        "| W (m) | safety | Δt (s) | steps | wall (s) | work (kJ/m) | ΔPE (kJ/m) | Φ_f (kJ/m) | err work | err ΔPE | err Φ_f |"
-    );
-    println!("|---|---|---|---|---|---|---|---|---|---|---|");
-    for width in [w0, w0 / 2.0] {
-        let rows: Vec<(f64, Summary)> = [1.0, 0.5, 0.25]
-            .iter()
-            .map(|f| {
-                let s = run(&[
-                    format!("duration={duration}"),
-                    format!("sheet.block_width={width}"),
-                    format!("numerics.time_step_safety={}", safety * f),
-                ]);
-                eprintln!("W {width} safety×{f}: {:.1} s wall", s.wall_seconds);
-                (safety * f, s)
-            })
-            .collect();
-        let fine = &rows.last().unwrap().1;
-        let rel = |a: f64, b: f64| format!("{:+.1} %", 100.0 * (a - b) / b);
-        for (sf, s) in &rows {
-            println!(
-                "| {width} | {sf} | {:.2e} | {} | {:.1} | {:.2} | {:.2} | {:.2} | {} | {} | {} |",
-                s.dt,
-                s.steps,
-                s.wall_seconds,
-                s.work / 1e3,
-                s.potential_energy / 1e3,
-                s.friction_dissipation / 1e3,
-                rel(s.work, fine.work),
-                rel(s.potential_energy, fine.potential_energy),
-                rel(s.friction_dissipation, fine.friction_dissipation)
+type Groups = BTreeMap<String, Vec<RunRecord>>;
+
+fn groups(dir: &Path) -> Result<Groups, Box<dyn std::error::Error>> {
+    let (_, records) = read_records(dir)?;
+    let mut g = Groups::new();
+    for r in records {
+        g.entry(r.settings.join(", ")).or_default().push(r);
+    }
+    Ok(g)
+}
+
+fn stat(runs: &[RunRecord], key: &str) -> Stat {
+    let xs: Vec<f64> = runs.iter().filter_map(|r| quantity(r, key)).collect();
+    Stat::of(&xs)
+}
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let configs: Vec<(String, Groups)> = std::env::args()
+        .skip(1)
+        .map(|a| {
+            let (name, dir) = a
+                .split_once('=')
+                .ok_or("arguments are NAME=CAMPAIGN_DIR, the reference first")?;
+            Ok((name.to_string(), groups(Path::new(dir))?))
+        })
+        .collect::<Result<_, Box<dyn std::error::Error>>>()?;
+    let Some((ref_name, reference)) = configs.first() else {
+        return Err("usage: speed_vs_error NAME=CAMPAIGN_DIR ... (the reference first)".into());
+    };
+    for (point, ref_runs) in reference {
+        println!("\n### {point}\n");
+        print!("| configuration | runs | Δt (s) | steps | wall (s) |");
+        for (_, label, _) in QUANTITIES {
+            print!(" {label} |");
+        }
+        println!(" worst closure |");
+        println!("|{}", "---|".repeat(6 + QUANTITIES.len()));
+        for (name, g) in &configs {
+            let Some(runs) = g.get(point) else { continue };
+            let dt = runs.first().map_or(f64::NAN, |r| r.summary.dt);
+            let steps = Stat::of(
+                &runs
+                    .iter()
+                    .map(|r| r.summary.steps as f64)
+                    .collect::<Vec<_>>(),
             );
+            let wall = Stat::of(
+                &runs
+                    .iter()
+                    .map(|r| r.summary.wall_seconds)
+                    .collect::<Vec<_>>(),
+            );
+            let worst = runs
+                .iter()
+                .map(|r| r.summary.max_relative_residual)
+                .fold(0.0f64, f64::max);
+            print!(
+                "| {name} | {} | {dt:.3e} | {:.0} | {:.0} |",
+                runs.len(),
+                steps.mean,
+                wall.mean
+            );
+            for (key, _, bound) in QUANTITIES {
+                let a = stat(ref_runs, key);
+                let b = stat(runs, key);
+                if name == ref_name {
+                    print!(" {:.4} ± {:.4} |", a.mean, a.std);
+                    continue;
+                }
+                if a.n < 2 || b.n < 2 {
+                    print!(" — |");
+                    continue;
+                }
+                let (d, h) = welch(&a, &b);
+                let (pd, ph) = (100.0 * d / a.mean, 100.0 * (h / a.mean).abs());
+                let flag = match bound {
+                    Some(bd) if (pd - ph).abs().max((pd + ph).abs()) > bd => " ✗",
+                    Some(_) => " ✓",
+                    None => "",
+                };
+                print!(" {pd:+.1} % [{:+.1}, {:+.1}]{flag} |", pd - ph, pd + ph);
+            }
+            println!(" {worst:.1e} |");
         }
     }
-    println!();
-    println!("Seed-to-seed spread at the default W and Δt (seeds 1–4):");
-    println!();
-    println!("| seed | work (kJ/m) | ΔPE (kJ/m) | Φ_f (kJ/m) |");
-    println!("|---|---|---|---|");
-    for seed in 1..=4 {
-        let s = run(&[format!("duration={duration}"), format!("seed={seed}")]);
-        println!(
-            "| {seed} | {:.2} | {:.2} | {:.2} |",
-            s.work / 1e3,
-            s.potential_energy / 1e3,
-            s.friction_dissipation / 1e3
-        );
-    }
+    println!(
+        "\nReference row: mean ± standard deviation over seeds (W, ΔPE in J/m; sail and keel \
+         in m). Other rows: difference of the mean from the reference mean in % of the \
+         reference mean, [95 % Welch interval]; ✓/✗: the interval lies within / leaves \
+         ±10 % (W) or ±20 % (ΔPE, W/ΔPE)."
+    );
+    Ok(())
 }

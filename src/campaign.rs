@@ -170,6 +170,18 @@ pub struct RunSample {
     pub friction_dissipation: f64,
     /// Viscous contact dissipation Φ_i, eq (12) (J/m).
     pub viscous_dissipation: f64,
+    /// Drag dissipation (J/m).
+    #[serde(default)]
+    pub drag_dissipation: f64,
+    /// Joint viscous dissipation (J/m).
+    #[serde(default)]
+    pub joint_dissipation: f64,
+    /// Boundary dashpot dissipation (J/m).
+    #[serde(default)]
+    pub boundary_dissipation: f64,
+    /// Fracture dissipation (J/m).
+    #[serde(default)]
+    pub fracture_dissipation: f64,
     /// Mean ridging force over the interval ending here, Δwork/(U·Δt) (N/m).
     pub mean_force: f64,
 }
@@ -384,6 +396,10 @@ pub fn run_one(
             potential_energy: x.energy.potential_energy,
             friction_dissipation: x.energy.friction_dissipation,
             viscous_dissipation: x.energy.viscous_dissipation,
+            drag_dissipation: x.energy.drag_dissipation,
+            joint_dissipation: x.energy.joint_dissipation,
+            boundary_dissipation: x.energy.boundary_dissipation,
+            fracture_dissipation: x.energy.fracture_dissipation,
             mean_force: x.mean_force,
         })
         .collect();

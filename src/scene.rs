@@ -12,8 +12,8 @@
 
 use crate::dem::boundary::{FloeSupport, SheetBoundary};
 use crate::dem::{
-    Block, ContactParams, Drive, JointMaterial, Role, Shape, V2, WaterParams, World, WorldError,
-    WorldParams,
+    Block, ContactParams, Dashpot, Drive, JointMaterial, Role, Shape, V2, WaterParams, World,
+    WorldError, WorldParams,
 };
 use rand_xoshiro::Xoshiro256PlusPlus;
 use rand_xoshiro::rand_core::{Rng, SeedableRng};
@@ -88,10 +88,15 @@ impl Default for WaterSection {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct NumericsSection {
-    /// Safety factor on the critical time step (dimensionless). Default 0.5.
+    /// Safety factor on the stable time step (dimensionless, in (0, 1]). Default
+    /// [`crate::dem::world::DEFAULT_TIME_STEP_SAFETY`]; see docs/speed-vs-error.md.
     pub time_step_safety: f64,
-    /// Fixed time step (s); 0 derives it from the stiffest element. Default 0.
+    /// Fixed time step (s); 0 derives it from the stiffest element. Default 0. A value
+    /// above the scene's stable limit is refused before the run, with the limit.
     pub time_step: f64,
+    /// Time discretisation of the contact dashpot of eq (3): "implicit" (default) or
+    /// "explicit" (the paper's form; needs a smaller step). See [`Dashpot`].
+    pub contact_dashpot: Dashpot,
     /// Interval between samples of the energy budget and the ridging force (s).
     /// Default 0.2 s, the paper's force sampling interval (Figure 6).
     pub sample_interval: f64,
@@ -100,8 +105,9 @@ pub struct NumericsSection {
 impl Default for NumericsSection {
     fn default() -> Self {
         Self {
-            time_step_safety: 0.5,
+            time_step_safety: crate::dem::world::DEFAULT_TIME_STEP_SAFETY,
             time_step: 0.0,
+            contact_dashpot: Dashpot::default(),
             sample_interval: 0.2,
         }
     }
@@ -670,6 +676,7 @@ impl Scene {
             }),
             time_step_safety: self.numerics.time_step_safety,
             time_step: (self.numerics.time_step > 0.0).then_some(self.numerics.time_step),
+            contact_dashpot: self.numerics.contact_dashpot,
             ..WorldParams::default()
         }
     }
@@ -701,6 +708,7 @@ impl Scene {
             self.build_sheet(&mut world, sh)?;
         }
         world.refresh_time_step();
+        world.check_time_step()?;
         Ok(world)
     }
 

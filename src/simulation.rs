@@ -2,6 +2,7 @@
 //! ridging force at the scene's interval, and summarise. No file formats here (see
 //! [`crate::io`]).
 
+use crate::dem::ledger::LEDGER_TERMS;
 use crate::dem::{EnergyBudget, Role, Snapshot, World};
 use crate::scene::{Scene, SceneError};
 use serde::{Deserialize, Serialize};
@@ -26,9 +27,12 @@ pub struct Summary {
     pub wall_seconds: f64,
     /// Number of bodies at the end.
     pub bodies: usize,
-    /// Work done by the pushed sheet (the force that holds its end block at U) and external
-    /// loads, eq (9) (J/m).
+    /// Work done on the system by the push (J/m): the driver that holds the sheet's end
+    /// block at U, the frame of eq (7) moving at U (`frame_work`) and external loads.
     pub work: f64,
+    /// The part of `work` done by the frame of eqs (7)–(8) moving at U (J/m).
+    #[serde(default)]
+    pub frame_work: f64,
     /// Work by eq (9) as the paper writes it: U·Δt·Σ F_x of the contact forces that other
     /// bodies exert on the sheet (J/m). It leaves out the sheet's own inertia, buoyancy and
     /// boundary forces, so it differs from `work` by those.
@@ -45,10 +49,18 @@ pub struct Summary {
     pub drag_dissipation: f64,
     /// Joint viscous dissipation (J/m).
     pub joint_dissipation: f64,
-    /// Dissipation by the boundary forces, eqs (7)–(8) and floe supports (J/m).
+    /// Dissipation by the dashpots of eqs (7)–(8) relative to their frame and the floe
+    /// dashpots (J/m).
     pub boundary_dissipation: f64,
-    /// Elastic energy released by cracks (J/m).
+    /// Elastic energy held by joints when they were severed (J/m).
     pub fracture_dissipation: f64,
+    /// Elastic normal contact work not returned at separation (J/m; no fixed sign, see
+    /// [`EnergyBudget::contact_hysteresis`]).
+    #[serde(default)]
+    pub contact_hysteresis: f64,
+    /// Kinetic-energy change of blocks re-cut by bevels (J/m; no fixed sign).
+    #[serde(default)]
+    pub cut_away: f64,
     /// Elastic energy held at the end (J/m).
     pub elastic_energy: f64,
     /// All dissipation other than Φ_f, Φ_i and drag (J/m).
@@ -87,41 +99,31 @@ pub struct Sample {
     pub mean_force: f64,
 }
 
+/// Number of columns of a [`Sample`] row: time, the ledger terms, two forces.
+pub const SERIES_LEN: usize = LEDGER_TERMS.len() + 3;
+
 /// Column names and units of a [`Sample`] as [`Sample::row`] lays it out (the CSV time
-/// series and the Python `simulate` use this one list).
-pub const SERIES_COLUMNS: [(&str, &str); 12] = [
-    ("time", "s"),
-    ("work", "J/m"),
-    ("potential_energy", "J/m"),
-    ("kinetic_energy", "J/m"),
-    ("friction_dissipation", "J/m"),
-    ("viscous_dissipation", "J/m"),
-    ("drag_dissipation", "J/m"),
-    ("elastic_energy", "J/m"),
-    ("other_dissipation", "J/m"),
-    ("residual", "J/m"),
-    ("ridging_force", "N/m"),
-    ("mean_force", "N/m"),
-];
+/// series and the Python `simulate` use this one list): time, every term of
+/// [`LEDGER_TERMS`], the ridging force and the mean force.
+pub fn series_columns() -> [(&'static str, &'static str); SERIES_LEN] {
+    let mut out = [("time", "s"); SERIES_LEN];
+    for (k, (name, unit, _)) in LEDGER_TERMS.iter().enumerate() {
+        out[k + 1] = (name, unit);
+    }
+    out[SERIES_LEN - 2] = ("ridging_force", "N/m");
+    out[SERIES_LEN - 1] = ("mean_force", "N/m");
+    out
+}
 
 impl Sample {
-    /// The sample's values in the order and units of [`SERIES_COLUMNS`].
-    pub fn row(&self) -> [f64; SERIES_COLUMNS.len()] {
-        let e = &self.energy;
-        [
-            e.time,
-            e.work,
-            e.potential_energy,
-            e.kinetic_energy,
-            e.friction_dissipation,
-            e.viscous_dissipation,
-            e.drag_dissipation,
-            e.elastic_energy,
-            e.other_dissipation,
-            e.residual,
-            self.ridging_force,
-            self.mean_force,
-        ]
+    /// The sample's values in the order and units of [`series_columns`].
+    pub fn row(&self) -> [f64; SERIES_LEN] {
+        let mut out = [0.0; SERIES_LEN];
+        out[0] = self.energy.time;
+        out[1..=LEDGER_TERMS.len()].copy_from_slice(&self.energy.values());
+        out[SERIES_LEN - 2] = self.ridging_force;
+        out[SERIES_LEN - 1] = self.mean_force;
+        out
     }
 }
 
@@ -144,15 +146,16 @@ pub fn run(
     observe: &mut dyn FnMut(&World) -> bool,
 ) -> Result<RunOutput, SceneError> {
     let mut world = scene.build()?;
-    Ok(run_world(&mut world, scene, observe))
+    run_world(&mut world, scene, observe)
 }
 
-/// Runs an already built world to the scene's duration (see [`run`]).
+/// Runs an already built world to the scene's duration (see [`run`]). A step that turns
+/// the state non-finite ends the run at once with [`crate::dem::WorldError::NonFinite`].
 pub fn run_world(
     world: &mut World,
     scene: &Scene,
     observe: &mut dyn FnMut(&World) -> bool,
-) -> RunOutput {
+) -> Result<RunOutput, SceneError> {
     let start = std::time::Instant::now();
     let interval = scene.numerics.sample_interval;
     let speed = scene.sheet.as_ref().map_or(0.0, |s| s.speed);
@@ -179,6 +182,9 @@ pub fn run_world(
     let mut keep_going = observe(world);
     while keep_going && world.time() < scene.duration - 0.5 * world.dt() {
         world.step();
+        if let Some(e) = world.fault() {
+            return Err(SceneError::World(e.clone()));
+        }
         if speed > 0.0 {
             work_eq9 += speed * world.dt() * world.ridging_force();
         }
@@ -206,6 +212,7 @@ pub fn run_world(
         wall_seconds: start.elapsed().as_secs_f64(),
         bodies: world.bodies.len(),
         work: e.work,
+        frame_work: e.frame_work,
         work_eq9,
         potential_energy: e.potential_energy,
         kinetic_energy: e.kinetic_energy,
@@ -215,6 +222,8 @@ pub fn run_world(
         joint_dissipation: e.joint_dissipation,
         boundary_dissipation: e.boundary_dissipation,
         fracture_dissipation: e.fracture_dissipation,
+        contact_hysteresis: e.contact_hysteresis,
+        cut_away: e.cut_away,
         elastic_energy: e.elastic_energy,
         other_dissipation: e.other_dissipation,
         residual: e.residual,
@@ -230,11 +239,11 @@ pub fn run_world(
         max_handover_overlap: world.handovers().max_area,
         rubble_block_lengths: rubble_lengths(world),
     };
-    RunOutput {
+    Ok(RunOutput {
         summary,
         series,
         final_state: world.snapshot(),
-    }
+    })
 }
 
 /// Lengths (m) of the rubble pieces: blocks of role rubble joined by intact joints, the

@@ -28,7 +28,6 @@ use pressridge::campaign::{
 };
 use pressridge::io::IoError;
 use pressridge::io::itd_netcdf::{NetcdfError, read_cf_table};
-use pressridge::io::series::ENERGY_COLUMNS;
 use pressridge::io::table_netcdf::{Provenance, write_ridge_table};
 use pressridge::itd::{
     CategoryBounds, Cf, CfPreset, CfTable, ItdError, ItdParams, Participation, Redistribution,
@@ -37,6 +36,7 @@ use pressridge::itd::{
 };
 use pressridge::scene::{Scene, SceneError};
 use pressridge::simulation;
+use pressridge::simulation::series_columns;
 use pressridge::table::lookup::{LookupError, RidgeLookup};
 use pressridge::table::tabulate::tabulate as tabulate_records;
 
@@ -756,14 +756,15 @@ fn simulate<'py>(
         }
     })?;
     let summary = serde_json::to_string(&out.summary).map_err(value_err)?;
-    let mut cols: Vec<Vec<f64>> = vec![Vec::with_capacity(out.series.len()); ENERGY_COLUMNS.len()];
+    let mut cols: Vec<Vec<f64>> =
+        vec![Vec::with_capacity(out.series.len()); series_columns().len()];
     for s in &out.series {
         let row = s.row();
         for (c, x) in cols.iter_mut().zip(row) {
             c.push(x);
         }
     }
-    let series = ENERGY_COLUMNS
+    let series = series_columns()
         .iter()
         .zip(cols)
         .map(|((name, _), c)| (name.to_string(), PyArray1::from_vec(py, c)))
@@ -774,7 +775,7 @@ fn simulate<'py>(
 /// Units of the time-series columns, as (name, unit) pairs.
 #[pyfunction]
 fn series_units() -> Vec<(&'static str, &'static str)> {
-    ENERGY_COLUMNS.to_vec()
+    series_columns().to_vec()
 }
 
 // ---------------------------------------------------------------------------------------

@@ -8,7 +8,7 @@ use super::geometry::{Aabb, MAX_VERTS, Outline, V2, area_centroid, polar_moment}
 use serde::{Deserialize, Serialize};
 
 /// An error in a body's definition.
-#[derive(Debug, thiserror::Error, PartialEq)]
+#[derive(Clone, Debug, thiserror::Error, PartialEq)]
 pub enum ShapeError {
     /// Fewer than 3 or more than [`MAX_VERTS`] vertices.
     #[error("a block outline needs 3 to {MAX_VERTS} vertices, got {0}")]
@@ -394,6 +394,45 @@ impl Bodies {
     #[inline]
     pub fn point_velocity(&self, i: usize, p: V2) -> V2 {
         self.vel[i] + (p - self.pos[i]).perp() * self.omega[i]
+    }
+
+    /// Inverse effective mass (m/kg per metre of depth, i.e. 1/(kg/m)) of body `i` for a
+    /// force along the unit vector `n` at point `p` (m): 1/m + (r×n)²/I over the degrees
+    /// of freedom that are free (a prescribed one has infinite mass).
+    #[inline]
+    pub fn inverse_mass_along(&self, i: usize, p: V2, n: V2) -> f64 {
+        let d = self.drive[i];
+        let m = self.mass[i];
+        let mut k = 0.0;
+        if d.u.is_none() {
+            k += n.x * n.x / m;
+        }
+        if d.v.is_none() {
+            k += n.y * n.y / m;
+        }
+        if d.omega.is_none() {
+            let rn = (p - self.pos[i]).cross(n);
+            k += rn * rn / self.inertia[i];
+        }
+        k
+    }
+
+    /// Acceleration (m/s²) of the material point at `p` (m) of body `i` under the force
+    /// and moment accumulated so far, over its free degrees of freedom (a prescribed one
+    /// does not accelerate); the centripetal term is left out.
+    #[inline]
+    pub fn point_acceleration(&self, i: usize, p: V2) -> V2 {
+        let d = self.drive[i];
+        let f = self.force[i];
+        let m = self.mass[i];
+        let ax = if d.u.is_none() { f.x / m } else { 0.0 };
+        let ay = if d.v.is_none() { f.y / m } else { 0.0 };
+        let alpha = if d.omega.is_none() {
+            self.torque[i] / self.inertia[i]
+        } else {
+            0.0
+        };
+        V2::new(ax, ay) + (p - self.pos[i]).perp() * alpha
     }
 
     /// Adds force `f` (N/m) acting at point `p` (m) to body `i`.

@@ -78,12 +78,25 @@ pub struct Boundary {
 }
 
 /// Work absorbed by boundary forces (J/m).
+///
+/// The viscous force of eq (7) acts on a sheet block's velocity relative to the driven
+/// block, i.e. it is a dashpot to a frame that moves with the push at U (the far field of a
+/// three-dimensional sheet). The work the bodies do against it, −F·v̄·Δt, therefore splits
+/// into the dashpot's dissipation −F·(v̄ − U·x̂)·Δt, which is k′·|v − U·x̂|²·Δt ≥ 0 to
+/// first order, and the remainder F_x·U·Δt, the work the moving frame does on the bodies: a second
+/// input of the push next to the driver's (it is large and positive while the sheet at rest
+/// is brought up to speed, which, booked as dissipation, made that negative).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
 pub struct BoundaryWork {
-    /// Viscous forces of eqs (7)–(8) and the floe dashpots.
+    /// Dissipation of the eq (7)–(8) dashpots (relative to the moving frame) and of the
+    /// floe dashpots.
     pub damping: f64,
-    /// Floe support springs (what they hold now, plus nothing else).
+    /// Work booked into the floe support springs: the elastic energy they hold (a linear
+    /// spring's booked work telescopes, so this is what it holds to the step's accuracy).
     pub springs: f64,
+    /// Work done on the bodies by the frame of eq (7) moving at U (an input, J/m).
+    pub frame: f64,
 }
 
 impl SheetBoundary {
@@ -140,11 +153,16 @@ impl Boundary {
         }
     }
 
-    /// Books the boundary forces' work with mid-step velocities.
+    /// Books the boundary forces' work with mid-step velocities: the eq (7) dashpots
+    /// relative to their frame moving at U, the frame's own work, the floe dashpots and
+    /// springs (see [`BoundaryWork`]).
     pub fn book_work(&self, vbar: &[V2], dt: f64, w: &mut BoundaryWork) {
+        let u = self.sheet.as_ref().map_or(0.0, |s| s.speed);
         for &(id, fv, fs, fd) in &self.forces {
             let v = vbar[id as usize];
-            w.damping -= (fv.dot(v) + fd.dot(v)) * dt;
+            let rel = V2::new(v.x - u, v.y);
+            w.damping -= (fv.dot(rel) + fd.dot(v)) * dt;
+            w.frame += fv.x * u * dt;
             w.springs -= fs.dot(v) * dt;
         }
     }

@@ -19,6 +19,7 @@
 use super::body::Bodies;
 use super::broadphase::{pair_key, unpack};
 use super::geometry::{V2, overlap};
+use super::world::Dashpot;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the contact law. Defaults follow Hopkins (1994), Table 1 and the text of
@@ -100,6 +101,10 @@ pub struct Contact {
     /// Elastic normal work absorbed while this contact has been active (J/m): the energy it
     /// holds as a compressed spring.
     pub stored: f64,
+    /// Tangential work booked into this contact less its slip dissipation (J/m): the
+    /// energy its tangential spring holds, to the step's accuracy.
+    #[serde(default)]
+    pub stored_t: f64,
     /// Forgiven overlap A_f (m²): the overlap a contact born overlapping (severed joint,
     /// grown block) had at birth, which the elastic law does not push against; it only
     /// decreases. Zero for every contact born by approach.
@@ -126,8 +131,15 @@ pub struct ContactWork {
     /// Work absorbed by tangential forces, eq (11) (slip dissipation plus what the
     /// tangential springs hold).
     pub tangential: f64,
-    /// Elastic work left in contacts when they separated (J/m): zero for a conservative
-    /// normal law; what remains measures the non-conservative part of the area law.
+    /// Slip dissipation of the Coulomb cap (J/m): each step a spring whose trial force F*
+    /// exceeds the cap μ·F_n and is cut to F dissipates |F|·|F* − F|/k_te ≥ 0, the force
+    /// times the plastic slip (μ·F_n times the slip in steady sliding). This is the
+    /// frictional dissipation Φ_f of eq (11).
+    #[serde(default)]
+    pub slip: f64,
+    /// Elastic work left in contacts when they separated (J/m), normal and tangential:
+    /// zero for a conservative law; what remains measures the non-conservative part of the
+    /// area law and the tangential spring energy lost at separation.
     pub released: f64,
 }
 
@@ -136,6 +148,22 @@ pub struct ContactWork {
 pub struct ContactSet {
     cur: Vec<Contact>,
     prev: Vec<Contact>,
+    /// Per contact of `cur`, what the implicit dashpot's second pass needs.
+    pending: Vec<Pending>,
+}
+
+/// A contact's viscous and friction inputs, kept between the passes of the implicit
+/// dashpot ([`Dashpot::Implicit`]).
+#[derive(Clone, Copy, Debug)]
+struct Pending {
+    /// k_nv·(Aⁿ − Aⁿ⁻¹)/Δt (N/m): eq (3) as written.
+    rate: f64,
+    /// The dashpot c = k_nv·L on the approach speed (kg/(m·s)).
+    damping: f64,
+    /// Friction coefficient of the contact.
+    mu: f64,
+    /// Tangential spring force before the Coulomb cap (N/m).
+    slip: f64,
 }
 
 impl ContactSet {
@@ -170,7 +198,8 @@ impl ContactSet {
 
     /// Tests the candidate `pairs`, updates every contact's force from eqs (2)–(4) with the
     /// half-step velocities stored in `bodies`, and adds the forces to the bodies.
-    /// `water_level` (m) selects μ_w for contacts centred below it.
+    /// `water_level` (m) selects μ_w for contacts centred below it; `dashpot` says how
+    /// eq (3) is advanced ([`Dashpot`]).
     #[allow(clippy::too_many_arguments)]
     pub fn update(
         &mut self,
@@ -180,16 +209,18 @@ impl ContactSet {
         k_nv: f64,
         dt: f64,
         water_level: Option<f64>,
+        dashpot: Dashpot,
         work: &mut ContactWork,
     ) {
         std::mem::swap(&mut self.cur, &mut self.prev);
         self.cur.clear();
+        self.pending.clear();
         let k_ne = p.normal_stiffness;
         let k_te = p.tangential_stiffness();
         let mut j = 0;
         for &key in pairs {
             while j < self.prev.len() && self.prev[j].key < key {
-                work.released += self.prev[j].stored;
+                work.released += self.prev[j].stored + self.prev[j].stored_t;
                 j += 1;
             }
             let old = if j < self.prev.len() && self.prev[j].key == key {
@@ -207,21 +238,20 @@ impl ContactSet {
                 bodies.pos[b],
             ) else {
                 if let Some(o) = old {
-                    work.released += o.stored;
+                    work.released += o.stored + o.stored_t;
                 }
                 continue;
             };
-            let (area0, ft0, stored, forgiven) = old.map_or((0.0, 0.0, 0.0, 0.0), |o| {
-                (o.area, o.ft, o.stored, o.forgiven)
-            });
+            let (area0, ft0, stored, stored_t, forgiven) = old
+                .map_or((0.0, 0.0, 0.0, 0.0, 0.0), |o| {
+                    (o.area, o.ft, o.stored, o.stored_t, o.forgiven)
+                });
             let forgiven = forgiven.min(ov.area);
             let n = ov.normal;
             let t = n.perp();
             // Eq (2), less any forgiven overlap, and eq (3); the sum never pulls.
             let fe = k_ne * (ov.area - forgiven);
-            let fv_raw = k_nv * (ov.area - area0) / dt;
-            let fv = if fe + fv_raw < 0.0 { -fe } else { fv_raw };
-            let fnorm = fe + fv;
+            let rate = k_nv * (ov.area - area0) / dt;
             // Eq (4) with the relative velocity at the overlap centroid at n − ½.
             let vrel =
                 bodies.point_velocity(b, ov.centroid) - bodies.point_velocity(a, ov.centroid);
@@ -229,25 +259,87 @@ impl ContactSet {
                 Some(l) if ov.centroid.y < l => p.mu_water,
                 _ => p.mu,
             };
-            let cap = mu * fnorm;
-            let ft = (ft0 - k_te * dt * vrel.dot(t)).clamp(-cap, cap);
-            let f = n * fnorm + t * ft;
-            bodies.apply(b, f, ov.centroid);
-            bodies.apply(a, -f, ov.centroid);
-            self.cur.push(Contact {
+            let slip = ft0 - k_te * dt * vrel.dot(t);
+            let mut c = Contact {
                 key: pair_key(a as u32, b as u32),
                 area: ov.area,
-                ft,
+                ft: 0.0,
                 stored,
+                stored_t,
                 forgiven,
                 point: ov.centroid,
                 normal: n,
                 fn_elastic: fe,
-                fn_viscous: fv,
-            });
+                fn_viscous: 0.0,
+            };
+            match dashpot {
+                Dashpot::Explicit => {
+                    c.fn_viscous = if fe + rate < 0.0 { -fe } else { rate };
+                    c.ft = slip.clamp(-mu * (fe + c.fn_viscous), mu * (fe + c.fn_viscous));
+                    let lost = (c.ft * (slip - c.ft)).abs() / k_te;
+                    c.stored_t -= lost;
+                    work.slip += lost;
+                    let f = n * (fe + c.fn_viscous) + t * c.ft;
+                    bodies.apply(b, f, ov.centroid);
+                    bodies.apply(a, -f, ov.centroid);
+                }
+                Dashpot::Implicit => {
+                    // The dashpot c = k_nv·L; its viscous and friction forces wait for
+                    // every other force of the step (pass 2 below).
+                    let chord = if ov.chord > 0.0 {
+                        ov.chord
+                    } else {
+                        2.0 * bodies.shape[a].radius().min(bodies.shape[b].radius())
+                    };
+                    bodies.apply(b, n * fe, ov.centroid);
+                    bodies.apply(a, -(n * fe), ov.centroid);
+                    self.pending.push(Pending {
+                        rate,
+                        damping: k_nv * chord,
+                        mu,
+                        slip,
+                    });
+                }
+            }
+            self.cur.push(c);
+        }
+        if dashpot == Dashpot::Implicit {
+            // Pass 2: every force but the contacts' viscous and friction forces is in
+            // `bodies.force`. The pair's mid-step approach speed is
+            // ū = u⁻ − ½·Δt·(aₙ + κ·F_v), aₙ the relative acceleration along n of the
+            // contact points from those forces; F_v = c·ū, solved for F_v.
+            for (c, q) in self.cur.iter_mut().zip(&self.pending) {
+                let (a, b) = unpack(c.key);
+                let (a, b) = (a as usize, b as usize);
+                let n = c.normal;
+                let kappa = bodies.inverse_mass_along(a, c.point, n)
+                    + bodies.inverse_mass_along(b, c.point, n);
+                let an = (bodies.point_acceleration(b, c.point)
+                    - bodies.point_acceleration(a, c.point))
+                .dot(n);
+                let x = 0.5 * q.damping * dt * kappa;
+                let fv = (q.rate - 0.5 * q.damping * dt * an) / (1.0 + x);
+                c.fn_viscous = if c.fn_elastic + fv < 0.0 {
+                    -c.fn_elastic
+                } else {
+                    fv
+                };
+                let cap = q.mu * (c.fn_elastic + c.fn_viscous);
+                c.ft = q.slip.clamp(-cap, cap);
+                let lost = (c.ft * (q.slip - c.ft)).abs() / k_te;
+                c.stored_t -= lost;
+                work.slip += lost;
+            }
+            // Pass 3: apply them.
+            for c in &self.cur {
+                let (a, b) = unpack(c.key);
+                let f = c.normal * c.fn_viscous + c.normal.perp() * c.ft;
+                bodies.apply(b as usize, f, c.point);
+                bodies.apply(a as usize, -f, c.point);
+            }
         }
         while j < self.prev.len() {
-            work.released += self.prev[j].stored;
+            work.released += self.prev[j].stored + self.prev[j].stored_t;
             j += 1;
         }
     }
@@ -275,18 +367,21 @@ impl ContactSet {
             c.stored += de;
             work.normal_elastic += de;
             work.normal_viscous += -c.fn_viscous * vn * dt;
-            work.tangential += -c.ft * vt * dt;
+            let dt_work = -c.ft * vt * dt;
+            c.stored_t += dt_work;
+            work.tangential += dt_work;
         }
     }
 
-    /// Energy held by the active contacts (J/m): elastic normal work not yet returned, plus
-    /// the tangential springs, F_t²/(2·k_te).
-    pub fn stored_energy(&self, k_te: f64) -> (f64, f64) {
+    /// Energy held by the active contacts (J/m): elastic normal work not yet returned, and
+    /// the tangential work booked less slip dissipation (the tangential springs' energy
+    /// F_t²/(2·k_te) to the step's accuracy).
+    pub fn stored_energy(&self) -> (f64, f64) {
         let mut en = 0.0;
         let mut et = 0.0;
         for c in &self.cur {
             en += c.stored;
-            et += c.ft * c.ft / (2.0 * k_te);
+            et += c.stored_t;
         }
         (en, et)
     }

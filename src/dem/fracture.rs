@@ -22,19 +22,46 @@ use serde::{Deserialize, Serialize};
 #[derive(Clone, Debug, Default)]
 pub struct JointSet {
     joints: Vec<Joint>,
-    /// Sorted keys of joints not yet severed: these pairs have no contact.
-    joined: Vec<u64>,
+    /// Per body, up to two partners held by an intact joint (`NONE` for an empty slot):
+    /// the broad phase asks for every candidate pair, so this answers in O(1). A block of
+    /// a sheet, floe or rubble piece has at most two joints (left and right).
+    partners: Vec<[u32; 2]>,
+    /// Sorted keys of intact joints that did not fit in `partners` (bodies with more than
+    /// two joints, which the scenes never make).
+    overflow: Vec<u64>,
     /// Joints severed in the last step (indices into `joints`).
     severed: Vec<usize>,
 }
 
+/// An empty slot of [`JointSet::partners`].
+const NONE: u32 = u32::MAX;
+
 /// Work absorbed by joints (J/m).
+///
+/// A joint holds the elastic work booked into it ([`Joint::elastic_work`]), as a contact
+/// holds its elastic normal work: the books then close exactly, and the O(Δt²) difference
+/// between booked work and the closed-form energy ½∫(E·δ_n² + G·δ_t²)/W (which also carries
+/// the joint law's small non-conservative part under large rotations) stays with the
+/// intact joint instead of leaking into the fracture term. When a joint is severed, the
+/// work it holds is released: that is the fracture dissipation, and it cannot be negative
+/// except by that O(Δt²) difference on a joint that breaks unloaded.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
 pub struct JointWork {
-    /// Work of the elastic stresses: the elastic energy held plus what cracks released.
+    /// Work of the elastic stresses on all joints, intact or severed.
     pub elastic: f64,
     /// Work of the viscous stresses: joint dissipation.
     pub viscous: f64,
+    /// Elastic work held by joints at the moment they were severed: the fracture
+    /// dissipation.
+    pub released: f64,
+}
+
+impl JointWork {
+    /// Elastic energy held by the intact joints (J/m).
+    pub fn held(&self) -> f64 {
+        self.elastic - self.released
+    }
 }
 
 impl JointSet {
@@ -48,28 +75,68 @@ impl JointSet {
     }
     /// Adds a joint; returns its index.
     pub fn push(&mut self, j: Joint) -> usize {
-        let k = pair_key(j.a.min(j.b), j.a.max(j.b));
-        let pos = self.joined.partition_point(|&x| x < k);
-        self.joined.insert(pos, k);
+        self.link(j.a, j.b);
         self.joints.push(j);
         self.joints.len() - 1
     }
     /// Replaces all joints (restoring a saved state).
     pub fn restore(&mut self, joints: Vec<Joint>) {
+        self.partners.clear();
+        self.overflow.clear();
+        for j in joints.iter().filter(|j| j.is_intact()) {
+            self.link(j.a, j.b);
+        }
         self.joints = joints;
-        self.joined = self
-            .joints
-            .iter()
-            .filter(|j| j.is_intact())
-            .map(|j| pair_key(j.a.min(j.b), j.a.max(j.b)))
-            .collect();
-        self.joined.sort_unstable();
         self.severed.clear();
     }
-    /// True when bodies `a < b` are held together by a joint that is not severed.
+    /// Records the intact pair (a, b).
+    fn link(&mut self, a: u32, b: u32) {
+        let n = a.max(b) as usize + 1;
+        if self.partners.len() < n {
+            self.partners.resize(n, [NONE; 2]);
+        }
+        let free = |p: &[u32; 2]| p.iter().position(|&x| x == NONE);
+        match (
+            free(&self.partners[a as usize]),
+            free(&self.partners[b as usize]),
+        ) {
+            (Some(i), Some(k)) => {
+                self.partners[a as usize][i] = b;
+                self.partners[b as usize][k] = a;
+            }
+            _ => {
+                let key = pair_key(a.min(b), a.max(b));
+                let pos = self.overflow.partition_point(|&x| x < key);
+                self.overflow.insert(pos, key);
+            }
+        }
+    }
+    /// Forgets the intact pair (a, b).
+    fn unlink(&mut self, a: u32, b: u32) {
+        let key = pair_key(a.min(b), a.max(b));
+        if let Ok(p) = self.overflow.binary_search(&key) {
+            self.overflow.remove(p);
+            return;
+        }
+        for (x, y) in [(a, b), (b, a)] {
+            if let Some(slot) = self.partners[x as usize].iter_mut().find(|s| **s == y) {
+                *slot = NONE;
+            }
+        }
+    }
+    /// True when bodies `a` and `b` are held together by a joint that is not severed.
     #[inline]
     pub fn joined(&self, a: u32, b: u32) -> bool {
-        !self.joined.is_empty() && self.joined.binary_search(&pair_key(a, b)).is_ok()
+        match self.partners.get(a as usize) {
+            Some(p) if p[0] == b || p[1] == b => true,
+            _ => {
+                !self.overflow.is_empty()
+                    && self
+                        .overflow
+                        .binary_search(&pair_key(a.min(b), a.max(b)))
+                        .is_ok()
+            }
+        }
     }
     /// Joints severed during the last call to [`JointSet::advance`].
     pub fn severed(&self) -> &[usize] {
@@ -104,8 +171,9 @@ impl JointSet {
 
     /// Tests for new cracks with the stresses of the last [`JointSet::apply`] (the poses at
     /// the start of the step) and advances running ones by `crack_speed·dt` (m). Joints that
-    /// lose their last intact part are listed in [`JointSet::severed`].
-    pub fn advance(&mut self, crack_speed: f64, time: f64, dt: f64) {
+    /// lose their last intact part are listed in [`JointSet::severed`], and the elastic
+    /// work they held is added to `w.released`.
+    pub fn advance(&mut self, crack_speed: f64, time: f64, dt: f64, w: &mut JointWork) {
         self.severed.clear();
         for (k, j) in self.joints.iter_mut().enumerate() {
             if !j.is_intact() {
@@ -130,17 +198,13 @@ impl JointSet {
             }
             if !j.is_intact() {
                 j.s_hi = j.s_lo;
+                w.released += j.elastic_work;
                 self.severed.push(k);
             }
         }
-        if !self.severed.is_empty() {
-            for &k in &self.severed {
-                let j = &self.joints[k];
-                let key = pair_key(j.a.min(j.b), j.a.max(j.b));
-                if let Ok(p) = self.joined.binary_search(&key) {
-                    self.joined.remove(p);
-                }
-            }
+        for i in 0..self.severed.len() {
+            let j = self.joints[self.severed[i]];
+            self.unlink(j.a, j.b);
         }
     }
 

@@ -36,12 +36,16 @@ pub struct WorldParams {
     pub contact: ContactParams,
     /// The water, or `None` for a dry scene (no buoyancy, no drag, μ everywhere).
     pub water: Option<WaterParams>,
-    /// Safety factor on the critical time step (dimensionless). Default 0.5: the critical
-    /// step below is already a bound, and half of it keeps the explicit viscous terms well
-    /// damped (docs/model.md, "Time step").
+    /// Safety factor on the stable time step of [`World::stable_time_step`]
+    /// (dimensionless, in (0, 1]). Default [`DEFAULT_TIME_STEP_SAFETY`].
     pub time_step_safety: f64,
-    /// A fixed time step (s) overriding the derived one, or `None`.
+    /// A fixed time step (s) overriding the derived one, or `None`. It must not exceed the
+    /// stable limit of [`World::stable_time_step`].
     pub time_step: Option<f64>,
+    /// How the viscous normal force of eq (3) is advanced in time. Default
+    /// [`Dashpot::Implicit`].
+    #[serde(default)]
+    pub contact_dashpot: Dashpot,
     /// Speed at which a crack crosses a joint (m/s). Default 50 m/s; see
     /// [`crate::dem::fracture`] and docs/model.md ("Fracture").
     pub crack_speed: f64,
@@ -57,16 +61,45 @@ impl Default for WorldParams {
             ice_density: 920.0,
             contact: ContactParams::default(),
             water: Some(WaterParams::default()),
-            time_step_safety: 0.5,
+            time_step_safety: DEFAULT_TIME_STEP_SAFETY,
             time_step: None,
+            contact_dashpot: Dashpot::default(),
             crack_speed: 50.0,
             global_damping: 0.0,
         }
     }
 }
 
+/// Default safety factor on the stable time step (dimensionless): see docs/model.md ("Time
+/// step") and docs/speed-vs-error.md for the ensembles that chose it.
+pub const DEFAULT_TIME_STEP_SAFETY: f64 = 0.8;
+
+/// How the viscous normal contact force of eq (3), F_v = k_nv·(Aⁿ − Aⁿ⁻¹)/Δt, is advanced.
+///
+/// The overlap rate (Aⁿ − Aⁿ⁻¹)/Δt is the approach speed at n − ½ times the chord L, so
+/// eq (3) is a dashpot c = k_nv·L on the normal velocity. Taken explicitly, a dashpot of
+/// damping ratio ζ limits the leapfrog step to ω·Δt < 2·(sqrt(1 + ζ²) − ζ): 0.49 for the
+/// stiffest contact of a ridge (ζ ≈ 1.9), a quarter of the undamped limit.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Dashpot {
+    /// Eq (3) as the paper writes it, explicit in the overlap rate.
+    Explicit,
+    /// Eq (3) at the pair's mid-step approach speed: with u⁻ = (Aⁿ − Aⁿ⁻¹)/(Δt·L) (the
+    /// paper's rate) and c = k_nv·L, F_v = c·ū where ū = u⁻ − ½·Δt·(aₙ + κ·F_v): aₙ is
+    /// the relative acceleration along the normal of the two contact points under every
+    /// other force of the step (gravity, buoyancy, joints, all contacts' elastic forces),
+    /// κ the pair's inverse effective mass along the normal (1/m + (r×n)²/I per body, over
+    /// its free degrees of freedom). Solved: F_v = (k_nv·(Aⁿ − Aⁿ⁻¹)/Δt − ½·c·Δt·aₙ)/(1 + x),
+    /// x = ½·c·Δt·κ. ū is the leapfrog's mid-step approach speed, so the dashpot is centred
+    /// in time; it tends to eq (3) as Δt → 0, is zero on a contact at rest, and an
+    /// isolated pair is stable for ω·Δt < 2 whatever ζ.
+    #[default]
+    Implicit,
+}
+
 /// An error in a world's parameters or bodies.
-#[derive(Debug, thiserror::Error, PartialEq)]
+#[derive(Clone, Debug, thiserror::Error, PartialEq)]
 pub enum WorldError {
     /// A parameter is out of its physical range.
     #[error("parameter `{name}` = {value} is invalid: {why}")]
@@ -84,6 +117,33 @@ pub enum WorldError {
     /// A block could not be made.
     #[error("block: {0}")]
     Shape(#[from] ShapeError),
+    /// A fixed time step above the stable limit.
+    #[error(
+        "time step {dt:.4e} s is above the stable limit {limit:.4e} s of this scene \
+         (the stiffest joint and contact, see docs/model.md \"Time step\"); use at most \
+         {limit:.4e} s or leave the time step to be derived"
+    )]
+    Unstable {
+        /// The requested time step (s).
+        dt: f64,
+        /// The stable limit (s).
+        limit: f64,
+    },
+    /// The state turned non-finite.
+    #[error(
+        "the run turned non-finite at step {step} (t = {time:.6} s): body {body} has a \
+         non-finite {what}; no results were written"
+    )]
+    NonFinite {
+        /// The step that produced the non-finite value.
+        step: u64,
+        /// Simulated time at the end of that step (s).
+        time: f64,
+        /// The first body found with a non-finite value.
+        body: usize,
+        /// Which value: velocity, angular velocity, position or orientation.
+        what: &'static str,
+    },
 }
 
 impl WorldParams {
@@ -133,6 +193,13 @@ impl WorldParams {
             }
         }
         pos("time_step_safety", self.time_step_safety)?;
+        if self.time_step_safety > 1.0 {
+            return Err(WorldError::Param {
+                name: "time_step_safety",
+                value: self.time_step_safety,
+                why: "must lie in (0, 1]: the stable time step is a limit",
+            });
+        }
         pos("crack_speed", self.crack_speed)?;
         nonneg("global_damping", self.global_damping)?;
         if let Some(dt) = self.time_step {
@@ -162,6 +229,8 @@ pub struct World {
     dt: f64,
     time: f64,
     steps: u64,
+    /// Set when a step produced a non-finite state; the world then no longer steps.
+    fault: Option<WorldError>,
     // Scratch, reused every step.
     vel_old: Vec<V2>,
     omega_old: Vec<f64>,
@@ -190,6 +259,7 @@ impl World {
             dt: 0.0,
             time: 0.0,
             steps: 0,
+            fault: None,
             vel_old: Vec::new(),
             omega_old: Vec::new(),
             vbar: Vec::new(),
@@ -334,23 +404,45 @@ impl World {
         &self.acc
     }
 
-    /// Re-derives the time step from the bodies and joints present (unless fixed).
+    /// Re-derives the time step from the bodies and joints present (unless fixed):
+    /// `time_step_safety` × [`World::stable_time_step`].
     pub fn refresh_time_step(&mut self) {
         self.dt = match self.params.time_step {
             Some(dt) => dt,
-            None => self.params.time_step_safety * self.critical_time_step(),
+            None => self.params.time_step_safety * self.stable_time_step(),
         };
     }
 
-    /// The critical time step of the contact law (s), a bound from the stiffest possible
-    /// contact between the bodies present.
+    /// Checks a fixed time step against the stable limit of the bodies and joints present;
+    /// the error gives the limit.
+    pub fn check_time_step(&self) -> Result<(), WorldError> {
+        let limit = self.stable_time_step();
+        if self.dt > limit {
+            return Err(WorldError::Unstable { dt: self.dt, limit });
+        }
+        Ok(())
+    }
+
+    /// The stable time step of the leapfrog scheme (s) for the bodies and joints present:
+    /// the smaller of a contact limit and a joint limit (docs/model.md, "Time step").
     ///
-    /// A contact along a chord of length L has normal stiffness k_ne·L (N/m²) and damping
-    /// k_nv·L. For bodies a and b, with inverse effective masses cᵢ = (1 + rᵢ²mᵢ/Iᵢ)/mᵢ at a
-    /// point a distance rᵢ from the centroid and L ≤ min(dₐ, d_b) (d a body's diameter),
-    /// ω² ≤ 2·k_ne·max(d·c) and the damping ratio ζ ≤ ½·k_nv·sqrt(2·max(d·c)/k_ne). The
-    /// explicit scheme with this damping is stable for Δt < (2/ω)·(sqrt(1 + ζ²) − ζ).
-    pub fn critical_time_step(&self) -> f64 {
+    /// Contacts. A contact along a chord of length L has normal stiffness k_ne·L (N/m²)
+    /// and a dashpot k_nv·L. For bodies a and b, with inverse effective masses
+    /// κᵢ = (1 + rᵢ²mᵢ/Iᵢ)/mᵢ at a point a distance rᵢ from the centroid and
+    /// L ≤ min(dₐ, d_b) (d a body's diameter), ω² ≤ 2·k_ne·max(d·κ) and the damping ratio
+    /// ζ ≤ ½·k_nv·sqrt(2·max(d·κ)/k_ne). With the explicit dashpot the step is stable for
+    /// Δt < (2/ω)·(sqrt(1 + ζ²) − ζ); with the implicit one ([`Dashpot::Implicit`]) for
+    /// Δt < √2/ω whatever ζ.
+    ///
+    /// Joints. The normal and shear springs of a face (k_n + k_t, [`Joint::stiffness`])
+    /// act at points whose inverse effective mass is at most κ; a Gershgorin bound over the
+    /// chain of joined blocks gives ω² ≤ max over bodies of 2·κᵢ·Σ(k_n + k_t) over the
+    /// body's joints (twice a single joint's 2κ·k inside a sheet, whose highest mode is
+    /// the alternating one), ζ = f·sqrt(κₐ·mₐ + κ_b·m_b) with f the joint's damping
+    /// fraction, stable for Δt < (2/ω)·(sqrt(1 + ζ²) − ζ).
+    ///
+    /// Infinite for a world without free bodies (nothing can go unstable).
+    pub fn stable_time_step(&self) -> f64 {
         let b = &self.bodies;
         let inv = |i: usize| {
             if b.drive[i].is_kinematic() {
@@ -360,7 +452,7 @@ impl World {
                 (1.0 + s.radius().powi(2) * b.mass[i] / b.inertia[i]) / b.mass[i]
             }
         };
-        let stable = |omega: f64, zeta: f64| 2.0 / omega * ((1.0 + zeta * zeta).sqrt() - zeta);
+        let damped = |omega: f64, zeta: f64| 2.0 / omega * ((1.0 + zeta * zeta).sqrt() - zeta);
         let mut dt = f64::INFINITY;
         let mut dc: f64 = 0.0;
         for i in 0..b.len() {
@@ -369,26 +461,38 @@ impl World {
         if dc > 0.0 {
             let k_ne = self.params.contact.normal_stiffness;
             let omega = (2.0 * k_ne * dc).sqrt();
-            let zeta = 0.5 * self.k_nv * (2.0 * dc / k_ne).sqrt();
-            dt = dt.min(stable(omega, zeta));
+            dt = dt.min(match self.params.contact_dashpot {
+                Dashpot::Implicit => std::f64::consts::SQRT_2 / omega,
+                Dashpot::Explicit => {
+                    let zeta = 0.5 * self.k_nv * (2.0 * dc / k_ne).sqrt();
+                    damped(omega, zeta)
+                }
+            });
         }
-        // Joints: the normal and shear springs of the face act at points whose inverse
-        // effective mass is at most c = (1 + r²m/I)/m on each side (a Gershgorin bound).
+        // Joints: Gershgorin on the chain. A body's row of M⁻¹K sums 2·κᵢ·Σ(k_n + k_t) over
+        // its intact joints (a block inside a sheet or piece has two).
+        let mut spring = vec![0.0f64; b.len()];
         for j in self.joints.joints() {
             let (kn, kt) = j.stiffness();
-            let (ca, cb) = (inv(j.a as usize), inv(j.b as usize));
-            if kn + kt <= 0.0 || ca + cb <= 0.0 {
+            spring[j.a as usize] += kn + kt;
+            spring[j.b as usize] += kn + kt;
+        }
+        for j in self.joints.joints() {
+            let (ia, ib) = (j.a as usize, j.b as usize);
+            let (ca, cb) = (inv(ia), inv(ib));
+            let w2 = 2.0 * (ca * spring[ia]).max(cb * spring[ib]);
+            if w2 <= 0.0 {
                 continue;
             }
-            let omega = ((kn + kt) * (ca + cb)).sqrt();
-            let cm = ca * b.mass[j.a as usize] + cb * b.mass[j.b as usize];
+            let cm = ca * b.mass[ia] + cb * b.mass[ib];
             let zeta = j.mat.damping_fraction * cm.sqrt();
-            dt = dt.min(stable(omega, zeta));
+            dt = dt.min(damped(w2.sqrt(), zeta));
         }
         dt
     }
 
-    /// Sets the time step (s) explicitly, e.g. for convergence studies.
+    /// Sets the time step (s) explicitly, e.g. for convergence studies. It must not exceed
+    /// [`World::stable_time_step`].
     pub fn set_time_step(&mut self, dt: f64) -> Result<(), WorldError> {
         if !(dt > 0.0 && dt.is_finite()) {
             return Err(WorldError::Param {
@@ -397,16 +501,28 @@ impl World {
                 why: "must be positive and finite",
             });
         }
+        let limit = self.stable_time_step();
+        if dt > limit {
+            return Err(WorldError::Unstable { dt, limit });
+        }
         self.params.time_step = Some(dt);
         self.dt = dt;
         Ok(())
     }
 
+    /// Why the world stopped stepping, if it did: a step that produced a non-finite
+    /// velocity ([`WorldError::NonFinite`], naming the step, the time and the first body).
+    pub fn fault(&self) -> Option<&WorldError> {
+        self.fault.as_ref()
+    }
+
     /// Advances the world by one time step. A world without free bodies has no stability
     /// bound and does not move: set a time step with [`World::set_time_step`] to step it.
+    /// A step that produces a non-finite velocity records a [`World::fault`] and leaves
+    /// the positions; later calls do nothing.
     pub fn step(&mut self) {
         let dt = self.dt;
-        if dt.is_nan() || dt <= 0.0 || dt.is_infinite() {
+        if dt.is_nan() || dt <= 0.0 || dt.is_infinite() || self.fault.is_some() {
             return;
         }
         let n = self.bodies.len();
@@ -454,6 +570,7 @@ impl World {
             self.k_nv,
             dt,
             level,
+            self.params.contact_dashpot,
             &mut self.acc.contact,
         );
         // Leapfrog velocities, eq (5); prescribed degrees of freedom take their value and
@@ -489,6 +606,21 @@ impl World {
             b.omega[i] = w1;
             self.vbar[i] = vbar;
             self.wbar[i] = wbar;
+            if !(u1.is_finite() && v1.is_finite() && w1.is_finite()) && self.fault.is_none() {
+                self.fault = Some(WorldError::NonFinite {
+                    step: self.steps + 1,
+                    time: self.time + dt,
+                    body: i,
+                    what: if w1.is_finite() {
+                        "velocity"
+                    } else {
+                        "angular velocity"
+                    },
+                });
+            }
+        }
+        if self.fault.is_some() {
+            return;
         }
         // Ledger, eqs (9)–(12), with the mid-step velocities.
         self.acc.work += driver;
@@ -529,7 +661,8 @@ impl World {
         self.steps += 1;
         // Fracture: new cracks at the new poses, running cracks advance.
         if !self.joints.is_empty() {
-            self.joints.advance(self.params.crack_speed, self.time, dt);
+            self.joints
+                .advance(self.params.crack_speed, self.time, dt, &mut self.acc.joints);
             if !self.joints.severed().is_empty() {
                 self.after_fracture();
             }
@@ -702,14 +835,10 @@ impl World {
 
     /// The energy budget now (J/m).
     pub fn energy(&self) -> EnergyBudget {
-        let (sn, st) = self
-            .contacts
-            .stored_energy(self.params.contact.tangential_stiffness());
+        let (sn, st) = self.contacts.stored_energy();
         let stored = Stored {
             contact_normal: sn,
             contact_tangential: st,
-            joints: self.joints.stored_energy(&self.bodies),
-            springs: self.boundary.stored_energy(&self.bodies),
         };
         EnergyBudget::from_parts(self.time, &self.acc, self.bodies.kinetic_energy(), &stored)
     }

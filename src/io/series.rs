@@ -1,17 +1,14 @@
 //! CSV time series of the energy budget, with units in the header.
 
 use super::{IoError, write_atomic};
-use crate::simulation::{SERIES_COLUMNS, Sample};
+use crate::simulation::{Sample, series_columns};
 use std::path::Path;
-
-/// Column names and units of [`write_series_csv`].
-pub const ENERGY_COLUMNS: &[(&str, &str)] = &SERIES_COLUMNS;
 
 /// Writes the samples of a run (energy budget, ridging force of eq (9) and mean driver
 /// force) as CSV. The header names each column with its unit, e.g. `work [J/m]`.
 pub fn write_series_csv(path: &Path, series: &[Sample]) -> Result<(), IoError> {
     let mut s = String::new();
-    let header: Vec<String> = ENERGY_COLUMNS
+    let header: Vec<String> = series_columns()
         .iter()
         .map(|(n, u)| format!("{n} [{u}]"))
         .collect();

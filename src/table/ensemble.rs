@@ -171,6 +171,10 @@ pub fn dissipation_violation(r: &RunRecord) -> Option<String> {
         for (name, v) in [
             ("friction_dissipation", x.friction_dissipation),
             ("viscous_dissipation", x.viscous_dissipation),
+            ("drag_dissipation", x.drag_dissipation),
+            ("joint_dissipation", x.joint_dissipation),
+            ("boundary_dissipation", x.boundary_dissipation),
+            ("fracture_dissipation", x.fracture_dissipation),
         ] {
             if v < -tol || !v.is_finite() {
                 return Some(format!("{name} = {v:.4e} J/m at t = {} s", x.time));
