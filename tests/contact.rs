@@ -122,7 +122,7 @@ fn restitution_no_tension(zeta: f64) -> f64 {
 /// form at its default step, 0.8 × its stable limit, which for this stiffest of contacts
 /// (a 0.3 m face between 1 m blocks, ω·Δt = 0.30) is 6.5e-4 s: within 13 %; at a quarter
 /// of it within 4 %; and the error shrinks by at least 2.5× from the one to the other. (In
-/// the ridge the joints bind the step to 3.2e-4 s, where this contact is within 6 %:
+/// the ridge the joints bind the step to 2.3e-4 s, where this contact is within 5 %:
 /// docs/model.md, "Time integration".)
 #[test]
 fn collision_restitution_matches_damped_oscillator() {
