@@ -922,6 +922,7 @@ fn tabulate(
     detached(py, || {
         file_missing(&campaign_dir)?;
         let (spec, records) = campaign::read_records(&campaign_dir)?;
+        let planned = records.len();
         let table = tabulate_records(&records, points).map_err(value_err)?;
         let prov = Provenance {
             campaign_spec: toml_text(&spec)?,
@@ -931,6 +932,9 @@ fn tabulate(
                 .unwrap_or_default(),
             command,
             date,
+            runs_planned: planned,
+            runs_tabulated: planned,
+            gaps: String::new(),
         };
         write_ridge_table(&out, &table, &prov)?;
         let mut lines = Vec::new();
