@@ -30,6 +30,39 @@ fn kill_after(cmd: &mut Command, delay: Duration) {
     child.wait().unwrap();
 }
 
+/// Runs `cmd` to completion watching `dir`: returns when the first new file appeared in it
+/// (the output being written) and how long the whole run took.
+fn write_window(cmd: &mut Command, dir: &Path) -> (Duration, Duration) {
+    let before = names_in(dir);
+    let t = Instant::now();
+    let mut child = cmd
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut appeared = None;
+    loop {
+        if appeared.is_none() && names_in(dir) != before {
+            appeared = Some(t.elapsed());
+        }
+        if let Some(status) = child.try_wait().unwrap() {
+            assert!(status.success());
+            break;
+        }
+        std::thread::sleep(Duration::from_micros(200));
+    }
+    let full = t.elapsed();
+    (appeared.unwrap_or(full), full)
+}
+
+/// A delay in [0.9 × start, 1.1 × end) from `rng`: kills that land while the output is
+/// being written, and some just before or after.
+fn delay_in(rng: &mut Rng, (start, end): (Duration, Duration)) -> Duration {
+    let a = start.mul_f64(0.9);
+    let b = end.mul_f64(1.1);
+    a + (b - a).mul_f64(rng.below(1000) as f64 / 1000.0)
+}
+
 /// A delay in [0, 1.2 × full) from `rng`, so that most kills land mid-run.
 fn delay(rng: &mut Rng, full: Duration) -> Duration {
     full.mul_f64(1.2 * rng.below(1000) as f64 / 1000.0)
@@ -74,24 +107,27 @@ fn killed_strength_leaves_the_old_output_or_a_complete_new_one() {
         c
     };
     let reference = d.join("ref.nc");
-    let full = timed(&mut cmd(&reference));
+    timed(&mut cmd(&reference));
+    let target = d.join("out.nc");
+    // When the output starts to appear, and when the run ends.
+    let window = write_window(&mut cmd(&target), &d);
+    std::fs::remove_file(&target).unwrap();
     let want: Vec<f64> = netcdf::open(&reference)
         .unwrap()
         .variable("strength")
         .unwrap()
         .get_values(..)
         .unwrap();
-    let target = d.join("out.nc");
     let mut rng = Rng(0x5111);
     let (mut old, mut new) = (0, 0);
-    for i in 0..8 {
+    for i in 0..16 {
         let had_old = i % 2 == 0;
         if had_old {
             std::fs::write(&target, b"old file").unwrap();
         } else {
             let _ = std::fs::remove_file(&target);
         }
-        kill_after(&mut cmd(&target), delay(&mut rng, full));
+        kill_after(&mut cmd(&target), delay_in(&mut rng, window));
         match std::fs::read(&target) {
             Err(_) => assert!(!had_old, "kill {i}: the old output vanished"),
             Ok(b) if b == b"old file" => old += 1,
@@ -138,6 +174,9 @@ fn killed_simulate_leaves_only_complete_files() {
             let p = out.join(&name);
             let ctx = format!("kill {i}: {name}");
             match name.as_str() {
+                // Temporaries of the killed writer: never at a target path, cleared by the
+                // next --overwrite.
+                n if n.starts_with(".tmp-") => {}
                 "summary.json" | "state.json" => {
                     serde_json::from_slice::<serde_json::Value>(&std::fs::read(&p).unwrap())
                         .unwrap_or_else(|e| panic!("{ctx}: {e}"));
@@ -166,9 +205,6 @@ fn killed_simulate_leaves_only_complete_files() {
                         }
                     }
                 }
-                // Temporaries of the killed writer: never at a target path, cleared by the
-                // next --overwrite.
-                n if n.starts_with(".tmp-") => {}
                 other => panic!("{ctx}: unexpected file {other}"),
             }
         }
@@ -238,7 +274,8 @@ fn killed_campaign_and_tabulate_resume_to_identical_results() {
             .arg(&table);
         c
     };
-    let full = timed(&mut tabulate());
+    timed(&mut tabulate());
+    let window = write_window(&mut tabulate(), &d);
     let cf: Vec<f64> = netcdf::open(&table)
         .unwrap()
         .variable("cf")
@@ -252,7 +289,7 @@ fn killed_campaign_and_tabulate_resume_to_identical_results() {
         } else {
             let _ = std::fs::remove_file(&table);
         }
-        kill_after(&mut tabulate(), delay(&mut rng, full));
+        kill_after(&mut tabulate(), delay_in(&mut rng, window));
         match std::fs::read(&table) {
             Err(_) => assert!(!had_old, "kill {i}: the old table vanished"),
             Ok(b) if b == b"old table" => {}
