@@ -58,6 +58,18 @@ fn an_output_resolving_to_the_input_is_refused_and_the_input_kept() {
     assert_eq!(std::fs::read(&input).unwrap(), before);
     // A distinct output is fine.
     succeeds(&strength(&input, &d.join("p.nc"), &[]));
+    // render: the image may not replace the state it draws.
+    let state = d.join("state.json");
+    std::fs::write(&state, b"{}").unwrap();
+    let res = bin()
+        .arg("render")
+        .arg(&state)
+        .arg("--out")
+        .arg(&state)
+        .output()
+        .unwrap();
+    fails_with(&res, &["--out", "state.json"]);
+    assert_eq!(std::fs::read(&state).unwrap(), b"{}");
     let _ = std::fs::remove_dir_all(&d);
 }
 
