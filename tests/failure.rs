@@ -266,6 +266,7 @@ fn runs_of_no_step_are_errors() {
         .unwrap();
     fails_with(&res, &["duration", "no step"]);
     assert!(!String::from_utf8_lossy(&res.stdout).contains("wrote"));
+    assert!(!d.join("a").exists(), "a refused run must write nothing");
     let res = bin()
         .args([
             "simulate",

@@ -76,6 +76,10 @@ impl Var {
 /// Writes `vars` into a new NetCDF file (classic 64-bit-offset format). Dimensions are made as
 /// the variables name them; the first length given for a name wins.
 pub fn write_nc(path: &Path, vars: &[Var]) {
+    // One writer at a time in this process: the tests of a binary run on several threads,
+    // and HDF5 (under the NetCDF-4 files) is not reliably thread-safe.
+    static LOCK: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    let _guard = LOCK.lock().unwrap_or_else(|e| e.into_inner());
     let _ = std::fs::remove_file(path);
     // Text needs the NetCDF-4 format (string variables); the rest is written as the
     // library writes.

@@ -121,6 +121,9 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         print!("{}", scene.to_toml());
         return Ok(());
     }
+    // Everything that can refuse the scene is checked before the directory is touched:
+    // building the world checks its parameters, and the run must take at least one step.
+    scene.check_run_length(scene.build()?.dt())?;
     prepare_out_dir(&a.out, a.overwrite)?;
     write_atomic(&a.out.join("scene.toml"), scene.to_toml().as_bytes())?;
 
