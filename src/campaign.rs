@@ -607,10 +607,14 @@ pub fn read_campaign(out: &Path, allow_partial: bool) -> Result<CampaignRecords,
             c.inconsistent.push((id, why));
             continue;
         }
-        let key = scene_digest(&r.id, r.seed, &r.scene);
+        // The same scene and seed under another id (e.g. a value given twice on an axis
+        // before such specs were refused) is the same run: counted once.
+        let key = scene_digest("", r.seed, &r.scene);
         if seen.contains(&key) {
-            c.inconsistent
-                .push((id, "a second record of a run already counted".into()));
+            c.inconsistent.push((
+                id,
+                "the same scene and seed as a run already counted (counted once)".into(),
+            ));
             continue;
         }
         seen.push(key);

@@ -347,6 +347,26 @@ fn tiny_campaign_is_resumable_and_complete() {
             .collect::<Vec<_>>()
     };
     assert_eq!(strip(&again), strip(&records), "a resumed run differs");
+    // The same scene and seed under another run's id (as a value given twice on an axis
+    // made before such specs were refused), with consistent digests, counts once.
+    let mut twin = again[0].clone();
+    twin.id = ids[1].to_string();
+    let d = twin.digest.as_mut().unwrap();
+    d.scene = pressridge::campaign::scene_digest(&twin.id, twin.seed, &twin.scene);
+    std::fs::copy(
+        run_dir(ids[0]).join("state.json"),
+        run_dir(ids[1]).join("state.json"),
+    )
+    .unwrap();
+    pressridge::io::state::write_json(&run_dir(ids[1]).join("run.json"), &twin).unwrap();
+    let c = read_campaign(&out, true).unwrap();
+    assert_eq!(c.records.len(), 3);
+    assert_eq!(c.inconsistent.len(), 1, "{:?}", c.inconsistent);
+    assert!(
+        c.inconsistent[0].1.contains("same scene and seed"),
+        "{:?}",
+        c.inconsistent
+    );
 
     // A changed grid is refused in the same directory.
     std::fs::write(&spec, SPEC.replace("0.35", "0.40")).unwrap();
