@@ -58,6 +58,9 @@ pub enum CampaignError {
     /// A result directory holds runs of another spec.
     #[error("{0}")]
     Mismatch(String),
+    /// Planned runs are missing or their records do not match their scene or files.
+    #[error("{0}")]
+    Incomplete(String),
 }
 
 /// A grid axis: one key, or several keys varied together.
@@ -205,8 +208,66 @@ pub struct RunRecord {
     pub profile: Profile,
     /// Final ridge metrics.
     pub metrics: RidgeMetrics,
+    /// Digests of what the run is and what it wrote, checked by [`read_campaign`] and
+    /// [`prepare_campaign`]. Absent in records written before digests were introduced.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub digest: Option<RunDigest>,
 }
 
+/// Digests (SHA-256, hexadecimal) that tie a run record to its run: a record copied from
+/// another run directory, edited, or left without the files it wrote no longer matches.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RunDigest {
+    /// Digest of the run id, the seed and the resolved scene ([`scene_digest`]).
+    pub scene: String,
+    /// The files the run wrote beside its record (file name, digest of its content).
+    pub files: Vec<(String, String)>,
+}
+
+/// The digest of what a run is: its id, seed and resolved scene (as TOML).
+pub fn scene_digest(id: &str, seed: u64, scene: &Scene) -> String {
+    crate::io::digest::sha256_hex(format!("{id}\n{seed}\n{}", scene.to_toml()).as_bytes())
+}
+
+impl RunRecord {
+    /// Checks this record, read from the run directory of planned run `id`, against that
+    /// id, its own scene and seed, and the files its digest lists; `Err` says what does not
+    /// match. A record without a digest (older versions) is checked for its id and its
+    /// `state.json` only.
+    pub fn verify(&self, out: &Path, id: &str) -> Result<(), String> {
+        if self.id != id {
+            return Err(format!(
+                "its record names run `{}` (copied from another run directory?)",
+                self.id
+            ));
+        }
+        let record = record_path(out, id);
+        let dir = record.parent().unwrap_or(out);
+        let Some(d) = &self.digest else {
+            return if dir.join("state.json").is_file() {
+                Ok(())
+            } else {
+                Err("its state.json is missing".into())
+            };
+        };
+        if d.scene != scene_digest(&self.id, self.seed, &self.scene) {
+            return Err("its record's scene or seed does not match its digest (edited?)".into());
+        }
+        for (name, want) in &d.files {
+            let path = dir.join(name);
+            if !path.is_file() {
+                return Err(format!("its {name} is missing"));
+            }
+            match crate::io::digest::sha256_file(&path) {
+                Ok(got) if got == *want => {}
+                Ok(_) => return Err(format!("its {name} does not match the record's digest")),
+                Err(e) => return Err(e.to_string()),
+            }
+        }
+        Ok(())
+    }
+}
 /// Progress of a campaign, reported as runs finish.
 #[derive(Clone, Copy, Debug)]
 pub struct Progress {
@@ -225,8 +286,18 @@ impl CampaignSpec {
     pub fn from_toml(text: &str) -> Result<CampaignSpec, CampaignError> {
         let s: CampaignSpec =
             toml::from_str(text).map_err(|e| CampaignError::Spec(e.to_string()))?;
-        if s.seeds == 0 {
-            return Err(CampaignError::Spec("`seeds` must be at least 1".into()));
+        let max_seeds = crate::scene::limits::MAX_SEEDS;
+        if s.seeds == 0 || s.seeds > max_seeds {
+            return Err(CampaignError::Spec(format!(
+                "`seeds` = {} is out of range: must lie in [1, {max_seeds}] (the paper uses 7 per grid point; every seed is a full run)",
+                s.seeds
+            )));
+        }
+        if s.first_seed.checked_add(u64::from(s.seeds)).is_none() {
+            return Err(CampaignError::Spec(format!(
+                "`first_seed` = {} is out of range: first_seed + seeds must stay below 2^64",
+                s.first_seed
+            )));
         }
         if !(s.sample_interval > 0.0 && s.sample_interval.is_finite()) {
             return Err(CampaignError::Spec(
@@ -256,6 +327,7 @@ impl CampaignSpec {
     /// The axes as lists of `key=value` settings per value.
     fn settings(&self) -> Result<Vec<Vec<Vec<String>>>, CampaignError> {
         let mut out = Vec::new();
+        let mut seen_keys: Vec<String> = Vec::new();
         for (k, a) in self.axis.iter().enumerate() {
             let keys: Vec<String> = match (&a.key, &a.keys) {
                 (Some(key), None) => vec![key.clone()],
@@ -269,7 +341,15 @@ impl CampaignSpec {
             if a.values.is_empty() {
                 return Err(CampaignError::Spec(format!("axis {k}: no values")));
             }
-            let mut vals = Vec::new();
+            for key in &keys {
+                if seen_keys.contains(key) {
+                    return Err(CampaignError::Spec(format!(
+                        "axis {k}: key `{key}` is varied by an earlier axis too; each key may appear on one axis"
+                    )));
+                }
+                seen_keys.push(key.clone());
+            }
+            let mut vals: Vec<Vec<String>> = Vec::new();
             for v in &a.values {
                 let items: Vec<toml::Value> = match (keys.len(), v) {
                     (1, toml::Value::Array(x)) if x.len() == 1 => x.clone(),
@@ -281,12 +361,17 @@ impl CampaignSpec {
                         )));
                     }
                 };
-                vals.push(
-                    keys.iter()
-                        .zip(items)
-                        .map(|(key, x)| format!("{key}={x}"))
-                        .collect(),
-                );
+                let setting: Vec<String> = keys
+                    .iter()
+                    .zip(items)
+                    .map(|(key, x)| format!("{key}={x}"))
+                    .collect();
+                if vals.contains(&setting) {
+                    return Err(CampaignError::Spec(format!(
+                        "axis {k}: value {v} appears twice; each value is one grid point (use more `seeds` for more runs)"
+                    )));
+                }
+                vals.push(setting);
             }
             out.push(vals);
         }
@@ -322,6 +407,15 @@ impl CampaignSpec {
                 }
             }
             points = next;
+        }
+        let max_runs = crate::scene::limits::MAX_RUNS;
+        let total = points.len().saturating_mul(self.seeds as usize);
+        if total > max_runs {
+            return Err(CampaignError::Spec(format!(
+                "the grid has {} points × {} seeds = {total} runs; at most {max_runs} are allowed",
+                points.len(),
+                self.seeds
+            )));
         }
         let mut runs = Vec::new();
         for (pi, settings) in points.iter().enumerate() {
@@ -425,6 +519,7 @@ pub fn run_one(
             samples,
             profile,
             metrics,
+            digest: None,
         },
         out.final_state,
     ))
@@ -435,18 +530,132 @@ pub fn record_path(out: &Path, id: &str) -> PathBuf {
     out.join("runs").join(id).join("run.json")
 }
 
-/// Reads every run record of a campaign directory, in plan order. Missing runs are skipped.
-pub fn read_records(out: &Path) -> Result<(CampaignSpec, Vec<RunRecord>), CampaignError> {
+/// The run records of a campaign directory, checked against its plan ([`read_campaign`]).
+#[derive(Clone, Debug)]
+pub struct CampaignRecords {
+    /// The spec the directory was made with.
+    pub spec: CampaignSpec,
+    /// The complete, consistent records, in plan order.
+    pub records: Vec<RunRecord>,
+    /// Number of planned runs.
+    pub planned: usize,
+    /// Planned runs without a record.
+    pub missing: Vec<String>,
+    /// Planned runs whose record does not match its run (id, scene, seed or files), with
+    /// what is wrong; also a second record of a run already counted.
+    pub inconsistent: Vec<(String, String)>,
+}
+
+impl CampaignRecords {
+    /// Whether every planned run has a consistent record.
+    pub fn is_complete(&self) -> bool {
+        self.missing.is_empty() && self.inconsistent.is_empty()
+    }
+
+    /// One line naming the missing and inconsistent runs (at most ten of each).
+    pub fn describe_gaps(&self) -> String {
+        let list = |v: Vec<String>| {
+            let n = v.len();
+            let mut s = v.into_iter().take(10).collect::<Vec<_>>().join(", ");
+            if n > 10 {
+                s.push_str(&format!(", and {} more", n - 10));
+            }
+            s
+        };
+        let mut parts = Vec::new();
+        if !self.missing.is_empty() {
+            parts.push(format!(
+                "{} missing ({})",
+                self.missing.len(),
+                list(self.missing.clone())
+            ));
+        }
+        if !self.inconsistent.is_empty() {
+            parts.push(format!(
+                "{} inconsistent ({})",
+                self.inconsistent.len(),
+                list(
+                    self.inconsistent
+                        .iter()
+                        .map(|(id, why)| format!("{id}: {why}"))
+                        .collect()
+                )
+            ));
+        }
+        format!(
+            "{} of {} planned runs complete; {}",
+            self.records.len(),
+            self.planned,
+            parts.join("; ")
+        )
+    }
+}
+
+/// Reads every run record of a campaign directory, in plan order, and checks each against
+/// its run ([`RunRecord::verify`]); a record whose scene and seed another record already has
+/// counts once. Missing or inconsistent runs are an error naming them unless
+/// `allow_partial`, which returns the complete ones with the gaps listed.
+pub fn read_campaign(out: &Path, allow_partial: bool) -> Result<CampaignRecords, CampaignError> {
     let spec: CampaignSpec = read_json(&out.join("campaign.json"))?;
-    let mut records = Vec::new();
     let ids: Vec<String> = read_json(&out.join("plan.json"))?;
+    let mut c = CampaignRecords {
+        spec,
+        records: Vec::new(),
+        planned: ids.len(),
+        missing: Vec::new(),
+        inconsistent: Vec::new(),
+    };
+    let mut seen: Vec<String> = Vec::new();
     for id in ids {
         let p = record_path(out, &id);
-        if p.is_file() {
-            records.push(read_json(&p)?);
+        if !p.is_file() {
+            c.missing.push(id);
+            continue;
         }
+        let r: RunRecord = match read_json(&p) {
+            Ok(r) => r,
+            Err(e) => {
+                c.inconsistent.push((id, format!("unreadable record: {e}")));
+                continue;
+            }
+        };
+        if let Err(why) = r.verify(out, &id) {
+            c.inconsistent.push((id, why));
+            continue;
+        }
+        // The same scene and seed under another id (e.g. a value given twice on an axis
+        // before such specs were refused) is the same run: counted once.
+        let key = scene_digest("", r.seed, &r.scene);
+        if seen.contains(&key) {
+            c.inconsistent.push((
+                id,
+                "the same scene and seed as a run already counted (counted once)".into(),
+            ));
+            continue;
+        }
+        seen.push(key);
+        c.records.push(r);
     }
-    Ok((spec, records))
+    if c.records.is_empty() || (!allow_partial && !c.is_complete()) {
+        let hint = if c.records.is_empty() {
+            "nothing to tabulate; run (or resume) the campaign"
+        } else {
+            "resume the campaign to complete it, or pass --allow-partial (allow_partial) to use the complete runs only"
+        };
+        return Err(CampaignError::Incomplete(format!(
+            "{}: {}: {hint}",
+            out.display(),
+            c.describe_gaps()
+        )));
+    }
+    Ok(c)
+}
+
+/// Reads every run record of a complete campaign directory, in plan order
+/// ([`read_campaign`] without `allow_partial`).
+pub fn read_records(out: &Path) -> Result<(CampaignSpec, Vec<RunRecord>), CampaignError> {
+    let c = read_campaign(out, false)?;
+    Ok((c.spec, c.records))
 }
 
 /// A campaign directory made ready by [`prepare_campaign`]: the whole plan and the runs it
@@ -494,8 +703,14 @@ pub fn prepare_campaign(
     let mut skipped = 0;
     for p in &plan {
         let path = record_path(out, &p.id);
-        if path.is_file() {
-            let r: RunRecord = read_json(&path)?;
+        // A record that is unreadable, copied from another run, or lacks its files is not a
+        // finished run: the run is done again (its files are replaced atomically).
+        let finished = path
+            .is_file()
+            .then(|| read_json::<RunRecord>(&path).ok())
+            .flatten()
+            .filter(|r| r.verify(out, &p.id).is_ok());
+        if let Some(r) = finished {
             if r.scene != p.scene {
                 return Err(CampaignError::Mismatch(format!(
                     "{} was made with another scene than the spec now gives; use a new output directory",
@@ -525,10 +740,18 @@ pub fn run_planned(
     out: &Path,
     progress: &dyn Fn(f64),
 ) -> Result<(), CampaignError> {
-    let (rec, state) = run_one(plan, spec, progress)?;
+    let (mut rec, state) = run_one(plan, spec, progress)?;
     let path = record_path(out, &plan.id);
-    // The state first: a record on disk always has its state.
-    save_state(&path.with_file_name("state.json"), &state)?;
+    // The state first: a record on disk always has its state, and the digest of it.
+    let state_path = path.with_file_name("state.json");
+    save_state(&state_path, &state)?;
+    rec.digest = Some(RunDigest {
+        scene: scene_digest(&rec.id, rec.seed, &rec.scene),
+        files: vec![(
+            "state.json".into(),
+            crate::io::digest::sha256_file(&state_path)?,
+        )],
+    });
     write_json(&path, &rec)?;
     Ok(())
 }

@@ -13,6 +13,7 @@
 //! - [`dem`] — the simulator core — geometry, bodies, contacts, water, the energy ledger and
 //!   the time step;
 //! - [`scene`] — every parameter of a run, from TOML, with defaults and validation;
+//! - [`limits`] — the valid range of every bounded parameter, with its reason;
 //! - [`simulation`] — running a scene and summarising it;
 //! - [`observe`] — ridge profiles and metrics from a state;
 //! - [`campaign`] — seeded ensembles over parameter grids, resumable;
@@ -30,6 +31,7 @@ pub mod dem;
 pub mod ffi;
 pub mod io;
 pub mod itd;
+pub mod limits;
 pub mod observe;
 pub mod plot;
 pub mod scene;

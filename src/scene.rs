@@ -36,6 +36,9 @@ pub enum SceneError {
     World(#[from] WorldError),
 }
 
+pub use crate::limits;
+use crate::limits::Range;
+
 /// Ice properties.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
@@ -418,6 +421,29 @@ pub struct Scene {
     pub pile: Option<PileSection>,
 }
 
+/// Checks scene parameter `key` against its range ([`limits`]).
+fn check(range: Range, key: &str, value: f64) -> Result<(), SceneError> {
+    match range.violation(value) {
+        None => Ok(()),
+        Some(why) => Err(SceneError::Invalid(key.into(), why)),
+    }
+}
+
+/// Checks a bevel leg (m): 0 or at least [`limits::MIN_BEVEL`].
+fn check_bevel(key: &str, leg: f64) -> Result<(), SceneError> {
+    if leg == 0.0 || leg >= limits::MIN_BEVEL {
+        Ok(())
+    } else {
+        Err(SceneError::Invalid(
+            key.into(),
+            format!(
+                "makes a bevel leg of {leg:e} m: a bevel is 0 (none) or at least {} m, as a shorter one is a degenerate edge",
+                limits::MIN_BEVEL
+            ),
+        ))
+    }
+}
+
 impl Default for Scene {
     /// The Figure 5 experiment: h = 0.30 m, W = 0.25 m, 2 m floe, U = 0.25 m/s,
     /// E = 0.1 GPa top / 0.067 GPa bottom, μ = 1.0, μ_w = 0.6, 400 s (100 m of sheet).
@@ -508,12 +534,39 @@ impl Scene {
         })
     }
 
-    /// Checks the scene-level parameters (the world checks its own).
+    /// Checks the scene-level parameters (the world checks its own): each bounded parameter
+    /// against its range in [`limits`], the ice lighter than the water, the block geometry,
+    /// and the number of blocks. The message names the parameter and its valid range.
     pub fn validate(&self) -> Result<(), SceneError> {
+        use limits::*;
         let bad = |k: &str, why: &str| Err(SceneError::Invalid(k.into(), why.into()));
-        if !(self.duration >= 0.0 && self.duration.is_finite()) {
-            return bad("duration", "must be a non-negative number of seconds");
+        if !self.duration.is_finite() {
+            return bad("duration", "must be a finite number of seconds");
         }
+        check(DURATION, "duration", self.duration)?;
+        check(ICE_DENSITY, "ice.density", self.ice.density)?;
+        if self.water.enabled {
+            check(WATER_DENSITY, "water.density", self.water.density)?;
+            if self.ice.density >= self.water.density {
+                return Err(SceneError::Invalid(
+                    "ice.density".into(),
+                    format!(
+                        "{} kg/m³ is not below water.density = {} kg/m³: ice denser than water sinks",
+                        self.ice.density, self.water.density
+                    ),
+                ));
+            }
+        }
+        if self.numerics.time_step > 0.0 && self.numerics.time_step > self.duration {
+            return Err(SceneError::Invalid(
+                "numerics.time_step".into(),
+                format!(
+                    "{} s is longer than duration = {} s: the run would take no step",
+                    self.numerics.time_step, self.duration
+                ),
+            ));
+        }
+        let mut blocks = 0.0f64;
         if !(self.numerics.sample_interval > 0.0 && self.numerics.sample_interval.is_finite()) {
             return bad("numerics.sample_interval", "must be positive (s)");
         }
@@ -535,6 +588,19 @@ impl Scene {
                     return bad(k, "must be positive");
                 }
             }
+            check(THICKNESS, "sheet.thickness", sh.thickness)?;
+            check(BLOCK_WIDTH, "sheet.block_width", sh.block_width)?;
+            check(LENGTH, "sheet.length", sh.length)?;
+            check(SPEED, "sheet.speed", sh.speed)?;
+            check(YOUNGS_MODULUS, "sheet.e_top", sh.e_top)?;
+            check(YOUNGS_MODULUS, "sheet.e_bottom", sh.e_bottom)?;
+            check(TENSILE_STRENGTH, "sheet.strength_top", sh.strength_top)?;
+            check(
+                TENSILE_STRENGTH,
+                "sheet.strength_bottom",
+                sh.strength_bottom,
+            )?;
+            blocks += (sh.length / sh.block_width).round().max(2.0);
             for (k, v) in [
                 ("sheet.skeletal_fraction", sh.skeletal_fraction),
                 ("sheet.skeletal_max", sh.skeletal_max),
@@ -554,11 +620,41 @@ impl Scene {
             if sh.skeletal() >= sh.thickness {
                 return bad("sheet.skeletal_fraction", "leaves no joint");
             }
-            if sh.tip_bevel_fraction >= 1.0 || sh.tip_bevel() >= sh.block_width {
+            for (k, v) in [
+                ("sheet.tip_bevel_fraction", sh.tip_bevel()),
+                ("sheet.corner_bevel", sh.corner_bevel),
+            ] {
+                check_bevel(k, v)?;
+            }
+            if sh.tip_bevel_fraction >= 1.0 {
                 return bad(
                     "sheet.tip_bevel_fraction",
-                    "makes a bevel as large as the block",
+                    "must be below 1: the bevel under the tip is a fraction of the thickness",
                 );
+            }
+            if sh.tip_bevel() >= sh.block_width {
+                // The bevel leg scales with the thickness: a thick sheet needs wide blocks.
+                return Err(SceneError::Invalid(
+                    "sheet.block_width".into(),
+                    format!(
+                        "{} m is not wider than the bevel under the sheet tip, tip_bevel_fraction × thickness = {} × {} m = {:.3} m: use blocks wider than that (the paper uses about the thickness) or a smaller sheet.tip_bevel_fraction",
+                        sh.block_width,
+                        sh.tip_bevel_fraction,
+                        sh.thickness,
+                        sh.tip_bevel()
+                    ),
+                ));
+            }
+            let side = sh.block_width.min(sh.thickness);
+            if 2.0 * sh.corner_bevel >= side {
+                return Err(SceneError::Invalid(
+                    "sheet.corner_bevel".into(),
+                    format!(
+                        "{} m must be shorter than half the sheet block's smaller side, min(sheet.block_width, sheet.thickness) / 2 = {} m",
+                        sh.corner_bevel,
+                        0.5 * side
+                    ),
+                ));
             }
             if sh.modulus_variation >= 1.0 {
                 return bad("sheet.modulus_variation", "must be below 1");
@@ -581,6 +677,14 @@ impl Scene {
                     return bad(k, "must be positive");
                 }
             }
+            check(THICKNESS, "floe.thickness", f.thickness)?;
+            check(BLOCK_WIDTH, "floe.block_width", f.block_width)?;
+            check(LENGTH, "floe.length", f.length)?;
+            check(YOUNGS_MODULUS, "floe.e_top", f.e_top)?;
+            check(YOUNGS_MODULUS, "floe.e_bottom", f.e_bottom)?;
+            check(TENSILE_STRENGTH, "floe.strength_top", f.strength_top)?;
+            check(TENSILE_STRENGTH, "floe.strength_bottom", f.strength_bottom)?;
+            blocks += (f.length / f.block_width).round().max(1.0);
             for (k, v) in [
                 ("floe.support_stiffness", f.support_stiffness),
                 ("floe.support_damping_fraction", f.support_damping_fraction),
@@ -593,6 +697,28 @@ impl Scene {
             }
             if !(0.0..0.5).contains(&f.poisson) {
                 return bad("floe.poisson", "must lie in [0, 0.5)");
+            }
+            check_bevel("floe.nose_bevel", f.nose_bevel)?;
+            check_bevel("floe.corner_bevel", f.corner_bevel)?;
+            let side = f.block_width.min(f.thickness);
+            if f.nose_bevel >= side {
+                return Err(SceneError::Invalid(
+                    "floe.nose_bevel".into(),
+                    format!(
+                        "{} m must be shorter than the floe block's smaller side, min(floe.block_width, floe.thickness) = {side} m",
+                        f.nose_bevel
+                    ),
+                ));
+            }
+            if 2.0 * f.corner_bevel >= side {
+                return Err(SceneError::Invalid(
+                    "floe.corner_bevel".into(),
+                    format!(
+                        "{} m must be shorter than half the floe block's smaller side, min(floe.block_width, floe.thickness) / 2 = {} m",
+                        f.corner_bevel,
+                        0.5 * side
+                    ),
+                ));
             }
         }
         if self.floe.is_some() && self.wall.is_some() {
@@ -644,6 +770,18 @@ impl Scene {
             if !p.base.is_finite() {
                 return bad("pile.base", "must be finite (m)");
             }
+            check(THICKNESS, "pile.thickness", p.thickness)?;
+            check(BLOCK_WIDTH, "pile.width", p.width)?;
+            if p.blocks > MAX_BLOCKS {
+                return Err(SceneError::Invalid(
+                    "pile.blocks".into(),
+                    format!(
+                        "{} is out of range: must lie in [0, {MAX_BLOCKS}] (memory and contact search grow with the number of blocks)",
+                        p.blocks
+                    ),
+                ));
+            }
+            blocks += p.blocks as f64;
             let need = p.columns as f64 * (p.width + p.gap) + p.gap;
             if p.walls && need > p.basin_width {
                 return bad(
@@ -651,6 +789,40 @@ impl Scene {
                     "is narrower than the columns of the initial stack",
                 );
             }
+        }
+        if blocks > MAX_BLOCKS as f64 {
+            return Err(SceneError::Invalid(
+                "sheet.length, floe.length, pile.blocks".into(),
+                format!(
+                    "the scene would start with {blocks} blocks (sheet.length / sheet.block_width + floe.length / floe.block_width + pile.blocks); at most {MAX_BLOCKS} are allowed, as memory and contact search grow with them"
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Checks that a run of this scene with time step `dt` (s), e.g. the stable step its
+    /// world derived, takes at least one step: `dt` must be positive, finite and no longer
+    /// than the duration. [`crate::simulation::run`] calls it, so every face (command line,
+    /// scene file, Python, C) refuses such a run before it starts.
+    pub fn check_run_length(&self, dt: f64) -> Result<(), SceneError> {
+        if !(dt > 0.0 && dt.is_finite()) {
+            return Err(SceneError::Invalid(
+                "numerics.time_step".into(),
+                format!(
+                    "the time step is {dt} s: the scene has nothing that sets a stable step (no free blocks?); set numerics.time_step to a positive value below duration = {} s",
+                    self.duration
+                ),
+            ));
+        }
+        if dt > self.duration {
+            return Err(SceneError::Invalid(
+                "duration".into(),
+                format!(
+                    "{} s is shorter than the time step {dt:.3e} s: the run would take no step; use a longer duration",
+                    self.duration
+                ),
+            ));
         }
         Ok(())
     }

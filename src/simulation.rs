@@ -146,6 +146,7 @@ pub fn run(
     observe: &mut dyn FnMut(&World) -> bool,
 ) -> Result<RunOutput, SceneError> {
     let mut world = scene.build()?;
+    scene.check_run_length(world.dt())?;
     run_world(&mut world, scene, observe)
 }
 

@@ -1,7 +1,7 @@
 //! A tiny campaign end to end: two thicknesses × two seeds of a short run, interrupted after
 //! its first finished run and resumed without redoing anything.
 
-use pressridge::campaign::{CampaignSpec, read_records};
+use pressridge::campaign::{CampaignSpec, read_campaign, read_records};
 use std::process::Command;
 use std::time::{Duration, Instant};
 
@@ -47,8 +47,15 @@ fn tiny_campaign_is_resumable_and_complete() {
     child.wait().unwrap();
     let bytes = std::fs::read(&first).unwrap();
     let mtime = std::fs::metadata(&first).unwrap().modified().unwrap();
-    // No half-written record is left behind by the kill.
-    let (_, partial) = read_records(&out).unwrap();
+    // No half-written record is left behind by the kill: every record there is complete
+    // and matches its files; an incomplete campaign is refused unless partial is allowed.
+    assert!(
+        read_records(&out).is_err(),
+        "an interrupted campaign must not read as whole"
+    );
+    let c = read_campaign(&out, true).unwrap();
+    assert!(c.inconsistent.is_empty(), "{:?}", c.inconsistent);
+    let partial = c.records;
     assert!(!partial.is_empty() && partial.len() < 4);
 
     // Resume: the finished run is not redone, the others are made.
@@ -248,6 +255,119 @@ fn tiny_campaign_is_resumable_and_complete() {
         .output()
         .unwrap();
     assert!(String::from_utf8_lossy(&res.stdout).contains("4 already done, 0 run now"));
+
+    // Honest records: a deleted state file, a record copied from another run directory and
+    // a missing record are named by tabulate (refused, or left out with --allow-partial
+    // and counted in the table's attributes) and redone by the campaign, identically.
+    for r in &records {
+        assert!(r.digest.is_some(), "{} has no digest", r.id);
+    }
+    let ids: Vec<&str> = records.iter().map(|r| r.id.as_str()).collect();
+    let run_dir = |id: &str| out.join("runs").join(id);
+    std::fs::remove_file(run_dir(ids[1]).join("state.json")).unwrap();
+    std::fs::copy(
+        run_dir(ids[2]).join("run.json"),
+        run_dir(ids[3]).join("run.json"),
+    )
+    .unwrap();
+    std::fs::remove_file(run_dir(ids[0]).join("run.json")).unwrap();
+    let c = read_campaign(&out, true).unwrap();
+    assert_eq!(c.missing, vec![ids[0].to_string()]);
+    let bad: Vec<&str> = c.inconsistent.iter().map(|(id, _)| id.as_str()).collect();
+    assert_eq!(bad, vec![ids[1], ids[3]]);
+    assert!(
+        c.inconsistent[0].1.contains("state.json"),
+        "{:?}",
+        c.inconsistent
+    );
+    assert!(c.inconsistent[1].1.contains(ids[2]), "{:?}", c.inconsistent);
+    let partial_table = dir.join("partial.nc");
+    let tab = |extra: &[&str]| {
+        bin()
+            .arg("tabulate")
+            .arg("--campaign")
+            .arg(&out)
+            .arg("--out")
+            .arg(&partial_table)
+            .args(["--points", "5"])
+            .args(extra)
+            .output()
+            .unwrap()
+    };
+    let res = tab(&[]);
+    assert_eq!(res.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&res.stderr);
+    for id in [ids[0], ids[1], ids[3]] {
+        assert!(err.contains(id), "tabulate does not name {id}: {err}");
+    }
+    assert!(err.contains("1 of 4 planned runs complete"), "{err}");
+    assert!(!partial_table.exists());
+    let res = tab(&["--allow-partial"]);
+    assert!(
+        res.status.success(),
+        "{}",
+        String::from_utf8_lossy(&res.stderr)
+    );
+    let nc = netcdf::open(&partial_table).unwrap();
+    let int_attr = |n: &str| match nc.attribute(n).unwrap().value().unwrap() {
+        netcdf::AttributeValue::Int(i) => i,
+        other => panic!("{n}: {other:?}"),
+    };
+    assert_eq!(
+        (int_attr("runs_planned"), int_attr("runs_tabulated")),
+        (4, 1)
+    );
+    match nc.attribute("partial").unwrap().value().unwrap() {
+        netcdf::AttributeValue::Str(s) => assert!(s.starts_with("yes") && s.contains(ids[0])),
+        other => panic!("{other:?}"),
+    }
+    drop(nc);
+    // Resuming redoes exactly the three runs, with the same results as before.
+    let res = bin()
+        .args(["campaign", "--threads", "2", "--spec"])
+        .arg(&spec)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(
+        String::from_utf8_lossy(&res.stdout).contains("1 already done, 3 run now"),
+        "{}{}",
+        String::from_utf8_lossy(&res.stdout),
+        String::from_utf8_lossy(&res.stderr)
+    );
+    let (_, again) = read_records(&out).unwrap();
+    let strip = |rs: &[pressridge::campaign::RunRecord]| {
+        rs.iter()
+            .cloned()
+            .map(|mut r| {
+                r.summary.wall_seconds = 0.0;
+                r
+            })
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(strip(&again), strip(&records), "a resumed run differs");
+    // The same scene and seed under another run's id (as a value given twice on an axis
+    // made before such specs were refused), with consistent digests, counts once.
+    let mut twin = again[0].clone();
+    twin.id = ids[1].to_string();
+    let d = twin.digest.as_mut().unwrap();
+    d.scene = pressridge::campaign::scene_digest(&twin.id, twin.seed, &twin.scene);
+    std::fs::copy(
+        run_dir(ids[0]).join("state.json"),
+        run_dir(ids[1]).join("state.json"),
+    )
+    .unwrap();
+    pressridge::io::state::write_json(&run_dir(ids[1]).join("run.json"), &twin).unwrap();
+    let c = read_campaign(&out, true).unwrap();
+    assert_eq!(c.records.len(), 3);
+    assert_eq!(c.inconsistent.len(), 1, "{:?}", c.inconsistent);
+    assert!(
+        c.inconsistent[0].1.contains("same scene and seed"),
+        "{:?}",
+        c.inconsistent
+    );
+
     // A changed grid is refused in the same directory.
     std::fs::write(&spec, SPEC.replace("0.35", "0.40")).unwrap();
     let res = bin()

@@ -528,16 +528,23 @@ def campaign(
     return CampaignResult(skipped, done, total)
 
 
-def tabulate(campaign_dir: PathLike, out: PathLike, *, points: int = 41) -> Table:
+def tabulate(
+    campaign_dir: PathLike, out: PathLike, *, points: int = 41, allow_partial: bool = False
+) -> Table:
     """Tabulates a campaign directory into a NetCDF lookup table, as ``pressridge
     tabulate``: ensemble statistics of work (J/m), potential energy (J/m), their ratio and
     the ridging force (N/m) on a grid of ``points`` ridged volumes (m³/m), fits (eqs
-    13-16) and C_f per thickness. Returns the table, opened."""
+    13-16) and C_f per thickness. Returns the table, opened.
+
+    An incomplete campaign (missing runs, or records that do not match their digests)
+    raises ``ValueError`` naming the runs, unless ``allow_partial``: then the complete runs
+    are tabulated and the table's attributes ``runs_planned``, ``runs_tabulated`` and
+    ``partial`` say what was left out (docs/failure.md)."""
     if int(points) < 2:
         raise ValueError(f"points must be at least 2, got {points}")
     cdir = _os.fspath(campaign_dir)
     outp = _os.fspath(out)
     command = f"pressridge.tabulate({cdir!r}, {outp!r}, points={int(points)}) (Python)"
     date = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d")
-    _core.tabulate(cdir, outp, int(points), command, date)
+    _core.tabulate(cdir, outp, int(points), command, date, bool(allow_partial))
     return Table.open(outp)

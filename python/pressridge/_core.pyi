@@ -74,7 +74,12 @@ def campaign_run_planned(spec_json: str, run_json: str, out: _Path) -> str:
     """Runs one planned run, writes it; returns its id."""
 
 def tabulate(
-    campaign_dir: _Path, out: _Path, points: int, command: str, date: str
+    campaign_dir: _Path,
+    out: _Path,
+    points: int,
+    command: str,
+    date: str,
+    allow_partial: bool = False,
 ) -> List[Tuple[str, float, float]]:
     """[(set, thickness (m), C_f)]."""
 

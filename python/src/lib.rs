@@ -911,7 +911,7 @@ fn campaign_run_planned(
 /// Tabulates a campaign directory into a NetCDF lookup table (as `pressridge tabulate`);
 /// returns one line per set and thickness with its C_f.
 #[pyfunction]
-#[pyo3(signature = (campaign_dir, out, points, command, date))]
+#[pyo3(signature = (campaign_dir, out, points, command, date, allow_partial=false))]
 fn tabulate(
     py: Python<'_>,
     campaign_dir: PathBuf,
@@ -919,10 +919,17 @@ fn tabulate(
     points: usize,
     command: String,
     date: String,
+    allow_partial: bool,
 ) -> PyResult<Vec<(String, f64, f64)>> {
     detached(py, || {
         file_missing(&campaign_dir)?;
-        let (spec, records) = campaign::read_records(&campaign_dir)?;
+        let c = campaign::read_campaign(&campaign_dir, allow_partial)?;
+        let gaps = if c.is_complete() {
+            String::new()
+        } else {
+            c.describe_gaps()
+        };
+        let (planned, spec, records) = (c.planned, c.spec, c.records);
         let table = tabulate_records(&records, points).map_err(value_err)?;
         let prov = Provenance {
             campaign_spec: toml_text(&spec)?,
@@ -932,6 +939,9 @@ fn tabulate(
                 .unwrap_or_default(),
             command,
             date,
+            runs_planned: planned,
+            runs_tabulated: records.len(),
+            gaps,
         };
         write_ridge_table(&out, &table, &prov)?;
         let mut lines = Vec::new();

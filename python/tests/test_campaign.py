@@ -139,3 +139,19 @@ def test_ctrl_c_stops_a_threaded_campaign_after_the_runs_in_flight(tiny_spec, tm
     assert 1 <= len(finished) < 4  # the run in flight was finished and written
     r = pr.campaign(tiny_spec, out, threads=2)
     assert r.skipped == len(finished) and r.skipped + r.done == 4
+
+
+def test_tabulate_refuses_an_incomplete_campaign_unless_partial_is_allowed(cli_campaign, tmp_path):
+    src, _ = cli_campaign
+    out = tmp_path / "copy"
+    shutil.copytree(src, out)
+    ids = json.loads((out / "plan.json").read_text())
+    (out / "runs" / ids[1] / "state.json").unlink()
+    with pytest.raises(ValueError, match="state.json is missing") as e:
+        pr.tabulate(out, tmp_path / "t.nc", points=5)
+    assert ids[1] in str(e.value)
+    assert not (tmp_path / "t.nc").exists()
+    pr.tabulate(out, tmp_path / "t.nc", points=5, allow_partial=True)
+    attrs = xr.load_dataset(tmp_path / "t.nc").attrs
+    assert (attrs["runs_planned"], attrs["runs_tabulated"]) == (4, 3)
+    assert attrs["partial"].startswith("yes") and ids[1] in attrs["partial"]

@@ -218,6 +218,32 @@ pub(crate) unsafe fn read_string<'a>(
     })
 }
 
+/// Reads a caller's file path given as (pointer, length in bytes): UTF-8 without NUL bytes.
+/// A path with an embedded NUL would be cut short by the C library that opens it, opening
+/// another file than the one named, so it is refused.
+///
+/// # Safety
+/// As [`read_string`].
+pub(crate) unsafe fn read_path<'a>(ptr: *const c_char, len: i64, what: &str) -> FfiResult<&'a str> {
+    // SAFETY: the caller's promise, passed on.
+    let p = unsafe { read_string(ptr, len, what) }?;
+    if let Some(i) = p.find('\0') {
+        return Err(FfiError::new(
+            PRESSRIDGE_ERR_BAD_VALUE,
+            format!(
+                "{what} has a NUL byte at offset {i} of its {len} bytes: pass the path's length without any terminating NUL"
+            ),
+        ));
+    }
+    if p.is_empty() {
+        return Err(FfiError::new(
+            PRESSRIDGE_ERR_BAD_VALUE,
+            format!("{what} is empty"),
+        ));
+    }
+    Ok(p)
+}
+
 /// Stores `value` through the out-pointer `out`, which must not be null.
 ///
 /// # Safety

@@ -7,7 +7,7 @@ use std::sync::Arc;
 
 use super::layout::check_ptr;
 use super::{
-    FfiError, FfiResult, PRESSRIDGE_ERR_BAD_SIZE, PRESSRIDGE_ERR_BAD_VALUE, guard, put,
+    FfiError, FfiResult, PRESSRIDGE_ERR_BAD_SIZE, PRESSRIDGE_ERR_BAD_VALUE, guard, put, read_path,
     read_string, write_string,
 };
 use crate::io::itd_netcdf::read_cf_table;
@@ -85,7 +85,7 @@ pub unsafe extern "C" fn pressridge_cf_table_open(
     // SAFETY: pointers checked before use; validity is the caller's promise.
     guard(|| unsafe {
         check_ptr(table, "table")?;
-        let p = read_string(path, path_len, "path")?;
+        let p = read_path(path, path_len, "path")?;
         let t = read_cf_table(Path::new(p))?;
         let h = Box::into_raw(Box::new(PressridgeCfTable { table: Arc::new(t) }));
         put(table, h, "table")
@@ -219,7 +219,7 @@ pub unsafe extern "C" fn pressridge_ridge_table_open(
     // SAFETY: as above.
     guard(|| unsafe {
         check_ptr(table, "table")?;
-        let p = read_string(path, path_len, "path")?;
+        let p = read_path(path, path_len, "path")?;
         let t = RidgeLookup::open(Path::new(p))?;
         let names = t.variables().map(str::to_string).collect();
         let h = Box::into_raw(Box::new(PressridgeRidgeTable { table: t, names }));

@@ -60,6 +60,20 @@ pub enum NetcdfError {
         /// What is wrong.
         source: crate::itd::ColumnError,
     },
+    /// A variable has a value the format does not allow (e.g. a non-finite `hin_max`) or a
+    /// type that is not numeric.
+    #[error("{path}: variable `{var}`: {msg}")]
+    Value {
+        /// File concerned.
+        path: PathBuf,
+        /// Variable name.
+        var: String,
+        /// What is wrong.
+        msg: String,
+    },
+    /// Writing the file failed (the path could not be created, synced or renamed).
+    #[error(transparent)]
+    Io(#[from] crate::io::IoError),
     /// Any other physics error (bounds, shapes, parameters, C_f table).
     #[error("{path}: {source}")]
     Itd {
@@ -178,7 +192,29 @@ fn fmt_dims(d: &[(String, usize)]) -> String {
     format!("({})", parts.join(", "))
 }
 
+/// Reads a numeric variable as f64; a variable of another type (text, compound, ...) is an
+/// error naming it and its type.
 fn read_f64(path: &Path, v: &netcdf::Variable<'_>) -> Result<Vec<f64>, NetcdfError> {
+    use netcdf::types::NcVariableType as T;
+    // `vartype` panics on a type it does not know: that is "not numeric" too.
+    let t = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| v.vartype())).ok();
+    let kind = match &t {
+        Some(T::Int(_) | T::Float(_)) => None,
+        Some(T::Char) => Some("text (char)"),
+        Some(T::String) => Some("text (string)"),
+        Some(T::Compound(_)) => Some("compound"),
+        Some(T::Opaque(_)) => Some("opaque"),
+        Some(T::Enum(_)) => Some("enum"),
+        Some(T::Vlen(_)) => Some("variable-length"),
+        None => Some("an unknown type"),
+    };
+    if let Some(kind) = kind {
+        return Err(NetcdfError::Value {
+            path: path.to_path_buf(),
+            var: v.name(),
+            msg: format!("has type {kind}, expected a numeric type (double, float or integer)"),
+        });
+    }
     v.get_values::<f64, _>(..).map_err(nc_err(path))
 }
 
@@ -271,6 +307,11 @@ pub fn read_itd(path: &Path) -> Result<ItdGrid, NetcdfError> {
                     found: fmt_dims(&dims_of(&h)),
                 });
             }
+            crate::itd::bounds::validate_bounds(&vals).map_err(|e| NetcdfError::Value {
+                path: path.to_path_buf(),
+                var: "hin_max".into(),
+                msg: e.to_string(),
+            })?;
             Some(vals)
         }
     };
@@ -282,7 +323,7 @@ pub fn read_itd(path: &Path) -> Result<ItdGrid, NetcdfError> {
                 || aice0.as_ref().is_some_and(|a| is_fill(a[c], a0fill)))
         })
         .collect();
-    Ok(ItdGrid {
+    let grid = ItdGrid {
         ncat_dim: ad[0].0.clone(),
         aice0,
         divu: read_spatial(path, &file, "divu", &spatial)?,
@@ -297,7 +338,38 @@ pub fn read_itd(path: &Path) -> Result<ItdGrid, NetcdfError> {
         } else {
             Some(valid)
         },
-    })
+    };
+    check_volume_range(path, &grid)?;
+    Ok(grid)
+}
+
+/// Refuses a category volume beyond [`crate::limits::CATEGORY_THICKNESS`] (vicen ≤ vicen /
+/// aicen, so a larger vicen means thicker ice than any), which would overflow the squares
+/// and exponentials of the strength and ridging formulas into inf or NaN. Masked columns are
+/// not checked; NaN, infinite and negative values are the physics' to name.
+fn check_volume_range(path: &Path, g: &ItdGrid) -> Result<(), NetcdfError> {
+    let range = crate::limits::CATEGORY_THICKNESS;
+    for c in 0..g.ncol() {
+        if g.valid.as_ref().is_some_and(|v| !v[c]) {
+            continue;
+        }
+        for (k, &x) in g.vicen.column(c).iter().enumerate() {
+            if x.is_finite()
+                && x > range.max
+                && let Some(why) = range.violation(x)
+            {
+                return Err(NetcdfError::Value {
+                    path: path.to_path_buf(),
+                    var: "vicen".into(),
+                    msg: format!(
+                        "column {c} at ({}), category {k}: {why}",
+                        g.spatial_index(c)
+                    ),
+                });
+            }
+        }
+    }
+    Ok(())
 }
 
 /// Reads a C_f table: 1-D variables `thickness` (m) and `cf` (dimensionless) of equal
@@ -332,8 +404,13 @@ pub fn read_cf_table(path: &Path) -> Result<CfTable, NetcdfError> {
 
 /// Writes a C_f table file (`thickness` in m, `cf` dimensionless), 64-bit-offset format.
 pub fn write_cf_table(path: &Path, table: &CfTable) -> Result<(), NetcdfError> {
+    crate::io::write_atomic_with(path, |tmp| write_cf_table_at(tmp, path, table))
+}
+
+/// [`write_cf_table`] into the file `tmp`; errors name `path`.
+fn write_cf_table_at(tmp: &Path, path: &Path, table: &CfTable) -> Result<(), NetcdfError> {
     let e = nc_err(path);
-    let mut f = netcdf::create_with(path, netcdf::Options::_64BIT_OFFSET).map_err(&e)?;
+    let mut f = netcdf::create_with(tmp, netcdf::Options::_64BIT_OFFSET).map_err(&e)?;
     f.add_dimension("node", table.thickness().len())
         .map_err(&e)?;
     let mut v = f.add_variable::<f64>("thickness", &["node"]).map_err(&e)?;
@@ -394,7 +471,15 @@ pub struct Output<'a> {
 /// every NetCDF tool; netCDF-C 4.9.0 with HDF5 1.10 prints spurious `HDF5-DIAG` messages
 /// when NetCDF-4 files are read from a non-main thread), with CF attributes,
 /// `Conventions = CF-1.8`, `source`/`pressridge_version` and the given global attributes.
+///
+/// The file is written atomically ([`crate::io::write_atomic_with`]): a writer killed or
+/// failing at any moment leaves the previous file at `path` (or none), never a partial one.
 pub fn write_output(path: &Path, out: &Output<'_>) -> Result<(), NetcdfError> {
+    crate::io::write_atomic_with(path, |tmp| write_output_at(tmp, path, out))
+}
+
+/// [`write_output`] into the file `tmp`; errors name `path`.
+fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), NetcdfError> {
     let e = nc_err(path);
     let g = out.grid;
     let ncol = g.ncol();
@@ -475,7 +560,7 @@ pub fn write_output(path: &Path, out: &Output<'_>) -> Result<(), NetcdfError> {
         items.push((*meta, spatial.clone(), data));
     }
 
-    let mut f = netcdf::create_with(path, netcdf::Options::_64BIT_OFFSET).map_err(&e)?;
+    let mut f = netcdf::create_with(tmp, netcdf::Options::_64BIT_OFFSET).map_err(&e)?;
     for (n, l) in &g.spatial_dims {
         f.add_dimension(n, *l).map_err(&e)?;
     }

@@ -27,17 +27,33 @@ pub struct Provenance {
     pub command: String,
     /// Creation date (ISO 8601).
     pub date: String,
+    /// Runs the campaign planned.
+    pub runs_planned: usize,
+    /// Runs tabulated (fewer than planned only when a partial campaign was allowed).
+    pub runs_tabulated: usize,
+    /// The runs left out of a partial campaign (empty for a complete one).
+    pub gaps: String,
 }
 
-/// Writes a [`RidgeTable`] to `path`.
+/// Writes a [`RidgeTable`] to `path`, atomically ([`super::write_atomic_with`]).
 pub fn write_ridge_table(
+    path: &Path,
+    t: &RidgeTable,
+    prov: &Provenance,
+) -> Result<(), NetcdfError> {
+    super::write_atomic_with(path, |tmp| write_ridge_table_at(tmp, path, t, prov))
+}
+
+/// [`write_ridge_table`] into the file `tmp` (renamed by the caller); errors name `path`.
+fn write_ridge_table_at(
+    tmp: &Path,
     path: &Path,
     t: &RidgeTable,
     prov: &Provenance,
 ) -> Result<(), NetcdfError> {
     let e = nc_err(path);
     let (ns, nh, nv) = (t.sets.len(), t.thickness.len(), t.volume.len());
-    let mut f = netcdf::create_with(path, netcdf::Options::_64BIT_OFFSET).map_err(&e)?;
+    let mut f = netcdf::create_with(tmp, netcdf::Options::_64BIT_OFFSET).map_err(&e)?;
     f.add_dimension("set", ns).map_err(&e)?;
     f.add_dimension("thickness", nh).map_err(&e)?;
     f.add_dimension("volume", nv).map_err(&e)?;
@@ -317,6 +333,22 @@ pub fn write_ridge_table(
     f.add_attribute("campaign_spec", prov.campaign_spec.as_str())
         .map_err(&e)?;
     f.add_attribute("scene", prov.scene.as_str()).map_err(&e)?;
+    // Runs are counted as i32 (the NetCDF classic integer attribute type).
+    let count = |n: usize| i32::try_from(n).unwrap_or(i32::MAX);
+    f.add_attribute("runs_planned", count(prov.runs_planned))
+        .map_err(&e)?;
+    f.add_attribute("runs_tabulated", count(prov.runs_tabulated))
+        .map_err(&e)?;
+    f.add_attribute(
+        "partial",
+        if prov.gaps.is_empty() {
+            "no: every planned run tabulated".to_string()
+        } else {
+            format!("yes: {}", prov.gaps)
+        }
+        .as_str(),
+    )
+    .map_err(&e)?;
     f.add_attribute(
         "history",
         format!("{} {}", prov.date, prov.command).as_str(),

@@ -23,6 +23,19 @@ pub enum PlotError {
     /// The drawing backend failed (message from plotters).
     #[error("drawing failed: {0}")]
     Draw(String),
+    /// The figure could not be written.
+    #[error(transparent)]
+    Io(#[from] crate::io::IoError),
+}
+
+impl PlotError {
+    /// The error with the figure's path in a drawing message.
+    pub(crate) fn at(self, path: &std::path::Path) -> PlotError {
+        match self {
+            PlotError::Draw(m) => PlotError::Draw(format!("{}: {m}", path.display())),
+            other => other,
+        }
+    }
 }
 
 const FONT_PATHS: &[&str] = &[

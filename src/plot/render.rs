@@ -62,6 +62,18 @@ pub fn render_state(
     width_px: u32,
     title: &str,
 ) -> Result<(), PlotError> {
+    crate::io::write_atomic_with(path, |tmp| render_state_at(s, tmp, window, width_px, title))
+        .map_err(|e| e.at(path))
+}
+
+/// [`render_state`] into the file `path` (a temporary file renamed by the caller).
+fn render_state_at(
+    s: &Snapshot,
+    path: &Path,
+    window: Window,
+    width_px: u32,
+    title: &str,
+) -> Result<(), PlotError> {
     ensure_font()?;
     let aspect = (window.y1 - window.y0) / (window.x1 - window.x0);
     // Room for labels: the plot area keeps metres square.

@@ -8,6 +8,12 @@ use std::path::Path;
 
 /// Draws every ledger term against time into a PNG, in kJ per metre.
 pub fn plot_energy(samples: &[Sample], path: &Path, title: &str) -> Result<(), PlotError> {
+    crate::io::write_atomic_with(path, |tmp| plot_energy_at(samples, tmp, title))
+        .map_err(|e| e.at(path))
+}
+
+/// [`plot_energy`] into the file `path` (a temporary file renamed by the caller).
+fn plot_energy_at(samples: &[Sample], path: &Path, title: &str) -> Result<(), PlotError> {
     ensure_font()?;
     let series: Vec<EnergyBudget> = samples.iter().map(|s| s.energy).collect();
     let series = &series[..];
@@ -90,6 +96,12 @@ pub fn plot_energy(samples: &[Sample], path: &Path, title: &str) -> Result<(), P
 /// Draws the ridging force of eq (9) against time (cf. Hopkins 1994, Figure 6) in kN per
 /// metre, sampled at the scene's interval (0.2 s by default, as in the paper).
 pub fn plot_force(samples: &[Sample], path: &Path, title: &str) -> Result<(), PlotError> {
+    crate::io::write_atomic_with(path, |tmp| plot_force_at(samples, tmp, title))
+        .map_err(|e| e.at(path))
+}
+
+/// [`plot_force`] into the file `path` (a temporary file renamed by the caller).
+fn plot_force_at(samples: &[Sample], path: &Path, title: &str) -> Result<(), PlotError> {
     ensure_font()?;
     let t1 = samples.last().map_or(1.0, |s| s.energy.time).max(1e-9);
     let (mut lo, mut hi) = (0.0f64, 1.0f64);

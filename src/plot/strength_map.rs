@@ -43,6 +43,17 @@ pub fn draw_strength_maps(
     ny: usize,
     nx: usize,
 ) -> Result<(), PlotError> {
+    crate::io::write_atomic_with(path, |tmp| draw_strength_maps_at(tmp, panels, ny, nx))
+        .map_err(|e| e.at(path))
+}
+
+/// [`draw_strength_maps`] into the file `path` (a temporary file renamed by the caller).
+fn draw_strength_maps_at(
+    path: &Path,
+    panels: &[Panel<'_>],
+    ny: usize,
+    nx: usize,
+) -> Result<(), PlotError> {
     ensure_font()?;
     if panels.is_empty() || ny == 0 || nx == 0 {
         return Err(PlotError::Draw("nothing to draw".into()));

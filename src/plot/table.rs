@@ -24,6 +24,11 @@ fn finite_max(xs: impl Iterator<Item = f64>) -> f64 {
 /// Work against ridged volume for set `s` (cf. Figures 9, 11, 12): the ensemble mean of each
 /// thickness, the pooled fit of eq (13) and its 95 % confidence and prediction bands, in MJ/m.
 pub fn plot_work(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> {
+    crate::io::write_atomic_with(path, |tmp| plot_work_at(t, s, tmp)).map_err(|e| e.at(path))
+}
+
+/// [`plot_work`] into the file `path` (a temporary file renamed by the caller).
+fn plot_work_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> {
     ensure_font()?;
     let vmax = t.volume.last().copied().unwrap_or(1.0).max(1e-9);
     let band = t.work_band[s].as_ref();
@@ -131,6 +136,11 @@ pub fn plot_work(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError>
 /// Ridging force against volume for set `s`: eq (15) from the pooled fit per thickness
 /// (lines) and the ensemble mean of the runs' interval-mean force (dots), in kN/m.
 pub fn plot_force(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> {
+    crate::io::write_atomic_with(path, |tmp| plot_force_at(t, s, tmp)).map_err(|e| e.at(path))
+}
+
+/// [`plot_force`] into the file `path` (a temporary file renamed by the caller).
+fn plot_force_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> {
     ensure_font()?;
     let vmax = t.volume.last().copied().unwrap_or(1.0).max(1e-9);
     let fmax = finite_max(
@@ -198,6 +208,12 @@ pub fn plot_force(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError
 /// Averaged final profiles (cf. Figures 8 and 10): mean sail height up and keel depth down
 /// in 1-m strips, one colour per label, all ice (solid) and rubble alone (dashed look: thin).
 pub fn plot_profiles(profiles: &[(String, Profile)], path: &Path) -> Result<(), PlotError> {
+    crate::io::write_atomic_with(path, |tmp| plot_profiles_at(profiles, tmp))
+        .map_err(|e| e.at(path))
+}
+
+/// [`plot_profiles`] into the file `path` (a temporary file renamed by the caller).
+fn plot_profiles_at(profiles: &[(String, Profile)], path: &Path) -> Result<(), PlotError> {
     ensure_font()?;
     let Some((_, first)) = profiles.first() else {
         return Ok(());

@@ -9,6 +9,7 @@ use std::path::PathBuf;
 
 use ndarray::Array1;
 use pressridge::io::itd_netcdf::{has_variable, read_field, read_fill, read_itd};
+use pressridge::io::refuse_output_over_input;
 use pressridge::itd::strength_batch_masked;
 use pressridge::plot::strength_map::{Panel, draw_strength_maps};
 
@@ -65,6 +66,9 @@ fn summary(label: &str, v: &[f64], ice: &[bool]) -> String {
 
 /// Runs `pressridge plot-strength`.
 pub fn run(args: Args) -> Result<(), BoxError> {
+    let mut inputs = vec![("--input", args.input.as_path())];
+    inputs.extend(args.cf_table.iter().map(|t| ("--cf-table", t.as_path())));
+    refuse_output_over_input(&args.output, "--output", &inputs)?;
     let mut titles = Vec::new();
     let mut fields = Vec::new();
     let (ny, nx, ice): (usize, usize, Vec<bool>);

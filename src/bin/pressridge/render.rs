@@ -1,6 +1,7 @@
 //! `pressridge render`: draw a saved state.
 
 use crate::BoxError;
+use pressridge::io::refuse_output_over_input;
 use pressridge::io::state::load_state;
 use pressridge::plot::render::{Window, render_state};
 use std::path::PathBuf;
@@ -21,6 +22,7 @@ pub struct Args {
 }
 
 pub fn run(a: Args) -> Result<(), BoxError> {
+    refuse_output_over_input(&a.out, "--out", &[("state", &a.state)])?;
     let s = load_state(&a.state)?;
     let window = match a.window.as_deref() {
         Some(&[x0, x1, y0, y1]) if x1 > x0 && y1 > y0 => Window { x0, x1, y0, y1 },

@@ -4,12 +4,13 @@ use std::path::PathBuf;
 
 use ndarray::Array1;
 use pressridge::io::itd_netcdf::{FieldMeta, NC_FILL_DOUBLE, Output, read_itd, write_output};
+use pressridge::io::refuse_output_over_input;
 use pressridge::itd::{
     CategoryBounds, RidgeOptions, RidgeRatesMut, category_bounds, ridge_batch_masked,
 };
 
 use crate::BoxError;
-use crate::strength::{PartArg, RedistArg, describe_params, parse_params};
+use crate::strength::{PartArg, RedistArg, check_finite, describe_params, parse_params};
 
 /// Arguments of `pressridge ridge-step`.
 #[derive(clap::Args, Debug)]
@@ -20,14 +21,14 @@ pub struct Args {
     /// Output NetCDF: updated aicen, vicen, aice0, hin_max and the ridging rates.
     #[arg(long)]
     pub output: PathBuf,
-    /// Time step (s).
-    #[arg(long)]
+    /// Time step (s, > 0).
+    #[arg(long, allow_negative_numbers = true)]
     pub dt: f64,
     /// Convergence rate (1/s, >= 0) for every column; default: max(-divu, 0) from the file.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub convergence: Option<f64>,
     /// Shear term (1/s, >= 0) for every column; default: `shear` from the file, else 0.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub shear: Option<f64>,
     /// Participation function.
     #[arg(long, value_enum, default_value = "exponential")]
@@ -42,19 +43,64 @@ pub struct Args {
 
 /// Runs `pressridge ridge-step`.
 pub fn run(args: Args) -> Result<(), BoxError> {
+    refuse_output_over_input(&args.output, "--output", &[("--input", &args.input)])?;
+    if !(args.dt > 0.0 && args.dt.is_finite()) {
+        return Err(format!(
+            "--dt must be a positive, finite number of seconds, got {}",
+            args.dt
+        )
+        .into());
+    }
+    for (flag, v) in [("--convergence", args.convergence), ("--shear", args.shear)] {
+        if let Some(x) = v
+            && !(x >= 0.0 && x.is_finite())
+        {
+            return Err(
+                format!("{flag} must be a non-negative, finite rate (1/s), got {x}").into(),
+            );
+        }
+    }
     let mut grid = read_itd(&args.input)?;
     let ncol = grid.ncol();
     let ncat = grid.ncat();
     let conv: Array1<f64> = match (args.convergence, &grid.divu) {
         (Some(c), _) => Array1::from_elem(ncol, c),
-        (None, Some(d)) => d.mapv(|x| f64::max(-x, 0.0)),
+        (None, Some(d)) => {
+            // A NaN or infinite divergence in a column with data is an error, not "no
+            // convergence" (f64::max would turn NaN into 0).
+            for (c, x) in d.iter().enumerate() {
+                let masked = grid.valid.as_ref().is_some_and(|v| !v[c]);
+                if !masked && !x.is_finite() {
+                    return Err(format!(
+                        "{}: variable `divu`: column {c} at ({}) is {x}: the divergence must be finite (1/s)",
+                        args.input.display(),
+                        grid.spatial_index(c)
+                    )
+                    .into());
+                }
+            }
+            d.mapv(|x| f64::max(-x, 0.0))
+        }
         (None, None) => {
             return Err("no convergence: pass --convergence or put `divu` in the input".into());
         }
     };
     let shear: Array1<f64> = match (args.shear, &grid.shear) {
         (Some(s), _) => Array1::from_elem(ncol, s),
-        (None, Some(s)) => s.clone(),
+        (None, Some(s)) => {
+            for (c, x) in s.iter().enumerate() {
+                let masked = grid.valid.as_ref().is_some_and(|v| !v[c]);
+                if !(masked || x.is_finite() && *x >= 0.0) {
+                    return Err(format!(
+                        "{}: variable `shear`: column {c} at ({}) is {x}: the shear term must be finite and non-negative (1/s)",
+                        args.input.display(),
+                        grid.spatial_index(c)
+                    )
+                    .into());
+                }
+            }
+            s.clone()
+        }
         (None, None) => {
             eprintln!("pressridge: note: no --shear and no `shear` in the input; using 0");
             Array1::zeros(ncol)
@@ -101,6 +147,16 @@ pub fn run(args: Args) -> Result<(), BoxError> {
             },
         )
         .map_err(|e| grid.locate(&args.input, e))?;
+    }
+    for (name, r) in ["closing", "opening", "dardg1dt", "dardg2dt", "dvirdgdt"]
+        .iter()
+        .zip(&rates)
+    {
+        check_finite(&grid, &args.input, name, r.as_slice().expect("contiguous"))?;
+    }
+    for k in 0..ncat {
+        check_finite(&grid, &args.input, "aicen", &grid.aicen.row(k).to_vec())?;
+        check_finite(&grid, &args.input, "vicen", &grid.vicen.row(k).to_vec())?;
     }
     if let Some(v) = &grid.valid {
         for (a, ok) in aice0.iter_mut().zip(v) {

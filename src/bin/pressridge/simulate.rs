@@ -27,6 +27,80 @@ pub struct Args {
     /// Skip the figures.
     #[arg(long)]
     no_figures: bool,
+    /// Replace an earlier run in `--out`: remove the files a run writes there (and only
+    /// those) before starting. Without it a non-empty `--out` is refused.
+    #[arg(long)]
+    overwrite: bool,
+}
+
+/// The files a run writes directly in its directory; `snapshots/` holds `t*.json` and
+/// `t*.png`.
+const RUN_FILES: &[&str] = &[
+    "scene.toml",
+    "summary.json",
+    "series.csv",
+    "state.json",
+    "final.png",
+    "energy.png",
+    "force.png",
+];
+
+/// Whether `name` is a file a run writes into `snapshots/` (or a temporary of one).
+fn is_snapshot_file(name: &str) -> bool {
+    (name.starts_with('t') && (name.ends_with(".json") || name.ends_with(".png")))
+        || name.starts_with(".tmp-")
+}
+
+/// Makes `dir` ready for a new run: created if missing; refused if it holds anything unless
+/// `overwrite`, which removes what a run writes there (other files are left alone), so the
+/// directory never holds a mix of an old and a new run.
+fn prepare_out_dir(dir: &Path, overwrite: bool) -> Result<(), BoxError> {
+    let shown = dir.display();
+    if dir.exists() && !dir.is_dir() {
+        return Err(format!("--out {shown} is a file, not a directory").into());
+    }
+    let entries = |d: &Path| -> Result<Vec<String>, BoxError> {
+        match std::fs::read_dir(d) {
+            Ok(it) => Ok(it
+                .filter_map(|e| e.ok())
+                .map(|e| e.file_name().to_string_lossy().into_owned())
+                .collect()),
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(Vec::new()),
+            Err(e) => Err(format!("{}: {e}", d.display()).into()),
+        }
+    };
+    let present = entries(dir)?;
+    if !present.is_empty() && !overwrite {
+        return Err(format!(
+            "--out {shown} is not empty (it holds {}): pass --overwrite to replace the run there, or choose a new directory",
+            present.join(", ")
+        )
+        .into());
+    }
+    let remove = |p: &Path| -> Result<(), BoxError> {
+        match std::fs::remove_file(p) {
+            Ok(()) => Ok(()),
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(()),
+            Err(e) => Err(format!("--overwrite: {}: {e}", p.display()).into()),
+        }
+    };
+    for name in &present {
+        if RUN_FILES.contains(&name.as_str()) || name.starts_with(".tmp-") {
+            remove(&dir.join(name))?;
+        }
+    }
+    let snaps = dir.join("snapshots");
+    if snaps.is_dir() {
+        for name in entries(&snaps)? {
+            if is_snapshot_file(&name) {
+                remove(&snaps.join(&name))?;
+            }
+        }
+        // Gone when it held only snapshots.
+        let _ = std::fs::remove_dir(&snaps);
+    }
+    std::fs::create_dir_all(dir).map_err(|e| format!("{shown}: {e}"))?;
+    Ok(())
 }
 
 /// Loads a scene file (or the default) and applies the overrides.
@@ -47,7 +121,10 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         print!("{}", scene.to_toml());
         return Ok(());
     }
-    std::fs::create_dir_all(&a.out).map_err(|e| format!("{}: {e}", a.out.display()))?;
+    // Everything that can refuse the scene is checked before the directory is touched:
+    // building the world checks its parameters, and the run must take at least one step.
+    scene.check_run_length(scene.build()?.dt())?;
+    prepare_out_dir(&a.out, a.overwrite)?;
     write_atomic(&a.out.join("scene.toml"), scene.to_toml().as_bytes())?;
 
     let bar = ProgressBar::with_draw_target(

@@ -8,6 +8,7 @@ use ndarray::Array1;
 use pressridge::io::itd_netcdf::{
     NC_FILL_DOUBLE, Output, STRENGTH_META, read_cf_table, read_itd, write_output,
 };
+use pressridge::io::refuse_output_over_input;
 use pressridge::itd::{
     Cf, CfPreset, ItdParams, Participation, Redistribution, StrengthFormula, StrengthOptions,
     strength_batch_masked,
@@ -89,7 +90,7 @@ pub struct Args {
     #[arg(long, value_enum, default_value = "rothrock")]
     pub strength: FormulaArg,
     /// Constant C_f (dimensionless); default 17 (CICE).
-    #[arg(long, conflicts_with_all = ["cf_preset", "cf_table"])]
+    #[arg(long, allow_negative_numbers = true, conflicts_with_all = ["cf_preset", "cf_table"])]
     pub cf: Option<f64>,
     /// Named constant C_f.
     #[arg(long, value_enum, conflicts_with = "cf_table")]
@@ -103,6 +104,37 @@ pub struct Args {
     pub params: Vec<String>,
 }
 
+/// Levenshtein distance between two short names.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut prev = row[0];
+        row[0] = i + 1;
+        for (j, &cb) in b.iter().enumerate() {
+            let cur = row[j + 1];
+            row[j + 1] = (prev + usize::from(ca != cb)).min(row[j] + 1).min(cur + 1);
+            prev = cur;
+        }
+    }
+    row[b.len()]
+}
+
+/// The message for an unknown parameter name: the name, the closest valid one (if close)
+/// and every valid one.
+fn unknown_param(name: &str) -> String {
+    let closest = ItdParams::NAMES
+        .iter()
+        .map(|n| (edit_distance(name, n), *n))
+        .min()
+        .filter(|(d, _)| *d <= 2 + name.len() / 4);
+    let hint = closest.map_or(String::new(), |(_, n)| format!(" (did you mean `{n}`?)"));
+    format!(
+        "--param: unknown parameter `{name}`{hint}; valid names: {}",
+        ItdParams::NAMES.join(", ")
+    )
+}
+
 /// Applies `NAME=VALUE` overrides to CICE's default parameters.
 pub fn parse_params(list: &[String]) -> Result<ItdParams, BoxError> {
     let mut p = ItdParams::default();
@@ -110,6 +142,9 @@ pub fn parse_params(list: &[String]) -> Result<ItdParams, BoxError> {
         let (name, value) = item
             .split_once('=')
             .ok_or_else(|| format!("--param {item}: expected NAME=VALUE"))?;
+        if !ItdParams::NAMES.contains(&name.trim()) {
+            return Err(unknown_param(name.trim()).into());
+        }
         let value: f64 = value
             .trim()
             .parse()
@@ -149,7 +184,11 @@ pub fn options(
             PresetArg::Cice => CfPreset::Cice.into(),
         }
     } else {
-        Cf::Constant(cf.unwrap_or(CfPreset::Cice.value()))
+        let value = cf.unwrap_or(CfPreset::Cice.value());
+        if let Some(why) = pressridge::limits::CF.violation(value) {
+            return Err(format!("--cf: {why}").into());
+        }
+        Cf::Constant(value)
     };
     Ok(StrengthOptions {
         participation: participation.into(),
@@ -173,6 +212,28 @@ pub fn describe(o: &StrengthOptions) -> Vec<(String, String)> {
     ]
 }
 
+/// Refuses an output field with a non-finite value in a column holding data: the inputs
+/// there overflowed the formulas, and NaN or inf must not be written as a result.
+pub fn check_finite(
+    grid: &pressridge::io::itd_netcdf::ItdGrid,
+    input: &std::path::Path,
+    name: &str,
+    values: &[f64],
+) -> Result<(), BoxError> {
+    for (c, x) in values.iter().enumerate() {
+        let masked = grid.valid.as_ref().is_some_and(|v| !v[c]);
+        if !masked && !x.is_finite() {
+            return Err(format!(
+                "{}: column {c} at ({}): the computed `{name}` is {x}: aicen/vicen there are beyond what the formulas can represent",
+                input.display(),
+                grid.spatial_index(c)
+            )
+            .into());
+        }
+    }
+    Ok(())
+}
+
 /// Runs `pressridge strength`.
 pub fn run(args: Args) -> Result<(), BoxError> {
     let mut o = options(
@@ -184,6 +245,11 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         args.cf_table.as_deref(),
     )?;
     o.params = parse_params(&args.params)?;
+    let mut inputs = vec![("--input", args.input.as_path())];
+    if let Some(t) = &args.cf_table {
+        inputs.push(("--cf-table", t.as_path()));
+    }
+    refuse_output_over_input(&args.output, "--output", &inputs)?;
     let grid = read_itd(&args.input)?;
     let mut p = Array1::zeros(grid.ncol());
     let fill = grid.fill_value.unwrap_or(NC_FILL_DOUBLE);
@@ -197,6 +263,12 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         p.view_mut(),
     )
     .map_err(|e| grid.locate(&args.input, e))?;
+    check_finite(
+        &grid,
+        &args.input,
+        "strength",
+        p.as_slice().expect("contiguous"),
+    )?;
     if summary.cf_clamped_columns > 0 {
         eprintln!(
             "pressridge: note: {} of {} columns had ridging-ice thicknesses outside the C_f table; values were clamped",

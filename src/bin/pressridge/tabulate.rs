@@ -1,7 +1,7 @@
 //! `pressridge tabulate`: a campaign directory to a NetCDF lookup table.
 
 use crate::BoxError;
-use pressridge::campaign::read_records;
+use pressridge::campaign::read_campaign;
 use pressridge::io::table_netcdf::{Provenance, write_ridge_table};
 use pressridge::plot;
 use pressridge::table::tabulate::tabulate;
@@ -26,6 +26,12 @@ pub struct Args {
     /// the energy budget, W/ΔPE and the ridge metrics; the fits of eqs (13)–(16).
     #[arg(long)]
     report: Option<PathBuf>,
+    /// Tabulate the complete runs of an incomplete campaign (interrupted, or with runs whose
+    /// records do not match their files). The table's attributes `runs_planned`,
+    /// `runs_tabulated` and `partial` say what was left out. Without it such a campaign is
+    /// refused, naming the missing and inconsistent runs.
+    #[arg(long)]
+    allow_partial: bool,
 }
 
 /// Today's date (UTC) as YYYY-MM-DD, from the system clock.
@@ -47,7 +53,19 @@ fn today() -> String {
 }
 
 pub fn run(a: Args) -> Result<(), BoxError> {
-    let (spec, records) = read_records(&a.campaign)?;
+    let campaign = read_campaign(&a.campaign, a.allow_partial)?;
+    if !campaign.is_complete() {
+        eprintln!(
+            "pressridge: warning: partial campaign (--allow-partial): {}",
+            campaign.describe_gaps()
+        );
+    }
+    let gaps = if campaign.is_complete() {
+        String::new()
+    } else {
+        campaign.describe_gaps()
+    };
+    let (planned, spec, records) = (campaign.planned, campaign.spec, campaign.records);
     let table = tabulate(&records, a.points)?;
     let prov = Provenance {
         campaign_spec: toml::to_string(&spec)?,
@@ -57,6 +75,9 @@ pub fn run(a: Args) -> Result<(), BoxError> {
             .unwrap_or_default(),
         command: std::env::args().collect::<Vec<_>>().join(" "),
         date: today(),
+        runs_planned: planned,
+        runs_tabulated: records.len(),
+        gaps,
     };
     write_ridge_table(&a.out, &table, &prov)?;
     if let Some(dir) = &a.figures {

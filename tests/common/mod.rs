@@ -1,0 +1,177 @@
+//! Helpers of the failure-behaviour tests (`tests/failure.rs`, `tests/kill.rs`): the binary,
+//! scratch directories and small NetCDF inputs written value by value.
+#![allow(dead_code)]
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+pub fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_pressridge"))
+}
+
+/// A fresh, empty scratch directory for test `name`.
+pub fn scratch(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("pressridge-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// Asserts that a command failed with exit code 1 (not a signal, not a panic) and a one-line
+/// error containing every needle.
+pub fn fails_with(out: &Output, needles: &[&str]) {
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(
+        out.status.code(),
+        Some(1),
+        "expected a clean failure, got {:?}: {err}",
+        out.status
+    );
+    assert!(!err.contains("panicked"), "panic: {err}");
+    let lines: Vec<&str> = err.lines().filter(|l| !l.trim().is_empty()).collect();
+    assert_eq!(lines.len(), 1, "not one line: {err}");
+    for n in needles {
+        assert!(err.contains(n), "message lacks `{n}`: {err}");
+    }
+}
+
+/// Asserts success and returns stdout.
+pub fn succeeds(out: &Output) -> String {
+    assert!(
+        out.status.success(),
+        "{:?}: {}",
+        out.status,
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+/// Values of a test variable.
+#[derive(Clone, Debug)]
+pub enum Data {
+    F64(Vec<f64>),
+    I32(Vec<i32>),
+    /// A string (text) variable, left at its fill value.
+    Text,
+}
+
+/// A variable of a test file: name, dimensions (name, length), values.
+#[derive(Clone, Debug)]
+pub struct Var {
+    pub name: String,
+    pub dims: Vec<(String, usize)>,
+    pub data: Data,
+}
+
+impl Var {
+    pub fn f64(name: &str, dims: &[(&str, usize)], v: Vec<f64>) -> Var {
+        Var {
+            name: name.into(),
+            dims: dims.iter().map(|(n, l)| (n.to_string(), *l)).collect(),
+            data: Data::F64(v),
+        }
+    }
+}
+
+/// Writes `vars` into a new NetCDF file (classic 64-bit-offset format). Dimensions are made as
+/// the variables name them; the first length given for a name wins.
+pub fn write_nc(path: &Path, vars: &[Var]) {
+    // One writer at a time in this process: the tests of a binary run on several threads,
+    // and HDF5 (under the NetCDF-4 files) is not reliably thread-safe.
+    static LOCK: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    let _guard = LOCK.lock().unwrap_or_else(|e| e.into_inner());
+    let _ = std::fs::remove_file(path);
+    // Text needs the NetCDF-4 format (string variables); the rest is written as the
+    // library writes.
+    // So does an empty (unlimited) dimension that is not the first of its variables.
+    let nc4 = vars
+        .iter()
+        .any(|v| matches!(v.data, Data::Text) || v.dims.iter().any(|d| d.1 == 0));
+    let mut f = if nc4 {
+        netcdf::create(path).unwrap()
+    } else {
+        netcdf::create_with(path, netcdf::Options::_64BIT_OFFSET).unwrap()
+    };
+    let mut made: Vec<String> = Vec::new();
+    for v in vars {
+        for (n, l) in &v.dims {
+            if !made.contains(n) {
+                f.add_dimension(n, *l).unwrap();
+                made.push(n.clone());
+            }
+        }
+    }
+    for v in vars {
+        let dims: Vec<&str> = v.dims.iter().map(|d| d.0.as_str()).collect();
+        match &v.data {
+            Data::F64(_) => {
+                f.add_variable::<f64>(&v.name, &dims).unwrap();
+            }
+            Data::I32(_) => {
+                f.add_variable::<i32>(&v.name, &dims).unwrap();
+            }
+            Data::Text => {
+                f.add_string_variable(&v.name, &dims).unwrap();
+            }
+        }
+    }
+    f.enddef().unwrap();
+    for v in vars {
+        let mut var = f.variable_mut(&v.name).unwrap();
+        let n: usize = v.dims.iter().map(|d| d.1).product();
+        match &v.data {
+            Data::F64(x) if n > 0 && x.len() == n => var.put_values(x, ..).unwrap(),
+            Data::I32(x) if n > 0 && x.len() == n => var.put_values(x, ..).unwrap(),
+            _ => {}
+        }
+    }
+    f.close().unwrap();
+}
+
+/// A valid 2-category distribution on a 2 × 3 grid with bounds, divergence and shear.
+pub fn good_itd() -> Vec<Var> {
+    let cat = [("nc", 2), ("y", 2), ("x", 3)];
+    let sp = [("y", 2), ("x", 3)];
+    let mut aicen = vec![0.4; 6];
+    aicen.extend(vec![0.4; 6]);
+    let mut vicen = vec![0.2; 6];
+    vicen.extend(vec![0.8; 6]);
+    vec![
+        Var::f64("aicen", &cat, aicen),
+        Var::f64("vicen", &cat, vicen),
+        Var::f64("aice0", &sp, vec![0.2; 6]),
+        Var::f64("hin_max", &[("nb", 3)], vec![0.0, 1.0, 3.0]),
+        Var::f64("divu", &sp, vec![-1e-6; 6]),
+        Var::f64("shear", &sp, vec![0.0; 6]),
+    ]
+}
+
+/// The names of the files in `dir` (sorted).
+pub fn names_in(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(dir)
+        .map(|it| {
+            it.filter_map(|e| e.ok())
+                .map(|e| e.file_name().to_string_lossy().into_owned())
+                .collect()
+        })
+        .unwrap_or_default();
+    v.sort();
+    v
+}
+
+/// A small deterministic pseudo-random generator (SplitMix64) for fuzzing and kill delays.
+pub struct Rng(pub u64);
+
+impl Rng {
+    pub fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+    /// Uniform in 0..n.
+    pub fn below(&mut self, n: usize) -> usize {
+        (self.next() % n as u64) as usize
+    }
+}

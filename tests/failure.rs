@@ -1,0 +1,599 @@
+//! Failure behaviour (issue 16, docs/failure.md): no input is destroyed, no output is left
+//! half-written, no input the program cannot honour is accepted, and every refusal is one
+//! line naming the parameter or variable. Each test fails on the behaviour before issue 16.
+
+mod common;
+
+use common::*;
+use pressridge::scene::Scene;
+use std::path::Path;
+
+fn strength(input: &Path, output: &Path, extra: &[&str]) -> std::process::Output {
+    bin()
+        .arg("strength")
+        .arg("--input")
+        .arg(input)
+        .arg("--output")
+        .arg(output)
+        .args(extra)
+        .output()
+        .unwrap()
+}
+
+fn ridge_step(input: &Path, output: &Path, extra: &[&str]) -> std::process::Output {
+    bin()
+        .arg("ridge-step")
+        .arg("--input")
+        .arg(input)
+        .arg("--output")
+        .arg(output)
+        .args(extra)
+        .output()
+        .unwrap()
+}
+
+// ---------------------------------------------------------------------------------------
+// Data loss
+
+#[test]
+fn an_output_resolving_to_the_input_is_refused_and_the_input_kept() {
+    let d = scratch("alias");
+    let input = d.join("in.nc");
+    write_nc(&input, &good_itd());
+    let before = std::fs::read(&input).unwrap();
+    let link = d.join("link.nc");
+    std::os::unix::fs::symlink(&input, &link).unwrap();
+    let dotted = d.join("sub/../in.nc");
+    std::fs::create_dir_all(d.join("sub")).unwrap();
+    for out in [&input, &link, &dotted] {
+        fails_with(&strength(&input, out, &[]), &["--output", "in.nc"]);
+        fails_with(
+            &ridge_step(&input, out, &["--dt", "3600"]),
+            &["--output", "in.nc"],
+        );
+        assert_eq!(std::fs::read(&input).unwrap(), before, "input changed");
+    }
+    // Through the symlink as input too.
+    fails_with(&strength(&link, &input, &[]), &["--output"]);
+    assert_eq!(std::fs::read(&input).unwrap(), before);
+    // A distinct output is fine.
+    succeeds(&strength(&input, &d.join("p.nc"), &[]));
+    // render: the image may not replace the state it draws.
+    let state = d.join("state.json");
+    std::fs::write(&state, b"{}").unwrap();
+    let res = bin()
+        .arg("render")
+        .arg(&state)
+        .arg("--out")
+        .arg(&state)
+        .output()
+        .unwrap();
+    fails_with(&res, &["--out", "state.json"]);
+    assert_eq!(std::fs::read(&state).unwrap(), b"{}");
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+#[test]
+fn a_failed_netcdf_write_leaves_the_old_file_and_no_partial_one() {
+    let d = scratch("ncfail");
+    // The category and spatial dimension share a name: readable, but the output cannot
+    // define the dimension twice, so writing fails after the file was created.
+    let input = d.join("in.nc");
+    write_nc(
+        &input,
+        &[
+            Var::f64("aicen", &[("n", 2), ("n", 2)], vec![0.3, 0.3, 0.3, 0.3]),
+            Var::f64("vicen", &[("n", 2), ("n", 2)], vec![0.3, 0.3, 0.6, 0.6]),
+        ],
+    );
+    let out = d.join("out.nc");
+    std::fs::write(&out, b"old").unwrap();
+    let res = ridge_step(&input, &out, &["--dt", "3600", "--convergence", "1e-6"]);
+    assert_eq!(res.status.code(), Some(1), "{res:?}");
+    assert_eq!(std::fs::read(&out).unwrap(), b"old", "old output damaged");
+    assert_eq!(
+        names_in(&d),
+        vec!["in.nc", "out.nc"],
+        "temporary left behind"
+    );
+    std::fs::remove_file(&out).unwrap();
+    let res = ridge_step(&input, &out, &["--dt", "3600", "--convergence", "1e-6"]);
+    assert_eq!(res.status.code(), Some(1));
+    assert!(!out.exists(), "a header-only file was left at the target");
+    assert_eq!(names_in(&d), vec!["in.nc"]);
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+#[test]
+fn simulate_refuses_a_used_directory_and_overwrite_replaces_only_its_files() {
+    let d = scratch("simdir");
+    let out = d.join("run");
+    let sim = |extra: &[&str]| {
+        bin()
+            .args(["simulate", "--no-figures", "--scene"])
+            .arg(Path::new(env!("CARGO_MANIFEST_DIR")).join("data/scenes/rubble-pile.toml"))
+            .args([
+                "--set",
+                "pile.blocks=6",
+                "--set",
+                "pile.columns=3",
+                "--set",
+                "duration=0.05",
+            ])
+            .arg("--out")
+            .arg(&out)
+            .args(extra)
+            .output()
+            .unwrap()
+    };
+    succeeds(&sim(&["--set", "output.snapshot_interval=0.02"]));
+    assert!(out.join("snapshots").is_dir());
+    let summary = std::fs::read(out.join("summary.json")).unwrap();
+    std::fs::write(out.join("notes.txt"), b"mine").unwrap();
+    // Refused without --overwrite: nothing touched.
+    fails_with(
+        &sim(&["--set", "output.snapshot_interval=0"]),
+        &["--overwrite", "not empty"],
+    );
+    assert_eq!(std::fs::read(out.join("summary.json")).unwrap(), summary);
+    // --overwrite: the old run's files go (the snapshots of the first run too), others stay.
+    succeeds(&sim(&[
+        "--set",
+        "output.snapshot_interval=0",
+        "--set",
+        "seed=2",
+        "--overwrite",
+    ]));
+    assert!(!out.join("snapshots").exists(), "stale snapshots left");
+    assert_eq!(std::fs::read(out.join("notes.txt")).unwrap(), b"mine");
+    let s: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(s["seed"], 2);
+    // A file as --out is refused.
+    let file = d.join("file");
+    std::fs::write(&file, b"x").unwrap();
+    let res = bin()
+        .args(["simulate", "--out"])
+        .arg(&file)
+        .output()
+        .unwrap();
+    fails_with(&res, &["--out", "not a directory"]);
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+// ---------------------------------------------------------------------------------------
+// Inputs it cannot honour
+
+#[test]
+fn scene_parameters_out_of_range_are_refused_naming_key_and_range() {
+    let cases: &[(&str, &str, &str)] = &[
+        ("ice.density=1020", "ice.density", "[700, 1000] kg/m³"),
+        ("ice.density=1e5", "ice.density", "must lie in"),
+        ("water.density=1e9", "water.density", "must lie in"),
+        ("sheet.speed=1e6", "sheet.speed", "(0, 5] m/s"),
+        ("sheet.e_top=1e30", "sheet.e_top", "Pa"),
+        ("sheet.thickness=1e-9", "sheet.thickness", "[0.01, 20] m"),
+        ("sheet.length=1e7", "sheet.length", "must lie in"),
+        ("floe.thickness=1e4", "floe.thickness", "must lie in"),
+        ("floe.e_bottom=1", "floe.e_bottom", "must lie in"),
+        (
+            "sheet.strength_top=1e20",
+            "sheet.strength_top",
+            "must lie in",
+        ),
+        ("duration=1e12", "duration", "must lie in"),
+        ("duration=0", "duration", "must lie in"),
+    ];
+    for (set, key, frag) in cases {
+        let e = Scene::default()
+            .with_overrides(&[*set])
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains(key) && e.contains(frag), "{set}: {e}");
+        assert!(!e.contains('\n'), "{e}");
+    }
+    let e = Scene::default()
+        .with_overrides(&["ice.density=1000", "water.density=995"])
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("ice.density") && e.contains("sinks"), "{e}");
+    let e = Scene::rubble_pile()
+        .with_overrides(&["pile.blocks=100000000"])
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("pile.blocks") && e.contains("100000"), "{e}");
+    // Through the command line and a scene file alike.
+    let d = scratch("ranges");
+    let f = d.join("s.toml");
+    std::fs::write(&f, "[ice]\ndensity = 1000.0\n[water]\ndensity = 995.0\n").unwrap();
+    let res = bin()
+        .args(["simulate", "--scene"])
+        .arg(&f)
+        .arg("--out")
+        .arg(d.join("o"))
+        .output()
+        .unwrap();
+    fails_with(&res, &["ice.density", "water.density"]);
+    assert!(!d.join("o").exists(), "a refused scene must write nothing");
+    let res = bin()
+        .args(["simulate", "--set", "sheet.speed=1e6", "--out"])
+        .arg(d.join("o"))
+        .output()
+        .unwrap();
+    fails_with(&res, &["sheet.speed", "m/s"]);
+    // Thick lead ice stays possible with wider blocks (scaled scenes).
+    Scene::default()
+        .with_overrides(&["sheet.thickness=2.5", "sheet.block_width=1.0"])
+        .unwrap();
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+#[test]
+fn campaign_seeds_and_duplicate_axis_values_are_refused() {
+    use pressridge::campaign::CampaignSpec;
+    let e = CampaignSpec::from_toml("name = \"x\"\nseeds = 4294967295")
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("seeds") && e.contains("[1, 1000]"), "{e}");
+    let spec = CampaignSpec::from_toml(
+        "name = \"x\"\nseeds = 1\n[[axis]]\nkey = \"contact.mu\"\nvalues = [0.4, 1.0, 0.4]",
+    )
+    .unwrap();
+    let e = spec.plan(Path::new(".")).unwrap_err().to_string();
+    assert!(
+        e.contains("axis 0") && e.contains("0.4") && e.contains("twice"),
+        "{e}"
+    );
+    let spec = CampaignSpec::from_toml(
+        "name = \"x\"\nseeds = 1\n[[axis]]\nkey = \"contact.mu\"\nvalues = [0.4]\n[[axis]]\nkey = \"contact.mu\"\nvalues = [1.0]",
+    )
+    .unwrap();
+    let e = spec.plan(Path::new(".")).unwrap_err().to_string();
+    assert!(
+        e.contains("contact.mu") && e.contains("earlier axis"),
+        "{e}"
+    );
+}
+
+#[test]
+fn runs_of_no_step_are_errors() {
+    let d = scratch("nostep");
+    // The derived stable step of the default scene is ~1e-4 s.
+    let res = bin()
+        .args(["simulate", "--set", "duration=1e-7", "--out"])
+        .arg(d.join("a"))
+        .output()
+        .unwrap();
+    fails_with(&res, &["duration", "no step"]);
+    assert!(!String::from_utf8_lossy(&res.stdout).contains("wrote"));
+    assert!(!d.join("a").exists(), "a refused run must write nothing");
+    let res = bin()
+        .args([
+            "simulate",
+            "--set",
+            "duration=0.1",
+            "--set",
+            "numerics.time_step=0.5",
+            "--out",
+        ])
+        .arg(d.join("b"))
+        .output()
+        .unwrap();
+    fails_with(&res, &["numerics.time_step", "no step"]);
+    let e = Scene::default()
+        .with_overrides(&["duration=1e-7"])
+        .and_then(|s| pressridge::simulation::run(&s, &mut |_| true).map(|_| ()))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("no step"), "{e}");
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+#[test]
+fn strength_and_ridge_step_refuse_values_they_cannot_honour() {
+    let d = scratch("itdvals");
+    let p = d.join("p.nc");
+    let mut vars = good_itd();
+    if let Data::F64(v) = &mut vars[1].data {
+        v[3] = 1e160;
+    }
+    let f = d.join("huge.nc");
+    write_nc(&f, &vars);
+    fails_with(&strength(&f, &p, &[]), &["vicen", "must lie in"]);
+    fails_with(&ridge_step(&f, &p, &["--dt", "3600"]), &["vicen"]);
+    let good = d.join("good.nc");
+    write_nc(&good, &good_itd());
+    fails_with(
+        &strength(&good, &p, &["--cf", "1e308"]),
+        &["--cf", "must lie in"],
+    );
+    fails_with(
+        &strength(&good, &p, &["--cf", "-3"]),
+        &["--cf", "must lie in"],
+    );
+    for (bad, what) in [(f64::NAN, "not finite"), (0.5, "increasing")] {
+        let mut vars = good_itd();
+        if let Data::F64(v) = &mut vars[3].data {
+            v[2] = bad;
+        }
+        let f = d.join("bounds.nc");
+        write_nc(&f, &vars);
+        fails_with(&strength(&f, &p, &[]), &["hin_max", what]);
+        fails_with(&ridge_step(&f, &p, &["--dt", "3600"]), &["hin_max", what]);
+    }
+    let mut vars = good_itd();
+    if let Data::F64(v) = &mut vars[4].data {
+        v[4] = f64::NAN;
+    }
+    let f = d.join("divu.nc");
+    write_nc(&f, &vars);
+    fails_with(
+        &ridge_step(&f, &p, &["--dt", "3600"]),
+        &["divu", "y=1, x=1"],
+    );
+    assert!(!p.exists(), "nothing may be written on refusal");
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+// ---------------------------------------------------------------------------------------
+// Messages that mislead
+
+#[test]
+fn messages_name_the_real_constraint() {
+    let e = Scene::default()
+        .with_overrides(&["sheet.thickness=2.5"])
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("sheet.block_width") && e.contains("0.833") && e.contains("tip_bevel_fraction"),
+        "{e}"
+    );
+    let d = scratch("messages");
+    let good = d.join("good.nc");
+    write_nc(&good, &good_itd());
+    let p = d.join("p.nc");
+    let res = strength(&good, &p, &["--param", "foo=1"]);
+    fails_with(&res, &["`foo`", "mu_rdg", "cstar"]);
+    let res = strength(&good, &p, &["--param", "mu_rgd=4"]);
+    fails_with(&res, &["`mu_rgd`", "did you mean `mu_rdg`"]);
+    fails_with(
+        &ridge_step(&good, &p, &["--dt", "0"]),
+        &["--dt", "positive", "0"],
+    );
+    // Negative numbers need no `=`: the value reaches the check.
+    fails_with(&ridge_step(&good, &p, &["--dt", "-5"]), &["--dt", "-5"]);
+    fails_with(
+        &ridge_step(&good, &p, &["--dt", "60", "--convergence", "-1"]),
+        &["--convergence", "-1"],
+    );
+    // A text variable: named, with the expected type.
+    let mut vars = good_itd();
+    vars[1].data = Data::Text;
+    let f = d.join("text.nc");
+    write_nc(&f, &vars);
+    fails_with(&strength(&f, &p, &[]), &["vicen", "numeric"]);
+    // plot-strength into a directory that does not exist yet: made, and the PNG written.
+    succeeds(&strength(&good, &p, &[]));
+    let png = d.join("new/dir/map.png");
+    let res = bin()
+        .arg("plot-strength")
+        .arg("--input")
+        .arg(&p)
+        .arg("--output")
+        .arg(&png)
+        .output()
+        .unwrap();
+    succeeds(&res);
+    assert_eq!(&std::fs::read(&png).unwrap()[1..4], b"PNG");
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+// ---------------------------------------------------------------------------------------
+// Fuzzing
+
+/// Malformed NetCDF inputs for `strength` and `ridge-step`: wrong shapes and types, missing
+/// variables, NaN/Inf/negative/huge values, empty dimensions. Each gives success or a
+/// one-line error naming the variable concerned; never a panic or a signal.
+#[test]
+fn fuzz_malformed_netcdf_inputs() {
+    let d = scratch("fuzz-nc");
+    let mut rng = Rng(0x16);
+    let names = ["aicen", "vicen", "aice0", "hin_max", "divu", "shear"];
+    let out = d.join("o.nc");
+    for case in 0..60 {
+        let mut vars = good_itd();
+        let k = rng.below(vars.len());
+        let target = names[k].to_string();
+        let kind = rng.below(7);
+        match kind {
+            0 => {
+                vars.remove(k);
+            }
+            1 => {
+                // Wrong shape: one dimension longer, values to match.
+                let v = &mut vars[k];
+                let j = rng.below(v.dims.len());
+                v.dims[j].0 = format!("{}_wrong", v.dims[j].0);
+                v.dims[j].1 += 1;
+                let n: usize = v.dims.iter().map(|d| d.1).product();
+                v.data = Data::F64(vec![0.1; n]);
+            }
+            2 => vars[k].data = Data::Text,
+            3 => {
+                let n: usize = vars[k].dims.iter().map(|d| d.1).product();
+                vars[k].data = Data::I32(vec![1; n]);
+            }
+            4 => {
+                // Empty dimension: every variable using it becomes empty.
+                let dim = vars[k].dims[0].0.clone();
+                for v in vars.iter_mut() {
+                    for dd in v.dims.iter_mut() {
+                        if dd.0 == dim {
+                            dd.1 = 0;
+                        }
+                    }
+                    v.data = Data::F64(vec![]);
+                }
+            }
+            _ => {
+                let bad = [f64::NAN, f64::INFINITY, -1.0, 1e300, -0.0, 9.969e36][rng.below(6)];
+                if let Data::F64(v) = &mut vars[k].data {
+                    let i = rng.below(v.len());
+                    v[i] = bad;
+                }
+            }
+        }
+        let f = d.join(format!("case{case}.nc"));
+        write_nc(&f, &vars);
+        for res in [
+            strength(&f, &out, &[]),
+            ridge_step(&f, &out, &["--dt", "3600"]),
+        ] {
+            let err = String::from_utf8_lossy(&res.stderr);
+            let ctx = format!(
+                "case {case} (kind {kind} on {target}): {:?} {err}",
+                res.status
+            );
+            assert!(res.status.code().is_some(), "signal: {ctx}");
+            assert!(!err.contains("panicked"), "panic: {ctx}");
+            if !res.status.success() {
+                assert_eq!(err.trim().lines().count(), 1, "not one line: {ctx}");
+                // Names a variable (the mutated one, or the one a missing or empty
+                // dimension made inconsistent) or the option concerned.
+                assert!(
+                    names.iter().any(|n| err.contains(n)) || err.contains("--"),
+                    "names nothing: {ctx}"
+                );
+            }
+        }
+    }
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+/// Malformed scene files: every key of the default scene set to wrong types and extreme
+/// values, unknown keys, broken syntax. Each parses and validates or gives a one-line error
+/// naming the key; a valid one builds without a panic.
+#[test]
+fn fuzz_malformed_scene_files() {
+    let base: toml::Table = toml::from_str(&Scene::default().to_toml()).unwrap();
+    let mut keys: Vec<(String, String)> = Vec::new();
+    for (sec, v) in &base {
+        match v {
+            toml::Value::Table(t) => {
+                for k in t.keys() {
+                    keys.push((sec.clone(), k.clone()));
+                }
+            }
+            _ => keys.push((String::new(), sec.clone())),
+        }
+    }
+    let values = [
+        "nan",
+        "inf",
+        "-inf",
+        "-1.0",
+        "0",
+        "1e308",
+        "-1e308",
+        "1e-300",
+        "\"text\"",
+        "true",
+        "[1.0, 2.0]",
+        "4294967295",
+        "18446744073709551615",
+        "-9223372036854775808",
+        "{ a = 1 }",
+    ];
+    let mut rng = Rng(0x5ce7e);
+    for case in 0..400 {
+        let (sec, key) = &keys[rng.below(keys.len())];
+        let val = values[rng.below(values.len())];
+        let text = if sec.is_empty() {
+            format!("{key} = {val}\n")
+        } else {
+            format!("[{sec}]\n{key} = {val}\n")
+        };
+        let r = std::panic::catch_unwind(|| {
+            Scene::from_toml(&text).map(|s| {
+                // Building is bounded by the limits; running is not tried here.
+                s.build().map(|_| ())
+            })
+        });
+        let r = r.unwrap_or_else(|_| panic!("panic on case {case}: {text}"));
+        let e = match r {
+            Ok(Ok(())) => continue,
+            Ok(Err(e)) | Err(e) => e.to_string(),
+        };
+        assert!(
+            !e.trim().contains('\n') || e.contains(key.as_str()),
+            "case {case}: {text}: {e}"
+        );
+        assert!(
+            e.contains(key.as_str()) || e.contains(sec.as_str()) && !sec.is_empty(),
+            "case {case}: error does not name `{key}`: {text}: {e}"
+        );
+    }
+    for text in [
+        "[sheet\nthickness = 1",
+        "sheet = 3",
+        "[sheet]\nthicknes = 0.3",
+        "= 1",
+    ] {
+        assert!(Scene::from_toml(text).is_err(), "{text}");
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// The C ABI
+
+fn ffi_last_error() -> String {
+    use pressridge::ffi::pressridge_last_error;
+    let mut need = 0i64;
+    unsafe { pressridge_last_error(std::ptr::null_mut(), 0, &mut need) };
+    let mut buf = vec![0u8; need as usize];
+    unsafe { pressridge_last_error(buf.as_mut_ptr().cast(), need, std::ptr::null_mut()) };
+    buf.pop();
+    String::from_utf8(buf).unwrap()
+}
+
+#[test]
+fn c_abi_refuses_paths_with_nul_and_runs_of_no_step() {
+    use pressridge::ffi::scene::{pressridge_run_free, pressridge_scene_run};
+    use pressridge::ffi::tables::{pressridge_cf_table_free, pressridge_cf_table_open};
+    use pressridge::ffi::{PRESSRIDGE_ERR_BAD_VALUE, PRESSRIDGE_OK};
+    let d = scratch("ffi");
+    let path = d.join("cf.nc");
+    let t = pressridge::itd::CfTable::new(vec![0.2, 1.0], vec![5.0, 14.0]).unwrap();
+    pressridge::io::itd_netcdf::write_cf_table(&path, &t).unwrap();
+    // The file exists under the part before the NUL: the old code opened it.
+    let p = format!("{}\0.other", path.display());
+    let mut h = std::ptr::null_mut();
+    let rc = unsafe { pressridge_cf_table_open(p.as_ptr().cast(), p.len() as i64, &mut h) };
+    assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
+    assert!(ffi_last_error().contains("NUL"), "{}", ffi_last_error());
+    assert!(h.is_null());
+    let p = path.to_str().unwrap();
+    let rc = unsafe { pressridge_cf_table_open(p.as_ptr().cast(), p.len() as i64, &mut h) };
+    assert_eq!(rc, PRESSRIDGE_OK);
+    unsafe { pressridge_cf_table_free(h) };
+    for (text, key) in [
+        (
+            "duration = 0.1\n[numerics]\ntime_step = 0.5\n",
+            "numerics.time_step",
+        ),
+        ("duration = 1e-7\n[pile]\nblocks = 4\n", "duration"),
+        // No free body: nothing sets a stable step.
+        ("duration = 1.0\n", "numerics.time_step"),
+    ] {
+        let mut run = std::ptr::null_mut();
+        let rc = unsafe { pressridge_scene_run(text.as_ptr().cast(), text.len() as i64, &mut run) };
+        assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE, "{text}");
+        let e = ffi_last_error();
+        assert!(
+            e.contains(key) && (e.contains("no step") || e.contains("stable step")),
+            "{e}"
+        );
+        unsafe { pressridge_run_free(run) };
+    }
+    let _ = std::fs::remove_dir_all(&d);
+}
