@@ -129,12 +129,22 @@ pub fn category_fractions(
                 } else {
                     let hl = f64::max(hi1, h_lo);
                     let hr = h_hi;
-                    let expl = (-f64::min((hl - hi1) / hexp, params.exp_argmax)).exp();
-                    let expr = (-f64::min((hr - hi1) / hexp, params.exp_argmax)).exp();
-                    (
-                        expl - expr,
-                        ((hl + hexp) * expl - (hr + hexp) * expr) / (hi1 + hexp),
-                    )
+                    let argl = f64::min((hl - hi1) / hexp, params.exp_argmax);
+                    let argr = f64::min((hr - hi1) / hexp, params.exp_argmax);
+                    let expl = (-argl).exp();
+                    let expr = (-argr).exp();
+                    let farea = expl - expr;
+                    let fvol = ((hl + hexp) * expl - (hr + hexp) * expr) / (hi1 + hexp);
+                    // pressridge: beyond the exp_argmax cut-off both exponentials are e^-100
+                    // and Icepack's volume fraction becomes a negative e^-100 residue, which
+                    // makes empty categories' volume negative. Nothing lands there.
+                    if argl >= params.exp_argmax {
+                        (farea, 0.0)
+                    } else if argr >= params.exp_argmax {
+                        (farea, f64::max(fvol, 0.0))
+                    } else {
+                        (farea, fvol)
+                    }
                 }
             } else {
                 let hl = f64::max(hi1, h_lo);
