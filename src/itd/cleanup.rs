@@ -329,7 +329,10 @@ fn zap_small_areas(
             z.vsno += s - col.vsnon[n];
         }
         *col.aice = 1.0;
-        *col.aice0 = 0.0;
+        // Icepack sets aice0 = 0 here, dropping the open water of categories zapped just
+        // above (at most ncat·puny). pressridge keeps it, scaled like the ice, so the cell
+        // stays whole.
+        *col.aice0 *= 1.0 / aice;
     }
     Ok(())
 }
