@@ -702,7 +702,7 @@ fn step(
 
 /// Icepack `asum_ridging`: open water plus the category areas, in that order.
 #[inline]
-fn asum_ridging(aicen: &[f64], aice0: f64) -> f64 {
+pub(crate) fn asum_ridging(aicen: &[f64], aice0: f64) -> f64 {
     let mut asum = aice0;
     for &a in aicen {
         asum += a;
