@@ -28,7 +28,7 @@
 use super::cleanup::cleanup_itd;
 use super::params::{ItdParams, Participation, Redistribution};
 use super::participation::participation_cached;
-use super::redistribution::{RidgeGeometry, category_fractions, net_to_gross, ridge_geometry};
+use super::redistribution::{RidgeGeometry, category_fractions_all, net_to_gross, ridge_geometry};
 use super::tracers::TracerLayout;
 use super::{ColumnError, Workspace};
 
@@ -261,6 +261,8 @@ pub struct StepWorkspace {
     pub(crate) atrcrn: Vec<f64>,
     pub(crate) hicen: Vec<f64>,
     mraft: Vec<f64>,
+    farea: Vec<f64>,
+    fvol: Vec<f64>,
     /// The input state, kept to restore the column on error.
     save: Vec<f64>,
     /// Participation of each category, last pass (1; Icepack `aparticn`).
@@ -298,6 +300,8 @@ impl StepWorkspace {
             atrcrn: vec![0.0; ncat * ntrcr],
             hicen: z.clone(),
             mraft: z.clone(),
+            farea: z.clone(),
+            fvol: z.clone(),
             save: Vec::with_capacity(3 * ncat + ncat * ntrcr),
             aparticn: z.clone(),
             krdgn: z.clone(),
@@ -862,27 +866,33 @@ fn ridge_shift(
             hrexp: ws.core.hrexp[n],
             krdg: ws.core.krdg[n],
         };
+        category_fractions_all(
+            opts.redistribution,
+            p,
+            &g,
+            hin_max,
+            top,
+            &mut ws.farea,
+            &mut ws.fvol,
+        );
+        let exponential = opts.redistribution == Redistribution::Exponential;
         for nr in 0..ncat {
-            let last = nr + 1 == ncat;
-            let h_hi = if last { top } else { hin_max[nr + 1] };
-            let (farea, fvol) =
-                category_fractions(opts.redistribution, p, &g, hin_max[nr], h_hi, last);
-            if n == 0 && opts.redistribution == Redistribution::Exponential {
+            let (farea, fvol) = (ws.farea[nr], ws.fvol[nr]);
+            if n == 0 && exponential {
                 ws.aredistn[nr] = farea * ardg2n;
                 ws.vredistn[nr] = fvol * virdgn;
+            }
+            if farea == 0.0 && fvol == 0.0 {
+                continue; // adds nothing (Icepack adds zeros)
             }
             col.aicen[nr] += farea * ardg2n;
             col.vicen[nr] += fvol * virdgn;
             col.vsnon[nr] += fvol * vsrdgn * c.fsnowrdg;
-            let (fa, fv, fs) = (ardg2n * farea, virdgn * fvol, vsrdgn * fvol * c.fsnowrdg);
-            for it in 0..nt {
-                if layout.to_ridges[it] {
-                    let f = match layout.base[it] {
-                        super::tracers::TracerBase::Area => fa,
-                        super::tracers::TracerBase::IceVolume => fv,
-                        super::tracers::TracerBase::SnowVolume => fs,
-                    };
-                    ws.atrcrn[nr * nt + it] += f * trc[it];
+            let f = [ardg2n * farea, virdgn * fvol, vsrdgn * fvol * c.fsnowrdg];
+            let dst = &mut ws.atrcrn[nr * nt..(nr + 1) * nt];
+            for (k, list) in layout.ridge_lists.iter().enumerate() {
+                for &it in list {
+                    dst[it] += f[k] * trc[it];
                 }
             }
         }

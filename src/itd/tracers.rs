@@ -122,6 +122,10 @@ pub struct TracerLayout {
     ntrcr: usize,
     /// Per tracer: base.
     pub(crate) base: Vec<TracerBase>,
+    /// Per tracer: base as an index into (area, ice volume, snow volume).
+    pub(crate) base_idx: Vec<u8>,
+    /// Tracers given to new ridges, by base (area, ice volume, snow volume).
+    pub(crate) ridge_lists: [Vec<usize>; 3],
     /// Per tracer: number of strata (0..=2) and their tracer indices.
     pub(crate) nstrata: Vec<u8>,
     pub(crate) strata: Vec<[usize; 2]>,
@@ -308,7 +312,22 @@ impl TracerLayout {
                 area_direct.push(f.base == TracerBase::Area && f.strata.is_empty());
             }
         }
+        let base_idx: Vec<u8> = base
+            .iter()
+            .map(|b| match b {
+                TracerBase::Area => 0,
+                TracerBase::IceVolume => 1,
+                TracerBase::SnowVolume => 2,
+            })
+            .collect();
+        let ridge_lists = std::array::from_fn(|k| {
+            (0..ntrcr)
+                .filter(|&it| to_ridges[it] && base_idx[it] as usize == k)
+                .collect()
+        });
         Ok(Self {
+            base_idx,
+            ridge_lists,
             nt_tsfc: find(TracerRole::SurfaceTemperature).map(|i| starts[i]),
             nt_qice: starts[qice],
             nt_sice: starts[sice],
@@ -397,13 +416,9 @@ impl TracerLayout {
 
     /// Conserved amount of tracer `it` of one category: tracer × base × strata, in Icepack's
     /// order of operations (`ridge_shift`, `shift_ice`).
-    #[inline]
+    #[inline(always)]
     pub(crate) fn amount(&self, it: usize, trc: &[f64], a: f64, v: f64, s: f64) -> f64 {
-        let b = match self.base[it] {
-            TracerBase::Area => a,
-            TracerBase::IceVolume => v,
-            TracerBase::SnowVolume => s,
-        };
+        let b = [a, v, s][self.base_idx[it] as usize];
         let mut x = trc[it] * b;
         for k in 0..self.nstrata[it] as usize {
             x *= trc[self.strata[it][k]];
@@ -415,7 +430,7 @@ impl TracerLayout {
     /// `atrc` and the new area `a`, ice volume `v`, snow volume `s`. Area tracers without strata
     /// are set where `a > puny` (else 0, `Tsfc = tf`); the others wherever their base is
     /// positive, then divided by each positive stratum (else 0), strata first.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn compute(
         &self,
         atrc: &[f64],
@@ -436,11 +451,7 @@ impl TracerLayout {
                     0.0
                 };
             } else {
-                let d = match self.base[it] {
-                    TracerBase::Area => a,
-                    TracerBase::IceVolume => v,
-                    TracerBase::SnowVolume => s,
-                };
+                let d = [a, v, s][self.base_idx[it] as usize];
                 let mut w = if d > 0.0 { atrc[it] / d } else { 0.0 };
                 for k in 0..self.nstrata[it] as usize {
                     let st = trc[self.strata[it][k]];
