@@ -23,10 +23,13 @@ pub struct Args {
     /// Time step (s).
     #[arg(long)]
     pub dt: f64,
-    /// Convergence rate (1/s, >= 0) for every column; default: max(-divu, 0) from the file.
+    /// Convergence rate (1/s, >= 0) for every column; default: max(-divu, 0) from the file
+    /// (`divu` in s-1, or CICE history %/day, converted; other units are refused).
     #[arg(long)]
     pub convergence: Option<f64>,
-    /// Shear term (1/s, >= 0) for every column; default: `shear` from the file, else 0.
+    /// Shear term (1/s, >= 0) for every column; default: from the file's `shear` (s-1: the
+    /// term itself; CICE history %/day: the strain rate, converted, term formed with divu),
+    /// else 0.
     #[arg(long)]
     pub shear: Option<f64>,
     /// Participation function.
