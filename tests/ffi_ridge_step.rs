@@ -2,6 +2,9 @@
 //! `pressridge_ridge_cell`, `pressridge_ridge_cells`): the same bits as the Rust API, the
 //! tracer layout as Icepack's arrays, clear errors with the cell unchanged.
 
+// Per-category and per-tracer tables are indexed by number, as in Icepack.
+#![allow(clippy::needless_range_loop)]
+
 use std::ptr::{null, null_mut};
 
 use pressridge::ffi::ridge_step::*;

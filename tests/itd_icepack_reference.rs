@@ -7,6 +7,13 @@
 //! `stress` cases (where Icepack aborts or returns negative areas, volumes or snow) must give
 //! a clear error or a conserving, non-negative answer.
 
+// Per-category and per-tracer tables are indexed by number, as in Icepack.
+#![allow(
+    clippy::needless_range_loop,
+    clippy::field_reassign_with_default,
+    clippy::too_many_arguments
+)]
+
 use pressridge::itd::{
     CiceTracerFlags, Closing, ColumnError, ColumnMut, OceanFluxes, Participation, Redistribution,
     RidgeStepOptions, StepForcing, StepWorkspace, TracerBase, TracerLayout, ridge_step_column,

@@ -8,6 +8,13 @@
 //! One seeded loop over 10⁶ columns (a plain generator, so the test runs in seconds in the
 //! test profile's opt-level 2).
 
+// Per-category and per-tracer tables are indexed by number, as in Icepack.
+#![allow(
+    clippy::needless_range_loop,
+    clippy::field_reassign_with_default,
+    clippy::too_many_arguments
+)]
+
 use pressridge::itd::{
     CategoryBounds, CiceTracerFlags, Closing, ColumnError, ColumnMut, OceanFluxes, Participation,
     Redistribution, RidgeStepOptions, SaltFlux, StepForcing, StepWorkspace, TracerLayout,

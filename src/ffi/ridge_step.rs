@@ -3,6 +3,9 @@
 //! at initialisation; then one call per cell (`pressridge_ridge_cell`, the argument list of
 //! Icepack's `icepack_step_ridge`) or one call per block of cells (`pressridge_ridge_cells`).
 
+// Per-category and per-tracer tables are indexed by number, as in Icepack.
+#![allow(clippy::needless_range_loop)]
+
 use std::cell::RefCell;
 
 use super::itd::PressridgeOptions;

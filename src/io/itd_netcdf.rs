@@ -257,13 +257,16 @@ fn rate_units(path: &Path, v: &netcdf::Variable<'_>) -> Result<RateUnits, Netcdf
     }
 }
 
+/// An optional field on the spatial dimensions.
+type SpatialField = Option<Array1<f64>>;
+
 /// `divu` (1/s) and the ridging shear term (1/s) from the file, converted from CICE's %/day
 /// where the units say so.
 fn read_deformation(
     path: &Path,
     file: &netcdf::File,
     spatial: &[(String, usize)],
-) -> Result<(Option<Array1<f64>>, Option<Array1<f64>>), NetcdfError> {
+) -> Result<(SpatialField, SpatialField), NetcdfError> {
     use crate::itd::{deformation_terms, percent_per_day_to_per_second};
     let units = |name: &str| -> Result<Option<RateUnits>, NetcdfError> {
         file.variable(name)

@@ -15,6 +15,9 @@
 //! Storage: one column's tracers are a flat slice `trcrn[n * ntrcr + it]` — the memory order
 //! of Icepack's `trcrn(ntrcr, ncat)` for one cell.
 
+// Per-category and per-tracer tables are indexed by number, as in Icepack.
+#![allow(clippy::needless_range_loop)]
+
 use super::ItdError;
 
 /// What a tracer is carried on.
@@ -431,6 +434,7 @@ impl TracerLayout {
     /// are set where `a > puny` (else 0, `Tsfc = tf`); the others wherever their base is
     /// positive, then divided by each positive stratum (else 0), strata first.
     #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
     pub(crate) fn compute(
         &self,
         atrc: &[f64],

@@ -122,7 +122,7 @@ program bench_icepack_ridge
         fhocn = 0
         fsalt = 0
         first_ice = .false.
-        call icepack_step_ridge(dt=dt, ndtd=1, hin_max=hin, rdg_conv=conv, rdg_shear=shear, &
+        call icepack_step_ridge(dt=dt, ndtd=1, hin_max=hin, rdg_conv=cv(c), rdg_shear=sh(c), &
              aicen=ia(:, c), trcrn=it(:, :, c), vicen=iv(:, c), vsnon=is(:, c), aice0=ia0(c), &
              trcr_depend=trcr_depend, trcr_base=trcr_base, n_trcr_strata=n_trcr_strata, &
              nt_strata=nt_strata, dardg1dt=d1, dardg2dt=d2, dvirdgdt=d3, opening=op, &
