@@ -234,7 +234,10 @@ def ridge_step(
 
     ``convergence`` (1/s): a number or a DataArray on the spatial dimensions; default
     max(-divu, 0) from the dataset's ``divu``. ``shear`` (1/s): likewise; default the
-    dataset's ``shear``, else 0. ``hin_max`` (m): default the dataset's, else CICE's
+    dataset's ``shear``, else 0. The dataset's ``divu`` and ``shear`` are read by their
+    ``units``: ``s-1`` (or none) as given (``shear`` being the ridging shear term); ``%/day``
+    (CICE history) converted, ``shear`` then being CICE's shear strain rate from which the
+    term is formed as Icepack does; other units raise ``ValueError``. ``hin_max`` (m): default the dataset's, else CICE's
     ``kcatbound = 1`` bounds. ``aice0`` defaults to max(1 - sum(aicen), 0). Other options as
     :func:`pressridge.ridge_step`.
 
@@ -246,8 +249,12 @@ def ridge_step(
     use_mask = _mask_flag(mask, ds["aicen"], ds["vicen"], aice0)
     _pr._params(params)
     conv_desc = "max(-divu, 0) from input"
-    divu = _rate_per_second(ds["divu"]) if "divu" in ds else None
+
+    def _divu() -> Optional[xr.DataArray]:
+        return _rate_per_second(ds["divu"]) if "divu" in ds else None
+
     if convergence is None:
+        divu = _divu()
         if divu is None:
             raise ValueError("no convergence: pass convergence= or put `divu` in the dataset")
         convergence = (-divu).clip(min=0.0)
@@ -259,6 +266,7 @@ def ridge_step(
             shear = 0.0
         elif _is_percent_per_day(ds["shear"]):
             # CICE history: the shear strain rate; Icepack's ridging term needs divu.
+            divu = _divu()
             if divu is None:
                 raise ValueError(
                     "`shear` in %/day is CICE's shear strain rate: `divu` is needed to form "
