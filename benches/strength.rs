@@ -8,39 +8,73 @@ use std::time::Duration;
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use ndarray::{Array1, Array2, ShapeBuilder};
 use pressridge::itd::{
-    CategoryBounds, Participation, Redistribution, RidgeOptions, RidgeRatesMut, StrengthOptions,
-    category_bounds, ridge_batch, strength_batch,
+    CategoryBounds, CiceTracerFlags, Closing, ColumnMut, OceanFluxes, Participation,
+    Redistribution, RidgeOptions, RidgeRatesMut, RidgeStepOptions, StepForcing, StepWorkspace,
+    StrengthOptions, TracerLayout, category_bounds, ridge_batch, ridge_step_column, strength_batch,
 };
 
 const NCAT: usize = 5;
 const NCOL: usize = 1_000_000;
 
-/// Deterministic pseudo-random columns: aicen, vicen in Fortran order (ncat fastest), aice0.
-fn columns() -> (Array2<f64>, Array2<f64>, Array1<f64>) {
-    let mut state: u64 = 0x9E37_79B9_7F4A_7C15;
-    let mut rnd = || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
+/// Icepack-like pseudo-random number in [0, 1): the generator of
+/// `fortran-bridge/bench/bench_strength.f90` (`lcg`), so both benchmarks draw the same columns.
+fn lcg(x: f64) -> f64 {
+    (x * 9301.0 + 0.49297).rem_euclid(1.0)
+}
+
+/// The benchmark workload, column for column the Fortran benchmark's: 5–20 % open water,
+/// category weights 0.2 + U(0, 1), thicknesses within ±20 % of 0.3, 1, 1.9, 3, 4.5 m.
+/// aicen, vicen in Fortran order (ncat fastest), aice0.
+fn columns_n(ncol: usize) -> (Array2<f64>, Array2<f64>, Array1<f64>) {
     let h_mid = [0.3, 1.0, 1.9, 3.0, 4.5];
-    let mut a = Array2::zeros((NCAT, NCOL).f());
-    let mut v = Array2::zeros((NCAT, NCOL).f());
-    let mut a0 = Array1::zeros(NCOL);
-    for c in 0..NCOL {
-        let w: [f64; NCAT + 1] = std::array::from_fn(|_| rnd());
-        let s: f64 = w.iter().sum();
-        let open = 0.2 * w[NCAT] / s;
-        let ice = 1.0 - open;
-        let si: f64 = w[..NCAT].iter().sum();
-        for n in 0..NCAT {
-            a[[n, c]] = ice * w[n] / si;
-            v[[n, c]] = a[[n, c]] * h_mid[n] * (0.8 + 0.4 * rnd());
+    let mut a = Array2::zeros((NCAT, ncol).f());
+    let mut v = Array2::zeros((NCAT, ncol).f());
+    let mut a0 = Array1::zeros(ncol);
+    let mut r = 0.5;
+    for c in 0..ncol {
+        r = lcg(r);
+        let open = 0.05 + 0.15 * r;
+        let mut w = [0.0; NCAT];
+        for wn in w.iter_mut() {
+            r = lcg(r);
+            *wn = 0.2 + r;
         }
-        a0[c] = 1.0 - a.column(c).sum();
+        let s: f64 = w.iter().sum();
+        for n in 0..NCAT {
+            a[[n, c]] = (1.0 - open) * w[n] / s;
+            r = lcg(r);
+            v[[n, c]] = a[[n, c]] * h_mid[n] * (0.8 + 0.4 * r);
+        }
+        // Sequential, as Fortran's sum(a(:, c)).
+        let mut total = 0.0;
+        for n in 0..NCAT {
+            total += a[[n, c]];
+        }
+        a0[c] = 1.0 - total;
     }
     (a, v, a0)
+}
+
+fn columns() -> (Array2<f64>, Array2<f64>, Array1<f64>) {
+    columns_n(NCOL)
+}
+
+/// Snow (10 % of the ice volume) and the 23 CICE tracers (7 ice layers, 1 snow layer, age,
+/// first-year ice, level ice, ponds) of the complete step's benchmark, as the Fortran one.
+fn snow_and_tracers(v: &Array2<f64>, ntrcr: usize) -> (Vec<f64>, Vec<f64>) {
+    let ncol = v.ncols();
+    let s: Vec<f64> = v.t().iter().map(|x| 0.1 * x).collect();
+    let mut t = vec![0.0; ntrcr * NCAT * ncol];
+    for cell in t.chunks_mut(ntrcr) {
+        cell[0] = -20.0;
+        for k in 0..7 {
+            cell[1 + k] = -3.0e8 - 1.0e6 * k as f64;
+            cell[9 + k] = 4.0 + 0.2 * k as f64;
+        }
+        cell[8] = -1.15e8;
+        cell[16..23].copy_from_slice(&[2.0e7, 0.4, 0.8, 0.8, 0.2, 0.1, 0.01]);
+    }
+    (s, t)
 }
 
 fn bench(c: &mut Criterion) {
@@ -120,5 +154,56 @@ fn bench(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench);
+/// The complete ridging step (snow, 23 tracers, fluxes, clean-up; CICE defaults, rdg_conv
+/// 2e-6 + rdg_shear 4e-6 1/s, dt 3600 s) per cell over 1e5 cells, one workspace.
+fn bench_full_step(c: &mut Criterion) {
+    const N: usize = 100_000;
+    let layout = TracerLayout::cice(7, 1, CiceTracerFlags::ALL).unwrap();
+    let nt = layout.ntrcr();
+    let (a, v, a0) = columns_n(N);
+    let a: Vec<f64> = a.t().iter().copied().collect();
+    let vv: Vec<f64> = v.t().iter().copied().collect();
+    let (s, t) = snow_and_tracers(&v, nt);
+    let h = category_bounds(&CategoryBounds::RoundNumbers, NCAT).unwrap();
+    let opts = RidgeStepOptions::default();
+    let mut g = c.benchmark_group("ridge_step_full_ncat5_ntrcr23_1e5_cells");
+    g.throughput(Throughput::Elements(N as u64));
+    g.sample_size(10);
+    g.measurement_time(Duration::from_secs(8));
+    let mut ws = StepWorkspace::new(NCAT, nt);
+    g.bench_function("exponential_exponential", |b| {
+        b.iter_batched_ref(
+            || (a.clone(), vv.clone(), s.clone(), t.clone(), a0.to_vec()),
+            |(a, v, s, t, a0)| {
+                let mut fl = OceanFluxes::default();
+                for c in 0..N {
+                    let mut aice = 0.0;
+                    let mut col = ColumnMut {
+                        aicen: &mut a[c * NCAT..(c + 1) * NCAT],
+                        vicen: &mut v[c * NCAT..(c + 1) * NCAT],
+                        vsnon: &mut s[c * NCAT..(c + 1) * NCAT],
+                        trcrn: &mut t[c * NCAT * nt..(c + 1) * NCAT * nt],
+                        aice0: &mut a0[c],
+                        aice: &mut aice,
+                    };
+                    let f = StepForcing {
+                        closing: Closing::Deformation {
+                            convergence: 2e-6,
+                            shear: 4e-6,
+                        },
+                        dt: 3600.0,
+                        ndtd: 1,
+                        tf: -1.8,
+                    };
+                    ridge_step_column(&mut col, &h, f, &opts, &layout, &mut fl, &mut ws).unwrap();
+                }
+                black_box(fl)
+            },
+            criterion::BatchSize::LargeInput,
+        )
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench, bench_full_step);
 criterion_main!(benches);

@@ -53,6 +53,12 @@ module pressridge
   real(c_double), parameter, public :: PRESSRIDGE_CF_FLATO1991 = 15.0_c_double
   real(c_double), parameter, public :: PRESSRIDGE_CF_CICE = 17.0_c_double
 
+  ! Tracer flags of the complete ridging step (Icepack tr_iage, tr_FY, tr_lvl, tr_pond_lvl).
+  integer(c_int32_t), parameter, public :: PRESSRIDGE_TRACER_AGE = 1
+  integer(c_int32_t), parameter, public :: PRESSRIDGE_TRACER_FIRST_YEAR = 2
+  integer(c_int32_t), parameter, public :: PRESSRIDGE_TRACER_LEVEL_ICE = 4
+  integer(c_int32_t), parameter, public :: PRESSRIDGE_TRACER_PONDS = 8
+
   !> Physical constants and tunables (C struct PressridgeParams). The initial values are
   !> CICE's defaults, the same as pressridge_default_options returns (checked by the tests).
   type, bind(C), public :: pressridge_params
@@ -102,6 +108,37 @@ module pressridge
   type, public :: pressridge_run
      type(c_ptr) :: ptr = c_null_ptr
   end type pressridge_run
+
+  !> A ridging set-up for the complete step (free with pressridge_ridger_free): number of
+  !> categories, tracer layout (Icepack's, passed once) and options.
+  type, public :: pressridge_ridger
+     type(c_ptr) :: ptr = c_null_ptr
+     integer :: ncat = 0   !< thickness categories
+     integer :: ntrcr = 0  !< tracers per category
+  end type pressridge_ridger
+
+  type, bind(C) :: c_fluxes
+     real(c_double) :: fresh = 0, fsalt = 0, fhocn = 0, fpond = 0, dpnd_ridge = 0
+  end type c_fluxes
+
+  type, bind(C) :: c_step_diag
+     real(c_double) :: closing = 0, opening = 0, dardg1dt = 0, dardg2dt = 0, dvirdgdt = 0, &
+          ice_to_ocean = 0, snow_to_ocean = 0
+     integer(c_int64_t) :: niter = 0
+  end type c_step_diag
+
+  type, bind(C) :: c_cat_diag
+     type(c_ptr) :: dardg1ndt = c_null_ptr, dardg2ndt = c_null_ptr, dvirdgndt = c_null_ptr, &
+          aparticn = c_null_ptr, krdgn = c_null_ptr, araftn = c_null_ptr, vraftn = c_null_ptr, &
+          aredistn = c_null_ptr, vredistn = c_null_ptr, first_ice = c_null_ptr
+  end type c_cat_diag
+
+  type, bind(C) :: c_cell_arrays
+     type(c_ptr) :: rdg_conv = c_null_ptr, rdg_shear = c_null_ptr, closing = c_null_ptr, &
+          opening = c_null_ptr, tf = c_null_ptr, valid = c_null_ptr, fresh = c_null_ptr, &
+          fsalt = c_null_ptr, fhocn = c_null_ptr, fpond = c_null_ptr, dardg1dt = c_null_ptr, &
+          dardg2dt = c_null_ptr, dvirdgdt = c_null_ptr
+  end type c_cell_arrays
 
   type, bind(C) :: c_grid
      integer(c_int64_t) :: ncat, ncol, cat_stride, col_stride, len, col_stride_1d, len_1d
@@ -168,6 +205,52 @@ module pressridge
        type(c_ptr), value :: valid, options
        type(c_rates), intent(in) :: rates
      end function c_ridge_step
+     integer(c_int32_t) function c_ridger_new(ncat, nilyr, nslyr, flags, options, step, &
+          cleanup, rebin, ridger) bind(C, name="pressridge_ridger_new")
+       import :: c_int32_t, c_int64_t, c_ptr
+       integer(c_int64_t), value :: ncat, nilyr, nslyr
+       integer(c_int32_t), value :: flags
+       type(c_ptr), value :: options, step
+       integer(c_int32_t), value :: cleanup, rebin
+       type(c_ptr), intent(out) :: ridger
+     end function c_ridger_new
+     integer(c_int32_t) function c_ridger_free(ridger) bind(C, name="pressridge_ridger_free")
+       import :: c_int32_t, c_ptr
+       type(c_ptr), value :: ridger
+     end function c_ridger_free
+     integer(c_int32_t) function c_ridger_tracers(ridger, ntrcr, len, depend, base, nstrata, &
+          strata) bind(C, name="pressridge_ridger_tracers")
+       import :: c_int32_t, c_int64_t, c_ptr
+       type(c_ptr), value :: ridger
+       integer(c_int64_t), intent(out) :: ntrcr
+       integer(c_int64_t), value :: len
+       type(c_ptr), value :: depend, base, nstrata, strata
+     end function c_ridger_tracers
+     integer(c_int32_t) function c_ridge_cell(ridger, dt, ndtd, hin_max, rdg_conv, rdg_shear, &
+          closing, opening, aicen, trcrn, vicen, vsnon, aice0, aice, tf, fluxes, diag, cats) &
+          bind(C, name="pressridge_ridge_cell")
+       import :: c_int32_t, c_ptr, c_double, c_fluxes, c_step_diag, c_cat_diag
+       type(c_ptr), value :: ridger
+       real(c_double), value :: dt
+       integer(c_int32_t), value :: ndtd
+       type(c_ptr), value :: hin_max
+       real(c_double), value :: rdg_conv, rdg_shear
+       type(c_ptr), value :: closing, opening, aicen, trcrn, vicen, vsnon, aice0, aice
+       real(c_double), value :: tf
+       type(c_fluxes), intent(inout) :: fluxes
+       type(c_step_diag), intent(out) :: diag
+       type(c_cat_diag), intent(in) :: cats
+     end function c_ridge_cell
+     integer(c_int32_t) function c_ridge_cells(ridger, ncol, dt, ndtd, hin_max, aicen, trcrn, &
+          vicen, vsnon, aice0, aice, cells) bind(C, name="pressridge_ridge_cells")
+       import :: c_int32_t, c_int64_t, c_ptr, c_double, c_cell_arrays
+       type(c_ptr), value :: ridger
+       integer(c_int64_t), value :: ncol
+       real(c_double), value :: dt
+       integer(c_int32_t), value :: ndtd
+       type(c_ptr), value :: hin_max, aicen, trcrn, vicen, vsnon, aice0, aice
+       type(c_cell_arrays), intent(in) :: cells
+     end function c_ridge_cells
      integer(c_int32_t) function c_cf_table_open(path, len, table) &
           bind(C, name="pressridge_cf_table_open")
        import :: c_int32_t, c_int64_t, c_char, c_ptr
@@ -335,6 +418,8 @@ module pressridge
   public :: pressridge_ridge_table_free
   public :: pressridge_scene_run, pressridge_run_summary_json, pressridge_run_summary_value
   public :: pressridge_run_free, pressridge_run_scene
+  public :: pressridge_ridger_init, pressridge_ridger_free, pressridge_step_ridge
+  public :: pressridge_step_ridge_cells
 
 contains
 
@@ -1120,5 +1205,228 @@ contains
     end if
     call finish(int(e, c_int32_t), 'pressridge_run_scene', ierr)
   end subroutine pressridge_run_scene
+
+  ! ------------------------------------------------- the complete ridging step (issue 15)
+
+  !> Initialises a ridging set-up once: ncat categories, the CICE tracer layout with nilyr ice
+  !> and nslyr snow layers and the optional tracers (Icepack's flags), the options (default:
+  !> CICE's; participation, redistribution and params are used) and Icepack's docleanup and
+  !> dorebin (default .true.). Optionally returns the layout as Icepack's arrays (ntrcr and,
+  !> sized ntrcr or more, trcr_depend, trcr_base(:, 3), n_trcr_strata, nt_strata(:, 2)).
+  subroutine pressridge_ridger_init(ridger, ncat, nilyr, nslyr, tr_iage, tr_FY, tr_lvl, &
+       tr_pond_lvl, options, docleanup, dorebin, ntrcr, trcr_depend, trcr_base, &
+       n_trcr_strata, nt_strata, ierr)
+    type(pressridge_ridger), intent(out) :: ridger
+    integer, intent(in) :: ncat, nilyr, nslyr
+    logical, intent(in) :: tr_iage, tr_FY, tr_lvl, tr_pond_lvl
+    type(pressridge_options), intent(in), optional, target :: options
+    logical, intent(in), optional :: docleanup, dorebin
+    integer, intent(out), optional :: ntrcr
+    integer(c_int32_t), intent(out), optional, contiguous, target :: trcr_depend(:), &
+         n_trcr_strata(:), nt_strata(:, :)
+    real(c_double), intent(out), optional, contiguous, target :: trcr_base(:, :)
+    integer, intent(out), optional :: ierr
+    character(len=*), parameter :: where = 'pressridge_ridger_init'
+    integer(c_int32_t) :: flags, clean, rebin, rc
+    integer(c_int64_t) :: nt, len
+    type(c_ptr) :: o, pd, pb, pn, ps
+    flags = 0
+    if (tr_iage) flags = flags + PRESSRIDGE_TRACER_AGE
+    if (tr_FY) flags = flags + PRESSRIDGE_TRACER_FIRST_YEAR
+    if (tr_lvl) flags = flags + PRESSRIDGE_TRACER_LEVEL_ICE
+    if (tr_pond_lvl) flags = flags + PRESSRIDGE_TRACER_PONDS
+    clean = 1
+    rebin = 1
+    if (present(docleanup)) then
+       if (.not. docleanup) clean = 0
+    end if
+    if (present(dorebin)) then
+       if (.not. dorebin) rebin = 0
+    end if
+    o = c_null_ptr
+    if (present(options)) o = c_loc(options)
+    rc = c_ridger_new(int(ncat, c_int64_t), int(nilyr, c_int64_t), int(nslyr, c_int64_t), &
+         flags, o, c_null_ptr, clean, rebin, ridger%ptr)
+    if (rc /= PRESSRIDGE_OK) then
+       call finish(rc, where, ierr)
+       return
+    end if
+    rc = c_ridger_tracers(ridger%ptr, nt, 0_c_int64_t, c_null_ptr, c_null_ptr, c_null_ptr, &
+         c_null_ptr)
+    ridger%ncat = ncat
+    ridger%ntrcr = int(nt)
+    if (present(ntrcr)) ntrcr = int(nt)
+    len = nt
+    pd = c_null_ptr
+    pb = c_null_ptr
+    pn = c_null_ptr
+    ps = c_null_ptr
+    if (present(trcr_depend)) then
+       pd = c_loc(trcr_depend)
+       len = size(trcr_depend, kind=c_int64_t)
+    end if
+    if (present(trcr_base)) then
+       pb = c_loc(trcr_base)
+       len = size(trcr_base, 1, kind=c_int64_t)
+    end if
+    if (present(n_trcr_strata)) then
+       pn = c_loc(n_trcr_strata)
+       len = size(n_trcr_strata, kind=c_int64_t)
+    end if
+    if (present(nt_strata)) then
+       ps = c_loc(nt_strata)
+       len = size(nt_strata, 1, kind=c_int64_t)
+    end if
+    if (present(trcr_depend)) then
+       if (present(trcr_base)) then
+          if (size(trcr_base, 1) /= size(trcr_depend)) len = -1
+       end if
+    end if
+    if (present(nt_strata) .and. present(n_trcr_strata)) then
+       if (size(nt_strata, 1) /= size(n_trcr_strata)) len = -1
+    end if
+    rc = PRESSRIDGE_OK
+    if (len < 0) then
+       call fail(PRESSRIDGE_ERR_BAD_SIZE, 'the tracer arrays must have the same first size', &
+            where, ierr)
+       return
+    end if
+    if (c_associated(pd) .or. c_associated(pb) .or. c_associated(pn) .or. c_associated(ps)) &
+         rc = c_ridger_tracers(ridger%ptr, nt, len, pd, pb, pn, ps)
+    call finish(rc, where, ierr)
+  end subroutine pressridge_ridger_init
+
+  !> Releases a ridging set-up.
+  subroutine pressridge_ridger_free(ridger)
+    type(pressridge_ridger), intent(inout) :: ridger
+    integer(c_int32_t) :: rc
+    rc = c_ridger_free(ridger%ptr)
+    ridger%ptr = c_null_ptr
+  end subroutine pressridge_ridger_free
+
+  !> One ridging step of one cell, Icepack's icepack_step_ridge (snow, tracers, fluxes, the
+  !> clean-up), with its argument names and units; the tracer layout comes from `ridger`.
+  !> closing absent: closing and opening from rdg_conv and rdg_shear (CICE), hin_max(ncat)
+  !> set to params%big; closing present: the host's rates closing and opening (SIS2).
+  !> fresh, fsalt, fhocn, fpond are added to; the other diagnostics are overwritten;
+  !> first_ice is set .true. for categories emptied by the clean-up.
+  subroutine pressridge_step_ridge(ridger, dt, ndtd, hin_max, rdg_conv, rdg_shear, aicen, &
+       trcrn, vicen, vsnon, aice0, dardg1dt, dardg2dt, dvirdgdt, opening, fpond, fresh, &
+       fhocn, aparticn, krdgn, aredistn, vredistn, dardg1ndt, dardg2ndt, dvirdgndt, araftn, &
+       vraftn, aice, fsalt, first_ice, closing, Tf, dpnd_ridge, ierr)
+    type(pressridge_ridger), intent(in) :: ridger
+    real(c_double), intent(in) :: dt                     !< dynamics time step (s)
+    integer, intent(in) :: ndtd                          !< dynamics subcycles
+    real(c_double), intent(inout), contiguous, target :: hin_max(0:) !< bounds (m)
+    real(c_double), intent(in) :: rdg_conv, rdg_shear    !< 1/s
+    real(c_double), intent(inout), contiguous, target :: aicen(:), vicen(:), vsnon(:)
+    real(c_double), intent(inout), contiguous, target :: trcrn(:, :) !< (ntrcr, ncat)
+    real(c_double), intent(inout), target :: aice0, aice
+    real(c_double), intent(out), optional :: dardg1dt, dardg2dt, dvirdgdt
+    real(c_double), intent(inout), target :: opening     !< 1/s
+    real(c_double), intent(inout) :: fpond, fresh, fhocn, fsalt
+    real(c_double), intent(out), optional, contiguous, target :: aparticn(:), krdgn(:), &
+         aredistn(:), vredistn(:), dardg1ndt(:), dardg2ndt(:), dvirdgndt(:), araftn(:), vraftn(:)
+    logical, intent(inout), optional :: first_ice(:)
+    real(c_double), intent(in), optional, target :: closing
+    real(c_double), intent(in) :: Tf                     !< freezing temperature (degC)
+    real(c_double), intent(out), optional :: dpnd_ridge  !< m
+    integer, intent(out), optional :: ierr
+    character(len=*), parameter :: where = 'pressridge_step_ridge'
+    type(c_fluxes) :: fl
+    type(c_step_diag) :: d
+    type(c_cat_diag) :: cd
+    integer(c_int32_t), target :: zapped(size(aicen))
+    type(c_ptr) :: pc
+    integer(c_int32_t) :: rc
+    integer :: n
+    n = ridger%ncat
+    if (size(aicen) /= n .or. size(vicen) /= n .or. size(vsnon) /= n .or. &
+         size(hin_max) /= n + 1 .or. size(trcrn, 1) /= ridger%ntrcr .or. size(trcrn, 2) /= n) then
+       call fail(PRESSRIDGE_ERR_BAD_SIZE, 'need aicen, vicen, vsnon(ncat), hin_max(0:ncat), &
+            &trcrn(ntrcr, ncat) of the ridger''s sizes', where, ierr)
+       return
+    end if
+    fl = c_fluxes(fresh, fsalt, fhocn, fpond, 0.0_c_double)
+    zapped = 0
+    if (present(aparticn)) cd%aparticn = c_loc(aparticn)
+    if (present(krdgn)) cd%krdgn = c_loc(krdgn)
+    if (present(aredistn)) cd%aredistn = c_loc(aredistn)
+    if (present(vredistn)) cd%vredistn = c_loc(vredistn)
+    if (present(dardg1ndt)) cd%dardg1ndt = c_loc(dardg1ndt)
+    if (present(dardg2ndt)) cd%dardg2ndt = c_loc(dardg2ndt)
+    if (present(dvirdgndt)) cd%dvirdgndt = c_loc(dvirdgndt)
+    if (present(araftn)) cd%araftn = c_loc(araftn)
+    if (present(vraftn)) cd%vraftn = c_loc(vraftn)
+    cd%first_ice = c_loc(zapped)
+    pc = c_null_ptr
+    if (present(closing)) pc = c_loc(closing)
+    rc = c_ridge_cell(ridger%ptr, dt, int(ndtd, c_int32_t), c_loc(hin_max), rdg_conv, &
+         rdg_shear, pc, c_loc(opening), c_loc(aicen), c_loc(trcrn), c_loc(vicen), &
+         c_loc(vsnon), c_loc(aice0), c_loc(aice), Tf, fl, d, cd)
+    if (rc == PRESSRIDGE_OK) then
+       fresh = fl%fresh
+       fsalt = fl%fsalt
+       fhocn = fl%fhocn
+       fpond = fl%fpond
+       if (present(dpnd_ridge)) dpnd_ridge = fl%dpnd_ridge
+       if (present(dardg1dt)) dardg1dt = d%dardg1dt
+       if (present(dardg2dt)) dardg2dt = d%dardg2dt
+       if (present(dvirdgdt)) dvirdgdt = d%dvirdgdt
+       if (present(first_ice)) first_ice = first_ice .or. zapped /= 0
+    end if
+    call finish(rc, where, ierr)
+  end subroutine pressridge_step_ridge
+
+  !> The ridging step of ncol cells in one call: aicen, vicen, vsnon(ncat, ncol),
+  !> trcrn(ntrcr, ncat, ncol), aice0, aice(ncol), rdg_conv, rdg_shear(ncol); optional Tf(ncol)
+  !> (default -1.8), fluxes fresh, fsalt, fhocn, fpond(ncol) (added to), rates dardg1dt,
+  !> dardg2dt, dvirdgdt(ncol), and closing with opening (ncol, SIS2 convention; opening is
+  !> also returned in the CICE convention). hin_max(0:ncat) is not modified.
+  subroutine pressridge_step_ridge_cells(ridger, dt, ndtd, hin_max, rdg_conv, rdg_shear, &
+       aicen, trcrn, vicen, vsnon, aice0, aice, Tf, fresh, fsalt, fhocn, fpond, dardg1dt, &
+       dardg2dt, dvirdgdt, closing, opening, ierr)
+    type(pressridge_ridger), intent(in) :: ridger
+    real(c_double), intent(in) :: dt
+    integer, intent(in) :: ndtd
+    real(c_double), intent(in), contiguous, target :: hin_max(0:), rdg_conv(:), rdg_shear(:)
+    real(c_double), intent(inout), contiguous, target :: aicen(:, :), vicen(:, :), &
+         vsnon(:, :), trcrn(:, :, :), aice0(:), aice(:)
+    real(c_double), intent(in), optional, contiguous, target :: Tf(:), closing(:)
+    real(c_double), intent(inout), optional, contiguous, target :: fresh(:), fsalt(:), &
+         fhocn(:), fpond(:), opening(:)
+    real(c_double), intent(out), optional, contiguous, target :: dardg1dt(:), dardg2dt(:), &
+         dvirdgdt(:)
+    integer, intent(out), optional :: ierr
+    character(len=*), parameter :: where = 'pressridge_step_ridge_cells'
+    type(c_cell_arrays) :: c
+    integer :: n, ncol
+    n = ridger%ncat
+    ncol = size(aicen, 2)
+    if (size(aicen, 1) /= n .or. any(shape(vicen) /= [n, ncol]) .or. &
+         any(shape(vsnon) /= [n, ncol]) .or. any(shape(trcrn) /= [ridger%ntrcr, n, ncol]) .or. &
+         size(aice0) /= ncol .or. size(aice) /= ncol .or. size(rdg_conv) /= ncol .or. &
+         size(rdg_shear) /= ncol .or. size(hin_max) /= n + 1) then
+       call fail(PRESSRIDGE_ERR_BAD_SIZE, 'shapes: aicen, vicen, vsnon(ncat, ncol), &
+            &trcrn(ntrcr, ncat, ncol), aice0, aice, rdg_conv, rdg_shear(ncol), hin_max(0:ncat)', &
+            where, ierr)
+       return
+    end if
+    c%rdg_conv = c_loc(rdg_conv)
+    c%rdg_shear = c_loc(rdg_shear)
+    if (present(closing)) c%closing = c_loc(closing)
+    if (present(opening)) c%opening = c_loc(opening)
+    if (present(Tf)) c%tf = c_loc(Tf)
+    if (present(fresh)) c%fresh = c_loc(fresh)
+    if (present(fsalt)) c%fsalt = c_loc(fsalt)
+    if (present(fhocn)) c%fhocn = c_loc(fhocn)
+    if (present(fpond)) c%fpond = c_loc(fpond)
+    if (present(dardg1dt)) c%dardg1dt = c_loc(dardg1dt)
+    if (present(dardg2dt)) c%dardg2dt = c_loc(dardg2dt)
+    if (present(dvirdgdt)) c%dvirdgdt = c_loc(dvirdgdt)
+    call finish(c_ridge_cells(ridger%ptr, int(ncol, c_int64_t), dt, int(ndtd, c_int32_t), &
+         c_loc(hin_max), c_loc(aicen), c_loc(trcrn), c_loc(vicen), c_loc(vsnon), c_loc(aice0), &
+         c_loc(aice), c), where, ierr)
+  end subroutine pressridge_step_ridge_cells
 
 end module pressridge

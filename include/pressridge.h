@@ -87,6 +87,19 @@
 // C_f of CICE/Icepack, the default (dimensionless).
 #define PRESSRIDGE_CF_CICE 17.0
 
+// Tracer flag: ice age `iage` (s, on ice volume), Icepack `tr_iage`.
+#define PRESSRIDGE_TRACER_AGE 1
+
+// Tracer flag: first-year ice fraction `FY` (on area), Icepack `tr_FY`.
+#define PRESSRIDGE_TRACER_FIRST_YEAR 2
+
+// Tracer flag: level-ice area and volume fractions `alvl`, `vlvl`, Icepack `tr_lvl`.
+#define PRESSRIDGE_TRACER_LEVEL_ICE 4
+
+// Tracer flag: level-ice melt ponds `apnd`, `hpnd`, `ipnd`, Icepack `tr_pond_lvl` (needs
+// `PRESSRIDGE_TRACER_LEVEL_ICE`).
+#define PRESSRIDGE_TRACER_PONDS 8
+
 // A C_f table: C_f (dimensionless) against the ridging ice's thickness (m), linear between
 // nodes, clamped (and flagged) outside. Opaque; create with [`pressridge_cf_table_open`] or
 // [`pressridge_cf_table_new`], release with [`pressridge_cf_table_free`].
@@ -96,6 +109,10 @@ typedef struct PressridgeCfTable PressridgeCfTable;
 // writes it. Opaque; create with [`pressridge_ridge_table_open`], release with
 // [`pressridge_ridge_table_free`].
 typedef struct PressridgeRidgeTable PressridgeRidgeTable;
+
+// A ridging set-up: number of categories, tracer layout and options. Immutable after
+// [`pressridge_ridger_new`]; one handle may be used by several threads at once.
+typedef struct PressridgeRidger PressridgeRidger;
 
 // The result of a simulator run (its summary). Opaque; create with
 // [`pressridge_scene_run`], release with [`pressridge_run_free`].
@@ -213,6 +230,124 @@ typedef struct PressridgeRidgeRates {
   // Rate of ice volume ridged (m/s), CICE `dvirdgdt`.
   double *dvirdgdt;
 } PressridgeRidgeRates;
+
+// Thermodynamic constants and clean-up thresholds of the ridging step (the fields of
+// `pressridge::itd::RidgeStepParams`; Icepack's defaults from
+// [`pressridge_step_params_default`]).
+typedef struct PressridgeStepParams {
+  // Snow density (kg/m³), Icepack `rhos` = 330.
+  double rhos;
+  // Latent heat of melting of fresh ice (J/kg), Icepack `Lfresh` = 3.34e5.
+  double lfresh;
+  // Specific heat of fresh ice (J kg⁻¹ K⁻¹), Icepack `cp_ice` = 2106.
+  double cp_ice;
+  // Fraction of the snow on ridging ice kept on the ridge (1), Icepack `fsnowrdg` = 0.5.
+  double fsnowrdg;
+  // Salinity of zapped ice with the constant salt flux (ppt), Icepack 4.
+  double ice_ref_salinity;
+  // 0: zapped ice carries `ice_ref_salinity` (Icepack `saltflux_option = "constant"`);
+  // 1: its own salinity (`"prognostic"`).
+  int32_t salt_flux_prognostic;
+  // Cell ice area below which all ice is zapped (1), Icepack `itd_area_min` = 1e-11.
+  double itd_area_min;
+  // Cell ice mass below which all ice is zapped (kg/m²), Icepack `itd_mass_min` = 1e-10.
+  double itd_mass_min;
+  // Snow thickness above which snow temperatures are checked (m), Icepack `hs_min` = 1e-4.
+  double hs_min;
+  // Lowest physical snow temperature (°C), Icepack `Tmin` = −100.
+  double tmin;
+} PressridgeStepParams;
+
+// Fluxes to the ocean of one cell; the ridging step **adds** to them (as Icepack adds to
+// its arguments), except `dpnd_ridge`, which it overwrites.
+typedef struct PressridgeOceanFluxes {
+  // Fresh water into the ocean (kg m⁻² s⁻¹, averaged over `ndtd·dt`), Icepack `fresh`.
+  double fresh;
+  // Salt into the ocean (kg m⁻² s⁻¹), Icepack `fsalt`.
+  double fsalt;
+  // Heat flux to the ocean (W m⁻², negative: the ocean melts what it receives), `fhocn`.
+  double fhocn;
+  // Pond water lost by ridging, with sign (m over the cell, per step), Icepack `fpond`.
+  double fpond;
+  // Pond water drained by ridging (m over the cell, per step), Icepack `dpnd_ridge`.
+  double dpnd_ridge;
+} PressridgeOceanFluxes;
+
+// Cell diagnostics of one ridging step (all written).
+typedef struct PressridgeStepDiagnostics {
+  // Net closing rate of the first pass (1/s).
+  double closing;
+  // Opening rate of the last pass (1/s), Icepack `opening`.
+  double opening;
+  // Area of ridging ice per unit time (1/s), `dardg1dt`.
+  double dardg1dt;
+  // Area of new ridges per unit time (1/s), `dardg2dt`.
+  double dardg2dt;
+  // Volume of ridging ice per unit time (m/s), `dvirdgdt`.
+  double dvirdgdt;
+  // Ice volume put into the ocean (m over the cell).
+  double ice_to_ocean;
+  // Snow volume put into the ocean (m over the cell).
+  double snow_to_ocean;
+  // Ridging passes.
+  int64_t niter;
+} PressridgeStepDiagnostics;
+
+// Per-category diagnostics of one cell (Icepack's names and units); each pointer may be
+// null (not returned) or point to `ncat` values.
+typedef struct PressridgeCategoryDiagnostics {
+  // Area of ridging ice per unit time, last pass the category ridged (1/s).
+  double *dardg1ndt;
+  // Area of new ridges per unit time (1/s).
+  double *dardg2ndt;
+  // Volume of ridging ice per unit time (m/s).
+  double *dvirdgndt;
+  // Participation function, last pass (1).
+  double *aparticn;
+  // Mean ridge thickness / ridging-ice thickness, last pass (1).
+  double *krdgn;
+  // Rafted new-ridge area per step (1).
+  double *araftn;
+  // Rafting ice volume per step (m).
+  double *vraftn;
+  // New-ridge area from category 1 landing in each category, per step (1).
+  double *aredistn;
+  // New-ridge volume from category 1 landing in each category, per step (m).
+  double *vredistn;
+  // Set to 1 for categories emptied by the clean-up (Icepack `first_ice`), else unchanged.
+  int32_t *first_ice;
+} PressridgeCategoryDiagnostics;
+
+// Per-cell arrays of [`pressridge_ridge_cells`], each `ncol` values (column c at index c).
+// Inputs may be null where stated; outputs may be null (not returned).
+typedef struct PressridgeCellArrays {
+  // Icepack `rdg_conv` (1/s, ≥ 0); used when `closing` is null. Null: 0.
+  const double *rdg_conv;
+  // Icepack `rdg_shear` (1/s, ≥ 0); used when `closing` is null. Null: 0.
+  const double *rdg_shear;
+  // Host net closing rates (1/s); null for the CICE convention.
+  const double *closing;
+  // Opening rate (1/s): input with `closing`; out: last pass's opening rate.
+  double *opening;
+  // Freezing temperature (°C); null: −1.8 °C.
+  const double *tf;
+  // Nonzero: step the cell; zero: leave it untouched. Null: every cell.
+  const int32_t *valid;
+  // Fresh-water flux (kg m⁻² s⁻¹), added to.
+  double *fresh;
+  // Salt flux (kg m⁻² s⁻¹), added to.
+  double *fsalt;
+  // Heat flux to the ocean (W m⁻²), added to.
+  double *fhocn;
+  // Pond water lost by ridging (m, with sign), added to.
+  double *fpond;
+  // Rate of area loss by ridging ice (1/s), written.
+  double *dardg1dt;
+  // Rate of area gain by new ridges (1/s), written.
+  double *dardg2dt;
+  // Rate of ice volume ridged (m/s), written.
+  double *dvirdgdt;
+} PressridgeCellArrays;
 
 #ifdef __cplusplus
 extern "C" {
@@ -351,6 +486,131 @@ int32_t pressridge_grid_fortran(int64_t ncat, int64_t ncol, struct PressridgeGri
 // # Safety
 // `grid` must be valid for one write.
 int32_t pressridge_grid_c(int64_t ncat, int64_t ncol, struct PressridgeGrid *grid);
+
+// Fills `*params` with Icepack's defaults.
+//
+// # Safety
+// `params` must be valid for one write.
+int32_t pressridge_step_params_default(struct PressridgeStepParams *params);
+
+// Makes a ridging set-up for `ncat` categories and the CICE tracer layout with `nilyr` ice
+// and `nslyr` snow layers (both ≥ 1) and the optional tracers of `tracer_flags` (a sum of
+// `PRESSRIDGE_TRACER_*`), in Icepack's order: `Tsfc`, `qice(nilyr)`, `qsno(nslyr)`,
+// `sice(nilyr)`, `iage`, `FY`, `alvl`, `vlvl`, `apnd`, `hpnd`, `ipnd`. `options` (null: CICE
+// defaults) gives the participation, redistribution and ridging parameters (its strength
+// fields are not used), `step_params` (null: Icepack defaults) the thermodynamic constants;
+// `cleanup` and `rebin` are Icepack's `docleanup`, `dorebin` (nonzero = true). Writes the
+// handle to `*ridger`; release it with [`pressridge_ridger_free`].
+//
+// # Safety
+// `options` and `step_params` must be null or valid; `ridger` valid for one write.
+int32_t pressridge_ridger_new(int64_t ncat,
+                              int64_t nilyr,
+                              int64_t nslyr,
+                              int32_t tracer_flags,
+                              const struct PressridgeOptions *options,
+                              const struct PressridgeStepParams *step_params,
+                              int32_t cleanup,
+                              int32_t rebin,
+                              struct PressridgeRidger **ridger);
+
+// Releases a handle of [`pressridge_ridger_new`] (null is allowed and does nothing).
+//
+// # Safety
+// `ridger` must come from `pressridge_ridger_new`, not be in use, and not be freed twice.
+int32_t pressridge_ridger_free(struct PressridgeRidger *ridger);
+
+// The tracer layout of a set-up, as Icepack's arrays: `*ntrcr` (tracers per category), and
+// where not null, for each tracer (arrays of `ntrcr_len` ≥ ntrcr elements; the two 2-D ones
+// Fortran-ordered `(ntrcr_len, 3)` and `(ntrcr_len, 2)`): `trcr_depend` (0 area, 1 ice volume,
+// 2 snow volume, 2 + nt for tracer nt, 1-based), `trcr_base` (1 in the column of its base),
+// `n_trcr_strata` and `nt_strata` (1-based tracer indices, 0 = none).
+//
+// # Safety
+// Non-null pointers must be valid for the writes described.
+int32_t pressridge_ridger_tracers(const struct PressridgeRidger *ridger,
+                                  int64_t *ntrcr,
+                                  int64_t ntrcr_len,
+                                  int32_t *trcr_depend,
+                                  double *trcr_base,
+                                  int32_t *n_trcr_strata,
+                                  int32_t *nt_strata);
+
+// First tracer index (0-based) and number of levels of the tracer field `name` (`len`
+// bytes of UTF-8: `Tsfc`, `qice`, `qsno`, `sice`, `iage`, `FY`, `alvl`, `vlvl`, `apnd`,
+// `hpnd`, `ipnd`); `PRESSRIDGE_ERR_NOT_FOUND` when the layout has no such field.
+//
+// # Safety
+// `name` valid for `len` bytes; `start`, `levels` valid for one write each.
+int32_t pressridge_ridger_tracer_field(const struct PressridgeRidger *ridger,
+                                       const uint8_t *name,
+                                       int64_t len,
+                                       int64_t *start,
+                                       int64_t *levels);
+
+// One ridging step of one grid cell, in place: Icepack's `icepack_step_ridge` (ridging with
+// snow, tracers and ocean fluxes, then the clean-up), see `docs/strength.md`.
+//
+// - `dt` (s, > 0), `ndtd` (≥ 1: fluxes are averaged over `ndtd·dt`), `tf` freezing
+//   temperature (°C) for emptied categories;
+// - `hin_max`: `ncat + 1` category bounds (m), in/out: with `closing` null its last value is
+//   set to `params.big` (as Icepack does);
+// - `rdg_conv`, `rdg_shear` (1/s, ≥ 0): Icepack's deformation terms, used when `closing` is
+//   null (CICE convention);
+// - `closing` (1/s): null, or the host's net closing rate (SIS2 convention), with the
+//   opening rate in `*opening`;
+// - `opening` (1/s, may be null when `closing` is null): out: the opening rate of the last
+//   ridging pass;
+// - in/out state: `aicen`, `vicen`, `vsnon` (`ncat` each; 1, m, m), `trcrn` (`ntrcr·ncat`,
+//   Fortran `trcrn(ntrcr, ncat)`), `aice0`, `aice` (1; `aice` is recomputed by the clean-up);
+// - `fluxes` (may be null): added to; `diag`, `categories` (may be null): written.
+//
+// On error (bad input, or a state where Icepack aborts or would return a negative area,
+// volume or snow volume) the cell and the fluxes are unchanged and the message says why.
+//
+// # Safety
+// Every non-null pointer must be valid for the reads and writes described.
+int32_t pressridge_ridge_cell(const struct PressridgeRidger *ridger,
+                              double dt,
+                              int32_t ndtd,
+                              double *hin_max,
+                              double rdg_conv,
+                              double rdg_shear,
+                              const double *closing,
+                              double *opening,
+                              double *aicen,
+                              double *trcrn,
+                              double *vicen,
+                              double *vsnon,
+                              double *aice0,
+                              double *aice,
+                              double tf,
+                              struct PressridgeOceanFluxes *fluxes,
+                              struct PressridgeStepDiagnostics *diag,
+                              const struct PressridgeCategoryDiagnostics *categories);
+
+// The ridging step of `ncol` cells in one call (arrays Fortran-ordered and contiguous:
+// `aicen(ncat, ncol)`, `vicen`, `vsnon` likewise, `trcrn(ntrcr, ncat, ncol)`, `aice0(ncol)`,
+// `aice(ncol)`; per-cell forcing and outputs in `cells`). `hin_max` (`ncat + 1` bounds, m)
+// is shared and not modified (with `cells.closing` null the top bound used is
+// `params.big`). Same semantics per cell as [`pressridge_ridge_cell`]. Stops at the first
+// failing cell (its 0-based index in the error; earlier cells are stepped, it and later ones
+// unchanged).
+//
+// # Safety
+// Every non-null pointer must be valid for the reads and writes described.
+int32_t pressridge_ridge_cells(const struct PressridgeRidger *ridger,
+                               int64_t ncol,
+                               double dt,
+                               int32_t ndtd,
+                               const double *hin_max,
+                               double *aicen,
+                               double *trcrn,
+                               double *vicen,
+                               double *vsnon,
+                               double *aice0,
+                               double *aice,
+                               const struct PressridgeCellArrays *cells);
 
 // Runs the scene given as TOML text (`toml_len` bytes of UTF-8, the format of
 // `data/scenes/*.toml`; every key optional, unknown keys rejected) to its duration on the

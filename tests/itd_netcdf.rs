@@ -550,3 +550,54 @@ fn cice_like_file_with_time_and_land_fill() {
     let e = read_itd(&p2).unwrap_err();
     assert!(e.to_string().contains("time"), "{e}");
 }
+
+/// CICE history strain rates (`divu`, `shear` in %/day) are converted to 1/s and the shear
+/// term is formed as Icepack's ridging needs it; an unknown unit is refused by name.
+#[test]
+fn cice_history_rates_in_percent_per_day_are_converted_or_refused() {
+    use pressridge::itd::deformation_terms;
+    let dir = std::env::temp_dir().join(format!("pressridge-units-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let write = |name: &str, units: &str| -> std::path::PathBuf {
+        let p = dir.join(name);
+        let mut f = netcdf::create(&p).unwrap();
+        f.add_dimension("nc", 1).unwrap();
+        f.add_dimension("ni", 2).unwrap();
+        let mut a = f.add_variable::<f64>("aicen", &["nc", "ni"]).unwrap();
+        a.put_values(&[0.9, 0.8], ..).unwrap();
+        let mut v = f.add_variable::<f64>("vicen", &["nc", "ni"]).unwrap();
+        v.put_values(&[0.9, 1.6], ..).unwrap();
+        let mut d = f.add_variable::<f64>("divu", &["ni"]).unwrap();
+        d.put_values(&[-8.64, 4.32], ..).unwrap();
+        d.put_attribute("units", units).unwrap();
+        let mut s = f.add_variable::<f64>("shear", &["ni"]).unwrap();
+        s.put_values(&[17.28, 0.0], ..).unwrap();
+        s.put_attribute("units", units).unwrap();
+        p
+    };
+    let g = read_itd(&write("pct.nc", "%/day")).unwrap();
+    let divu = g.divu.unwrap();
+    assert!((divu[0] - -1e-6).abs() < 1e-20 && (divu[1] - 5e-7).abs() < 1e-20);
+    let term = deformation_terms(-1e-6, 2e-6).1;
+    assert!((g.shear.unwrap()[0] - term).abs() < 1e-20);
+    let err = read_itd(&write("bad.nc", "m/s")).unwrap_err().to_string();
+    assert!(
+        err.contains("divu") && err.contains("m/s") && err.contains("%/day"),
+        "{err}"
+    );
+    let g = read_itd(&write("s.nc", "s-1")).unwrap();
+    assert_eq!(g.divu.unwrap()[0], -8.64, "1/s taken as given");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn deformation_terms_are_icepacks() {
+    use pressridge::itd::{deformation_terms, percent_per_day_to_per_second};
+    // Pure convergence: all of it closes, no shear term.
+    assert_eq!(deformation_terms(-2e-6, 0.0), (2e-6, 0.0));
+    // Pure shear: Delta = shear/2 (e = 2), shear term = Delta/2.
+    let (c, s) = deformation_terms(0.0, 4e-6);
+    assert_eq!(c, 0.0);
+    assert!((s - 1e-6).abs() < 1e-22);
+    assert!((percent_per_day_to_per_second(8.64) - 1e-6).abs() < 1e-22);
+}

@@ -1,5 +1,7 @@
 !> Cost per column of the C ABI from Fortran (ncat = 5): the batched strength call, the
-!> Icepack-style per-cell call, and the ridging step batched and per cell. Workload as benches/strength.rs:
+!> Icepack-style per-cell call, the area-only ridging step batched and per cell, and the
+!> complete ridging step (snow, 23 tracers, fluxes, clean-up) per cell and batched over the
+!> first 1e5 columns. Workload (the same columns) as benches/strength.rs:
 !> deterministic pseudo-random columns, 5-20 % open water, category thicknesses near 0.3, 1,
 !> 1.9, 3, 4.5 m. Single thread. Prints nanoseconds per column; no assertions.
 !>
@@ -99,7 +101,72 @@ program bench_strength
   t = real(t1 - t0, c_double) / rate
   print '(a, f8.1, a)', 'pressridge_ridge_ice, one call per cell:     ', 1e9 * t / ncol, ' ns/column'
 
+  call bench_full_step(min(ncol, 100000))
+
 contains
+
+  !> The complete ridging step on the first n columns, with 10 % snow and the 23 CICE
+  !> tracers of benches/strength.rs: per cell (as CICE calls icepack_step_ridge) and in one
+  !> call.
+  subroutine bench_full_step(n)
+    integer, intent(in) :: n
+    type(pressridge_ridger) :: rg
+    integer :: ntrcr, i, k
+    real(c_double), allocatable :: aw(:, :), vw(:, :), sw(:, :), tw(:, :, :), a0w(:), &
+         aicew(:), fresh(:), fsalt(:), fhocn(:), fpond(:), op(:)
+    real(c_double) :: hb(0:ncat), d1, d2, d3, t
+    call pressridge_ridger_init(rg, ncat, 7, 1, .true., .true., .true., .true., ntrcr=ntrcr)
+    allocate(aw(ncat, n), vw(ncat, n), sw(ncat, n), tw(ntrcr, ncat, n), a0w(n), aicew(n), &
+         fresh(n), fsalt(n), fhocn(n), fpond(n), op(n))
+    hb = hin
+    do rep = 1, 2
+       aw = a(:, 1:n)
+       vw = v(:, 1:n)
+       sw = 0.1_c_double * v(:, 1:n)
+       a0w = a0(1:n)
+       aicew = 0
+       fresh = 0
+       fsalt = 0
+       fhocn = 0
+       fpond = 0
+       tw(1, :, :) = -20.0_c_double
+       do k = 1, 7
+          tw(1 + k, :, :) = -3.0e8_c_double - 1.0e6_c_double * k
+          tw(9 + k, :, :) = 4.0_c_double + 0.2_c_double * k
+       end do
+       tw(9, :, :) = -1.15e8_c_double
+       tw(17, :, :) = 2.0e7_c_double
+       tw(18, :, :) = 0.4_c_double
+       tw(19, :, :) = 0.8_c_double
+       tw(20, :, :) = 0.8_c_double
+       tw(21, :, :) = 0.2_c_double
+       tw(22, :, :) = 0.1_c_double
+       tw(23, :, :) = 0.01_c_double
+       call system_clock(t0)
+       if (rep == 1) then
+          do i = 1, n
+             call pressridge_step_ridge(rg, 3600.0_c_double, 1, hb, conv(i), shear(i), &
+                  aw(:, i), tw(:, :, i), vw(:, i), sw(:, i), a0w(i), d1, d2, d3, op(i), &
+                  fpond(i), fresh(i), fhocn(i), aice=aicew(i), fsalt=fsalt(i), &
+                  Tf=-1.8_c_double)
+          end do
+       else
+          call pressridge_step_ridge_cells(rg, 3600.0_c_double, 1, hb, conv(1:n), &
+               shear(1:n), aw, tw, vw, sw, a0w, aicew, fresh=fresh, fsalt=fsalt, fhocn=fhocn, &
+               fpond=fpond)
+       end if
+       call system_clock(t1)
+       t = real(t1 - t0, c_double) / rate
+       if (rep == 1) then
+          print '(a, f8.1, a)', 'complete step (23 tracers), one call per cell: ', 1e9 * t / n, &
+               ' ns/cell'
+       else
+          print '(a, f8.1, a)', 'complete step (23 tracers), one call for all:  ', 1e9 * t / n, &
+               ' ns/cell'
+       end if
+    end do
+    call pressridge_ridger_free(rg)
+  end subroutine bench_full_step
 
   !> A deterministic pseudo-random number in [0, 1).
   real(c_double) function lcg(x)

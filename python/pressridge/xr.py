@@ -190,6 +190,33 @@ def _ridge_block(a, v, *rest, names, scalars, mask, options):
     )
 
 
+
+_PER_SECOND = {"s-1", "1/s", "s^-1", "/s", "s**-1"}
+_PERCENT_PER_DAY = {"%/day", "%/d", "%day-1", "percent/day"}
+
+
+def _units(da: xr.DataArray) -> Optional[str]:
+    u = da.attrs.get("units")
+    return None if u is None else "".join(str(u).split())
+
+
+def _is_percent_per_day(da: xr.DataArray) -> bool:
+    return _units(da) in _PERCENT_PER_DAY
+
+
+def _rate_per_second(da: xr.DataArray) -> xr.DataArray:
+    """A strain rate in 1/s: CICE history %/day converted; s-1 (or no units) as given; any
+    other unit refused by name, so that %/day is never taken for 1/s."""
+    u = _units(da)
+    if u is None or u in _PER_SECOND:
+        return da
+    if u in _PERCENT_PER_DAY:
+        return da / 100.0 / 86400.0
+    raise ValueError(
+        f"variable `{da.name}` has units {da.attrs.get('units')!r}; expected '%/day' "
+        "(CICE history) or 's-1'"
+    )
+
 def ridge_step(
     ds: xr.Dataset,
     *,
@@ -207,7 +234,10 @@ def ridge_step(
 
     ``convergence`` (1/s): a number or a DataArray on the spatial dimensions; default
     max(-divu, 0) from the dataset's ``divu``. ``shear`` (1/s): likewise; default the
-    dataset's ``shear``, else 0. ``hin_max`` (m): default the dataset's, else CICE's
+    dataset's ``shear``, else 0. The dataset's ``divu`` and ``shear`` are read by their
+    ``units``: ``s-1`` (or none) as given (``shear`` being the ridging shear term); ``%/day``
+    (CICE history) converted, ``shear`` then being CICE's shear strain rate from which the
+    term is formed as Icepack does; other units raise ``ValueError``. ``hin_max`` (m): default the dataset's, else CICE's
     ``kcatbound = 1`` bounds. ``aice0`` defaults to max(1 - sum(aicen), 0). Other options as
     :func:`pressridge.ridge_step`.
 
@@ -219,15 +249,34 @@ def ridge_step(
     use_mask = _mask_flag(mask, ds["aicen"], ds["vicen"], aice0)
     _pr._params(params)
     conv_desc = "max(-divu, 0) from input"
+
+    def _divu() -> Optional[xr.DataArray]:
+        return _rate_per_second(ds["divu"]) if "divu" in ds else None
+
     if convergence is None:
-        if "divu" not in ds:
+        divu = _divu()
+        if divu is None:
             raise ValueError("no convergence: pass convergence= or put `divu` in the dataset")
-        convergence = (-ds["divu"]).clip(min=0.0)
+        convergence = (-divu).clip(min=0.0)
     elif not isinstance(convergence, xr.DataArray):
         conv_desc = f"{float(convergence)} s-1"
     shear_desc = "from input (or 0)"
     if shear is None:
-        shear = ds["shear"] if "shear" in ds else 0.0
+        if "shear" not in ds:
+            shear = 0.0
+        elif _is_percent_per_day(ds["shear"]):
+            # CICE history: the shear strain rate; Icepack's ridging term needs divu.
+            divu = _divu()
+            if divu is None:
+                raise ValueError(
+                    "`shear` in %/day is CICE's shear strain rate: `divu` is needed to form "
+                    "the ridging shear term"
+                )
+            rate = _rate_per_second(ds["shear"])
+            delta = np.sqrt(divu**2 + 0.25 * rate**2)
+            shear = 0.5 * (delta - abs(divu))
+        else:
+            shear = _rate_per_second(ds["shear"])
     elif not isinstance(shear, xr.DataArray):
         shear_desc = f"{float(shear)} s-1"
     if hin_max is None and "hin_max" in ds:

@@ -142,3 +142,22 @@ def test_bad_datasets(ds):
         prx.strength(ds, category_dim="cat")
     with pytest.raises(ValueError, match="aice0 has dimensions"):
         prx.strength(ds.assign(aice0=ds.aicen.isel(nj=0)))
+
+
+def test_cice_history_rates_in_percent_per_day_are_converted_or_refused(ds):
+    """CICE history `divu`, `shear` in %/day: converted to 1/s (the shear strain rate turned
+    into Icepack's ridging shear term); an unknown unit is refused by name."""
+    divu_s = ds["divu"]
+    rate = xr.full_like(divu_s, 2.0e-6)
+    delta = np.sqrt(divu_s**2 + 0.25 * rate**2)
+    term = 0.5 * (delta - abs(divu_s))
+    want = prx.ridge_step(ds.assign(shear=term.assign_attrs(units="s-1")), dt=3600.0)
+    pct = ds.assign(
+        divu=(divu_s * 100.0 * 86400.0).assign_attrs(units="%/day"),
+        shear=(rate * 100.0 * 86400.0).assign_attrs(units="%/day"),
+    )
+    got = prx.ridge_step(pct, dt=3600.0)
+    np.testing.assert_allclose(got.aicen.values, want.aicen.values, rtol=1e-12, atol=1e-15)
+    np.testing.assert_allclose(got.closing.values, want.closing.values, rtol=1e-9, atol=1e-20)
+    with pytest.raises(ValueError, match="m/s"):
+        prx.ridge_step(ds.assign(divu=divu_s.assign_attrs(units="m/s")), dt=3600.0)

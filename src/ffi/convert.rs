@@ -12,14 +12,17 @@ use crate::table::lookup::LookupError;
 
 fn column_code(e: &ColumnError) -> i32 {
     match e {
-        ColumnError::NotFinite { .. } => PRESSRIDGE_ERR_NOT_FINITE,
+        ColumnError::NotFinite { .. } | ColumnError::TracerNotFinite { .. } => {
+            PRESSRIDGE_ERR_NOT_FINITE
+        }
         ColumnError::Negative { .. }
         | ColumnError::AreaSum { .. }
         | ColumnError::IceAreaAboveOne { .. }
         | ColumnError::AreaTooLarge { .. } => PRESSRIDGE_ERR_BAD_VALUE,
-        ColumnError::NoConvergence { .. } | ColumnError::OpenWaterExhausted { .. } => {
-            PRESSRIDGE_ERR_NUMERICAL
-        }
+        ColumnError::NoConvergence { .. }
+        | ColumnError::OpenWaterExhausted { .. }
+        | ColumnError::StepFailed { .. }
+        | ColumnError::Unphysical { .. } => PRESSRIDGE_ERR_NUMERICAL,
     }
 }
 

@@ -383,7 +383,7 @@ impl PressridgeOptions {
     ///
     /// # Safety
     /// `p` must be null or point to valid options.
-    unsafe fn from_ptr(p: *const PressridgeOptions) -> FfiResult<Self> {
+    pub(crate) unsafe fn from_ptr(p: *const PressridgeOptions) -> FfiResult<Self> {
         if p.is_null() {
             return Ok(Self::default());
         }

@@ -27,6 +27,7 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 mod convert;
 pub mod itd;
 mod layout;
+pub mod ridge_step;
 pub mod scene;
 pub mod tables;
 

@@ -3,7 +3,14 @@
 //! Input: `aicen` and `vicen` whose first dimension is the category dimension (`ncat`)
 //! followed by any number of spatial dimensions; optional `aice0` (spatial dims; else
 //! 1 − Σ aicen), `hin_max` (length ncat + 1; else the CICE default bounds), `divu` and `shear`
-//! (spatial dims, 1/s) for the ridging step. Any numeric type is read as `f64`.
+//! (spatial dims) for the ridging step. Any numeric type is read as `f64`.
+//!
+//! Units of `divu` and `shear`, from their `units` attribute: `s-1` (also `1/s`, `s^-1`, or no
+//! attribute): `divu` is the divergence and `shear` the ridging shear term ½(Δ − |div u|),
+//! both 1/s. `%/day` (CICE history files): `divu` and `shear` are CICE's divergence and shear
+//! strain rate, converted to 1/s, and the shear term is formed as Icepack's ridging needs it
+//! (`crate::itd::deformation_terms`, which needs `divu`). Any other unit is refused with a
+//! message naming it, so that %/day is never taken for 1/s.
 //!
 //! Output: CF-1.8 attributes (`units`, `long_name`, `standard_name` where CF has one), the
 //! options used and the package version as global attributes.
@@ -47,6 +54,21 @@ pub enum NetcdfError {
         expected: String,
         /// What was found.
         found: String,
+    },
+    /// A rate has units that are not understood.
+    #[error(
+        "{path}: variable `{var}` has units \"{units}\"; expected \"%/day\" (CICE history) \
+         or \"s-1\"{extra}"
+    )]
+    Units {
+        /// File concerned.
+        path: PathBuf,
+        /// Variable name.
+        var: String,
+        /// The units found.
+        units: String,
+        /// More explanation.
+        extra: String,
     },
     /// Bad values in one grid column, located by flat and spatial index.
     #[error("{path}: column {column} at ({spatial}): {source}")]
@@ -173,9 +195,11 @@ fn dims_of(v: &netcdf::Variable<'_>) -> Vec<(String, usize)> {
 
 /// The `_FillValue` (else `missing_value`) attribute of `v`, as f64.
 fn fill_of(v: &netcdf::Variable<'_>) -> Option<f64> {
-    ["_FillValue", "missing_value"].iter().find_map(|a| {
-        v.attribute_value(a)
-            .and_then(|r| r.ok())
+    // By listing: asking HDF5 for a missing attribute makes it print errors.
+    ["_FillValue", "missing_value"].iter().find_map(|name| {
+        v.attributes()
+            .find(|a| a.name() == *name)
+            .and_then(|a| a.value().ok())
             .and_then(|x| f64::try_from(x).ok())
     })
 }
@@ -237,6 +261,81 @@ fn read_spatial(
         });
     }
     Ok(Some(Array1::from(read_f64(path, &v)?)))
+}
+
+/// Units of a strain rate.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum RateUnits {
+    PerSecond,
+    PercentPerDay,
+}
+
+fn rate_units(path: &Path, v: &netcdf::Variable<'_>) -> Result<RateUnits, NetcdfError> {
+    // Look the attribute up by listing (asking for a missing one makes HDF5 print errors).
+    let Some(units) = v
+        .attributes()
+        .find(|a| a.name() == "units")
+        .and_then(|a| a.value().ok())
+        .and_then(|x| String::try_from(x).ok())
+    else {
+        return Ok(RateUnits::PerSecond);
+    };
+    let u: String = units.chars().filter(|c| !c.is_whitespace()).collect();
+    match u.as_str() {
+        "s-1" | "1/s" | "s^-1" | "/s" | "s**-1" => Ok(RateUnits::PerSecond),
+        "%/day" | "%/d" | "%day-1" | "percent/day" => Ok(RateUnits::PercentPerDay),
+        _ => Err(NetcdfError::Units {
+            path: path.to_path_buf(),
+            var: v.name(),
+            units,
+            extra: String::new(),
+        }),
+    }
+}
+
+/// An optional field on the spatial dimensions.
+type SpatialField = Option<Array1<f64>>;
+
+/// `divu` (1/s) and the ridging shear term (1/s) from the file, converted from CICE's %/day
+/// where the units say so.
+fn read_deformation(
+    path: &Path,
+    file: &netcdf::File,
+    spatial: &[(String, usize)],
+) -> Result<(SpatialField, SpatialField), NetcdfError> {
+    use crate::itd::{deformation_terms, percent_per_day_to_per_second};
+    let units = |name: &str| -> Result<Option<RateUnits>, NetcdfError> {
+        file.variable(name)
+            .map(|v| rate_units(path, &v))
+            .transpose()
+    };
+    let (du, su) = (units("divu")?, units("shear")?);
+    let mut divu = read_spatial(path, file, "divu", spatial)?;
+    let mut shear = read_spatial(path, file, "shear", spatial)?;
+    if du == Some(RateUnits::PercentPerDay)
+        && let Some(d) = divu.as_mut()
+    {
+        d.mapv_inplace(percent_per_day_to_per_second);
+    }
+    if su == Some(RateUnits::PercentPerDay)
+        && let Some(s) = shear.as_mut()
+    {
+        // CICE's history shear is the strain-rate magnitude: form the ridging term.
+        let Some(d) = divu.as_ref() else {
+            return Err(NetcdfError::Units {
+                path: path.to_path_buf(),
+                var: "shear".into(),
+                units: "%/day".into(),
+                extra: ": CICE's shear strain rate needs `divu` to form the ridging shear \
+                        term"
+                    .into(),
+            });
+        };
+        for (x, &dv) in s.iter_mut().zip(d) {
+            *x = deformation_terms(dv, percent_per_day_to_per_second(*x)).1;
+        }
+    }
+    Ok((divu, shear))
 }
 
 /// Reads a gridded thickness distribution (see the module documentation for the layout).
@@ -323,11 +422,12 @@ pub fn read_itd(path: &Path) -> Result<ItdGrid, NetcdfError> {
                 || aice0.as_ref().is_some_and(|a| is_fill(a[c], a0fill)))
         })
         .collect();
+    let (divu, shear) = read_deformation(path, &file, &spatial)?;
     let grid = ItdGrid {
         ncat_dim: ad[0].0.clone(),
         aice0,
-        divu: read_spatial(path, &file, "divu", &spatial)?,
-        shear: read_spatial(path, &file, "shear", &spatial)?,
+        divu,
+        shear,
         spatial_dims: spatial,
         aicen,
         vicen,

@@ -15,16 +15,24 @@
 
 pub mod bounds;
 pub mod cf;
+mod cleanup;
 mod lanes;
 pub mod params;
 pub mod participation;
 pub mod redistribution;
+pub mod ridge_step;
 pub mod ridging;
 pub mod strength;
+pub mod tracers;
 
 pub use bounds::{CategoryBounds, category_bounds};
 pub use cf::{Cf, CfLookup, CfPreset, CfProvider, CfTable};
 pub use params::{ItdParams, Participation, Redistribution, StrengthFormula};
+pub use ridge_step::{
+    Closing, ColumnMut, OceanFluxes, RidgeStepOptions, RidgeStepParams, SaltFlux, StepDiagnostics,
+    StepForcing, StepWorkspace, deformation_terms, percent_per_day_to_per_second,
+    ridge_step_column,
+};
 pub use ridging::{
     RidgeDiagnostics, RidgeForcing, RidgeOptions, RidgeRatesMut, ridge_batch, ridge_batch_masked,
     ridge_column,
@@ -33,6 +41,7 @@ pub use strength::{
     BatchSummary, ColumnStrength, StrengthOptions, strength_batch, strength_batch_masked,
     strength_column,
 };
+pub use tracers::{CiceTracerFlags, TracerBase, TracerField, TracerLayout, TracerRole};
 
 /// What is wrong with one column (no column index: see [`ItdError::Column`]).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -97,6 +106,43 @@ pub enum ColumnError {
         niter: usize,
         /// Total area left.
         total: f64,
+    },
+    /// A step of the ridging or clean-up found a state Icepack aborts on (named by the
+    /// Icepack routine), e.g. more area to move than a category holds.
+    #[error("{routine}: {what}{} ({value})", cat_suffix(*.category))]
+    StepFailed {
+        /// Icepack routine whose check failed (`ridge_shift`, `shift_ice`, ...).
+        routine: &'static str,
+        /// What failed.
+        what: &'static str,
+        /// Category index (0-based) where it applies.
+        category: Option<usize>,
+        /// The offending value.
+        value: f64,
+    },
+    /// The step would leave a negative or non-finite area, volume, snow volume or flux
+    /// (where Icepack returns it; pressridge refuses and leaves the column unchanged).
+    #[error(
+        "ridging would leave {var}{} = {value} (negative or not finite); column unchanged",
+        cat_suffix(*.category)
+    )]
+    Unphysical {
+        /// Variable name.
+        var: &'static str,
+        /// Category index (0-based) for per-category variables.
+        category: Option<usize>,
+        /// The value the step would have produced.
+        value: f64,
+    },
+    /// A tracer value is NaN or infinite (input, or produced by the step).
+    #[error("tracer {tracer} of category {category} is not finite ({value})")]
+    TracerNotFinite {
+        /// Tracer index (0-based) in the layout.
+        tracer: usize,
+        /// Category index (0-based).
+        category: usize,
+        /// The offending value.
+        value: f64,
     },
     /// More open water was removed than existed (cannot happen for valid input; CICE aborts).
     #[error("ridging removed more open water than existed (aice0 = {aice0})")]

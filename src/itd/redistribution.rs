@@ -129,12 +129,22 @@ pub fn category_fractions(
                 } else {
                     let hl = f64::max(hi1, h_lo);
                     let hr = h_hi;
-                    let expl = (-f64::min((hl - hi1) / hexp, params.exp_argmax)).exp();
-                    let expr = (-f64::min((hr - hi1) / hexp, params.exp_argmax)).exp();
-                    (
-                        expl - expr,
-                        ((hl + hexp) * expl - (hr + hexp) * expr) / (hi1 + hexp),
-                    )
+                    let argl = f64::min((hl - hi1) / hexp, params.exp_argmax);
+                    let argr = f64::min((hr - hi1) / hexp, params.exp_argmax);
+                    let expl = (-argl).exp();
+                    let expr = (-argr).exp();
+                    let farea = expl - expr;
+                    let fvol = ((hl + hexp) * expl - (hr + hexp) * expr) / (hi1 + hexp);
+                    // pressridge: beyond the exp_argmax cut-off both exponentials are e^-100
+                    // and Icepack's volume fraction becomes a negative e^-100 residue, which
+                    // makes empty categories' volume negative. Nothing lands there.
+                    if argl >= params.exp_argmax {
+                        (farea, 0.0)
+                    } else if argr >= params.exp_argmax {
+                        (farea, f64::max(fvol, 0.0))
+                    } else {
+                        (farea, fvol)
+                    }
                 }
             } else {
                 let hl = f64::max(hi1, h_lo);
@@ -154,4 +164,70 @@ pub fn net_to_gross(apartic: &[f64], krdg: &[f64]) -> f64 {
         aksum += a * (1.0 - 1.0 / k);
     }
     aksum
+}
+
+/// [`category_fractions`] for every receiving category at once: `farea[nr]`, `fvol[nr]`
+/// (dimensionless) for the bounds `hin_max[0..=ncat]` (m), the top one replaced by `top`.
+/// Same numbers to the bit; the exponential form evaluates one exponential per bound instead
+/// of two per category (the right end of one category is the left end of the next).
+pub fn category_fractions_all(
+    kind: Redistribution,
+    params: &ItdParams,
+    g: &RidgeGeometry,
+    hin_max: &[f64],
+    top: f64,
+    farea: &mut [f64],
+    fvol: &mut [f64],
+) {
+    let ncat = farea.len();
+    match kind {
+        Redistribution::Uniform => {
+            for nr in 0..ncat {
+                let h_hi = if nr + 1 == ncat { top } else { hin_max[nr + 1] };
+                (farea[nr], fvol[nr]) =
+                    category_fractions(kind, params, g, hin_max[nr], h_hi, nr + 1 == ncat);
+            }
+        }
+        Redistribution::Exponential => {
+            let hi1 = g.hrmin;
+            let hexp = g.hrexp;
+            let cap = params.exp_argmax;
+            // Left end of category nr: argument and exponential at max(hi1, hin_max[nr]).
+            let left = |b: usize| -> (f64, f64, f64) {
+                let hl = f64::max(hi1, hin_max[b]);
+                let arg = f64::min((hl - hi1) / hexp, cap);
+                // exp(-0) = 1 exactly: skip the call for bounds below the ridges.
+                (hl, arg, if arg == 0.0 { 1.0 } else { (-arg).exp() })
+            };
+            let (mut hl, mut argl, mut expl) = left(0);
+            for nr in 0..ncat {
+                if nr + 1 == ncat {
+                    farea[nr] = expl;
+                    fvol[nr] = (hl + hexp) * expl / (hi1 + hexp);
+                    break;
+                }
+                let hr = hin_max[nr + 1];
+                let next = left(nr + 1);
+                if hi1 >= hr {
+                    farea[nr] = 0.0;
+                    fvol[nr] = 0.0;
+                } else {
+                    // hr > hi1, so the next left end is hr itself: its exponential is this
+                    // category's right one.
+                    let (argr, expr) = (next.1, next.2);
+                    let fa = expl - expr;
+                    let fv = ((hl + hexp) * expl - (hr + hexp) * expr) / (hi1 + hexp);
+                    farea[nr] = fa;
+                    fvol[nr] = if argl >= cap {
+                        0.0
+                    } else if argr >= cap {
+                        f64::max(fv, 0.0)
+                    } else {
+                        fv
+                    };
+                }
+                (hl, argl, expl) = next;
+            }
+        }
+    }
 }

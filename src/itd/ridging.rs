@@ -19,6 +19,7 @@ use super::bounds::validate_bounds;
 use super::params::{ItdParams, Participation, Redistribution};
 use super::participation::participation_cached;
 use super::redistribution::{RidgeGeometry, category_fractions, net_to_gross, ridge_geometry};
+use super::ridge_step::asum_ridging;
 use super::{ColumnError, ItdError, Workspace, check_column, check_len};
 
 /// Options of the ridging step; the default is CICE's (exponential, exponential).
@@ -84,10 +85,12 @@ pub fn ridge_column(
     let ncat = ws.ncat;
     assert!(aicen.len() == ncat && vicen.len() == ncat && hin_max.len() == ncat + 1);
     let p = &opts.params;
-    let sum = check_column(aicen, vicen, Some(*aice0))?;
+    check_column(aicen, vicen, Some(*aice0))?;
     check_forcing(&forcing)?;
     let dt = forcing.dt;
-    let mut asum = *aice0 + sum;
+    // Icepack's `asum_ridging` order (open water first, then each category): another order
+    // changes aice0 and the opening rate in the last bit.
+    let mut asum = asum_ridging(aicen, *aice0);
     if asum > p.max_area_before_ridging {
         return Err(ColumnError::AreaTooLarge {
             total: asum,
@@ -211,7 +214,7 @@ pub fn ridge_column(
         }
 
         // Total area after this pass.
-        asum = *aice0 + aicen.iter().sum::<f64>();
+        asum = asum_ridging(aicen, *aice0);
         if (asum - 1.0).abs() < p.puny {
             break;
         }

@@ -24,10 +24,13 @@ pub struct Args {
     /// Time step (s, > 0).
     #[arg(long, allow_negative_numbers = true)]
     pub dt: f64,
-    /// Convergence rate (1/s, >= 0) for every column; default: max(-divu, 0) from the file.
+    /// Convergence rate (1/s, >= 0) for every column; default: max(-divu, 0) from the file
+    /// (`divu` in s-1, or CICE history %/day, converted; other units are refused).
     #[arg(long, allow_negative_numbers = true)]
     pub convergence: Option<f64>,
-    /// Shear term (1/s, >= 0) for every column; default: `shear` from the file, else 0.
+    /// Shear term (1/s, >= 0) for every column; default: from the file's `shear` (s-1: the
+    /// term itself; CICE history %/day: the strain rate, converted, term formed with divu),
+    /// else 0.
     #[arg(long, allow_negative_numbers = true)]
     pub shear: Option<f64>,
     /// Participation function.

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Opt-in side-by-side benchmark of the complete ridging step against Icepack.
+#
+#   fortran-bridge/bench/icepack/run.sh /path/to/Icepack [NCOL]
+#
+# Builds Icepack's columnphysics/*.F90 from YOUR checkout (github.com/CICE-Consortium/Icepack;
+# nothing of Icepack is in this repository) with gfortran -O2 -ffree-line-length-none, the
+# pressridge Fortran module and bench_icepack_ridge.f90 into $BUILD (default
+# fortran-bridge/build/icepack-bench), links target/release/libpressridge.so
+# (cargo build --release --lib) and runs it. Prints ns per cell for Icepack per cell,
+# pressridge per cell and pressridge batched, on the same columns in the same run.
+set -euo pipefail
+if [ $# -lt 1 ] || [ ! -d "$1/columnphysics" ]; then
+  echo "usage: $0 ICEPACK_SOURCE_DIR [NCOL]  (the directory holding columnphysics/)" >&2
+  exit 2
+fi
+SRC=$(cd "$1" && pwd)
+NCOL=${2:-100000}
+HERE=$(cd "$(dirname "$0")" && pwd)
+ROOT=$(cd "$HERE/../../.." && pwd)
+BUILD=${BUILD:-$ROOT/fortran-bridge/build/icepack-bench}
+FC=${FC:-gfortran}
+FFLAGS="-O2 -ffree-line-length-none"
+mkdir -p "$BUILD"
+cd "$BUILD"
+# Icepack's modules depend on each other: compile until every file has compiled.
+todo=("$SRC"/columnphysics/*.F90)
+for pass in $(seq 1 ${#todo[@]}); do
+  left=()
+  for f in "${todo[@]}"; do
+    o=$(basename "${f%.F90}").o
+    $FC $FFLAGS -c "$f" -o "$o" 2>/dev/null || left+=("$f")
+  done
+  todo=("${left[@]+"${left[@]}"}")
+  [ ${#todo[@]} -eq 0 ] && break
+done
+if [ ${#todo[@]} -ne 0 ]; then
+  echo "could not compile: ${todo[*]}" >&2
+  $FC $FFLAGS -c "${todo[0]}" -o /dev/null
+  exit 1
+fi
+LIB=$ROOT/target/release
+[ -f "$LIB/libpressridge.so" ] || (cd "$ROOT" && cargo build --release --lib)
+$FC -O2 -c "$ROOT/fortran-bridge/pressridge.f90" -o pressridge.o
+$FC -O2 -ffree-line-length-none -c "$HERE/bench_icepack_ridge.f90" -o bench_icepack_ridge.o
+$FC -o bench_icepack_ridge bench_icepack_ridge.o pressridge.o icepack_*.o \
+  -L"$LIB" -lpressridge -Wl,-rpath,"$LIB"
+./bench_icepack_ridge "$NCOL"

@@ -1,0 +1,821 @@
+//! The complete ridging step (snow, tracers, ocean fluxes; `crate::itd::ridge_step`) through
+//! the C ABI: a [`PressridgeRidger`] handle holds the tracer layout and the options, made once
+//! at initialisation; then one call per cell (`pressridge_ridge_cell`, the argument list of
+//! Icepack's `icepack_step_ridge`) or one call per block of cells (`pressridge_ridge_cells`).
+
+// Per-category and per-tracer tables are indexed by number, as in Icepack.
+#![allow(clippy::needless_range_loop)]
+
+use std::cell::RefCell;
+
+use super::itd::PressridgeOptions;
+use super::layout::{Region, check_disjoint, check_ptr};
+use super::{FfiError, FfiResult, PRESSRIDGE_ERR_BAD_SIZE, PRESSRIDGE_ERR_BAD_VALUE, guard, put};
+use crate::itd::{
+    CiceTracerFlags, Closing, ColumnMut, ItdError, OceanFluxes, RidgeStepOptions, RidgeStepParams,
+    SaltFlux, StepDiagnostics, StepForcing, StepWorkspace, TracerLayout, ridge_step_column,
+};
+
+/// Tracer flag: ice age `iage` (s, on ice volume), Icepack `tr_iage`.
+pub const PRESSRIDGE_TRACER_AGE: i32 = 1;
+/// Tracer flag: first-year ice fraction `FY` (on area), Icepack `tr_FY`.
+pub const PRESSRIDGE_TRACER_FIRST_YEAR: i32 = 2;
+/// Tracer flag: level-ice area and volume fractions `alvl`, `vlvl`, Icepack `tr_lvl`.
+pub const PRESSRIDGE_TRACER_LEVEL_ICE: i32 = 4;
+/// Tracer flag: level-ice melt ponds `apnd`, `hpnd`, `ipnd`, Icepack `tr_pond_lvl` (needs
+/// `PRESSRIDGE_TRACER_LEVEL_ICE`).
+pub const PRESSRIDGE_TRACER_PONDS: i32 = 8;
+
+/// Thermodynamic constants and clean-up thresholds of the ridging step (the fields of
+/// `pressridge::itd::RidgeStepParams`; Icepack's defaults from
+/// [`pressridge_step_params_default`]).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PressridgeStepParams {
+    /// Snow density (kg/m³), Icepack `rhos` = 330.
+    pub rhos: f64,
+    /// Latent heat of melting of fresh ice (J/kg), Icepack `Lfresh` = 3.34e5.
+    pub lfresh: f64,
+    /// Specific heat of fresh ice (J kg⁻¹ K⁻¹), Icepack `cp_ice` = 2106.
+    pub cp_ice: f64,
+    /// Fraction of the snow on ridging ice kept on the ridge (1), Icepack `fsnowrdg` = 0.5.
+    pub fsnowrdg: f64,
+    /// Salinity of zapped ice with the constant salt flux (ppt), Icepack 4.
+    pub ice_ref_salinity: f64,
+    /// 0: zapped ice carries `ice_ref_salinity` (Icepack `saltflux_option = "constant"`);
+    /// 1: its own salinity (`"prognostic"`).
+    pub salt_flux_prognostic: i32,
+    /// Cell ice area below which all ice is zapped (1), Icepack `itd_area_min` = 1e-11.
+    pub itd_area_min: f64,
+    /// Cell ice mass below which all ice is zapped (kg/m²), Icepack `itd_mass_min` = 1e-10.
+    pub itd_mass_min: f64,
+    /// Snow thickness above which snow temperatures are checked (m), Icepack `hs_min` = 1e-4.
+    pub hs_min: f64,
+    /// Lowest physical snow temperature (°C), Icepack `Tmin` = −100.
+    pub tmin: f64,
+}
+
+impl From<&RidgeStepParams> for PressridgeStepParams {
+    fn from(p: &RidgeStepParams) -> Self {
+        Self {
+            rhos: p.rhos,
+            lfresh: p.lfresh,
+            cp_ice: p.cp_ice,
+            fsnowrdg: p.fsnowrdg,
+            ice_ref_salinity: p.ice_ref_salinity,
+            salt_flux_prognostic: i32::from(p.salt_flux == SaltFlux::Prognostic),
+            itd_area_min: p.itd_area_min,
+            itd_mass_min: p.itd_mass_min,
+            hs_min: p.hs_min,
+            tmin: p.tmin,
+        }
+    }
+}
+
+impl PressridgeStepParams {
+    fn to_params(self) -> FfiResult<RidgeStepParams> {
+        let p = RidgeStepParams {
+            rhos: self.rhos,
+            lfresh: self.lfresh,
+            cp_ice: self.cp_ice,
+            fsnowrdg: self.fsnowrdg,
+            ice_ref_salinity: self.ice_ref_salinity,
+            salt_flux: match self.salt_flux_prognostic {
+                0 => SaltFlux::Constant,
+                1 => SaltFlux::Prognostic,
+                v => {
+                    return Err(FfiError::new(
+                        PRESSRIDGE_ERR_BAD_VALUE,
+                        format!("salt_flux_prognostic = {v}: must be 0 or 1"),
+                    ));
+                }
+            },
+            itd_area_min: self.itd_area_min,
+            itd_mass_min: self.itd_mass_min,
+            hs_min: self.hs_min,
+            tmin: self.tmin,
+        };
+        p.validate()?;
+        Ok(p)
+    }
+}
+
+/// Fills `*params` with Icepack's defaults.
+///
+/// # Safety
+/// `params` must be valid for one write.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pressridge_step_params_default(params: *mut PressridgeStepParams) -> i32 {
+    // SAFETY: `put` checks the pointer; validity is the caller's promise.
+    guard(|| unsafe {
+        put(
+            params,
+            PressridgeStepParams::from(&RidgeStepParams::default()),
+            "params",
+        )
+    })
+}
+
+/// A ridging set-up: number of categories, tracer layout and options. Immutable after
+/// [`pressridge_ridger_new`]; one handle may be used by several threads at once.
+#[derive(Debug)]
+pub struct PressridgeRidger {
+    ncat: usize,
+    layout: TracerLayout,
+    opts: RidgeStepOptions,
+}
+
+fn bad_value(msg: String) -> FfiError {
+    FfiError::new(PRESSRIDGE_ERR_BAD_VALUE, msg)
+}
+
+/// Makes a ridging set-up for `ncat` categories and the CICE tracer layout with `nilyr` ice
+/// and `nslyr` snow layers (both ≥ 1) and the optional tracers of `tracer_flags` (a sum of
+/// `PRESSRIDGE_TRACER_*`), in Icepack's order: `Tsfc`, `qice(nilyr)`, `qsno(nslyr)`,
+/// `sice(nilyr)`, `iage`, `FY`, `alvl`, `vlvl`, `apnd`, `hpnd`, `ipnd`. `options` (null: CICE
+/// defaults) gives the participation, redistribution and ridging parameters (its strength
+/// fields are not used), `step_params` (null: Icepack defaults) the thermodynamic constants;
+/// `cleanup` and `rebin` are Icepack's `docleanup`, `dorebin` (nonzero = true). Writes the
+/// handle to `*ridger`; release it with [`pressridge_ridger_free`].
+///
+/// # Safety
+/// `options` and `step_params` must be null or valid; `ridger` valid for one write.
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn pressridge_ridger_new(
+    ncat: i64,
+    nilyr: i64,
+    nslyr: i64,
+    tracer_flags: i32,
+    options: *const PressridgeOptions,
+    step_params: *const PressridgeStepParams,
+    cleanup: i32,
+    rebin: i32,
+    ridger: *mut *mut PressridgeRidger,
+) -> i32 {
+    // SAFETY: pointers checked before use; validity is the caller's promise.
+    guard(|| unsafe {
+        check_ptr(ridger, "ridger")?;
+        for (name, v) in [("ncat", ncat), ("nilyr", nilyr), ("nslyr", nslyr)] {
+            if !(1..=1 << 20).contains(&v) {
+                return Err(FfiError::new(
+                    PRESSRIDGE_ERR_BAD_SIZE,
+                    format!("{name} = {v}: must be at least 1"),
+                ));
+            }
+        }
+        if tracer_flags & !15 != 0 {
+            return Err(bad_value(format!(
+                "tracer_flags = {tracer_flags}: only PRESSRIDGE_TRACER_* (1, 2, 4, 8) may be set"
+            )));
+        }
+        let flags = CiceTracerFlags {
+            age: tracer_flags & PRESSRIDGE_TRACER_AGE != 0,
+            first_year: tracer_flags & PRESSRIDGE_TRACER_FIRST_YEAR != 0,
+            level_ice: tracer_flags & PRESSRIDGE_TRACER_LEVEL_ICE != 0,
+            ponds: tracer_flags & PRESSRIDGE_TRACER_PONDS != 0,
+        };
+        let layout = TracerLayout::cice(nilyr as usize, nslyr as usize, flags)?;
+        let o = PressridgeOptions::from_ptr(options)?;
+        let ro = o.ridge_options()?;
+        let step = if step_params.is_null() {
+            RidgeStepParams::default()
+        } else {
+            check_ptr(step_params, "step_params")?;
+            (*step_params).to_params()?
+        };
+        let opts = RidgeStepOptions {
+            participation: ro.participation,
+            redistribution: ro.redistribution,
+            params: ro.params,
+            step,
+            cleanup: cleanup != 0,
+            rebin: rebin != 0,
+        };
+        let h = Box::new(PressridgeRidger {
+            ncat: ncat as usize,
+            layout,
+            opts,
+        });
+        ridger.write(Box::into_raw(h));
+        Ok(())
+    })
+}
+
+/// Releases a handle of [`pressridge_ridger_new`] (null is allowed and does nothing).
+///
+/// # Safety
+/// `ridger` must come from `pressridge_ridger_new`, not be in use, and not be freed twice.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pressridge_ridger_free(ridger: *mut PressridgeRidger) -> i32 {
+    // SAFETY: ownership returns from the caller, as documented.
+    guard(|| unsafe {
+        if !ridger.is_null() {
+            drop(Box::from_raw(ridger));
+        }
+        Ok(())
+    })
+}
+
+unsafe fn ridger_ref<'a>(r: *const PressridgeRidger) -> FfiResult<&'a PressridgeRidger> {
+    check_ptr(r, "ridger")?;
+    // SAFETY: non-null, aligned; validity is the caller's promise.
+    Ok(unsafe { &*r })
+}
+
+/// The tracer layout of a set-up, as Icepack's arrays: `*ntrcr` (tracers per category), and
+/// where not null, for each tracer (arrays of `ntrcr_len` ≥ ntrcr elements; the two 2-D ones
+/// Fortran-ordered `(ntrcr_len, 3)` and `(ntrcr_len, 2)`): `trcr_depend` (0 area, 1 ice volume,
+/// 2 snow volume, 2 + nt for tracer nt, 1-based), `trcr_base` (1 in the column of its base),
+/// `n_trcr_strata` and `nt_strata` (1-based tracer indices, 0 = none).
+///
+/// # Safety
+/// Non-null pointers must be valid for the writes described.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pressridge_ridger_tracers(
+    ridger: *const PressridgeRidger,
+    ntrcr: *mut i64,
+    ntrcr_len: i64,
+    trcr_depend: *mut i32,
+    trcr_base: *mut f64,
+    n_trcr_strata: *mut i32,
+    nt_strata: *mut i32,
+) -> i32 {
+    // SAFETY: pointers checked; validity is the caller's promise.
+    guard(|| unsafe {
+        let r = ridger_ref(ridger)?;
+        let l = &r.layout;
+        let nt = l.ntrcr();
+        put(ntrcr, nt as i64, "ntrcr")?;
+        let any = [
+            trcr_depend.is_null(),
+            trcr_base.is_null(),
+            n_trcr_strata.is_null(),
+            nt_strata.is_null(),
+        ]
+        .iter()
+        .any(|n| !n);
+        if !any {
+            return Ok(());
+        }
+        if ntrcr_len < nt as i64 {
+            return Err(FfiError::new(
+                PRESSRIDGE_ERR_BAD_SIZE,
+                format!("ntrcr_len = {ntrcr_len}: the layout has {nt} tracers"),
+            ));
+        }
+        let len = ntrcr_len as usize;
+        let dep = l.trcr_depend();
+        let base = l.base_codes();
+        let strata = l.strata_one_based();
+        for it in 0..nt {
+            if !trcr_depend.is_null() {
+                put(trcr_depend.add(it), dep[it], "trcr_depend")?;
+            }
+            if !trcr_base.is_null() {
+                for k in 0..3 {
+                    let v = if base[it] == k as i32 { 1.0 } else { 0.0 };
+                    put(trcr_base.add(it + k * len), v, "trcr_base")?;
+                }
+            }
+            if !n_trcr_strata.is_null() {
+                let n = strata[it].iter().filter(|s| **s > 0).count() as i32;
+                put(n_trcr_strata.add(it), n, "n_trcr_strata")?;
+            }
+            if !nt_strata.is_null() {
+                for k in 0..2 {
+                    put(nt_strata.add(it + k * len), strata[it][k], "nt_strata")?;
+                }
+            }
+        }
+        Ok(())
+    })
+}
+
+/// First tracer index (0-based) and number of levels of the tracer field `name` (`len`
+/// bytes of UTF-8: `Tsfc`, `qice`, `qsno`, `sice`, `iage`, `FY`, `alvl`, `vlvl`, `apnd`,
+/// `hpnd`, `ipnd`); `PRESSRIDGE_ERR_NOT_FOUND` when the layout has no such field.
+///
+/// # Safety
+/// `name` valid for `len` bytes; `start`, `levels` valid for one write each.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pressridge_ridger_tracer_field(
+    ridger: *const PressridgeRidger,
+    name: *const u8,
+    len: i64,
+    start: *mut i64,
+    levels: *mut i64,
+) -> i32 {
+    // SAFETY: pointers checked; validity is the caller's promise.
+    guard(|| unsafe {
+        let r = ridger_ref(ridger)?;
+        check_ptr(name, "name")?;
+        if len < 0 {
+            return Err(FfiError::new(PRESSRIDGE_ERR_BAD_SIZE, "len < 0"));
+        }
+        let s = std::str::from_utf8(std::slice::from_raw_parts(name, len as usize))
+            .map_err(|e| FfiError::new(super::PRESSRIDGE_ERR_PARSE, e.to_string()))?;
+        let (a, b) = r.layout.field(s).ok_or_else(|| {
+            FfiError::new(
+                super::PRESSRIDGE_ERR_NOT_FOUND,
+                format!("no tracer field {s} in this layout"),
+            )
+        })?;
+        put(start, a as i64, "start")?;
+        put(levels, b as i64, "levels")
+    })
+}
+
+/// Fluxes to the ocean of one cell; the ridging step **adds** to them (as Icepack adds to
+/// its arguments), except `dpnd_ridge`, which it overwrites.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct PressridgeOceanFluxes {
+    /// Fresh water into the ocean (kg m⁻² s⁻¹, averaged over `ndtd·dt`), Icepack `fresh`.
+    pub fresh: f64,
+    /// Salt into the ocean (kg m⁻² s⁻¹), Icepack `fsalt`.
+    pub fsalt: f64,
+    /// Heat flux to the ocean (W m⁻², negative: the ocean melts what it receives), `fhocn`.
+    pub fhocn: f64,
+    /// Pond water lost by ridging, with sign (m over the cell, per step), Icepack `fpond`.
+    pub fpond: f64,
+    /// Pond water drained by ridging (m over the cell, per step), Icepack `dpnd_ridge`.
+    pub dpnd_ridge: f64,
+}
+
+/// Cell diagnostics of one ridging step (all written).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct PressridgeStepDiagnostics {
+    /// Net closing rate of the first pass (1/s).
+    pub closing: f64,
+    /// Opening rate of the last pass (1/s), Icepack `opening`.
+    pub opening: f64,
+    /// Area of ridging ice per unit time (1/s), `dardg1dt`.
+    pub dardg1dt: f64,
+    /// Area of new ridges per unit time (1/s), `dardg2dt`.
+    pub dardg2dt: f64,
+    /// Volume of ridging ice per unit time (m/s), `dvirdgdt`.
+    pub dvirdgdt: f64,
+    /// Ice volume put into the ocean (m over the cell).
+    pub ice_to_ocean: f64,
+    /// Snow volume put into the ocean (m over the cell).
+    pub snow_to_ocean: f64,
+    /// Ridging passes.
+    pub niter: i64,
+}
+
+impl From<&StepDiagnostics> for PressridgeStepDiagnostics {
+    fn from(d: &StepDiagnostics) -> Self {
+        Self {
+            closing: d.closing,
+            opening: d.opening,
+            dardg1dt: d.dardg1dt,
+            dardg2dt: d.dardg2dt,
+            dvirdgdt: d.dvirdgdt,
+            ice_to_ocean: d.ice_to_ocean,
+            snow_to_ocean: d.snow_to_ocean,
+            niter: d.niter as i64,
+        }
+    }
+}
+
+/// Per-category diagnostics of one cell (Icepack's names and units); each pointer may be
+/// null (not returned) or point to `ncat` values.
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct PressridgeCategoryDiagnostics {
+    /// Area of ridging ice per unit time, last pass the category ridged (1/s).
+    pub dardg1ndt: *mut f64,
+    /// Area of new ridges per unit time (1/s).
+    pub dardg2ndt: *mut f64,
+    /// Volume of ridging ice per unit time (m/s).
+    pub dvirdgndt: *mut f64,
+    /// Participation function, last pass (1).
+    pub aparticn: *mut f64,
+    /// Mean ridge thickness / ridging-ice thickness, last pass (1).
+    pub krdgn: *mut f64,
+    /// Rafted new-ridge area per step (1).
+    pub araftn: *mut f64,
+    /// Rafting ice volume per step (m).
+    pub vraftn: *mut f64,
+    /// New-ridge area from category 1 landing in each category, per step (1).
+    pub aredistn: *mut f64,
+    /// New-ridge volume from category 1 landing in each category, per step (m).
+    pub vredistn: *mut f64,
+    /// Set to 1 for categories emptied by the clean-up (Icepack `first_ice`), else unchanged.
+    pub first_ice: *mut i32,
+}
+
+struct StepScratch {
+    ws: StepWorkspace,
+}
+
+thread_local! {
+    static STEP_SCRATCH: RefCell<Option<StepScratch>> = const { RefCell::new(None) };
+}
+
+fn with_step_scratch<T>(ncat: usize, ntrcr: usize, f: impl FnOnce(&mut StepWorkspace) -> T) -> T {
+    STEP_SCRATCH.with(|cell| {
+        let mut slot = cell.borrow_mut();
+        if slot
+            .as_ref()
+            .is_none_or(|s| s.ws.ncat() != ncat || s.ws.ntrcr() != ntrcr)
+        {
+            *slot = Some(StepScratch {
+                ws: StepWorkspace::new(ncat, ntrcr),
+            });
+        }
+        f(&mut slot.as_mut().expect("just filled").ws)
+    })
+}
+
+unsafe fn slice_mut<'a>(p: *mut f64, n: usize, what: &str) -> FfiResult<&'a mut [f64]> {
+    check_ptr(p, what)?;
+    // SAFETY: non-null, aligned; length is the caller's promise.
+    Ok(unsafe { std::slice::from_raw_parts_mut(p, n) })
+}
+
+unsafe fn slice<'a>(p: *const f64, n: usize, what: &str) -> FfiResult<&'a [f64]> {
+    check_ptr(p, what)?;
+    // SAFETY: non-null, aligned; length is the caller's promise.
+    Ok(unsafe { std::slice::from_raw_parts(p, n) })
+}
+
+/// Writes the per-category diagnostics of `ws` where the caller asked for them.
+unsafe fn put_categories(
+    c: &PressridgeCategoryDiagnostics,
+    ws: &StepWorkspace,
+    ncat: usize,
+) -> FfiResult<()> {
+    for (p, v, name) in [
+        (c.dardg1ndt, &ws.dardg1ndt, "dardg1ndt"),
+        (c.dardg2ndt, &ws.dardg2ndt, "dardg2ndt"),
+        (c.dvirdgndt, &ws.dvirdgndt, "dvirdgndt"),
+        (c.aparticn, &ws.aparticn, "aparticn"),
+        (c.krdgn, &ws.krdgn, "krdgn"),
+        (c.araftn, &ws.araftn, "araftn"),
+        (c.vraftn, &ws.vraftn, "vraftn"),
+        (c.aredistn, &ws.aredistn, "aredistn"),
+        (c.vredistn, &ws.vredistn, "vredistn"),
+    ] {
+        if !p.is_null() {
+            // SAFETY: as `slice_mut`.
+            unsafe { slice_mut(p, ncat, name)? }.copy_from_slice(v);
+        }
+    }
+    if !c.first_ice.is_null() {
+        check_ptr(c.first_ice, "first_ice")?;
+        for (n, z) in ws.zapped.iter().enumerate() {
+            if *z {
+                // SAFETY: checked pointer, `ncat` elements promised.
+                unsafe { c.first_ice.add(n).write(1) };
+            }
+        }
+    }
+    Ok(())
+}
+
+/// One ridging step of one grid cell, in place: Icepack's `icepack_step_ridge` (ridging with
+/// snow, tracers and ocean fluxes, then the clean-up), see `docs/strength.md`.
+///
+/// - `dt` (s, > 0), `ndtd` (≥ 1: fluxes are averaged over `ndtd·dt`), `tf` freezing
+///   temperature (°C) for emptied categories;
+/// - `hin_max`: `ncat + 1` category bounds (m), in/out: with `closing` null its last value is
+///   set to `params.big` (as Icepack does);
+/// - `rdg_conv`, `rdg_shear` (1/s, ≥ 0): Icepack's deformation terms, used when `closing` is
+///   null (CICE convention);
+/// - `closing` (1/s): null, or the host's net closing rate (SIS2 convention), with the
+///   opening rate in `*opening`;
+/// - `opening` (1/s, may be null when `closing` is null): out: the opening rate of the last
+///   ridging pass;
+/// - in/out state: `aicen`, `vicen`, `vsnon` (`ncat` each; 1, m, m), `trcrn` (`ntrcr·ncat`,
+///   Fortran `trcrn(ntrcr, ncat)`), `aice0`, `aice` (1; `aice` is recomputed by the clean-up);
+/// - `fluxes` (may be null): added to; `diag`, `categories` (may be null): written.
+///
+/// On error (bad input, or a state where Icepack aborts or would return a negative area,
+/// volume or snow volume) the cell and the fluxes are unchanged and the message says why.
+///
+/// # Safety
+/// Every non-null pointer must be valid for the reads and writes described.
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn pressridge_ridge_cell(
+    ridger: *const PressridgeRidger,
+    dt: f64,
+    ndtd: i32,
+    hin_max: *mut f64,
+    rdg_conv: f64,
+    rdg_shear: f64,
+    closing: *const f64,
+    opening: *mut f64,
+    aicen: *mut f64,
+    trcrn: *mut f64,
+    vicen: *mut f64,
+    vsnon: *mut f64,
+    aice0: *mut f64,
+    aice: *mut f64,
+    tf: f64,
+    fluxes: *mut PressridgeOceanFluxes,
+    diag: *mut PressridgeStepDiagnostics,
+    categories: *const PressridgeCategoryDiagnostics,
+) -> i32 {
+    // SAFETY: pointers checked before use; validity is the caller's promise.
+    guard(|| unsafe {
+        let r = ridger_ref(ridger)?;
+        let (ncat, nt) = (r.ncat, r.layout.ntrcr());
+        if ndtd < 1 {
+            return Err(bad_value(format!("ndtd = {ndtd}: must be >= 1")));
+        }
+        let hin = slice_mut(hin_max, ncat + 1, "hin_max")?;
+        let mode = if closing.is_null() {
+            Closing::Deformation {
+                convergence: rdg_conv,
+                shear: rdg_shear,
+            }
+        } else {
+            check_ptr(closing, "closing")?;
+            check_ptr(opening, "opening")?;
+            Closing::Rates {
+                closing: *closing,
+                opening: *opening,
+            }
+        };
+        check_ptr(aice0, "aice0")?;
+        check_ptr(aice, "aice")?;
+        check_disjoint(
+            &[
+                Region::new(hin_max, ncat + 1, "hin_max"),
+                Region::new(aicen, ncat, "aicen"),
+                Region::new(vicen, ncat, "vicen"),
+                Region::new(vsnon, ncat, "vsnon"),
+                Region::new(trcrn, ncat * nt, "trcrn"),
+                Region::new(aice0, 1, "aice0"),
+                Region::new(aice, 1, "aice"),
+                Region::new(opening, 1, "opening"),
+            ],
+            &[Region::new(closing, 1, "closing")],
+        )?;
+        let mut col = ColumnMut {
+            aicen: slice_mut(aicen, ncat, "aicen")?,
+            vicen: slice_mut(vicen, ncat, "vicen")?,
+            vsnon: slice_mut(vsnon, ncat, "vsnon")?,
+            trcrn: slice_mut(trcrn, ncat * nt, "trcrn")?,
+            aice0: &mut *aice0,
+            aice: &mut *aice,
+        };
+        let forcing = StepForcing {
+            closing: mode,
+            dt,
+            ndtd: ndtd as u32,
+            tf,
+        };
+        let mut fl = if fluxes.is_null() {
+            OceanFluxes::default()
+        } else {
+            check_ptr(fluxes, "fluxes")?;
+            let f = *fluxes;
+            OceanFluxes {
+                fresh: f.fresh,
+                fsalt: f.fsalt,
+                fhocn: f.fhocn,
+                fpond: f.fpond,
+                dpnd_ridge: f.dpnd_ridge,
+            }
+        };
+        with_step_scratch(ncat, nt, |ws| -> FfiResult<()> {
+            let d = ridge_step_column(&mut col, hin, forcing, &r.opts, &r.layout, &mut fl, ws)
+                .map_err(|source| FfiError::from(ItdError::Column { column: 0, source }))?;
+            hin[ncat] = d.hin_max_top;
+            if !opening.is_null() {
+                put(opening, d.opening, "opening")?;
+            }
+            if !fluxes.is_null() {
+                fluxes.write(PressridgeOceanFluxes {
+                    fresh: fl.fresh,
+                    fsalt: fl.fsalt,
+                    fhocn: fl.fhocn,
+                    fpond: fl.fpond,
+                    dpnd_ridge: fl.dpnd_ridge,
+                });
+            }
+            if !diag.is_null() {
+                put(diag, PressridgeStepDiagnostics::from(&d), "diag")?;
+            }
+            if !categories.is_null() {
+                check_ptr(categories, "categories")?;
+                put_categories(&*categories, ws, ncat)?;
+            }
+            Ok(())
+        })
+    })
+}
+
+/// Per-cell arrays of [`pressridge_ridge_cells`], each `ncol` values (column c at index c).
+/// Inputs may be null where stated; outputs may be null (not returned).
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct PressridgeCellArrays {
+    /// Icepack `rdg_conv` (1/s, ≥ 0); used when `closing` is null. Null: 0.
+    pub rdg_conv: *const f64,
+    /// Icepack `rdg_shear` (1/s, ≥ 0); used when `closing` is null. Null: 0.
+    pub rdg_shear: *const f64,
+    /// Host net closing rates (1/s); null for the CICE convention.
+    pub closing: *const f64,
+    /// Opening rate (1/s): input with `closing`; out: last pass's opening rate.
+    pub opening: *mut f64,
+    /// Freezing temperature (°C); null: −1.8 °C.
+    pub tf: *const f64,
+    /// Nonzero: step the cell; zero: leave it untouched. Null: every cell.
+    pub valid: *const i32,
+    /// Fresh-water flux (kg m⁻² s⁻¹), added to.
+    pub fresh: *mut f64,
+    /// Salt flux (kg m⁻² s⁻¹), added to.
+    pub fsalt: *mut f64,
+    /// Heat flux to the ocean (W m⁻²), added to.
+    pub fhocn: *mut f64,
+    /// Pond water lost by ridging (m, with sign), added to.
+    pub fpond: *mut f64,
+    /// Rate of area loss by ridging ice (1/s), written.
+    pub dardg1dt: *mut f64,
+    /// Rate of area gain by new ridges (1/s), written.
+    pub dardg2dt: *mut f64,
+    /// Rate of ice volume ridged (m/s), written.
+    pub dvirdgdt: *mut f64,
+}
+
+/// The ridging step of `ncol` cells in one call (arrays Fortran-ordered and contiguous:
+/// `aicen(ncat, ncol)`, `vicen`, `vsnon` likewise, `trcrn(ntrcr, ncat, ncol)`, `aice0(ncol)`,
+/// `aice(ncol)`; per-cell forcing and outputs in `cells`). `hin_max` (`ncat + 1` bounds, m)
+/// is shared and not modified (with `cells.closing` null the top bound used is
+/// `params.big`). Same semantics per cell as [`pressridge_ridge_cell`]. Stops at the first
+/// failing cell (its 0-based index in the error; earlier cells are stepped, it and later ones
+/// unchanged).
+///
+/// # Safety
+/// Every non-null pointer must be valid for the reads and writes described.
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn pressridge_ridge_cells(
+    ridger: *const PressridgeRidger,
+    ncol: i64,
+    dt: f64,
+    ndtd: i32,
+    hin_max: *const f64,
+    aicen: *mut f64,
+    trcrn: *mut f64,
+    vicen: *mut f64,
+    vsnon: *mut f64,
+    aice0: *mut f64,
+    aice: *mut f64,
+    cells: *const PressridgeCellArrays,
+) -> i32 {
+    // SAFETY: pointers checked before use; validity is the caller's promise.
+    guard(|| unsafe {
+        let r = ridger_ref(ridger)?;
+        let (ncat, nt) = (r.ncat, r.layout.ntrcr());
+        if ncol < 1 {
+            return Err(FfiError::new(
+                PRESSRIDGE_ERR_BAD_SIZE,
+                format!("ncol = {ncol}: must be at least 1"),
+            ));
+        }
+        if ndtd < 1 {
+            return Err(bad_value(format!("ndtd = {ndtd}: must be >= 1")));
+        }
+        let n = ncol as usize;
+        check_ptr(cells, "cells")?;
+        let c = *cells;
+        let hin = slice(hin_max, ncat + 1, "hin_max")?;
+        let written = [
+            Region::new(aicen, ncat * n, "aicen"),
+            Region::new(vicen, ncat * n, "vicen"),
+            Region::new(vsnon, ncat * n, "vsnon"),
+            Region::new(trcrn, nt * ncat * n, "trcrn"),
+            Region::new(aice0, n, "aice0"),
+            Region::new(aice, n, "aice"),
+            Region::new(c.opening, n, "cells.opening"),
+            Region::new(c.fresh, n, "cells.fresh"),
+            Region::new(c.fsalt, n, "cells.fsalt"),
+            Region::new(c.fhocn, n, "cells.fhocn"),
+            Region::new(c.fpond, n, "cells.fpond"),
+            Region::new(c.dardg1dt, n, "cells.dardg1dt"),
+            Region::new(c.dardg2dt, n, "cells.dardg2dt"),
+            Region::new(c.dvirdgdt, n, "cells.dvirdgdt"),
+        ];
+        let read = [
+            Region::new(hin_max, ncat + 1, "hin_max"),
+            Region::new(c.rdg_conv, n, "cells.rdg_conv"),
+            Region::new(c.rdg_shear, n, "cells.rdg_shear"),
+            Region::new(c.closing, n, "cells.closing"),
+            Region::new(c.tf, n, "cells.tf"),
+            Region::new(c.valid, n, "cells.valid"),
+        ];
+        check_disjoint(&written, &read)?;
+        let a = slice_mut(aicen, ncat * n, "aicen")?;
+        let v = slice_mut(vicen, ncat * n, "vicen")?;
+        let s = slice_mut(vsnon, ncat * n, "vsnon")?;
+        let t = slice_mut(trcrn, nt * ncat * n, "trcrn")?;
+        let a0 = slice_mut(aice0, n, "aice0")?;
+        let ai = slice_mut(aice, n, "aice")?;
+        let opt_in = |p: *const f64, what: &str| -> FfiResult<Option<&[f64]>> {
+            if p.is_null() {
+                Ok(None)
+            } else {
+                slice(p, n, what).map(Some)
+            }
+        };
+        let opt_out = |p: *mut f64, what: &str| -> FfiResult<Option<&mut [f64]>> {
+            if p.is_null() {
+                Ok(None)
+            } else {
+                slice_mut(p, n, what).map(Some)
+            }
+        };
+        let conv = opt_in(c.rdg_conv, "cells.rdg_conv")?;
+        let shear = opt_in(c.rdg_shear, "cells.rdg_shear")?;
+        let closing = opt_in(c.closing, "cells.closing")?;
+        let tf = opt_in(c.tf, "cells.tf")?;
+        let mut opening = opt_out(c.opening, "cells.opening")?;
+        if closing.is_some() && opening.is_none() {
+            return Err(FfiError::new(
+                super::PRESSRIDGE_ERR_NULL_POINTER,
+                "cells.opening is null: the host's opening rates are needed with cells.closing",
+            ));
+        }
+        let valid: Option<&[i32]> = if c.valid.is_null() {
+            None
+        } else {
+            check_ptr(c.valid, "cells.valid")?;
+            Some(std::slice::from_raw_parts(c.valid, n))
+        };
+        let mut outs = [
+            opt_out(c.fresh, "cells.fresh")?,
+            opt_out(c.fsalt, "cells.fsalt")?,
+            opt_out(c.fhocn, "cells.fhocn")?,
+            opt_out(c.fpond, "cells.fpond")?,
+        ];
+        let mut rates = [
+            opt_out(c.dardg1dt, "cells.dardg1dt")?,
+            opt_out(c.dardg2dt, "cells.dardg2dt")?,
+            opt_out(c.dvirdgdt, "cells.dvirdgdt")?,
+        ];
+        with_step_scratch(ncat, nt, |ws| -> FfiResult<()> {
+            for i in 0..n {
+                if valid.is_some_and(|m| m[i] == 0) {
+                    continue;
+                }
+                let mode = match (closing, &opening) {
+                    (Some(cl), Some(op)) => Closing::Rates {
+                        closing: cl[i],
+                        opening: op[i],
+                    },
+                    _ => Closing::Deformation {
+                        convergence: conv.map_or(0.0, |x| x[i]),
+                        shear: shear.map_or(0.0, |x| x[i]),
+                    },
+                };
+                let forcing = StepForcing {
+                    closing: mode,
+                    dt,
+                    ndtd: ndtd as u32,
+                    tf: tf.map_or(-1.8, |x| x[i]),
+                };
+                let mut fl = OceanFluxes {
+                    fresh: outs[0].as_ref().map_or(0.0, |x| x[i]),
+                    fsalt: outs[1].as_ref().map_or(0.0, |x| x[i]),
+                    fhocn: outs[2].as_ref().map_or(0.0, |x| x[i]),
+                    fpond: outs[3].as_ref().map_or(0.0, |x| x[i]),
+                    dpnd_ridge: 0.0,
+                };
+                let mut col = ColumnMut {
+                    aicen: &mut a[i * ncat..(i + 1) * ncat],
+                    vicen: &mut v[i * ncat..(i + 1) * ncat],
+                    vsnon: &mut s[i * ncat..(i + 1) * ncat],
+                    trcrn: &mut t[i * ncat * nt..(i + 1) * ncat * nt],
+                    aice0: &mut a0[i],
+                    aice: &mut ai[i],
+                };
+                let d = ridge_step_column(&mut col, hin, forcing, &r.opts, &r.layout, &mut fl, ws)
+                    .map_err(|source| FfiError::from(ItdError::Column { column: i, source }))?;
+                if let Some(op) = opening.as_mut() {
+                    op[i] = d.opening;
+                }
+                for (o, x) in outs
+                    .iter_mut()
+                    .zip([fl.fresh, fl.fsalt, fl.fhocn, fl.fpond])
+                {
+                    if let Some(o) = o {
+                        o[i] = x;
+                    }
+                }
+                for (o, x) in rates.iter_mut().zip([d.dardg1dt, d.dardg2dt, d.dvirdgdt]) {
+                    if let Some(o) = o {
+                        o[i] = x;
+                    }
+                }
+            }
+            Ok(())
+        })
+    })
+}

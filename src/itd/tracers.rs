@@ -1,0 +1,499 @@
+//! Tracer layout of a thickness category: which tracers a column carries, where each sits in
+//! the per-category tracer vector, and on what each is carried (its *base*: ice area, ice
+//! volume or snow volume, times the product of its *strata* tracers).
+//!
+//! This is the one Rust definition of the layout; the C ABI, the Fortran module, Python and
+//! the NetCDF reader all derive theirs from it. The CICE/Icepack layout
+//! ([`TracerLayout::cice`]) follows `icepack_tracers.F90` (`icepack_init_tracer_indices`,
+//! `icepack_init_tracer_flags`): surface temperature, ice enthalpy per layer, snow enthalpy per
+//! layer, ice salinity per layer, then the optional age, first-year fraction, level-ice area
+//! and volume fractions and the level-ice pond area, depth and lid. The conserved quantity of
+//! tracer `t` in category `n` is `t · base_n · Π strata_n` (e.g. pond depth is conserved as
+//! `aicen · alvl · apnd · hpnd`), exactly Icepack's `trcr_depend`, `trcr_base`,
+//! `n_trcr_strata` and `nt_strata`.
+//!
+//! Storage: one column's tracers are a flat slice `trcrn[n * ntrcr + it]` — the memory order
+//! of Icepack's `trcrn(ntrcr, ncat)` for one cell.
+
+// Per-category and per-tracer tables are indexed by number, as in Icepack.
+#![allow(clippy::needless_range_loop)]
+
+use super::ItdError;
+
+/// What a tracer is carried on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TracerBase {
+    /// Ice area `aicen` (Icepack `trcr_depend = 0`, or `2 + nt` through a stratum).
+    Area,
+    /// Ice volume `vicen` (Icepack `trcr_depend = 1`).
+    IceVolume,
+    /// Snow volume `vsnon` (Icepack `trcr_depend = 2`).
+    SnowVolume,
+}
+
+/// The physical meaning of a tracer, where the ridging step or the clean-up treats it
+/// specially (everything else is [`TracerRole::Other`] and just moves with its base).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TracerRole {
+    /// Surface temperature `Tsfc` (°C), area tracer; set to the freezing temperature `Tf` in
+    /// emptied categories.
+    SurfaceTemperature,
+    /// Ice enthalpy per layer `qice` (J m⁻³, negative), ice-volume tracer.
+    IceEnthalpy,
+    /// Snow enthalpy per layer `qsno` (J m⁻³, negative), snow-volume tracer.
+    SnowEnthalpy,
+    /// Ice salinity per layer `sice` (ppt), ice-volume tracer.
+    IceSalinity,
+    /// Ice age `iage` (s), ice-volume tracer.
+    Age,
+    /// First-year ice area fraction `FY` (1), area tracer.
+    FirstYear,
+    /// Level-ice area fraction `alvl` (1), area tracer; not given to new ridges.
+    LevelArea,
+    /// Level-ice volume fraction `vlvl` (1), ice-volume tracer; not given to new ridges.
+    LevelVolume,
+    /// Pond area fraction of the level ice `apnd` (1), on level-ice area.
+    PondArea,
+    /// Pond depth `hpnd` (m), on pond area.
+    PondDepth,
+    /// Refrozen pond-lid thickness `ipnd` (m), on pond area.
+    PondLid,
+    /// Any other tracer (units as the host defines them).
+    Other,
+}
+
+/// One named tracer field (one or more levels, consecutive in the tracer vector).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TracerField {
+    /// Name (Icepack's: `Tsfc`, `qice`, `qsno`, `sice`, `iage`, `FY`, `alvl`, `vlvl`, `apnd`,
+    /// `hpnd`, `ipnd`).
+    pub name: String,
+    /// Physical meaning.
+    pub role: TracerRole,
+    /// Number of levels (layers), ≥ 1.
+    pub levels: usize,
+    /// What the tracer is carried on (before its strata).
+    pub base: TracerBase,
+    /// Names of the single-level fields it is additionally carried on, outermost first
+    /// (e.g. `["alvl", "apnd"]` for pond depth). At most two.
+    pub strata: Vec<String>,
+}
+
+impl TracerField {
+    fn new(name: &str, role: TracerRole, levels: usize, base: TracerBase, strata: &[&str]) -> Self {
+        Self {
+            name: name.to_string(),
+            role,
+            levels,
+            base,
+            strata: strata.iter().map(|s| s.to_string()).collect(),
+        }
+    }
+}
+
+/// Which optional CICE tracers a column carries (Icepack's `tr_iage`, `tr_FY`, `tr_lvl`,
+/// `tr_pond_lvl`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct CiceTracerFlags {
+    /// Ice age `iage`.
+    pub age: bool,
+    /// First-year ice fraction `FY`.
+    pub first_year: bool,
+    /// Level-ice area and volume fractions `alvl`, `vlvl`.
+    pub level_ice: bool,
+    /// Level-ice melt ponds `apnd`, `hpnd`, `ipnd` (needs `level_ice`).
+    pub ponds: bool,
+}
+
+impl CiceTracerFlags {
+    /// Every optional tracer on (the layout of the Icepack reference data: 23 tracers for 7
+    /// ice layers and 1 snow layer).
+    pub const ALL: CiceTracerFlags = CiceTracerFlags {
+        age: true,
+        first_year: true,
+        level_ice: true,
+        ponds: true,
+    };
+}
+
+/// A validated tracer layout with the per-tracer index tables the ridging step uses.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TracerLayout {
+    fields: Vec<TracerField>,
+    /// First index of each field.
+    starts: Vec<usize>,
+    ntrcr: usize,
+    /// Per tracer: base.
+    pub(crate) base: Vec<TracerBase>,
+    /// Per tracer: base as an index into (area, ice volume, snow volume).
+    pub(crate) base_idx: Vec<u8>,
+    /// Tracers given to new ridges, by base (area, ice volume, snow volume).
+    pub(crate) ridge_lists: [Vec<usize>; 3],
+    /// Per tracer: number of strata (0..=2) and their tracer indices.
+    pub(crate) nstrata: Vec<u8>,
+    pub(crate) strata: Vec<[usize; 2]>,
+    /// Per tracer: carried onto new ridges (false for level-ice fractions and for every
+    /// tracer with strata: ridged ice is deformed, its ponds drain).
+    pub(crate) to_ridges: Vec<bool>,
+    /// Per tracer: area tracer in Icepack's `trcr_depend = 0` sense (base area, no strata):
+    /// recomputed only where the area exceeds `puny`.
+    pub(crate) area_direct: Vec<bool>,
+    pub(crate) nt_tsfc: Option<usize>,
+    pub(crate) nt_qice: usize,
+    pub(crate) nt_sice: usize,
+    pub(crate) nt_qsno: usize,
+    pub(crate) nilyr: usize,
+    pub(crate) nslyr: usize,
+    pub(crate) nt_alvl: Option<usize>,
+    pub(crate) nt_apnd: Option<usize>,
+    pub(crate) nt_hpnd: Option<usize>,
+}
+
+impl TracerLayout {
+    /// The CICE/Icepack layout for `nilyr` ice layers and `nslyr` snow layers (both ≥ 1):
+    /// `Tsfc`, `qice(nilyr)`, `qsno(nslyr)`, `sice(nilyr)`, then `iage`, `FY`, `alvl`,
+    /// `vlvl`, `apnd`, `hpnd`, `ipnd` as the flags select, in Icepack's order.
+    pub fn cice(nilyr: usize, nslyr: usize, flags: CiceTracerFlags) -> Result<Self, ItdError> {
+        use TracerBase::*;
+        use TracerRole::*;
+        if flags.ponds && !flags.level_ice {
+            return Err(ItdError::Parameter {
+                name: "ponds",
+                value: 1.0,
+                reason: "melt ponds are carried on level ice: turn on level_ice too",
+            });
+        }
+        let mut f = vec![
+            TracerField::new("Tsfc", SurfaceTemperature, 1, Area, &[]),
+            TracerField::new("qice", IceEnthalpy, nilyr, IceVolume, &[]),
+            TracerField::new("qsno", SnowEnthalpy, nslyr, SnowVolume, &[]),
+            TracerField::new("sice", IceSalinity, nilyr, IceVolume, &[]),
+        ];
+        if flags.age {
+            f.push(TracerField::new("iage", Age, 1, IceVolume, &[]));
+        }
+        if flags.first_year {
+            f.push(TracerField::new("FY", FirstYear, 1, Area, &[]));
+        }
+        if flags.level_ice {
+            f.push(TracerField::new("alvl", LevelArea, 1, Area, &[]));
+            f.push(TracerField::new("vlvl", LevelVolume, 1, IceVolume, &[]));
+        }
+        if flags.ponds {
+            f.push(TracerField::new("apnd", PondArea, 1, Area, &["alvl"]));
+            f.push(TracerField::new(
+                "hpnd",
+                PondDepth,
+                1,
+                Area,
+                &["alvl", "apnd"],
+            ));
+            f.push(TracerField::new(
+                "ipnd",
+                PondLid,
+                1,
+                Area,
+                &["alvl", "apnd"],
+            ));
+        }
+        Self::new(f)
+    }
+
+    /// A layout from explicit fields. Rules: exactly one field each of roles `IceEnthalpy`,
+    /// `IceSalinity` (same number of levels, ≥ 1) and `SnowEnthalpy` (≥ 1 level); at most one
+    /// of every other role except `Other`; `Tsfc` (if present) first; strata name earlier
+    /// single-level fields; field names unique; level-ice and pond roles as in
+    /// [`TracerLayout::cice`].
+    pub fn new(fields: Vec<TracerField>) -> Result<Self, ItdError> {
+        let bad = |msg: String| ItdError::Bounds(format!("tracer layout: {msg}"));
+        let mut starts = Vec::with_capacity(fields.len());
+        let mut ntrcr = 0;
+        for (i, f) in fields.iter().enumerate() {
+            if f.levels == 0 {
+                return Err(bad(format!("field {} has 0 levels", f.name)));
+            }
+            if fields[..i].iter().any(|g| g.name == f.name) {
+                return Err(bad(format!("field name {} used twice", f.name)));
+            }
+            if f.role != TracerRole::Other && fields[..i].iter().any(|g| g.role == f.role) {
+                return Err(bad(format!("two fields with role {:?}", f.role)));
+            }
+            if f.strata.len() > 2 {
+                return Err(bad(format!("field {} has more than 2 strata", f.name)));
+            }
+            starts.push(ntrcr);
+            ntrcr += f.levels;
+        }
+        let find = |role: TracerRole| fields.iter().position(|f| f.role == role);
+        let qice = find(TracerRole::IceEnthalpy).ok_or_else(|| bad("no qice field".into()))?;
+        let sice = find(TracerRole::IceSalinity).ok_or_else(|| bad("no sice field".into()))?;
+        let qsno = find(TracerRole::SnowEnthalpy).ok_or_else(|| bad("no qsno field".into()))?;
+        if fields[qice].levels != fields[sice].levels {
+            return Err(bad("qice and sice need the same number of levels".into()));
+        }
+        for (role, base) in [
+            (TracerRole::SurfaceTemperature, TracerBase::Area),
+            (TracerRole::IceEnthalpy, TracerBase::IceVolume),
+            (TracerRole::IceSalinity, TracerBase::IceVolume),
+            (TracerRole::SnowEnthalpy, TracerBase::SnowVolume),
+            (TracerRole::LevelArea, TracerBase::Area),
+            (TracerRole::LevelVolume, TracerBase::IceVolume),
+            (TracerRole::PondArea, TracerBase::Area),
+            (TracerRole::PondDepth, TracerBase::Area),
+            (TracerRole::PondLid, TracerBase::Area),
+        ] {
+            if let Some(i) = find(role)
+                && (fields[i].base != base || fields[i].levels != 1 && base == TracerBase::Area)
+            {
+                return Err(bad(format!(
+                    "field {} must be a single-level {:?} tracer",
+                    fields[i].name, base
+                )));
+            }
+        }
+        if let Some(i) = find(TracerRole::SurfaceTemperature)
+            && i != 0
+        {
+            return Err(bad("Tsfc must be the first field".into()));
+        }
+        let nt_alvl = find(TracerRole::LevelArea).map(|i| starts[i]);
+        let nt_apnd = find(TracerRole::PondArea).map(|i| starts[i]);
+        let nt_hpnd = find(TracerRole::PondDepth).map(|i| starts[i]);
+        if nt_apnd.is_some() != nt_hpnd.is_some() || (nt_apnd.is_some() && nt_alvl.is_none()) {
+            return Err(bad(
+                "ponds need apnd and hpnd, carried on level ice (alvl)".into()
+            ));
+        }
+        let mut base = Vec::with_capacity(ntrcr);
+        let mut nstrata = Vec::with_capacity(ntrcr);
+        let mut strata = Vec::with_capacity(ntrcr);
+        let mut to_ridges = Vec::with_capacity(ntrcr);
+        let mut area_direct = Vec::with_capacity(ntrcr);
+        for (i, f) in fields.iter().enumerate() {
+            let mut s = [0usize; 2];
+            for (k, name) in f.strata.iter().enumerate() {
+                let j = fields[..i]
+                    .iter()
+                    .position(|g| &g.name == name)
+                    .ok_or_else(|| {
+                        bad(format!(
+                            "stratum {name} of {} must be an earlier field",
+                            f.name
+                        ))
+                    })?;
+                if fields[j].levels != 1 {
+                    return Err(bad(format!("stratum {name} must have one level")));
+                }
+                s[k] = starts[j];
+            }
+            // Icepack's level-ice ponds: apnd on [alvl], hpnd and ipnd on [alvl, apnd].
+            let expected: &[TracerRole] = match f.role {
+                TracerRole::PondArea => &[TracerRole::LevelArea],
+                TracerRole::PondDepth | TracerRole::PondLid => {
+                    &[TracerRole::LevelArea, TracerRole::PondArea]
+                }
+                _ => &[],
+            };
+            if !expected.is_empty()
+                && (f.strata.len() != expected.len()
+                    || f.strata.iter().zip(expected).any(|(n, r)| {
+                        fields.iter().find(|g| &g.name == n).map(|g| g.role) != Some(*r)
+                    }))
+            {
+                return Err(bad(format!(
+                    "field {} must be carried on {:?}",
+                    f.name, expected
+                )));
+            }
+            let ridges = !matches!(f.role, TracerRole::LevelArea | TracerRole::LevelVolume)
+                && f.strata.is_empty();
+            for _ in 0..f.levels {
+                base.push(f.base);
+                nstrata.push(f.strata.len() as u8);
+                strata.push(s);
+                to_ridges.push(ridges);
+                area_direct.push(f.base == TracerBase::Area && f.strata.is_empty());
+            }
+        }
+        let base_idx: Vec<u8> = base
+            .iter()
+            .map(|b| match b {
+                TracerBase::Area => 0,
+                TracerBase::IceVolume => 1,
+                TracerBase::SnowVolume => 2,
+            })
+            .collect();
+        let ridge_lists = std::array::from_fn(|k| {
+            (0..ntrcr)
+                .filter(|&it| to_ridges[it] && base_idx[it] as usize == k)
+                .collect()
+        });
+        Ok(Self {
+            base_idx,
+            ridge_lists,
+            nt_tsfc: find(TracerRole::SurfaceTemperature).map(|i| starts[i]),
+            nt_qice: starts[qice],
+            nt_sice: starts[sice],
+            nt_qsno: starts[qsno],
+            nilyr: fields[qice].levels,
+            nslyr: fields[qsno].levels,
+            nt_alvl,
+            nt_apnd,
+            nt_hpnd,
+            fields,
+            starts,
+            ntrcr,
+            base,
+            nstrata,
+            strata,
+            to_ridges,
+            area_direct,
+        })
+    }
+
+    /// Number of tracers per category (Icepack `ntrcr`).
+    pub fn ntrcr(&self) -> usize {
+        self.ntrcr
+    }
+
+    /// Number of ice layers (Icepack `nilyr`).
+    pub fn nilyr(&self) -> usize {
+        self.nilyr
+    }
+
+    /// Number of snow layers (Icepack `nslyr`).
+    pub fn nslyr(&self) -> usize {
+        self.nslyr
+    }
+
+    /// The fields, in storage order.
+    pub fn fields(&self) -> &[TracerField] {
+        &self.fields
+    }
+
+    /// First tracer index (0-based) and number of levels of the field called `name`.
+    pub fn field(&self, name: &str) -> Option<(usize, usize)> {
+        self.fields
+            .iter()
+            .position(|f| f.name == name)
+            .map(|i| (self.starts[i], self.fields[i].levels))
+    }
+
+    /// Icepack's `trcr_depend` per tracer: 0 area, 1 ice volume, 2 snow volume, `2 + nt`
+    /// (1-based `nt`) for a tracer carried on tracer `nt` (its innermost stratum).
+    pub fn trcr_depend(&self) -> Vec<i32> {
+        (0..self.ntrcr)
+            .map(|it| match (self.nstrata[it], self.base[it]) {
+                (0, TracerBase::Area) => 0,
+                (0, TracerBase::IceVolume) => 1,
+                (0, TracerBase::SnowVolume) => 2,
+                (k, _) => 2 + self.strata[it][k as usize - 1] as i32 + 1,
+            })
+            .collect()
+    }
+
+    /// Per tracer, its base as a code 0 (area), 1 (ice volume), 2 (snow volume).
+    pub fn base_codes(&self) -> Vec<i32> {
+        self.base
+            .iter()
+            .map(|b| match b {
+                TracerBase::Area => 0,
+                TracerBase::IceVolume => 1,
+                TracerBase::SnowVolume => 2,
+            })
+            .collect()
+    }
+
+    /// Per tracer, its strata as 1-based tracer indices (0 = none), Icepack's `nt_strata`.
+    pub fn strata_one_based(&self) -> Vec<[i32; 2]> {
+        (0..self.ntrcr)
+            .map(|it| {
+                let mut s = [0; 2];
+                for k in 0..self.nstrata[it] as usize {
+                    s[k] = self.strata[it][k] as i32 + 1;
+                }
+                s
+            })
+            .collect()
+    }
+
+    /// Conserved amount of tracer `it` of one category: tracer × base × strata, in Icepack's
+    /// order of operations (`ridge_shift`, `shift_ice`).
+    #[inline(always)]
+    pub(crate) fn amount(&self, it: usize, trc: &[f64], a: f64, v: f64, s: f64) -> f64 {
+        let b = [a, v, s][self.base_idx[it] as usize];
+        let mut x = trc[it] * b;
+        for k in 0..self.nstrata[it] as usize {
+            x *= trc[self.strata[it][k]];
+        }
+        x
+    }
+
+    /// Icepack `icepack_compute_tracers` for one category: tracers from the conserved amounts
+    /// `atrc` and the new area `a`, ice volume `v`, snow volume `s`. Area tracers without strata
+    /// are set where `a > puny` (else 0, `Tsfc = tf`); the others wherever their base is
+    /// positive, then divided by each positive stratum (else 0), strata first.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn compute(
+        &self,
+        atrc: &[f64],
+        a: f64,
+        v: f64,
+        s: f64,
+        puny: f64,
+        tf: f64,
+        trc: &mut [f64],
+    ) {
+        for it in 0..self.ntrcr {
+            if self.area_direct[it] {
+                trc[it] = if a > puny {
+                    atrc[it] / a
+                } else if Some(it) == self.nt_tsfc {
+                    tf
+                } else {
+                    0.0
+                };
+            } else {
+                let d = [a, v, s][self.base_idx[it] as usize];
+                let mut w = if d > 0.0 { atrc[it] / d } else { 0.0 };
+                for k in 0..self.nstrata[it] as usize {
+                    let st = trc[self.strata[it][k]];
+                    w = if st > 0.0 { w / st } else { 0.0 };
+                }
+                trc[it] = w;
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cice_layout_matches_icepack_indices() {
+        let l = TracerLayout::cice(7, 1, CiceTracerFlags::ALL).unwrap();
+        assert_eq!(l.ntrcr(), 23);
+        assert_eq!(l.field("qsno"), Some((8, 1)));
+        assert_eq!(l.field("sice"), Some((9, 7)));
+        assert_eq!(l.field("ipnd"), Some((22, 1)));
+        let d = l.trcr_depend();
+        assert_eq!(d[0], 0);
+        assert_eq!(d[1], 1);
+        assert_eq!(d[8], 2);
+        // apnd on alvl (1-based 19), hpnd/ipnd on apnd (1-based 21).
+        assert_eq!(d[20], 2 + 19);
+        assert_eq!(d[21], 2 + 21);
+        assert_eq!(l.strata_one_based()[21], [19, 21]);
+    }
+
+    #[test]
+    fn ponds_without_level_ice_rejected() {
+        let f = CiceTracerFlags {
+            ponds: true,
+            ..Default::default()
+        };
+        assert!(TracerLayout::cice(2, 1, f).is_err());
+    }
+}
