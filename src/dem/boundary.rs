@@ -166,15 +166,4 @@ impl Boundary {
             w.springs -= fs.dot(v) * dt;
         }
     }
-
-    /// Elastic energy held by the floe springs (J/m).
-    pub fn stored_energy(&self, b: &Bodies) -> f64 {
-        self.floe.as_ref().map_or(0.0, |fl| {
-            fl.blocks
-                .iter()
-                .zip(&fl.stiffness)
-                .map(|(&(id, y0), k)| 0.5 * k * (b.pos[id as usize].y - y0).powi(2))
-                .sum()
-        })
-    }
 }

@@ -121,6 +121,30 @@ pub struct Contact {
     pub fn_viscous: f64,
 }
 
+impl Contact {
+    /// Elastic work this contact holds (J/m), normal and tangential: released to
+    /// [`ContactWork::released`] when it separates.
+    fn held(&self) -> f64 {
+        self.stored + self.stored_t
+    }
+
+    /// Sets the viscous normal force from `fv` (N/m) so that the normal force never pulls,
+    /// caps the tangential trial force `slip` (N/m) at `mu` times the normal force, and
+    /// books the slip that cap dissipates ([`ContactWork::slip`]).
+    fn close(&mut self, fv: f64, mu: f64, slip: f64, k_te: f64, work: &mut ContactWork) {
+        self.fn_viscous = if self.fn_elastic + fv < 0.0 {
+            -self.fn_elastic
+        } else {
+            fv
+        };
+        let cap = mu * (self.fn_elastic + self.fn_viscous);
+        self.ft = slip.clamp(-cap, cap);
+        let lost = (self.ft * (slip - self.ft)).abs() / k_te;
+        self.stored_t -= lost;
+        work.slip += lost;
+    }
+}
+
 /// Totals of the work absorbed by all contacts, for the energy ledger (J/m).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct ContactWork {
@@ -220,7 +244,7 @@ impl ContactSet {
         let mut j = 0;
         for &key in pairs {
             while j < self.prev.len() && self.prev[j].key < key {
-                work.released += self.prev[j].stored + self.prev[j].stored_t;
+                work.released += self.prev[j].held();
                 j += 1;
             }
             let old = if j < self.prev.len() && self.prev[j].key == key {
@@ -238,7 +262,7 @@ impl ContactSet {
                 bodies.pos[b],
             ) else {
                 if let Some(o) = old {
-                    work.released += o.stored + o.stored_t;
+                    work.released += o.held();
                 }
                 continue;
             };
@@ -274,11 +298,7 @@ impl ContactSet {
             };
             match dashpot {
                 Dashpot::Explicit => {
-                    c.fn_viscous = if fe + rate < 0.0 { -fe } else { rate };
-                    c.ft = slip.clamp(-mu * (fe + c.fn_viscous), mu * (fe + c.fn_viscous));
-                    let lost = (c.ft * (slip - c.ft)).abs() / k_te;
-                    c.stored_t -= lost;
-                    work.slip += lost;
+                    c.close(rate, mu, slip, k_te, work);
                     let f = n * (fe + c.fn_viscous) + t * c.ft;
                     bodies.apply(b, f, ov.centroid);
                     bodies.apply(a, -f, ov.centroid);
@@ -319,16 +339,7 @@ impl ContactSet {
                 .dot(n);
                 let x = 0.5 * q.damping * dt * kappa;
                 let fv = (q.rate - 0.5 * q.damping * dt * an) / (1.0 + x);
-                c.fn_viscous = if c.fn_elastic + fv < 0.0 {
-                    -c.fn_elastic
-                } else {
-                    fv
-                };
-                let cap = q.mu * (c.fn_elastic + c.fn_viscous);
-                c.ft = q.slip.clamp(-cap, cap);
-                let lost = (c.ft * (q.slip - c.ft)).abs() / k_te;
-                c.stored_t -= lost;
-                work.slip += lost;
+                c.close(fv, q.mu, q.slip, k_te, work);
             }
             // Pass 3: apply them.
             for c in &self.cur {
@@ -339,7 +350,7 @@ impl ContactSet {
             }
         }
         while j < self.prev.len() {
-            work.released += self.prev[j].stored + self.prev[j].stored_t;
+            work.released += self.prev[j].held();
             j += 1;
         }
     }

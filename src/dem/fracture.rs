@@ -207,9 +207,4 @@ impl JointSet {
             self.unlink(j.a, j.b);
         }
     }
-
-    /// Elastic energy held by all intact joints (J/m).
-    pub fn stored_energy(&self, bodies: &Bodies) -> f64 {
-        self.joints.iter().map(|j| j.stored_energy(bodies)).sum()
-    }
 }
