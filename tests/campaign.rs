@@ -2,7 +2,6 @@
 //! its first finished run and resumed without redoing anything.
 
 use pressridge::campaign::{CampaignSpec, read_campaign, read_records};
-use std::process::Command;
 use std::time::{Duration, Instant};
 
 const SPEC: &str = r#"
@@ -16,9 +15,8 @@ keys = ["sheet.thickness", "sheet.block_width"]
 values = [[0.25, 0.25], [0.35, 0.25]]
 "#;
 
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_pressridge"))
-}
+mod common;
+use common::bin;
 
 #[test]
 fn tiny_campaign_is_resumable_and_complete() {

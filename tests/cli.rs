@@ -1,10 +1,7 @@
 //! The command line end to end: simulate a short scene, render its state, reject bad input.
 
-use std::process::Command;
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_pressridge"))
-}
+mod common;
+use common::bin;
 
 #[test]
 fn simulate_then_render() {

@@ -1,7 +1,7 @@
 //! NetCDF input/output and the command line on small files written here and on the sample.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
+mod common;
 
 use approx::assert_relative_eq;
 use ndarray::{Array1, Array2};
@@ -281,10 +281,7 @@ fn sample_file_is_valid_and_ridging_conserves_it() {
 }
 
 fn cli(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_pressridge"))
-        .args(args)
-        .output()
-        .unwrap()
+    common::bin().args(args).output().unwrap()
 }
 
 #[test]

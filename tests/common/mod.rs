@@ -1,10 +1,12 @@
-//! Helpers of the failure-behaviour tests (`tests/failure.rs`, `tests/kill.rs`): the binary,
+//! Helpers of the integration tests that run the command-line tool: the binary,
 //! scratch directories and small NetCDF inputs written value by value.
 #![allow(dead_code)]
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+/// The `pressridge` binary (HDF5 file locking is off for everything cargo runs: see
+/// `.cargo/config.toml`).
 pub fn bin() -> Command {
     Command::new(env!("CARGO_BIN_EXE_pressridge"))
 }
