@@ -434,12 +434,11 @@ impl World {
     /// Δt < (2/ω)·(sqrt(1 + ζ²) − ζ); with the implicit one ([`Dashpot::Implicit`]) for
     /// Δt < √2/ω whatever ζ.
     ///
-    /// Joints. The normal and shear springs of a face (k_n + k_t, [`Joint::stiffness`])
-    /// act at points whose inverse effective mass is at most κ; a Gershgorin bound over the
-    /// chain of joined blocks gives ω² ≤ max over bodies of 2·κᵢ·Σ(k_n + k_t) over the
-    /// body's joints (twice a single joint's 2κ·k inside a sheet, whose highest mode is
-    /// the alternating one), ζ = f·sqrt(κₐ·mₐ + κ_b·m_b) with f the joint's damping
-    /// fraction, stable for Δt < (2/ω)·(sqrt(1 + ζ²) − ζ).
+    /// Joints. Each joint's mass-scaled stiffness and damping have largest eigenvalues λ
+    /// (1/s²) and μ (1/s) ([`Joint::modal_bounds`]); ω² of the joined blocks is at most the
+    /// largest sum of λ over one body's joints plus one contact's ω_c² (a jointed block may
+    /// be in contact too), the damping rate d likewise, and the step is stable for
+    /// Δt < 2/(sqrt(ω² + d²/4) + d/2).
     ///
     /// Infinite for a world without free bodies (nothing can go unstable).
     pub fn stable_time_step(&self) -> f64 {
@@ -452,41 +451,59 @@ impl World {
                 (1.0 + s.radius().powi(2) * b.mass[i] / b.inertia[i]) / b.mass[i]
             }
         };
-        let damped = |omega: f64, zeta: f64| 2.0 / omega * ((1.0 + zeta * zeta).sqrt() - zeta);
+        // The explicit step of a mode of frequency ω and damping rate d (1/s) is stable for
+        // Δt < 2/(sqrt(ω² + d²/4) + d/2), which falls as ω or d grows: upper bounds on both
+        // give a safe limit.
+        let limit = |w2: f64, d: f64| 2.0 / ((w2 + 0.25 * d * d).sqrt() + 0.5 * d);
         let mut dt = f64::INFINITY;
         let mut dc: f64 = 0.0;
         for i in 0..b.len() {
             dc = dc.max(b.shape[i].diameter() * inv(i));
         }
+        // One contact: ω_c² and its damping rate in the explicit form (the implicit form is
+        // stable at any damping).
+        let k_ne = self.params.contact.normal_stiffness;
+        let contact_w2 = 2.0 * k_ne * dc;
+        let contact_d = match self.params.contact_dashpot {
+            Dashpot::Implicit => 0.0,
+            Dashpot::Explicit => 2.0 * self.k_nv * dc,
+        };
         if dc > 0.0 {
-            let k_ne = self.params.contact.normal_stiffness;
-            let omega = (2.0 * k_ne * dc).sqrt();
             dt = dt.min(match self.params.contact_dashpot {
-                Dashpot::Implicit => std::f64::consts::SQRT_2 / omega,
-                Dashpot::Explicit => {
-                    let zeta = 0.5 * self.k_nv * (2.0 * dc / k_ne).sqrt();
-                    damped(omega, zeta)
-                }
+                Dashpot::Implicit => std::f64::consts::SQRT_2 / contact_w2.sqrt(),
+                Dashpot::Explicit => limit(contact_w2, contact_d),
             });
         }
-        // Joints: Gershgorin on the chain. A body's row of M⁻¹K sums 2·κᵢ·Σ(k_n + k_t) over
-        // its intact joints (a block inside a sheet or piece has two).
-        let mut spring = vec![0.0f64; b.len()];
-        for j in self.joints.joints() {
-            let (kn, kt) = j.stiffness();
-            spring[j.a as usize] += kn + kt;
-            spring[j.b as usize] += kn + kt;
-        }
-        for j in self.joints.joints() {
-            let (ia, ib) = (j.a as usize, j.b as usize);
-            let (ca, cb) = (inv(ia), inv(ib));
-            let w2 = 2.0 * (ca * spring[ia]).max(cb * spring[ib]);
-            if w2 <= 0.0 {
-                continue;
+        // Joints: each joint's mass-scaled stiffness K̃ⱼ and damping C̃ⱼ are positive
+        // semi-definite and act on two bodies, so xᵀK̃x = Σⱼ xᵀK̃ⱼx ≤ Σᵢ |xᵢ|²·Σ_{j∋i} λⱼ:
+        // ω² ≤ max over bodies of the sum of λⱼ over the body's joints (2λ inside a sheet,
+        // exact for its alternating mode), and likewise the damping rate d ≤ Σμⱼ. A jointed
+        // block may also be in contact: one contact's ω_c² and rate are added to its row.
+        let scale = |i: usize| {
+            if b.drive[i].is_kinematic() {
+                [0.0; 3]
+            } else {
+                let m = 1.0 / b.mass[i].sqrt();
+                [m, m, 1.0 / b.inertia[i].sqrt()]
             }
-            let cm = ca * b.mass[ia] + cb * b.mass[ib];
-            let zeta = j.mat.damping_fraction * cm.sqrt();
-            dt = dt.min(damped(w2.sqrt(), zeta));
+        };
+        let mut rate = vec![(0.0f64, 0.0f64); b.len()];
+        for j in self.joints.joints() {
+            let (l, m) = j.modal_bounds(
+                b,
+                self.params.ice_density,
+                scale(j.a as usize),
+                scale(j.b as usize),
+            );
+            for i in [j.a as usize, j.b as usize] {
+                rate[i].0 += l;
+                rate[i].1 += m;
+            }
+        }
+        for &(w2, d) in &rate {
+            if w2 > 0.0 {
+                dt = dt.min(limit(w2 + contact_w2, d + contact_d));
+            }
         }
         dt
     }
