@@ -312,21 +312,28 @@ fn separated_by_edge_of(a: &Outline, b: &Outline) -> bool {
 /// copy).
 pub fn intersect(a: &Outline, b: &Outline) -> ClipPoly {
     let mut bufs = [ClipPoly::default(), ClipPoly::default()];
+    intersect_in(a, b, &mut bufs).copied().unwrap_or_default()
+}
+
+/// [`intersect`] in two buffers of the caller's: a reference to the one holding the
+/// result, `None` when the polygons do not overlap (the result is never copied).
+fn intersect_in<'s>(a: &Outline, b: &Outline, bufs: &'s mut [ClipPoly; 2]) -> Option<&'s ClipPoly> {
     if a.n == 0 || b.n == 0 || separated_by_edge_of(a, b) {
-        return ClipPoly::default();
+        return None;
     }
+    let [first, second] = bufs;
+    let (mut cur, mut next) = (first, second);
+    cur.clear();
     for (k, &q) in a.verts().iter().enumerate() {
-        bufs[0].push(q, k as u8);
+        cur.push(q, k as u8);
     }
-    let mut cur = 0;
     let m = b.n;
     for i in 0..m {
         let p0 = b.p[i];
         let p1 = b.p[(i + 1) % m];
         let d = p1 - p0;
-        let poly = &bufs[cur];
         let (mut inside, mut outside) = (0, 0);
-        for &q in poly.verts() {
+        for &q in cur.verts() {
             if d.cross(q - p0) >= 0.0 {
                 inside += 1;
             } else {
@@ -337,22 +344,15 @@ pub fn intersect(a: &Outline, b: &Outline) -> ClipPoly {
             continue;
         }
         if inside == 0 {
-            return ClipPoly::default();
+            return None;
         }
-        let (lo, hi) = bufs.split_at_mut(1);
-        let (src, dst) = if cur == 0 {
-            (&lo[0], &mut hi[0])
-        } else {
-            (&hi[0], &mut lo[0])
-        };
-        clip_left(src, p0, p1, (MAX_VERTS + i) as u8, dst);
-        cur = 1 - cur;
-        if bufs[cur].n == 0 {
-            break;
+        clip_left(cur, p0, p1, (MAX_VERTS + i) as u8, next);
+        std::mem::swap(&mut cur, &mut next);
+        if cur.n == 0 {
+            return None;
         }
     }
-    let [b0, b1] = bufs;
-    if cur == 0 { b0 } else { b1 }
+    Some(cur)
 }
 
 /// The part of a polygon below the horizontal line `y = level` (m), as a polygon.
@@ -453,7 +453,8 @@ pub struct Overlap {
 /// (one polygon inside the other, or a touch of zero length) the normal falls back to the
 /// direction between the centroids, and to `+y` if those coincide.
 pub fn overlap(a: &Outline, b: &Outline, ca: V2, cb: V2) -> Option<Overlap> {
-    let poly = intersect(a, b);
+    let mut bufs = [ClipPoly::default(), ClipPoly::default()];
+    let poly = intersect_in(a, b, &mut bufs)?;
     if poly.n < 3 {
         return None;
     }

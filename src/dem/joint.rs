@@ -80,6 +80,20 @@ pub struct Joint {
     /// the input of the fracture test.
     #[serde(skip)]
     pub stress: SurfaceStress,
+    /// The Gauss points of the intact span and their moduli, kept between steps (they
+    /// change only when a crack moves an end of the span).
+    #[serde(skip)]
+    gauss: GaussCache,
+}
+
+/// Per Gauss point of the intact span [`GaussCache::span`]: face coordinate s (m), weight
+/// (m), E(s) and G(s) (Pa), and the viscosities f·2·sqrt(ρ_i·E) and f·2·sqrt(ρ_i·G)
+/// (Pa·s/m) for the density `rho` (kg/m³).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+struct GaussCache {
+    span: (f64, f64),
+    rho: f64,
+    point: [[f64; 6]; 3],
 }
 
 /// The resultant of a joint's stresses on its two blocks (N/m and N·m/m about each
@@ -137,6 +151,7 @@ impl Joint {
             elastic_work: 0.0,
             forces: [JointForces::default(); 2],
             stress: SurfaceStress::default(),
+            gauss: GaussCache::default(),
         }
     }
 
@@ -174,25 +189,14 @@ impl Joint {
         }
         let (n, t, ua, ub, oa, ob) = self.frame(b);
         let (xa, xb) = (b.pos[self.a as usize], b.pos[self.b as usize]);
-        let half = 0.5 * (self.s_hi - self.s_lo);
-        let mid = 0.5 * (self.s_hi + self.s_lo);
-        let g_ratio = 1.0 / (2.0 * (1.0 + self.mat.poisson));
-        let f2 = self.mat.damping_fraction * 2.0;
         let sc = [
             scale_a[0], scale_a[1], scale_a[2], scale_b[0], scale_b[1], scale_b[2],
         ];
         let mut k = faer::Mat::<f64>::zeros(6, 6);
         let mut c = faer::Mat::<f64>::zeros(6, 6);
-        for q in 0..3 {
-            let s = mid + half * GAUSS_X[q];
-            let w = GAUSS_W[q] * half;
+        for &[s, w, e, g, eta_e, eta_g] in &self.gauss_points(rho_i).point {
             let (ra, rb) = (oa + ua * s - xa, ob + ub * s - xb);
-            let e = self.modulus(s);
-            let g = e * g_ratio;
-            for (dir, stiff, damp) in [
-                (n, e / self.gauge, f2 * (rho_i * e).sqrt()),
-                (t, g / self.gauge, f2 * (rho_i * g).sqrt()),
-            ] {
+            for (dir, stiff, damp) in [(n, e / self.gauge, eta_e), (t, g / self.gauge, eta_g)] {
                 let v = [-dir.x, -dir.y, -ra.cross(dir), dir.x, dir.y, rb.cross(dir)];
                 for r in 0..6 {
                     for col in 0..6 {
@@ -254,18 +258,41 @@ impl Joint {
         let (n, t, ua, ub, oa, ob) = self.frame(b);
         let d0 = ob - oa;
         let d1 = ub - ua;
+        let g_ratio = 1.0 / (2.0 * (1.0 + self.mat.poisson));
+        let mut e = 0.0;
+        for &[s, w, em, ..] in &self.gauss_points(0.0).point {
+            let d = d0 + d1 * s;
+            let (dn, dt) = (d.dot(n), d.dot(t));
+            e += w * em * (dn * dn + g_ratio * dt * dt) / (2.0 * self.gauge);
+        }
+        e
+    }
+
+    /// The Gauss points of the present intact span for ice density `rho_i` (kg/m³).
+    fn gauss_points(&self, rho_i: f64) -> GaussCache {
         let half = 0.5 * (self.s_hi - self.s_lo);
         let mid = 0.5 * (self.s_hi + self.s_lo);
         let g_ratio = 1.0 / (2.0 * (1.0 + self.mat.poisson));
-        let mut e = 0.0;
+        let f2 = self.mat.damping_fraction * 2.0;
+        let mut point = [[0.0; 6]; 3];
         for k in 0..3 {
             let s = mid + half * GAUSS_X[k];
-            let d = d0 + d1 * s;
-            let (dn, dt) = (d.dot(n), d.dot(t));
-            let em = self.modulus(s);
-            e += GAUSS_W[k] * half * em * (dn * dn + g_ratio * dt * dt) / (2.0 * self.gauge);
+            let e = self.modulus(s);
+            let g = e * g_ratio;
+            point[k] = [
+                s,
+                GAUSS_W[k] * half,
+                e,
+                g,
+                f2 * (rho_i * e).sqrt(),
+                f2 * (rho_i * g).sqrt(),
+            ];
         }
-        e
+        GaussCache {
+            span: (self.s_lo, self.s_hi),
+            rho: rho_i,
+            point,
+        }
     }
 
     /// Computes the joint's forces from the current poses (with the block axes cached in
@@ -288,26 +315,21 @@ impl Joint {
             top: sig(self.s_hi),
             bottom: sig(self.s_lo),
         };
-        let half = 0.5 * (self.s_hi - self.s_lo);
-        let mid = 0.5 * (self.s_hi + self.s_lo);
-        let g_ratio = 1.0 / (2.0 * (1.0 + self.mat.poisson));
-        let f2 = self.mat.damping_fraction * 2.0;
+        if self.gauss.span != (self.s_lo, self.s_hi) || self.gauss.rho != rho_i {
+            self.gauss = self.gauss_points(rho_i);
+        }
         let mut el = JointForces::default();
         let mut vi = JointForces::default();
-        for k in 0..3 {
-            let s = mid + half * GAUSS_X[k];
-            let w = GAUSS_W[k] * half;
+        for &[s, w, e, g, eta_e, eta_g] in &self.gauss.point {
             let pa = oa + ua * s;
             let pb = ob + ub * s;
             let d = d0 + d1 * s;
             let ddot = (vb + (pb - xb).perp() * wb) - (va + (pa - xa).perp() * wa);
-            let e = self.modulus(s);
-            let g = e * g_ratio;
             // Stresses (Pa) times the Gauss weight (m): force per metre of depth.
             let sig_e = e * d.dot(n) / self.gauge;
             let tau_e = g * d.dot(t) / self.gauge;
-            let sig_v = f2 * (rho_i * e).sqrt() * ddot.dot(n);
-            let tau_v = f2 * (rho_i * g).sqrt() * ddot.dot(t);
+            let sig_v = eta_e * ddot.dot(n);
+            let tau_v = eta_g * ddot.dot(t);
             // Tension (δ_n > 0) pulls b back towards a.
             let fe = (n * sig_e + t * tau_e) * (-w);
             let fv = (n * sig_v + t * tau_v) * (-w);
