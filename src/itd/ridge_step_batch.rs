@@ -409,7 +409,7 @@ mod tests {
         let nt = layout.ntrcr();
         let (ncat, ncol) = (3, 4);
         let hin = [0.0, 0.6, 1.4, 2.4];
-        let mut aicen = Array2::from_shape_fn((ncat, ncol), |(n, c)| 0.2 + 0.05 * (n + c) as f64);
+        let mut aicen = Array2::from_shape_fn((ncat, ncol), |(n, c)| 0.1 + 0.05 * (n + c) as f64);
         let mut vicen = Array2::from_shape_fn((ncat, ncol), |(n, c)| {
             aicen[[n, c]] * (0.4 + 0.8 * n as f64)
         });
