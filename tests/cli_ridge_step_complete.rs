@@ -3,6 +3,9 @@
 //! the library's `ridge_step_column` on the same columns bit for bit, conserves ice, snow
 //! and enthalpy with the ocean fluxes, and keeps `_FillValue` land columns missing.
 
+// Per-category, per-tracer and per-column tables are indexed by number, as in Icepack.
+#![allow(clippy::needless_range_loop, clippy::type_complexity)]
+
 mod common;
 
 use std::path::Path;

@@ -834,6 +834,7 @@ impl PyTracerLayout {
     }
 
     /// Pickling (dask workers): rebuilt from its constructor's arguments.
+    #[allow(clippy::type_complexity)]
     fn __reduce__<'py>(
         slf: &Bound<'py, Self>,
     ) -> PyResult<(Bound<'py, PyAny>, (usize, usize, bool, bool, bool, bool))> {
