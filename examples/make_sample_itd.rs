@@ -150,6 +150,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             write_itd: true,
             hin_max: Some(&bounds),
             fields: &fields,
+            category_fields: &[],
             global: &global,
             fill: None,
         },

@@ -12,8 +12,8 @@ export PYO3_PYTHON="$VIRTUAL_ENV/bin/python"
 
 echo "== cargo clippy -p pressridge-python -- -D warnings"
 cargo clippy -p pressridge-python --all-targets -- -D warnings
-echo "== cargo build --release --bin pressridge (the CLI the tests compare against)"
-cargo build --release --bin pressridge
+echo "== cargo build --release --bin pressridge --lib (the CLI and the C library the tests compare against)"
+cargo build --release --bin pressridge --lib
 echo "== maturin develop --release (python/ into .venv)"
 (cd python && maturin develop --release --quiet)
 

@@ -34,6 +34,9 @@ __version__: str = _core.__version__
 __all__ = [
     "CfClampedWarning",
     "RidgeStepResult",
+    "TracerLayout",
+    "STEP_CELL_OUTPUTS",
+    "STEP_CATEGORY_OUTPUTS",
     "Simulation",
     "CampaignResult",
     "Table",
@@ -234,8 +237,24 @@ def strength(
     return _scalar_if_0d(out)
 
 
+TracerLayout = _core.TracerLayout
+# Its documentation is the Rust doc comment of `PyTracerLayout` (python/src/lib.rs).
+
+
+#: Names, units and meanings of the per-cell outputs of the complete step (from the Rust
+#: ``itd::CELL_OUTPUTS``) and of its per-category outputs (``itd::CATEGORY_OUTPUTS``):
+#: ``{name: (units, long_name)}``.
+STEP_CELL_OUTPUTS: dict
+STEP_CATEGORY_OUTPUTS: dict
+_cell, _cat = _core.step_outputs()
+STEP_CELL_OUTPUTS = {n: (u, ln) for n, u, ln in _cell}
+STEP_CATEGORY_OUTPUTS = {n: (u, ln) for n, u, ln in _cat}
+del _cell, _cat
+
+
 class RidgeStepResult(NamedTuple):
-    """The outcome of :func:`ridge_step`: the updated distribution and the rates."""
+    """The outcome of :func:`ridge_step`: the updated state, the rates and, for the complete
+    step, snow, tracers, ocean fluxes and diagnostics (``None`` for the area-volume step)."""
 
     #: Area fraction of each category after the step (dimensionless), shape (ncat, ...).
     aicen: Any
@@ -245,7 +264,7 @@ class RidgeStepResult(NamedTuple):
     aice0: Any
     #: Net closing rate requested at the start of the step (1/s).
     closing: Any
-    #: Opening rate (1/s).
+    #: Opening rate (1/s; the complete step: of the last ridging pass, Icepack ``opening``).
     opening: Any
     #: Rate of fractional area loss by ridging ice (1/s, CICE ``dardg1dt``).
     dardg1dt: Any
@@ -253,6 +272,37 @@ class RidgeStepResult(NamedTuple):
     dardg2dt: Any
     #: Rate of ice volume ridged (m/s, CICE ``dvirdgdt``).
     dvirdgdt: Any
+    #: Snow volume per unit area of each category after the step (m).
+    vsnon: Any = None
+    #: Tracers after the step, shape (ncat, ntrcr, ...) (``None`` when none were given).
+    trcrn: Any = None
+    #: Total ice area (dimensionless), recomputed by the clean-up (Icepack ``aice``).
+    aice: Any = None
+    #: Category bounds after the call (m): the top one is ``big`` (1e8 m) when closing came
+    #: from the deformation, as Icepack writes it.
+    hin_max: Any = None
+    #: Fresh water into the ocean (kg m-2 s-1, averaged over ``ndtd*dt``).
+    fresh: Any = None
+    #: Salt into the ocean (kg m-2 s-1, averaged over ``ndtd*dt``).
+    fsalt: Any = None
+    #: Heat flux into the ocean (W m-2, averaged over ``ndtd*dt``; negative: the ocean melts
+    #: the snow and ice put into it).
+    fhocn: Any = None
+    #: Pond water lost by ridging, with sign (m over the cell, per step): ``-dpnd_ridge``.
+    fpond: Any = None
+    #: Pond water drained by ridging (m over the cell, per step).
+    dpnd_ridge: Any = None
+    #: Ice volume per unit area put into the ocean by the clean-up (m, per step).
+    ice_to_ocean: Any = None
+    #: Snow volume per unit area put into the ocean by ridging and clean-up (m, per step).
+    snow_to_ocean: Any = None
+    #: Ridging passes done (a float array: NaN in masked columns).
+    niter: Any = None
+    #: Per-category diagnostics, shape (ncat, ...) each, Icepack's names and units
+    #: (:data:`STEP_CATEGORY_OUTPUTS`): ``dardg1ndt``, ``dardg2ndt``, ``dvirdgndt``,
+    #: ``aparticn``, ``krdgn``, ``araftn``, ``vraftn``, ``aredistn``, ``vredistn``,
+    #: ``first_ice`` (1 where the clean-up emptied the category).
+    categories: Optional[dict] = None
 
 
 def ridge_step(
@@ -261,15 +311,35 @@ def ridge_step(
     aice0: Any = None,
     *,
     dt: float,
-    convergence: Any,
+    convergence: Any = None,
     shear: Any = 0.0,
     hin_max: Any = None,
     participation: str = "exponential",
     redistribution: str = "exponential",
     valid: Any = None,
+    vsnon: Any = None,
+    trcrn: Any = None,
+    layout: Optional[TracerLayout] = None,
+    aice: Any = None,
+    closing: Any = None,
+    opening: Any = None,
+    tf: Any = None,
+    ndtd: Optional[int] = None,
+    cleanup: Optional[bool] = None,
+    rebin: Optional[bool] = None,
     **params: float,
 ) -> RidgeStepResult:
-    """One ridging step, as CICE/Icepack ``ridge_ice``; the inputs are not modified.
+    """One ridging step; the inputs are not modified.
+
+    Two routines, chosen by the arguments:
+
+    * **the complete step** (Icepack ``icepack_step_ridge``, Rust
+      ``itd::ridge_step_column``, the C ``pressridge_ridge_cell``, bit for bit) when
+      ``trcrn``, ``vsnon`` or ``closing`` is given: ice area, ice volume, snow volume and
+      every tracer move together, the clean-up zaps tiny categories into the ocean fluxes;
+    * **the area-volume step** (Icepack ``ridge_ice`` on ``aicen``, ``vicen`` only, Rust
+      ``itd::ridge_batch_masked``; the call of earlier versions, numbers unchanged)
+      otherwise.
 
     Parameters
     ----------
@@ -277,30 +347,69 @@ def ridge_step(
         Area fractions (dimensionless) and ice volumes per unit area (m) per category.
     aice0 : array_like, shape ``aicen.shape[1:]``, optional
         Open-water fraction; default max(1 - sum(aicen), 0). The total area may exceed 1
-        (up to ``max_area_before_ridging`` = 2, what advection leaves) or fall below it.
+        (what advection leaves) or fall below it.
     dt : float
-        Time step (s, > 0).
+        Dynamics time step (s, > 0).
     convergence : float or array_like
-        Convergence rate -min(div u, 0) (1/s, >= 0), a scalar or of the spatial shape.
+        Icepack ``rdg_conv`` = -min(div u, 0) (1/s, >= 0), a scalar or of the spatial
+        shape. Needed unless ``closing`` is given.
     shear : float or array_like
-        Shear term (Delta - |div u|)/2 (1/s, >= 0); a fraction ``cs`` of it ridges.
-        Default 0.
+        Icepack ``rdg_shear`` = (Delta - |div u|)/2 (1/s, >= 0); a fraction ``cs`` of it
+        ridges. Default 0.
     hin_max : array_like of ncat + 1 floats, optional
         Category bounds (m); default CICE's ``kcatbound = 1`` bounds
         (:func:`category_bounds`).
     participation, redistribution : str
         As in :func:`strength`.
     valid : array_like of bool, optional
-        Columns to step; the others are left unchanged and their aice0 and rates are NaN.
+        Columns to step; the others are left unchanged and their aice0, rates, fluxes and
+        diagnostics are NaN.
+    vsnon : float or array_like, shape (ncat, ...), optional
+        Snow volume per unit area per category (m); complete step. Default 0 (no snow).
+        Snow needs its enthalpy: give ``trcrn`` with it.
+    trcrn : array_like, shape (ncat, layout.ntrcr, ...), optional
+        Tracers (complete step), in the order and units of ``layout``; per column the
+        memory order of Icepack's ``trcrn(ntrcr, ncat)``. Without it the column carries no
+        tracers (the clean-up's heat flux then has no enthalpy to carry).
+    layout : TracerLayout
+        The layout of ``trcrn`` (required with it), e.g.
+        ``TracerLayout.cice(7, 1, age=True, first_year=True, level_ice=True, ponds=True)``.
+    aice : float or array_like, optional
+        Total ice area (Icepack ``aice``, only overwritten by the clean-up); default
+        sum(aicen).
+    closing, opening : float or array_like, optional
+        The host's net closing and opening rates (1/s, >= 0; SIS2's convention): the
+        complete step uses them as given (with ``hin_max`` as given) instead of deriving them
+        from ``convergence`` and ``shear`` (CICE's convention). Give both.
+    tf : float or array_like, optional
+        Freezing temperature (degC) for the surface temperature of emptied categories;
+        default -1.8.
+    ndtd : int, optional
+        Dynamics subcycles per thermodynamic step (>= 1, default 1); the ocean fluxes are
+        averaged over ``ndtd*dt``.
+    cleanup, rebin : bool, optional
+        Icepack's ``docleanup`` and ``dorebin`` (default True): run the clean-up (zap tiny
+        categories into the ocean fluxes, rebin) after ridging.
     **params : float
         ITD parameter overrides (:data:`PARAMETERS`), e.g. ``cs=0.5``.
 
     Returns
     -------
     RidgeStepResult
-        New arrays ``aicen``, ``vicen`` (in the memory order of the input), ``aice0`` and
-        the rates ``closing``, ``opening``, ``dardg1dt``, ``dardg2dt`` (1/s) and
-        ``dvirdgdt`` (m/s). Area and volume are conserved to round-off.
+        New arrays in the memory order of the input (C or Fortran). The area-volume step
+        fills ``aicen``, ``vicen``, ``aice0`` and the rates ``closing``, ``opening``,
+        ``dardg1dt``, ``dardg2dt`` (1/s), ``dvirdgdt`` (m/s); the complete step also
+        ``vsnon``, ``trcrn`` (if given), ``aice``, ``hin_max``, the fluxes ``fresh``,
+        ``fsalt`` (kg m-2 s-1), ``fhocn`` (W m-2), ``fpond``, ``dpnd_ridge`` (m),
+        ``ice_to_ocean``, ``snow_to_ocean`` (m), ``niter`` and ``categories``. Area, ice
+        and snow volume, enthalpy and salt are conserved with the fluxes to round-off.
+
+    Raises
+    ------
+    ValueError
+        Bad shapes, NaN, infinite or negative values, a column where Icepack would abort or
+        return a negative amount (naming the spatial index and what is wrong), unknown
+        options or parameters.
     """
     a = _f64(aicen, "aicen")
     v = _f64(vicen, "vicen")
@@ -310,38 +419,143 @@ def ridge_step(
     a0 = None if aice0 is None else _f64(aice0, "aice0")
     ok = None if valid is None else _bool(valid, "valid")
 
-    def field(x: Any, name: str) -> _np.ndarray:
+    def field(x: Any, name: str, shape: tuple = spatial) -> _np.ndarray:
         f = _f64(x, name)
         try:
-            return _np.broadcast_to(f, spatial)
+            return _np.broadcast_to(f, shape)
         except ValueError:
+            what = "spatial shape" if shape == spatial else "shape"
             raise ValueError(
-                f"{name} has shape {f.shape}, which does not broadcast to the spatial "
-                f"shape of aicen {spatial}"
+                f"{name} has shape {f.shape}, which does not broadcast to the {what} of "
+                f"aicen {shape}"
             ) from None
 
-    conv = field(convergence, "convergence")
-    shr = field(shear, "shear")
-    h = None if hin_max is None else _f64(hin_max, "hin_max").ravel().tolist()
     try:
         dt_f = float(dt)
     except (TypeError, ValueError):
         raise ValueError(f"dt must be a number of seconds, got {dt!r}") from None
-    a_new, v_new, a0_new, rates = _core.ridge_step(
+    h = None if hin_max is None else _f64(hin_max, "hin_max").ravel().tolist()
+    complete = vsnon is not None or trcrn is not None or closing is not None
+    if not complete:
+        extra = [
+            k
+            for k, x in (
+                ("layout", layout),
+                ("aice", aice),
+                ("opening", opening),
+                ("tf", tf),
+                ("ndtd", ndtd),
+                ("cleanup", cleanup),
+                ("rebin", rebin),
+            )
+            if x is not None
+        ]
+        if extra:
+            raise ValueError(
+                f"{', '.join(extra)} belong(s) to the complete step: give trcrn (with layout), "
+                "vsnon or closing as well"
+            )
+        if convergence is None:
+            raise ValueError(
+                "convergence is needed (1/s), or closing and opening (the host's rates)"
+            )
+        conv = field(convergence, "convergence")
+        shr = field(shear, "shear")
+        a_new, v_new, a0_new, rates = _core.ridge_step(
+            a,
+            v,
+            a0,
+            h,
+            conv,
+            shr,
+            dt_f,
+            ok,
+            participation,
+            redistribution,
+            _params(params),
+        )
+        return RidgeStepResult(
+            a_new, v_new, _scalar_if_0d(a0_new), *[_scalar_if_0d(r) for r in rates]
+        )
+
+    if vsnon is not None and trcrn is None:
+        raise ValueError(
+            "vsnon needs trcrn (with layout): the snow's enthalpy is a tracer, and snow "
+            "without it would be zapped by the clean-up"
+        )
+    if trcrn is not None and layout is None:
+        raise ValueError("trcrn needs layout= (a pressridge.TracerLayout)")
+    if layout is not None and not isinstance(layout, TracerLayout):
+        raise ValueError(f"layout must be a pressridge.TracerLayout, got {type(layout).__name__}")
+    rates_given = closing is not None
+    if rates_given:
+        if opening is None:
+            raise ValueError("closing needs opening (1/s): the host gives both rates")
+        if convergence is not None:
+            raise ValueError("give convergence/shear (CICE) or closing/opening (SIS2), not both")
+        c1 = field(closing, "closing")
+        c2 = field(opening, "opening")
+    else:
+        if opening is not None:
+            raise ValueError("opening is given without closing: give both (the host's rates)")
+        if convergence is None:
+            raise ValueError(
+                "convergence is needed (1/s), or closing and opening (the host's rates)"
+            )
+        c1 = field(convergence, "convergence")
+        c2 = field(shear, "shear")
+    s = _np.zeros(a.shape) if vsnon is None else field(vsnon, "vsnon", a.shape)
+    t = None if trcrn is None else _f64(trcrn, "trcrn")
+    ai = None if aice is None else field(aice, "aice")
+    tf_a = field(-1.8 if tf is None else tf, "tf")
+    n = 1 if ndtd is None else ndtd
+    if isinstance(n, (bool, _np.bool_)) or not isinstance(n, (int, _np.integer)):
+        raise ValueError(f"ndtd must be an integer >= 1, got {ndtd!r}")
+    (a_new, v_new, s_new), t_new, (a0_new, ai_new), h_used, cell, cats = _core.ridge_step_full(
         a,
         v,
+        s,
+        t,
+        layout,
         a0,
+        ai,
         h,
-        conv,
-        shr,
+        c1,
+        c2,
+        rates_given,
+        tf_a,
         dt_f,
+        int(n),
         ok,
         participation,
         redistribution,
         _params(params),
+        True if cleanup is None else bool(cleanup),
+        True if rebin is None else bool(rebin),
     )
+    c = {k: _scalar_if_0d(x) for k, x in cell}
     return RidgeStepResult(
-        a_new, v_new, _scalar_if_0d(a0_new), *[_scalar_if_0d(r) for r in rates]
+        aicen=a_new,
+        vicen=v_new,
+        aice0=_scalar_if_0d(a0_new),
+        closing=c["closing"],
+        opening=c["opening"],
+        dardg1dt=c["dardg1dt"],
+        dardg2dt=c["dardg2dt"],
+        dvirdgdt=c["dvirdgdt"],
+        vsnon=s_new,
+        trcrn=t_new,
+        aice=_scalar_if_0d(ai_new),
+        hin_max=h_used,
+        fresh=c["fresh"],
+        fsalt=c["fsalt"],
+        fhocn=c["fhocn"],
+        fpond=c["fpond"],
+        dpnd_ridge=c["dpnd_ridge"],
+        ice_to_ocean=c["ice_to_ocean"],
+        snow_to_ocean=c["snow_to_ocean"],
+        niter=c["niter"],
+        categories=dict(cats),
     )
 
 

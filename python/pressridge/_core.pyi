@@ -50,6 +50,71 @@ def ridge_step(
 ) -> Tuple[_F64, _F64, _F64, List[_F64]]:
     """(aicen, vicen, aice0, [closing, opening, dardg1dt, dardg2dt, dvirdgdt])."""
 
+class TracerLayout:
+    @staticmethod
+    def cice(
+        nilyr: int,
+        nslyr: int,
+        *,
+        age: bool = False,
+        first_year: bool = False,
+        level_ice: bool = False,
+        ponds: bool = False,
+    ) -> "TracerLayout": ...
+    @property
+    def ntrcr(self) -> int: ...
+    @property
+    def nilyr(self) -> int: ...
+    @property
+    def nslyr(self) -> int: ...
+    @property
+    def flags(self) -> dict[str, bool]: ...
+    @property
+    def names(self) -> List[str]: ...
+    @property
+    def units(self) -> List[str]: ...
+    @property
+    def long_names(self) -> List[str]: ...
+    def fields(self) -> List[Tuple[str, int, int, str, List[str], str, str]]:
+        """[(name, first index, levels, base, strata, units, long_name)]."""
+    def field(self, name: str) -> Tuple[int, int]: ...
+    def trcr_depend(self) -> List[int]: ...
+
+def step_outputs() -> Tuple[List[Tuple[str, str, str]], List[Tuple[str, str, str]]]:
+    """([(cell output, units, long_name)], [(category output, units, long_name)])."""
+
+def ridge_step_full(
+    aicen: _F64,
+    vicen: _F64,
+    vsnon: _F64,
+    trcrn: Optional[_F64],
+    layout: Optional[TracerLayout],
+    aice0: Optional[_F64],
+    aice: Optional[_F64],
+    hin_max: Optional[Sequence[float]],
+    c1: _F64,
+    c2: _F64,
+    rates: bool,
+    tf: _F64,
+    dt: float,
+    ndtd: int,
+    valid: Optional[_Bool],
+    participation_name: str,
+    redistribution_name: str,
+    params: Sequence[Tuple[str, float]],
+    cleanup: bool,
+    rebin: bool,
+) -> Tuple[
+    Tuple[_F64, _F64, _F64],
+    Optional[_F64],
+    Tuple[_F64, _F64],
+    _F64,
+    List[Tuple[str, _F64]],
+    List[Tuple[str, _F64]],
+]:
+    """((aicen, vicen, vsnon), trcrn, (aice0, aice), hin_max used, [(cell output, array)],
+    [(category output, array)])."""
+
 def category_bounds(ncat: int, scheme: str = "round_numbers") -> _F64: ...
 def param_names() -> List[str]: ...
 def cf_presets() -> List[Tuple[str, float]]: ...

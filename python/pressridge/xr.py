@@ -27,6 +27,31 @@ import pressridge as _pr
 __all__ = ["strength", "ridge_step"]
 
 
+#: Names of the category dimension looked for, in order, when ``category_dim`` is not given:
+#: CICE history files (``nc``) and restart files (``ncat``).
+CATEGORY_DIMS = ("nc", "ncat")
+_TIME_DIMS = ("time", "t")
+
+
+def _find_category_dim(aicen: xr.DataArray, category_dim: Optional[Hashable]) -> Hashable:
+    """The category dimension of ``aicen``: ``category_dim`` if given, else the first of
+    :data:`CATEGORY_DIMS` it has, else its first dimension unless that is a time dimension."""
+    if category_dim is not None:
+        if category_dim not in aicen.dims:
+            raise ValueError(f"aicen has no dimension {category_dim!r} (dims {aicen.dims})")
+        return category_dim
+    for name in CATEGORY_DIMS:
+        if name in aicen.dims:
+            return name
+    first = aicen.dims[0]
+    if str(first) in _TIME_DIMS:
+        raise ValueError(
+            f"aicen has dimensions {aicen.dims} and none is a category dimension "
+            f"({', '.join(CATEGORY_DIMS)}); name it with category_dim="
+        )
+    return first
+
+
 def _category_vars(ds: xr.Dataset, category_dim: Optional[Hashable]):
     for name in ("aicen", "vicen"):
         if name not in ds:
@@ -34,9 +59,7 @@ def _category_vars(ds: xr.Dataset, category_dim: Optional[Hashable]):
     aicen = ds["aicen"]
     if aicen.ndim == 0:
         raise ValueError("aicen is a scalar; it needs a category dimension")
-    cat = aicen.dims[0] if category_dim is None else category_dim
-    if cat not in aicen.dims:
-        raise ValueError(f"aicen has no dimension {cat!r} (dims {aicen.dims})")
+    cat = _find_category_dim(aicen, category_dim)
     vicen = ds["vicen"]
     if set(vicen.dims) != set(aicen.dims):
         raise ValueError(f"vicen has dimensions {vicen.dims}, expected those of aicen {aicen.dims}")
@@ -186,7 +209,7 @@ def _ridge_block(a, v, *rest, names, scalars, mask, options):
     return (
         np.moveaxis(r.aicen, 0, -1),
         np.moveaxis(r.vicen, 0, -1),
-        *[np.broadcast_to(np.asarray(x), a.shape[1:]) for x in r[2:]],
+        *[np.broadcast_to(np.asarray(x), a.shape[1:]) for x in r[2:8]],
     )
 
 
@@ -228,9 +251,32 @@ def ridge_step(
     redistribution: str = "exponential",
     category_dim: Optional[Hashable] = None,
     mask: Union[str, bool] = "auto",
+    layout: Optional["_pr.TracerLayout"] = None,
+    closing: Any = None,
+    opening: Any = None,
+    tf: Any = None,
+    ndtd: Optional[int] = None,
+    cleanup: Optional[bool] = None,
+    rebin: Optional[bool] = None,
     **params: float,
 ) -> xr.Dataset:
     """One ridging step (``dt`` in s) of the thickness distribution in ``ds``.
+
+    **The complete step** (snow, tracers, ocean fluxes; as :func:`pressridge.ridge_step`)
+    runs when ``layout`` (a :class:`pressridge.TracerLayout`) is given: the dataset then
+    holds ``vsnon`` (m; absent: no snow) and one variable per tracer under its CICE restart
+    name (``layout.names``: ``Tsfcn``, ``qice001``.., ``qsno001``.., ``sice001``.., ``iage``,
+    ``FY``, ``alvl``, ``vlvl``, ``apnd``, ``hpnd``, ``ipnd``), each with the dimensions of
+    ``aicen``. ``closing`` and ``opening`` (1/s, numbers or DataArrays) give the host's
+    rates (SIS2) instead of the deformation (CICE); ``tf`` (degC), ``ndtd``, ``cleanup``,
+    ``rebin`` as in :func:`pressridge.ridge_step`. The result then also has ``vsnon``, the
+    tracers, ``aice``, the fluxes and diagnostics of :data:`pressridge.STEP_CELL_OUTPUTS`
+    and :data:`pressridge.STEP_CATEGORY_OUTPUTS` (with their units), and ``hin_max`` as
+    Icepack leaves it. A dataset with ``vsnon`` but no ``layout`` is refused.
+
+    The category dimension is ``category_dim`` if given, else the first of
+    :data:`CATEGORY_DIMS` (``nc``, ``ncat``) that ``aicen`` has, else its first dimension
+    (unless that is ``time``); every other dimension (``time``, ``nj``, ``ni``...) is kept.
 
     ``convergence`` (1/s): a number or a DataArray on the spatial dimensions; default
     max(-divu, 0) from the dataset's ``divu``. ``shear`` (1/s): likewise; default the
@@ -245,10 +291,36 @@ def ridge_step(
     ``aicen``, ``vicen``, ``aice0`` after the step and the rates ``closing``, ``opening``,
     ``dardg1dt``, ``dardg2dt`` (1/s) and ``dvirdgdt`` (m/s); lazy when the input is dask.
     """
+    if layout is None:
+        extra = [
+            k
+            for k, x in (("closing", closing), ("opening", opening), ("tf", tf), ("ndtd", ndtd),
+                         ("cleanup", cleanup), ("rebin", rebin))
+            if x is not None
+        ]
+        if "vsnon" in ds:
+            raise ValueError(
+                "the dataset has vsnon: snow is ridged with its enthalpy, a tracer; pass "
+                "layout= (a pressridge.TracerLayout naming the tracer variables)"
+            )
+        if extra:
+            raise ValueError(
+                f"{', '.join(extra)} belong(s) to the complete step: pass layout= as well"
+            )
     aicen, vicen, aice0, cat, spatial = _category_vars(ds, category_dim)
     use_mask = _mask_flag(mask, ds["aicen"], ds["vicen"], aice0)
     _pr._params(params)
     conv_desc = "max(-divu, 0) from input"
+    if layout is not None and closing is not None:
+        if convergence is not None or shear is not None:
+            raise ValueError("give convergence/shear (CICE) or closing/opening (SIS2), not both")
+        if opening is None:
+            raise ValueError("closing needs opening (1/s): the host gives both rates")
+        return _complete(
+            ds, aicen, vicen, aice0, cat, spatial, use_mask, layout, dt, hin_max,
+            dict(closing=closing, opening=opening), "host closing/opening",
+            participation, redistribution, tf, ndtd, cleanup, rebin, params,
+        )
 
     def _divu() -> Optional[xr.DataArray]:
         return _rate_per_second(ds["divu"]) if "divu" in ds else None
@@ -279,6 +351,14 @@ def ridge_step(
             shear = _rate_per_second(ds["shear"])
     elif not isinstance(shear, xr.DataArray):
         shear_desc = f"{float(shear)} s-1"
+    if layout is not None:
+        if opening is not None:
+            raise ValueError("opening is given without closing: give both (the host's rates)")
+        return _complete(
+            ds, aicen, vicen, aice0, cat, spatial, use_mask, layout, dt, hin_max,
+            dict(convergence=convergence, shear=shear), f"convergence: {conv_desc}; shear: {shear_desc}",
+            participation, redistribution, tf, ndtd, cleanup, rebin, params,
+        )
     if hin_max is None and "hin_max" in ds:
         hin_max = ds["hin_max"].values
     options = dict(
@@ -344,6 +424,164 @@ def ridge_step(
             "dt": f"{float(dt)} s",
             "convergence": conv_desc,
             "shear": shear_desc,
+            "parameter_overrides": ", ".join(f"{k}={v}" for k, v in params.items()) or "none",
+            "history": (ds.attrs.get("history", "") + "\n" if ds.attrs.get("history") else "")
+            + f"pressridge.xr.ridge_step (pressridge {_pr.__version__})",
+        }
+    )
+    return out
+
+
+def _complete_block(a, v, s, *rest, nt, names, scalars, mask, layout, options):
+    """One chunk of the complete step; apply_ufunc put the category axis last."""
+    a, v, s = (np.moveaxis(x, -1, 0) for x in (a, v, s))
+    t = np.stack([np.moveaxis(x, -1, 0) for x in rest[:nt]], axis=1)  # (ncat, nt, ...)
+    fields = dict(zip(names, rest[nt:]))
+    fields.update(scalars)
+    a0 = fields.pop("aice0", None)
+    valid = None
+    if mask:
+        bad = np.isnan(a).any(0) | np.isnan(v).any(0) | np.isnan(s).any(0)
+        bad |= np.isnan(t).any(axis=(0, 1))
+        if a0 is not None:
+            bad |= np.isnan(a0)
+        valid = ~bad
+    r = _pr.ridge_step(a, v, a0, vsnon=s, trcrn=t, layout=layout, valid=valid, **fields, **options)
+    sp = a.shape[1:]
+    last = lambda x: np.moveaxis(np.asarray(x), 0, -1)  # noqa: E731
+    cell = [np.broadcast_to(np.asarray(getattr(r, k)), sp) for k in _pr.STEP_CELL_OUTPUTS]
+    return (
+        last(r.aicen),
+        last(r.vicen),
+        last(r.vsnon),
+        *[last(r.trcrn[:, it]) for it in range(nt)],
+        np.broadcast_to(np.asarray(r.aice0), sp),
+        np.broadcast_to(np.asarray(r.aice), sp),
+        *cell,
+        *[last(r.categories[k]) for k in _pr.STEP_CATEGORY_OUTPUTS],
+    )
+
+
+def _complete(ds, aicen, vicen, aice0, cat, spatial, use_mask, layout, dt, hin_max, forcing,
+              forcing_desc, participation, redistribution, tf, ndtd, cleanup, rebin, params):
+    """The complete step over the dataset (see :func:`ridge_step`)."""
+    if not isinstance(layout, _pr.TracerLayout):
+        raise ValueError(f"layout must be a pressridge.TracerLayout, got {type(layout).__name__}")
+    names = list(layout.names)
+    missing = [n for n in names if n not in ds]
+    if missing:
+        raise ValueError(
+            f"the dataset lacks the tracer variable(s) {', '.join(missing)} of the layout "
+            f"{layout!r} (CICE restart names)"
+        )
+
+    def cat_var(name: str) -> xr.DataArray:
+        x = ds[name]
+        if set(x.dims) != set(ds["aicen"].dims):
+            raise ValueError(
+                f"{name} has dimensions {x.dims}, expected those of aicen {ds['aicen'].dims}"
+            )
+        return x.chunk({cat: -1}) if x.chunks is not None else x
+
+    vsnon = cat_var("vsnon") if "vsnon" in ds else xr.zeros_like(ds["aicen"])
+    tracers = [cat_var(n) for n in names]
+    if hin_max is None and "hin_max" in ds:
+        hin_max = ds["hin_max"].values
+    options = dict(
+        dt=dt,
+        hin_max=None if hin_max is None else np.asarray(hin_max, dtype=np.float64),
+        participation=participation,
+        redistribution=redistribution,
+        tf=tf if not isinstance(tf, xr.DataArray) else None,
+        ndtd=ndtd,
+        cleanup=cleanup,
+        rebin=rebin,
+        **params,
+    )
+    spatial_in = dict(forcing)
+    spatial_in["aice0"] = aice0
+    if isinstance(tf, xr.DataArray):
+        spatial_in["tf"] = tf
+        options.pop("tf")
+    if "aice" in ds:
+        spatial_in["aice"] = ds["aice"]
+    keys: List[str] = []
+    arrays: List[xr.DataArray] = []
+    scalars = {}
+    for name, x in spatial_in.items():
+        if x is None:
+            continue
+        if isinstance(x, xr.DataArray):
+            keys.append(name)
+            arrays.append(x)
+        else:
+            scalars[name] = float(x)
+    nt = len(names)
+    ncell = len(_pr.STEP_CELL_OUTPUTS)
+    ncatout = len(_pr.STEP_CATEGORY_OUTPUTS)
+    out_core = [[cat]] * (3 + nt) + [[]] * (2 + ncell) + [[cat]] * ncatout
+    results = xr.apply_ufunc(
+        _complete_block,
+        aicen,
+        vicen,
+        vsnon,
+        *tracers,
+        *arrays,
+        input_core_dims=[[cat]] * (3 + nt) + [[]] * len(arrays),
+        output_core_dims=out_core,
+        dask="parallelized",
+        output_dtypes=[np.float64] * len(out_core),
+        kwargs=dict(
+            nt=nt, names=tuple(keys), scalars=scalars, mask=use_mask, layout=layout,
+            options=options,
+        ),
+        keep_attrs=True,
+    )
+    out = ds.copy()
+    dims_cat = list(ds["aicen"].dims)
+
+    def put(name, r, dims, attrs):
+        r = r.transpose(*dims)
+        r.attrs = dict(attrs)
+        out[name] = r
+
+    put("aicen", results[0], dims_cat, ds["aicen"].attrs)
+    put("vicen", results[1], dims_cat, ds["vicen"].attrs)
+    put(
+        "vsnon",
+        results[2],
+        dims_cat,
+        ds["vsnon"].attrs
+        if "vsnon" in ds
+        else {"units": "m", "long_name": "snow volume per unit grid-cell area in each thickness category"},
+    )
+    for it, (name, units, long_name) in enumerate(zip(names, layout.units, layout.long_names)):
+        put(name, results[3 + it], dims_cat, ds[name].attrs or {"units": units, "long_name": long_name})
+    k = 3 + nt
+    put("aice0", results[k], spatial, ds["aice0"].attrs if "aice0" in ds else {"units": "1", "long_name": "open water fraction"})
+    put("aice", results[k + 1], spatial, {"units": "1", "long_name": "total ice area fraction (recomputed by the clean-up)"})
+    for j, (name, (units, long_name)) in enumerate(_pr.STEP_CELL_OUTPUTS.items()):
+        put(name, results[k + 2 + j], spatial, {"units": units, "long_name": long_name})
+    for j, (name, (units, long_name)) in enumerate(_pr.STEP_CATEGORY_OUTPUTS.items()):
+        put(name, results[k + 2 + ncell + j], dims_cat, {"units": units, "long_name": long_name})
+    h = (
+        _pr.category_bounds(ds.sizes[cat])
+        if options["hin_max"] is None
+        else np.array(options["hin_max"])
+    )
+    if "closing" not in forcing:
+        h = np.array(h, dtype=float)
+        h[-1] = _pr.DEFAULT_PARAMETERS["big"] if "big" not in params else float(params["big"])
+    hdims = ds["hin_max"].dims if "hin_max" in ds else [f"{cat}_bounds"]
+    out["hin_max"] = xr.DataArray(h, dims=hdims, attrs={"units": "m", "long_name": "thickness category bounds after the step (Icepack hin_max)"})
+    out.attrs.update(
+        {
+            "ridging_step": "complete (Icepack icepack_step_ridge: snow, tracers, ocean fluxes)",
+            "participation": participation,
+            "redistribution": redistribution,
+            "dt": f"{float(dt)} s",
+            "forcing": forcing_desc,
+            "tracers": " ".join(names),
             "parameter_overrides": ", ".join(f"{k}={v}" for k, v in params.items()) or "none",
             "history": (ds.attrs.get("history", "") + "\n" if ds.attrs.get("history") else "")
             + f"pressridge.xr.ridge_step (pressridge {_pr.__version__})",

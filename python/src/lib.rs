@@ -14,8 +14,8 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Duration;
 
 use ndarray::{
-    ArrayBase, ArrayView, ArrayViewD, ArrayViewMut, ArrayViewMut1, ArrayViewMut2, ArrayViewMutD,
-    CowArray, Dimension, Ix1, Ix2, IxDyn, RawData,
+    ArrayBase, ArrayView, ArrayViewD, ArrayViewMut, ArrayViewMut1, ArrayViewMut2, ArrayViewMut3,
+    ArrayViewMutD, CowArray, Dimension, Ix1, Ix2, Ix3, IxDyn, RawData,
 };
 use numpy::{PyArray1, PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyFileNotFoundError, PyOSError, PyRuntimeError, PyValueError};
@@ -30,9 +30,10 @@ use pressridge::io::IoError;
 use pressridge::io::itd_netcdf::{NetcdfError, read_cf_table};
 use pressridge::io::table_netcdf::{Provenance, write_ridge_table};
 use pressridge::itd::{
-    CategoryBounds, Cf, CfPreset, CfTable, ItdError, ItdParams, Participation, Redistribution,
-    RidgeOptions, RidgeRatesMut, StrengthFormula, StrengthOptions, category_bounds,
-    ridge_batch_masked, strength_batch_masked,
+    BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, CategoryBounds, Cf, CfPreset,
+    CfTable, CiceTracerFlags, ItdError, ItdParams, Participation, Redistribution, RidgeOptions,
+    RidgeRatesMut, RidgeStepOptions, StepBatchMut, StrengthFormula, StrengthOptions, TracerBase,
+    TracerLayout, category_bounds, ridge_batch_masked, ridge_step_batch, strength_batch_masked,
 };
 use pressridge::scene::{Scene, SceneError};
 use pressridge::simulation;
@@ -616,6 +617,525 @@ fn ridge_step<'py>(
     Ok((a_out, v_out, a0_out, rates))
 }
 
+// ---------------------------------------------------------------------------------------
+// The complete ridging step (snow, tracers, ocean fluxes)
+
+fn base_name(b: TracerBase) -> &'static str {
+    match b {
+        TracerBase::Area => "area",
+        TracerBase::IceVolume => "ice_volume",
+        TracerBase::SnowVolume => "snow_volume",
+    }
+}
+
+/// A tracer layout: which tracers each thickness category carries, in what order and on
+/// what base (the Rust ``pressridge::itd::TracerLayout``, not a copy of it).
+///
+/// Make one with ``TracerLayout.cice(nilyr, nslyr, *, age=False, first_year=False,
+/// level_ice=False, ponds=False)``: CICE/Icepack's order ``Tsfc``, ``qice(nilyr)``,
+/// ``qsno(nslyr)``, ``sice(nilyr)``, then ``iage``, ``FY``, ``alvl``, ``vlvl``, ``apnd``,
+/// ``hpnd``, ``ipnd`` as the flags (Icepack's ``tr_iage``, ``tr_FY``, ``tr_lvl``,
+/// ``tr_pond_lvl``) select; ``ponds`` needs ``level_ice``. Units: ``Tsfc`` degC, enthalpies
+/// J m-3 (negative), salinity ppt, age s, fractions 1, pond depth and lid m.
+///
+/// Attributes and methods: ``ntrcr``, ``nilyr``, ``nslyr``, ``flags``, ``fields()`` (name,
+/// first index, levels, base, strata, units, long name), ``field(name)`` (first index,
+/// levels), ``names`` (per tracer, the CICE restart variable name: ``Tsfcn``, ``qice001``...),
+/// ``units``, ``long_names``, ``trcr_depend()`` (Icepack's).
+#[pyclass(frozen, name = "TracerLayout", module = "pressridge._core")]
+struct PyTracerLayout {
+    inner: Arc<TracerLayout>,
+    flags: CiceTracerFlags,
+}
+
+#[pymethods]
+impl PyTracerLayout {
+    /// The CICE/Icepack layout (`TracerLayout::cice`) for `nilyr` ice and `nslyr` snow layers
+    /// (both >= 1) with the optional tracers of `CiceTracerFlags` by keyword.
+    #[staticmethod]
+    #[pyo3(signature = (nilyr, nslyr, *, age = false, first_year = false, level_ice = false, ponds = false))]
+    fn cice(
+        nilyr: i64,
+        nslyr: i64,
+        age: bool,
+        first_year: bool,
+        level_ice: bool,
+        ponds: bool,
+    ) -> PyResult<Self> {
+        for (name, v) in [("nilyr", nilyr), ("nslyr", nslyr)] {
+            if !(1..=1 << 20).contains(&v) {
+                return Err(value_err(format!("{name} = {v}: must be at least 1")).into());
+            }
+        }
+        let flags = CiceTracerFlags {
+            age,
+            first_year,
+            level_ice,
+            ponds,
+        };
+        let l = TracerLayout::cice(nilyr as usize, nslyr as usize, flags).map_err(value_err)?;
+        Ok(Self {
+            inner: Arc::new(l),
+            flags,
+        })
+    }
+
+    /// Tracers per category (Icepack `ntrcr`).
+    #[getter]
+    fn ntrcr(&self) -> usize {
+        self.inner.ntrcr()
+    }
+
+    /// Ice layers.
+    #[getter]
+    fn nilyr(&self) -> usize {
+        self.inner.nilyr()
+    }
+
+    /// Snow layers.
+    #[getter]
+    fn nslyr(&self) -> usize {
+        self.inner.nslyr()
+    }
+
+    /// The optional-tracer flags, as a dict of `CiceTracerFlags` field names.
+    #[getter]
+    fn flags<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        let f = self.flags;
+        for (k, v) in [
+            ("age", f.age),
+            ("first_year", f.first_year),
+            ("level_ice", f.level_ice),
+            ("ponds", f.ponds),
+        ] {
+            d.set_item(k, v)?;
+        }
+        Ok(d)
+    }
+
+    /// Fields in storage order: (name, first index, levels, base, strata, units, long_name).
+    #[allow(clippy::type_complexity)]
+    fn fields(
+        &self,
+    ) -> Vec<(
+        String,
+        usize,
+        usize,
+        &'static str,
+        Vec<String>,
+        &'static str,
+        &'static str,
+    )> {
+        self.inner
+            .fields()
+            .iter()
+            .map(|f| {
+                let (start, _) = self.inner.field(&f.name).expect("own field");
+                (
+                    f.name.clone(),
+                    start,
+                    f.levels,
+                    base_name(f.base),
+                    f.strata.clone(),
+                    f.role.units(),
+                    f.role.long_name(),
+                )
+            })
+            .collect()
+    }
+
+    /// (first index, levels) of the field `name`.
+    fn field(&self, name: &str) -> PyResult<(usize, usize)> {
+        self.inner.field(name).ok_or_else(|| {
+            let known: Vec<&str> = self
+                .inner
+                .fields()
+                .iter()
+                .map(|f| f.name.as_str())
+                .collect();
+            value_err(format!(
+                "no tracer field `{name}` in this layout (it has: {})",
+                known.join(", ")
+            ))
+            .into()
+        })
+    }
+
+    /// Per tracer, the variable name of a CICE restart file (`Tsfcn`, `qice001`, ...).
+    #[getter]
+    fn names(&self) -> Vec<String> {
+        self.inner.cice_restart_names()
+    }
+
+    /// Per tracer, its CF units.
+    #[getter]
+    fn units(&self) -> Vec<&'static str> {
+        (0..self.inner.ntrcr())
+            .map(|it| {
+                self.inner
+                    .field_of(it)
+                    .expect("index in range")
+                    .0
+                    .role
+                    .units()
+            })
+            .collect()
+    }
+
+    /// Per tracer, its long name.
+    #[getter]
+    fn long_names(&self) -> Vec<&'static str> {
+        (0..self.inner.ntrcr())
+            .map(|it| {
+                self.inner
+                    .field_of(it)
+                    .expect("index in range")
+                    .0
+                    .role
+                    .long_name()
+            })
+            .collect()
+    }
+
+    /// Icepack's `trcr_depend` per tracer (0 area, 1 ice volume, 2 snow volume, 2 + nt).
+    fn trcr_depend(&self) -> Vec<i32> {
+        self.inner.trcr_depend()
+    }
+
+    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+        other
+            .cast::<PyTracerLayout>()
+            .is_ok_and(|o| *o.get().inner == *self.inner)
+    }
+
+    fn __hash__(&self) -> u64 {
+        let f = self.flags;
+        (self.inner.nilyr() as u64) << 8
+            ^ (self.inner.nslyr() as u64) << 4
+            ^ u64::from(f.age)
+            ^ u64::from(f.first_year) << 1
+            ^ u64::from(f.level_ice) << 2
+            ^ u64::from(f.ponds) << 3
+    }
+
+    fn __repr__(&self) -> String {
+        let f = self.flags;
+        format!(
+            "TracerLayout.cice(nilyr={}, nslyr={}, age={}, first_year={}, level_ice={}, ponds={}) with {} tracers",
+            self.inner.nilyr(),
+            self.inner.nslyr(),
+            py_bool(f.age),
+            py_bool(f.first_year),
+            py_bool(f.level_ice),
+            py_bool(f.ponds),
+            self.inner.ntrcr()
+        )
+    }
+
+    /// Pickling (dask workers): rebuilt from its constructor's arguments.
+    #[allow(clippy::type_complexity)]
+    fn __reduce__<'py>(
+        slf: &Bound<'py, Self>,
+    ) -> PyResult<(Bound<'py, PyAny>, (usize, usize, bool, bool, bool, bool))> {
+        let me = slf.get();
+        let f = me.flags;
+        let make = slf.getattr("_from_args")?;
+        Ok((
+            make,
+            (
+                me.inner.nilyr(),
+                me.inner.nslyr(),
+                f.age,
+                f.first_year,
+                f.level_ice,
+                f.ponds,
+            ),
+        ))
+    }
+
+    #[staticmethod]
+    fn _from_args(
+        nilyr: i64,
+        nslyr: i64,
+        age: bool,
+        first_year: bool,
+        level_ice: bool,
+        ponds: bool,
+    ) -> PyResult<Self> {
+        Self::cice(nilyr, nslyr, age, first_year, level_ice, ponds)
+    }
+}
+
+fn py_bool(b: bool) -> &'static str {
+    if b { "True" } else { "False" }
+}
+
+/// Names, units and long names of the per-cell and per-category outputs of the complete step
+/// (`pressridge::itd::CELL_OUTPUTS`, `CATEGORY_OUTPUTS`).
+#[pyfunction]
+#[allow(clippy::type_complexity)]
+fn step_outputs() -> (
+    Vec<(&'static str, &'static str, &'static str)>,
+    Vec<(&'static str, &'static str, &'static str)>,
+) {
+    let f = |m: &pressridge::itd::OutputMeta| (m.name, m.units, m.long_name);
+    (
+        CELL_OUTPUTS.iter().map(f).collect(),
+        CATEGORY_OUTPUTS.iter().map(f).collect(),
+    )
+}
+
+/// Arrays returned by `ridge_step_full`.
+type FullOut<'py> = (
+    [Bound<'py, PyArrayDyn<f64>>; 3],
+    Option<Bound<'py, PyArrayDyn<f64>>>,
+    [Bound<'py, PyArrayDyn<f64>>; 2],
+    Bound<'py, PyArray1<f64>>,
+    Vec<(&'static str, Bound<'py, PyArrayDyn<f64>>)>,
+    Vec<(&'static str, Bound<'py, PyArrayDyn<f64>>)>,
+);
+
+/// The complete ridging step (`itd::ridge_step_batch`); see `pressridge.ridge_step`. Every
+/// spatial argument already has the spatial shape of `aicen` (the Python side broadcasts).
+/// `rates`: `c1`, `c2` are the host's closing and opening rates, else Icepack's convergence
+/// and shear terms. Without `trcrn` the column carries no tracers (zeros of a minimal layout,
+/// not returned). Returns ([aicen, vicen, vsnon], trcrn, [aice0, aice], hin_max used,
+/// [(cell output, array)], [(category output, array)]); the inputs are not modified.
+#[pyfunction]
+#[pyo3(signature = (aicen, vicen, vsnon, trcrn, layout, aice0, aice, hin_max, c1, c2, rates, tf, dt, ndtd, valid, participation_name, redistribution_name, params, cleanup, rebin))]
+#[allow(clippy::too_many_arguments)]
+fn ridge_step_full<'py>(
+    py: Python<'py>,
+    aicen: PyReadonlyArrayDyn<'py, f64>,
+    vicen: PyReadonlyArrayDyn<'py, f64>,
+    vsnon: PyReadonlyArrayDyn<'py, f64>,
+    trcrn: Option<PyReadonlyArrayDyn<'py, f64>>,
+    layout: Option<PyRef<'py, PyTracerLayout>>,
+    aice0: Option<PyReadonlyArrayDyn<'py, f64>>,
+    aice: Option<PyReadonlyArrayDyn<'py, f64>>,
+    hin_max: Option<Vec<f64>>,
+    c1: PyReadonlyArrayDyn<'py, f64>,
+    c2: PyReadonlyArrayDyn<'py, f64>,
+    rates: bool,
+    tf: PyReadonlyArrayDyn<'py, f64>,
+    dt: f64,
+    ndtd: i64,
+    valid: Option<PyReadonlyArrayDyn<'py, bool>>,
+    participation_name: &str,
+    redistribution_name: &str,
+    params: Vec<(String, f64)>,
+    cleanup: bool,
+    rebin: bool,
+) -> PyResult<FullOut<'py>> {
+    let spatial = category_shapes(&aicen, &vicen)?;
+    let full = aicen.shape().to_vec();
+    let ncat = full[0];
+    check_shape("vsnon", vsnon.shape(), &full, "the shape of aicen")?;
+    let (n1, n2) = if rates {
+        ("closing", "opening")
+    } else {
+        ("convergence", "shear")
+    };
+    for (var, x) in [(n1, &c1), (n2, &c2), ("tf", &tf)] {
+        check_shape(var, x.shape(), &spatial, "the spatial shape of aicen")?;
+    }
+    for (var, x) in [("aice0", &aice0), ("aice", &aice)] {
+        if let Some(x) = x {
+            check_shape(var, x.shape(), &spatial, "the spatial shape of aicen")?;
+        }
+    }
+    if let Some(v) = &valid {
+        check_shape("valid", v.shape(), &spatial, "the spatial shape of aicen")?;
+    }
+    if !(dt > 0.0 && dt.is_finite()) {
+        return Err(value_err(format!(
+            "dt = {dt}: must be a positive, finite number of seconds"
+        ))
+        .into());
+    }
+    if !(1..=i64::from(u32::MAX)).contains(&ndtd) {
+        return Err(value_err(format!("ndtd = {ndtd}: must be at least 1")).into());
+    }
+    let layout: Arc<TracerLayout> = match (&trcrn, &layout) {
+        (Some(_), Some(l)) => l.inner.clone(),
+        (Some(_), None) => return Err(value_err("trcrn needs its layout: pass layout=").into()),
+        (None, Some(_)) => {
+            return Err(value_err("layout is given but trcrn is not: pass both or neither").into());
+        }
+        (None, None) => {
+            Arc::new(TracerLayout::cice(1, 1, CiceTracerFlags::default()).map_err(value_err)?)
+        }
+    };
+    let nt = layout.ntrcr();
+    let mut tshape = vec![ncat, nt];
+    tshape.extend_from_slice(&spatial);
+    if let Some(t) = &trcrn {
+        check_shape(
+            "trcrn",
+            t.shape(),
+            &tshape,
+            "(ncat, layout.ntrcr, spatial...) =",
+        )?;
+    }
+    let ro = RidgeOptions {
+        participation: participation(participation_name)?,
+        redistribution: redistribution(redistribution_name)?,
+        params: itd_params(params)?,
+    };
+    let opts = RidgeStepOptions {
+        participation: ro.participation,
+        redistribution: ro.redistribution,
+        params: ro.params,
+        cleanup,
+        rebin,
+        ..Default::default()
+    };
+    let hin_max = match hin_max {
+        Some(h) => h,
+        None => category_bounds(&CategoryBounds::RoundNumbers, ncat).map_err(value_err)?,
+    };
+    if hin_max.len() != ncat + 1 {
+        return Err(value_err(format!(
+            "hin_max has {} values, expected ncat + 1 = {}",
+            hin_max.len(),
+            ncat + 1
+        ))
+        .into());
+    }
+    let a = aicen.as_array();
+    let order = choose_order(&a);
+    let state: [Bound<'py, PyArrayDyn<f64>>; 3] =
+        std::array::from_fn(|_| new_array(py, &full, order));
+    let t_out = new_array(py, &tshape, order);
+    let scal: [Bound<'py, PyArrayDyn<f64>>; 2] =
+        std::array::from_fn(|_| new_array(py, &spatial, order));
+    let cell: Vec<Bound<'py, PyArrayDyn<f64>>> = CELL_OUTPUTS
+        .iter()
+        .map(|_| new_array(py, &spatial, order))
+        .collect();
+    let cats: Vec<Bound<'py, PyArrayDyn<f64>>> = CATEGORY_OUTPUTS
+        .iter()
+        .map(|_| new_array(py, &full, order))
+        .collect();
+    {
+        let mut s_rw: Vec<_> = state.iter().map(|x| x.readwrite()).collect();
+        let mut s_cols: Vec<ArrayViewMut2<'_, f64>> = s_rw
+            .iter_mut()
+            .map(|x| columns_mut(x.as_array_mut(), order))
+            .collect();
+        let mut t_rw = t_out.readwrite();
+        let mut t_cols: ArrayViewMut3<'_, f64> = flatten_mut(t_rw.as_array_mut(), 2, order);
+        let mut sc_rw: Vec<_> = scal.iter().map(|x| x.readwrite()).collect();
+        let mut sc_flat: Vec<ArrayViewMut1<'_, f64>> = sc_rw
+            .iter_mut()
+            .map(|x| flat_mut(x.as_array_mut(), order))
+            .collect();
+        s_cols[0].assign(&columns(a, order));
+        s_cols[1].assign(&columns(vicen.as_array(), order));
+        s_cols[2].assign(&columns(vsnon.as_array(), order));
+        if let Some(t) = &trcrn {
+            let tv: CowArray<'_, f64, Ix3> = flatten(t.as_array(), 2, order);
+            t_cols.assign(&tv);
+        }
+        match &aice0 {
+            Some(x) => sc_flat[0].assign(&flat(x.as_array(), order)),
+            None => {
+                for (c, x) in sc_flat[0].iter_mut().enumerate() {
+                    *x = f64::max(1.0 - s_cols[0].column(c).sum(), 0.0);
+                }
+            }
+        }
+        match &aice {
+            Some(x) => sc_flat[1].assign(&flat(x.as_array(), order)),
+            None => {
+                for (c, x) in sc_flat[1].iter_mut().enumerate() {
+                    *x = s_cols[0].column(c).sum();
+                }
+            }
+        }
+        let c1f = flat(c1.as_array(), order);
+        let c2f = flat(c2.as_array(), order);
+        let tff = flat(tf.as_array(), order);
+        let ok = valid.as_ref().map(|x| flat_bool(x.as_array(), order));
+        let mut cell_rw: Vec<_> = cell.iter().map(|x| x.readwrite()).collect();
+        let mut cell_views: Vec<ArrayViewMut1<'_, f64>> = cell_rw
+            .iter_mut()
+            .map(|x| flat_mut(x.as_array_mut(), order))
+            .collect();
+        let mut cat_rw: Vec<_> = cats.iter().map(|x| x.readwrite()).collect();
+        let mut cat_views: Vec<ArrayViewMut2<'_, f64>> = cat_rw
+            .iter_mut()
+            .map(|x| columns_mut(x.as_array_mut(), order))
+            .collect();
+        let layout_ref = &*layout;
+        detached(py, || {
+            let closing = if rates {
+                BatchClosing::Rates {
+                    closing: c1f.view(),
+                    opening: c2f.view(),
+                }
+            } else {
+                BatchClosing::Deformation {
+                    convergence: c1f.view(),
+                    shear: c2f.view(),
+                }
+            };
+            let [sa, sv, ss] = <[ArrayViewMut2<'_, f64>; 3]>::try_from(s_cols)
+                .map_err(|_| BindError::Internal("three state arrays".into()))?;
+            let [s0, s1] = <[ArrayViewMut1<'_, f64>; 2]>::try_from(sc_flat)
+                .map_err(|_| BindError::Internal("two cell state arrays".into()))?;
+            let mut a0_keep = s0;
+            ridge_step_batch(
+                StepBatchMut {
+                    aicen: sa,
+                    vicen: sv,
+                    vsnon: ss,
+                    trcrn: t_cols,
+                    aice0: a0_keep.view_mut(),
+                    aice: s1,
+                },
+                &hin_max,
+                BatchForcing {
+                    closing,
+                    tf: tff.view(),
+                    dt,
+                    ndtd: ndtd as u32,
+                },
+                ok.as_ref().map(|x| x.view()),
+                f64::NAN,
+                &opts,
+                layout_ref,
+                &mut cell_views,
+                Some(&mut cat_views),
+            )
+            .map_err(|e| itd_err(e, &spatial, order))?;
+            // Masked columns: their open water is missing, like their outputs.
+            if let Some(ok) = &ok {
+                for (x, &good) in a0_keep.iter_mut().zip(ok.iter()) {
+                    if !good {
+                        *x = f64::NAN;
+                    }
+                }
+            }
+            Ok(())
+        })?;
+    }
+    let mut h_used = hin_max.clone();
+    if !rates {
+        h_used[ncat] = opts.params.big;
+    }
+    let [aicen_o, vicen_o, vsnon_o] = state;
+    Ok((
+        [aicen_o, vicen_o, vsnon_o],
+        trcrn.is_some().then_some(t_out),
+        scal,
+        PyArray1::from_vec(py, h_used),
+        CELL_OUTPUTS.iter().map(|m| m.name).zip(cell).collect(),
+        CATEGORY_OUTPUTS.iter().map(|m| m.name).zip(cats).collect(),
+    ))
+}
+
 /// The `ncat + 1` category bounds hin_max (m) of a CICE `kcatbound` option.
 #[pyfunction]
 #[pyo3(name = "category_bounds", signature = (ncat, scheme = "round_numbers"))]
@@ -1138,6 +1658,9 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(strength, m)?)?;
     m.add_function(wrap_pyfunction!(layout, m)?)?;
     m.add_function(wrap_pyfunction!(ridge_step, m)?)?;
+    m.add_function(wrap_pyfunction!(ridge_step_full, m)?)?;
+    m.add_function(wrap_pyfunction!(step_outputs, m)?)?;
+    m.add_class::<PyTracerLayout>()?;
     m.add_function(wrap_pyfunction!(category_bounds_py, m)?)?;
     m.add_function(wrap_pyfunction!(param_names, m)?)?;
     m.add_function(wrap_pyfunction!(cf_presets, m)?)?;

@@ -77,7 +77,7 @@ def test_ridge_step_equals_numpy_and_keeps_the_dataset(ds, cli, sample, tmp_path
         convergence=np.maximum(-ds.divu.values, 0),
         shear=ds.shear.values,
     )
-    for name in n._fields:
+    for name in n._fields[:8]:  # the area-volume step's fields
         np.testing.assert_array_equal(r[name].values, getattr(n, name), err_msg=name)
     assert r.aicen.dims == ds.aicen.dims and r.aicen.attrs == ds.aicen.attrs
     assert r.closing.attrs["units"] == "s-1" and r.dvirdgdt.attrs["units"] == "m s-1"

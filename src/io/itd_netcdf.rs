@@ -17,9 +17,9 @@
 
 use std::path::{Path, PathBuf};
 
-use ndarray::{Array1, Array2};
+use ndarray::{Array1, Array2, Array3};
 
-use crate::itd::{CfTable, ItdError};
+use crate::itd::{CfTable, CiceTracerFlags, ItdError, TracerLayout};
 
 /// Dimensions of a variable: (name, length) in file order.
 pub type Dims = Vec<(String, usize)>;
@@ -443,6 +443,185 @@ pub fn read_itd(path: &Path) -> Result<ItdGrid, NetcdfError> {
     Ok(grid)
 }
 
+/// Snow and tracers of a gridded distribution, for the complete ridging step. Variable names
+/// are CICE restart names ([`TracerLayout::cice_restart_names`]): `vsnon` (m), `Tsfcn`,
+/// `qice001`.., `sice001`.., `qsno001`.., and `iage`, `FY`, `alvl`, `vlvl`, `apnd`, `hpnd`,
+/// `ipnd` where present, each with the dimensions of `aicen`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SnowTracers {
+    /// The CICE layout found in the file.
+    pub layout: TracerLayout,
+    /// The optional tracers found.
+    pub flags: CiceTracerFlags,
+    /// Snow volume per unit area (m), `(ncat, ncol)`; zeros when the file has no `vsnon`.
+    pub vsnon: Array2<f64>,
+    /// Tracers `(ncat, ntrcr, ncol)` in the layout's order and units.
+    pub trcrn: Array3<f64>,
+    /// Columns with a fill value in `vsnon` or a tracer (false), if any.
+    pub missing: Option<Array1<bool>>,
+    /// The fill value of those variables, if any has one.
+    pub fill_value: Option<f64>,
+}
+
+/// Number of consecutive variables `<prefix>001`, `<prefix>002`, ... in the file.
+fn count_levels(file: &netcdf::File, prefix: &str) -> usize {
+    (1..)
+        .take_while(|k| file.variable(&format!("{prefix}{k:03}")).is_some())
+        .count()
+}
+
+/// Reads the snow and tracers that go with `grid` (read from the same file by [`read_itd`]):
+/// `Ok(None)` when the file has none of `vsnon`, `Tsfcn`, `qice001`, `sice001`, `qsno001`
+/// (then only area and volume can be ridged). The numbers of ice and snow layers are those
+/// of the `qice` and `qsno` variables found; each optional tracer group (`iage`; `FY`;
+/// `alvl` with `vlvl`; `apnd`, `hpnd`, `ipnd`) is used when all its variables are present.
+/// Errors name the missing or malformed variable.
+pub fn read_snow_tracers(path: &Path, grid: &ItdGrid) -> Result<Option<SnowTracers>, NetcdfError> {
+    let file = netcdf::open(path).map_err(nc_err(path))?;
+    let has = |n: &str| file.variable(n).is_some();
+    let nilyr = count_levels(&file, "qice");
+    let nslyr = count_levels(&file, "qsno");
+    let base_probe = TracerLayout::cice(1, 1, CiceTracerFlags::default())
+        .expect("the minimal CICE layout is valid")
+        .cice_restart_names();
+    if !has("vsnon") && !base_probe.iter().any(|n| has(n)) {
+        return Ok(None);
+    }
+    let missing_var = |var: String, why: &str| NetcdfError::Value {
+        path: path.to_path_buf(),
+        var,
+        msg: format!("missing: {why}"),
+    };
+    if nilyr == 0 || nslyr == 0 {
+        let var = if nilyr == 0 { "qice001" } else { "qsno001" };
+        return Err(missing_var(
+            var.into(),
+            "the complete ridging step needs the ice enthalpy qice001.. and snow enthalpy \
+             qsno001.. with vsnon and the other tracers (CICE restart names)",
+        ));
+    }
+    let base = TracerLayout::cice(nilyr, nslyr, CiceTracerFlags::default())
+        .map_err(|source| NetcdfError::Itd {
+            path: path.to_path_buf(),
+            source,
+        })?
+        .cice_restart_names();
+    // Each optional group: the names it adds to the layout below it.
+    let groups: [(CiceTracerFlags, CiceTracerFlags); 4] = {
+        let f = |age, first_year, level_ice, ponds| CiceTracerFlags {
+            age,
+            first_year,
+            level_ice,
+            ponds,
+        };
+        [
+            (f(true, false, false, false), f(false, false, false, false)),
+            (f(false, true, false, false), f(false, false, false, false)),
+            (f(false, false, true, false), f(false, false, false, false)),
+            (f(false, false, true, true), f(false, false, true, false)),
+        ]
+    };
+    let mut flags = CiceTracerFlags::default();
+    for (k, (with, without)) in groups.iter().enumerate() {
+        let names = |fl: CiceTracerFlags| {
+            TracerLayout::cice(nilyr, nslyr, fl)
+                .expect("CICE layouts with level ice are valid")
+                .cice_restart_names()
+        };
+        let below = names(*without);
+        let added: Vec<String> = names(*with)
+            .into_iter()
+            .filter(|n| !below.contains(n))
+            .collect();
+        let present: Vec<bool> = added.iter().map(|n| has(n)).collect();
+        if present.iter().all(|p| *p) {
+            match k {
+                0 => flags.age = true,
+                1 => flags.first_year = true,
+                2 => flags.level_ice = true,
+                _ => flags.ponds = true,
+            }
+        } else if present.iter().any(|p| *p) {
+            let miss = added
+                .iter()
+                .zip(&present)
+                .find(|(_, p)| !**p)
+                .map(|(n, _)| n.clone())
+                .unwrap_or_default();
+            return Err(missing_var(
+                miss,
+                &format!("the tracers {} go together", added.join(", ")),
+            ));
+        }
+    }
+    if flags.ponds && !flags.level_ice {
+        flags.ponds = false;
+    }
+    let layout = TracerLayout::cice(nilyr, nslyr, flags).map_err(|source| NetcdfError::Itd {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    let names = layout.cice_restart_names();
+    for n in base.iter().chain(&names) {
+        if !has(n) {
+            return Err(missing_var(
+                n.clone(),
+                &format!(
+                    "the file has qice001..qice{nilyr:03} and qsno001..qsno{nslyr:03}, so the \
+                     layout needs {n}"
+                ),
+            ));
+        }
+    }
+    let (ncat, ncol) = (grid.ncat(), grid.ncol());
+    let mut dims = vec![(grid.ncat_dim.clone(), ncat)];
+    dims.extend(grid.spatial_dims.iter().cloned());
+    let mut fill_value = None;
+    let mut missing = vec![false; ncol];
+    let mut read_cat = |name: &str| -> Result<Array2<f64>, NetcdfError> {
+        let v = file.variable(name).expect("presence checked");
+        let d = dims_of(&v);
+        if d != dims {
+            return Err(NetcdfError::Shape {
+                path: path.to_path_buf(),
+                var: name.into(),
+                expected: fmt_dims(&dims),
+                found: fmt_dims(&d),
+            });
+        }
+        let fill = fill_of(&v);
+        fill_value = fill_value.or(fill);
+        let a = Array2::from_shape_vec((ncat, ncol), read_f64(path, &v)?)
+            .expect("length checked by the library");
+        for (c, m) in missing.iter_mut().enumerate() {
+            if a.column(c).iter().any(|&x| is_fill(x, fill)) {
+                *m = true;
+            }
+        }
+        Ok(a)
+    };
+    let vsnon = if has("vsnon") {
+        read_cat("vsnon")?
+    } else {
+        Array2::zeros((ncat, ncol))
+    };
+    let nt = layout.ntrcr();
+    let mut trcrn = Array3::zeros((ncat, nt, ncol));
+    for (it, name) in names.iter().enumerate() {
+        let a = read_cat(name)?;
+        trcrn.index_axis_mut(ndarray::Axis(1), it).assign(&a);
+    }
+    let any_missing = missing.iter().any(|m| *m);
+    Ok(Some(SnowTracers {
+        layout,
+        flags,
+        vsnon,
+        trcrn,
+        missing: any_missing.then(|| missing.into_iter().map(|m| !m).collect()),
+        fill_value,
+    }))
+}
+
 /// Refuses a category volume beyond [`crate::limits::CATEGORY_THICKNESS`] (vicen ≤ vicen /
 /// aicen, so a larger vicen means thicker ice than any), which would overflow the squares
 /// and exponentials of the strength and ridging formulas into inf or NaN. Masked columns are
@@ -560,6 +739,9 @@ pub struct Output<'a> {
     pub hin_max: Option<&'a [f64]>,
     /// Extra fields on the spatial dimensions, `ncol` values each.
     pub fields: &'a [(FieldMeta<'a>, &'a [f64])],
+    /// Extra fields on the category and spatial dimensions (as `aicen`), `ncat·ncol` values
+    /// each in C order (category slowest); written after `fields`.
+    pub category_fields: &'a [(FieldMeta<'a>, &'a [f64])],
     /// Global attributes (name, value): options used.
     pub global: &'a [(String, String)],
     /// Fill value for masked columns (`grid.valid` false): written as `_FillValue` of every
@@ -583,6 +765,16 @@ fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), Netc
     let e = nc_err(path);
     let g = out.grid;
     let ncol = g.ncol();
+    for (meta, data) in out.category_fields {
+        if data.len() != ncol * g.ncat() {
+            return Err(NetcdfError::Shape {
+                path: path.to_path_buf(),
+                var: meta.name.into(),
+                expected: format!("{} values", ncol * g.ncat()),
+                found: format!("{} values", data.len()),
+            });
+        }
+    }
     for (meta, data) in out.fields {
         if data.len() != ncol {
             return Err(NetcdfError::Shape {
@@ -659,13 +851,18 @@ fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), Netc
     for (meta, data) in out.fields {
         items.push((*meta, spatial.clone(), data));
     }
+    for (meta, data) in out.category_fields {
+        items.push((*meta, cat_dims.clone(), data));
+    }
 
     let mut f = netcdf::create_with(tmp, netcdf::Options::_64BIT_OFFSET).map_err(&e)?;
     for (n, l) in &g.spatial_dims {
         f.add_dimension(n, *l).map_err(&e)?;
     }
-    if out.write_itd {
+    if out.write_itd || !out.category_fields.is_empty() {
         f.add_dimension(&g.ncat_dim, g.ncat()).map_err(&e)?;
+    }
+    if out.write_itd {
         if let Some(h) = out.hin_max {
             f.add_dimension(&bdim, h.len()).map_err(&e)?;
         }

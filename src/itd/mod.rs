@@ -21,6 +21,7 @@ pub mod params;
 pub mod participation;
 pub mod redistribution;
 pub mod ridge_step;
+pub mod ridge_step_batch;
 pub mod ridging;
 pub mod strength;
 pub mod tracers;
@@ -32,6 +33,10 @@ pub use ridge_step::{
     Closing, ColumnMut, OceanFluxes, RidgeStepOptions, RidgeStepParams, SaltFlux, StepDiagnostics,
     StepForcing, StepWorkspace, deformation_terms, percent_per_day_to_per_second,
     ridge_step_column,
+};
+pub use ridge_step_batch::{
+    BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, OutputMeta, StepBatchMut,
+    ridge_step_batch,
 };
 pub use ridging::{
     RidgeDiagnostics, RidgeForcing, RidgeOptions, RidgeRatesMut, ridge_batch, ridge_batch_masked,

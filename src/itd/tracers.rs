@@ -62,6 +62,51 @@ pub enum TracerRole {
     Other,
 }
 
+impl TracerRole {
+    /// CF `units` of a tracer of this role (CICE's units: °C, J m⁻³, ppt, s, m; `""` for
+    /// [`TracerRole::Other`], whose units the host defines).
+    pub fn units(self) -> &'static str {
+        use TracerRole::*;
+        match self {
+            SurfaceTemperature => "degC",
+            IceEnthalpy | SnowEnthalpy => "J m-3",
+            IceSalinity => "ppt",
+            Age => "s",
+            FirstYear | LevelArea | LevelVolume | PondArea => "1",
+            PondDepth | PondLid => "m",
+            Other => "",
+        }
+    }
+
+    /// A CF `long_name` of a tracer of this role.
+    pub fn long_name(self) -> &'static str {
+        use TracerRole::*;
+        match self {
+            SurfaceTemperature => "ice/snow surface temperature",
+            IceEnthalpy => "ice enthalpy of a layer (negative)",
+            SnowEnthalpy => "snow enthalpy of a layer (negative)",
+            IceSalinity => "ice salinity of a layer",
+            Age => "ice age",
+            FirstYear => "first-year ice area fraction",
+            LevelArea => "level ice area fraction",
+            LevelVolume => "level ice volume fraction",
+            PondArea => "melt pond area fraction of the level ice",
+            PondDepth => "melt pond depth",
+            PondLid => "refrozen melt pond lid thickness",
+            Other => "tracer",
+        }
+    }
+
+    /// Whether CICE numbers this role's variables per layer (`qice001`, ...) even with one
+    /// layer.
+    fn layered(self) -> bool {
+        matches!(
+            self,
+            TracerRole::IceEnthalpy | TracerRole::SnowEnthalpy | TracerRole::IceSalinity
+        )
+    }
+}
+
 /// One named tracer field (one or more levels, consecutive in the tracer vector).
 #[derive(Debug, Clone, PartialEq)]
 pub struct TracerField {
@@ -379,6 +424,31 @@ impl TracerLayout {
             .map(|i| (self.starts[i], self.fields[i].levels))
     }
 
+    /// The name of every tracer (index order) as a CICE restart file names its variable:
+    /// `Tsfcn` for the surface temperature, `<field>NNN` (level 1-based, three digits:
+    /// `qice001`, `sice007`, `qsno001`) for the per-layer fields and for any field with more
+    /// than one level, else the field name (`iage`, `FY`, `alvl`, `vlvl`, `apnd`, `hpnd`,
+    /// `ipnd`). The NetCDF face of the ridging step reads and writes these names.
+    pub fn cice_restart_names(&self) -> Vec<String> {
+        let mut names = Vec::with_capacity(self.ntrcr);
+        for f in &self.fields {
+            if f.role == TracerRole::SurfaceTemperature && f.levels == 1 {
+                names.push(format!("{}n", f.name));
+            } else if f.role.layered() || f.levels > 1 {
+                names.extend((1..=f.levels).map(|k| format!("{}{k:03}", f.name)));
+            } else {
+                names.push(f.name.clone());
+            }
+        }
+        names
+    }
+
+    /// The field of tracer `it` (index order) and the tracer's level in it (0-based).
+    pub fn field_of(&self, it: usize) -> Option<(&TracerField, usize)> {
+        let i = self.starts.iter().rposition(|&s| s <= it)?;
+        (it < self.ntrcr).then(|| (&self.fields[i], it - self.starts[i]))
+    }
+
     /// Icepack's `trcr_depend` per tracer: 0 area, 1 ice volume, 2 snow volume, `2 + nt`
     /// (1-based `nt`) for a tracer carried on tracer `nt` (its innermost stratum).
     pub fn trcr_depend(&self) -> Vec<i32> {
@@ -486,6 +556,29 @@ mod tests {
         assert_eq!(d[20], 2 + 19);
         assert_eq!(d[21], 2 + 21);
         assert_eq!(l.strata_one_based()[21], [19, 21]);
+    }
+
+    #[test]
+    fn cice_restart_names_follow_the_layout() {
+        let l = TracerLayout::cice(7, 1, CiceTracerFlags::ALL).unwrap();
+        let n = l.cice_restart_names();
+        assert_eq!(n.len(), 23);
+        assert_eq!(n[0], "Tsfcn");
+        assert_eq!(n[1], "qice001");
+        assert_eq!(n[7], "qice007");
+        assert_eq!(n[8], "qsno001");
+        assert_eq!(n[9], "sice001");
+        assert_eq!(n[16], "iage");
+        assert_eq!(n[22], "ipnd");
+        assert_eq!(
+            l.field_of(8).map(|(f, k)| (f.name.as_str(), k)),
+            Some(("qsno", 0))
+        );
+        assert_eq!(
+            l.field_of(12).map(|(f, k)| (f.name.as_str(), k)),
+            Some(("sice", 3))
+        );
+        assert!(l.field_of(23).is_none());
     }
 
     #[test]

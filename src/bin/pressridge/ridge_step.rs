@@ -1,12 +1,20 @@
-//! `pressridge ridge-step`: one ridging step on a gridded thickness distribution.
+//! `pressridge ridge-step`: one ridging step on a gridded thickness distribution: the
+//! complete step (snow, tracers, ocean fluxes; `itd::ridge_step_batch`) when the input has
+//! snow or tracers under their CICE restart names, else the area-volume step
+//! (`itd::ridge_batch_masked`).
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
-use ndarray::Array1;
-use pressridge::io::itd_netcdf::{FieldMeta, NC_FILL_DOUBLE, Output, read_itd, write_output};
+use ndarray::{Array1, Array2, ArrayViewMut1, ArrayViewMut2};
+use pressridge::io::itd_netcdf::{
+    FieldMeta, ItdGrid, NC_FILL_DOUBLE, Output, SnowTracers, read_itd, read_snow_tracers,
+    write_output,
+};
 use pressridge::io::refuse_output_over_input;
 use pressridge::itd::{
-    CategoryBounds, RidgeOptions, RidgeRatesMut, category_bounds, ridge_batch_masked,
+    BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, CategoryBounds, RidgeOptions,
+    RidgeRatesMut, RidgeStepOptions, StepBatchMut, category_bounds, ridge_batch_masked,
+    ridge_step_batch,
 };
 
 use crate::BoxError;
@@ -42,6 +50,20 @@ pub struct Args {
     /// Override a parameter, NAME=VALUE (repeatable), e.g. `--param cs=0.5`.
     #[arg(long = "param", value_name = "NAME=VALUE")]
     pub params: Vec<String>,
+    /// Complete step only: dynamics subcycles per thermodynamic step (>= 1, default 1); the
+    /// ocean fluxes are averaged over ndtd·dt.
+    #[arg(long)]
+    pub ndtd: Option<u32>,
+    /// Complete step only: freezing temperature (°C, default −1.8) given to the surface
+    /// temperature of emptied categories.
+    #[arg(long, allow_negative_numbers = true)]
+    pub tf: Option<f64>,
+    /// Complete step only: skip Icepack's clean-up after ridging (`docleanup = false`).
+    #[arg(long)]
+    pub no_cleanup: bool,
+    /// Complete step only: no rebinning in the clean-up (`dorebin = false`).
+    #[arg(long)]
+    pub no_rebin: bool,
 }
 
 /// Runs `pressridge ridge-step`.
@@ -113,7 +135,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         Some(h) => h.clone(),
         None => category_bounds(&CategoryBounds::RoundNumbers, ncat)?,
     };
-    let mut aice0 = match &grid.aice0 {
+    let aice0 = match &grid.aice0 {
         Some(a) => a.clone(),
         // As the strength routine: 1 − Σ aicen, never below 0 (full cover can sum to
         // 1 + 2e-16; a total above 1 is excess area that ridging removes).
@@ -121,12 +143,32 @@ pub fn run(args: Args) -> Result<(), BoxError> {
             Array1::from_iter((0..ncol).map(|c| f64::max(1.0 - grid.aicen.column(c).sum(), 0.0)))
         }
     };
-    let fill = grid.fill_value.unwrap_or(NC_FILL_DOUBLE);
+    let snow = read_snow_tracers(&args.input, &grid)?;
     let o = RidgeOptions {
         participation: args.participation.into(),
         redistribution: args.redistribution.into(),
         params: parse_params(&args.params)?,
     };
+    if let Some(st) = snow {
+        return run_complete(&args, grid, st, conv, shear, hin_max, aice0, o);
+    }
+    for (flag, given) in [
+        ("--ndtd", args.ndtd.is_some()),
+        ("--tf", args.tf.is_some()),
+        ("--no-cleanup", args.no_cleanup),
+        ("--no-rebin", args.no_rebin),
+    ] {
+        if given {
+            return Err(format!(
+                "{flag} belongs to the complete step, but {} has no snow or tracers (vsnon, \
+                 Tsfcn, qice001.., sice001.., qsno001..): only area and volume are ridged",
+                args.input.display()
+            )
+            .into());
+        }
+    }
+    let fill = grid.fill_value.unwrap_or(NC_FILL_DOUBLE);
+    let mut aice0 = aice0;
     let mut rates: [Array1<f64>; 5] = std::array::from_fn(|_| Array1::zeros(ncol));
     {
         let [c, op, d1, d2, dv] = &mut rates;
@@ -191,7 +233,25 @@ pub fn run(args: Args) -> Result<(), BoxError> {
             )
         })
         .collect();
-    let global = vec![
+    let global = global_attrs(&args, &o);
+    write_output(
+        &args.output,
+        &Output {
+            grid: &grid,
+            write_itd: true,
+            hin_max: Some(&hin_max),
+            fields: &fields,
+            category_fields: &[],
+            global: &global,
+            fill: grid.valid.as_ref().map(|_| fill),
+        },
+    )?;
+    Ok(())
+}
+
+/// The global attributes common to both steps.
+fn global_attrs(args: &Args, o: &RidgeOptions) -> Vec<(String, String)> {
+    vec![
         (
             "participation".to_string(),
             o.participation.name().to_string(),
@@ -213,7 +273,232 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         ),
         ("input".to_string(), args.input.display().to_string()),
         describe_params(&args.params),
-    ];
+    ]
+}
+
+/// Error for a non-finite output in a stepped column (the library refuses such columns
+/// already; this guards the file).
+fn check_finite_masked(
+    grid: &ItdGrid,
+    input: &Path,
+    valid: Option<&Array1<bool>>,
+    name: &str,
+    values: impl Iterator<Item = (usize, f64)>,
+) -> Result<(), BoxError> {
+    for (c, x) in values {
+        if valid.is_some_and(|v| !v[c]) {
+            continue;
+        }
+        if !x.is_finite() {
+            return Err(format!(
+                "{}: column {c} at ({}): the computed `{name}` is {x}",
+                input.display(),
+                grid.spatial_index(c)
+            )
+            .into());
+        }
+    }
+    Ok(())
+}
+
+/// The complete step (snow, tracers, ocean fluxes) on the file's columns.
+#[allow(clippy::too_many_arguments)]
+fn run_complete(
+    args: &Args,
+    mut grid: ItdGrid,
+    st: SnowTracers,
+    conv: Array1<f64>,
+    shear: Array1<f64>,
+    hin_max: Vec<f64>,
+    mut aice0: Array1<f64>,
+    o: RidgeOptions,
+) -> Result<(), BoxError> {
+    let (ncat, ncol) = (grid.ncat(), grid.ncol());
+    let SnowTracers {
+        layout,
+        mut vsnon,
+        mut trcrn,
+        missing,
+        fill_value,
+        ..
+    } = st;
+    let nt = layout.ntrcr();
+    // A column is stepped when aicen, vicen, aice0, vsnon and every tracer have data there.
+    let valid: Option<Array1<bool>> = match (&grid.valid, &missing) {
+        (None, None) => None,
+        (Some(v), None) | (None, Some(v)) => Some(v.clone()),
+        (Some(a), Some(b)) => Some(a.iter().zip(b).map(|(x, y)| *x && *y).collect()),
+    };
+    let fill = grid.fill_value.or(fill_value).unwrap_or(NC_FILL_DOUBLE);
+    if let Some(n) = args.ndtd
+        && n < 1
+    {
+        return Err(format!("--ndtd must be at least 1, got {n}").into());
+    }
+    let tf: Array1<f64> = match args.tf {
+        Some(t) if t.is_finite() => Array1::from_elem(ncol, t),
+        Some(t) => return Err(format!("--tf must be a finite temperature (°C), got {t}").into()),
+        None => Array1::from_elem(ncol, -1.8),
+    };
+    let opts = RidgeStepOptions {
+        participation: o.participation,
+        redistribution: o.redistribution,
+        params: o.params,
+        cleanup: !args.no_cleanup,
+        rebin: !args.no_rebin,
+        ..Default::default()
+    };
+    let mut aice: Array1<f64> = (0..ncol).map(|c| grid.aicen.column(c).sum()).collect();
+    let mut cell: Vec<Array1<f64>> = CELL_OUTPUTS.iter().map(|_| Array1::zeros(ncol)).collect();
+    let mut cats: Vec<Array2<f64>> = CATEGORY_OUTPUTS
+        .iter()
+        .map(|_| Array2::zeros((ncat, ncol)))
+        .collect();
+    {
+        let mut cell_v: Vec<ArrayViewMut1<'_, f64>> =
+            cell.iter_mut().map(|x| x.view_mut()).collect();
+        let mut cat_v: Vec<ArrayViewMut2<'_, f64>> =
+            cats.iter_mut().map(|x| x.view_mut()).collect();
+        ridge_step_batch(
+            StepBatchMut {
+                aicen: grid.aicen.view_mut(),
+                vicen: grid.vicen.view_mut(),
+                vsnon: vsnon.view_mut(),
+                trcrn: trcrn.view_mut(),
+                aice0: aice0.view_mut(),
+                aice: aice.view_mut(),
+            },
+            &hin_max,
+            BatchForcing {
+                closing: BatchClosing::Deformation {
+                    convergence: conv.view(),
+                    shear: shear.view(),
+                },
+                tf: tf.view(),
+                dt: args.dt,
+                ndtd: args.ndtd.unwrap_or(1),
+            },
+            valid.as_ref().map(|v| v.view()),
+            fill,
+            &opts,
+            &layout,
+            &mut cell_v,
+            Some(&mut cat_v),
+        )
+        .map_err(|e| grid.locate(&args.input, e))?;
+    }
+    for (m, x) in CELL_OUTPUTS.iter().zip(&cell) {
+        check_finite_masked(
+            &grid,
+            &args.input,
+            valid.as_ref(),
+            m.name,
+            x.iter().copied().enumerate(),
+        )?;
+    }
+    // Masked columns are missing in every output.
+    if let Some(v) = &valid {
+        for (c, ok) in v.iter().enumerate() {
+            if !ok {
+                aice0[c] = fill;
+                aice[c] = fill;
+                grid.aicen.column_mut(c).fill(fill);
+                grid.vicen.column_mut(c).fill(fill);
+                vsnon.column_mut(c).fill(fill);
+                for n in 0..ncat {
+                    for it in 0..nt {
+                        trcrn[[n, it, c]] = fill;
+                    }
+                }
+            }
+        }
+    }
+    grid.aice0 = Some(aice0);
+    grid.valid = valid;
+    // Category fields in C order (category slowest, then the columns).
+    let names = layout.cice_restart_names();
+    let tracer_data: Vec<Vec<f64>> = (0..nt)
+        .map(|it| {
+            trcrn
+                .index_axis(ndarray::Axis(1), it)
+                .as_standard_layout()
+                .iter()
+                .copied()
+                .collect()
+        })
+        .collect();
+    let units: Vec<(&'static str, &'static str)> = (0..nt)
+        .map(|it| {
+            let role = layout.field_of(it).expect("index in range").0.role;
+            (role.units(), role.long_name())
+        })
+        .collect();
+    let vsnon_c = vsnon.as_standard_layout().into_owned();
+    let mut category_fields: Vec<(FieldMeta<'_>, &[f64])> = vec![(
+        FieldMeta {
+            name: "vsnon",
+            units: "m",
+            long_name: "snow volume per unit grid-cell area in each thickness category",
+            standard_name: None,
+        },
+        vsnon_c.as_slice().expect("standard layout"),
+    )];
+    for ((name, (u, ln)), data) in names.iter().zip(&units).zip(&tracer_data) {
+        category_fields.push((
+            FieldMeta {
+                name,
+                units: u,
+                long_name: ln,
+                standard_name: None,
+            },
+            data,
+        ));
+    }
+    let cat_c: Vec<Array2<f64>> = cats
+        .iter()
+        .map(|x| x.as_standard_layout().into_owned())
+        .collect();
+    for (m, x) in CATEGORY_OUTPUTS.iter().zip(&cat_c) {
+        category_fields.push((
+            FieldMeta {
+                name: m.name,
+                units: m.units,
+                long_name: m.long_name,
+                standard_name: None,
+            },
+            x.as_slice().expect("standard layout"),
+        ));
+    }
+    let mut fields: Vec<(FieldMeta<'_>, &[f64])> = vec![(
+        FieldMeta {
+            name: "aice",
+            units: "1",
+            long_name: "total ice area fraction (recomputed by the clean-up)",
+            standard_name: None,
+        },
+        aice.as_slice().expect("contiguous"),
+    )];
+    for (m, x) in CELL_OUTPUTS.iter().zip(&cell) {
+        fields.push((
+            FieldMeta {
+                name: m.name,
+                units: m.units,
+                long_name: m.long_name,
+                standard_name: None,
+            },
+            x.as_slice().expect("contiguous"),
+        ));
+    }
+    let mut global = global_attrs(args, &o);
+    global.push((
+        "ridging_step".into(),
+        "complete (Icepack icepack_step_ridge: snow, tracers, ocean fluxes)".into(),
+    ));
+    global.push(("ndtd".into(), args.ndtd.unwrap_or(1).to_string()));
+    global.push(("tf".into(), format!("{} degC", args.tf.unwrap_or(-1.8))));
+    global.push(("cleanup".into(), (!args.no_cleanup).to_string()));
+    global.push(("rebin".into(), (!args.no_rebin).to_string()));
+    global.push(("tracers".into(), names.join(" ")));
     write_output(
         &args.output,
         &Output {
@@ -221,6 +506,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
             write_itd: true,
             hin_max: Some(&hin_max),
             fields: &fields,
+            category_fields: &category_fields,
             global: &global,
             fill: grid.valid.as_ref().map(|_| fill),
         },

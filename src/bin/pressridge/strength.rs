@@ -289,6 +289,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
             write_itd: false,
             hin_max: None,
             fields: &[(STRENGTH_META, p.as_slice().expect("contiguous"))],
+            category_fields: &[],
             global: &global,
             fill: grid.valid.as_ref().map(|_| fill),
         },

@@ -1,0 +1,526 @@
+//! The complete ridging step ([`ridge_step_column`]) over many columns held in `ndarray`
+//! views, for the faces that hold gridded arrays (Python, the NetCDF command line): state
+//! `(ncat, ncol)` and tracers `(ncat, ntrcr, ncol)`, any strides, with a per-column validity
+//! mask. Each column is gathered into contiguous scratch, stepped, and written back; the
+//! numbers are those of [`ridge_step_column`] bit for bit.
+//!
+//! The names, units and meanings of the outputs ([`CELL_OUTPUTS`], [`CATEGORY_OUTPUTS`]) are
+//! defined here once; the faces take them from these tables.
+
+use ndarray::{ArrayView1, ArrayViewMut1, ArrayViewMut2, ArrayViewMut3};
+
+use super::ridge_step::{
+    Closing, ColumnMut, OceanFluxes, RidgeStepOptions, StepForcing, StepWorkspace,
+    ridge_step_column,
+};
+use super::tracers::TracerLayout;
+use super::{ItdError, check_len};
+
+/// Name, CF units and long name of one output of the batched step.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct OutputMeta {
+    /// Name (Icepack's where Icepack has one).
+    pub name: &'static str,
+    /// CF `units`.
+    pub units: &'static str,
+    /// CF `long_name`.
+    pub long_name: &'static str,
+}
+
+const fn meta(name: &'static str, units: &'static str, long_name: &'static str) -> OutputMeta {
+    OutputMeta {
+        name,
+        units,
+        long_name,
+    }
+}
+
+/// The per-cell outputs of [`ridge_step_batch`], in the order of its `cell` argument. Fluxes
+/// are one step's (not accumulated); the ocean fluxes are averaged over `ndtd·dt`.
+pub const CELL_OUTPUTS: [OutputMeta; 13] = [
+    meta(
+        "fresh",
+        "kg m-2 s-1",
+        "fresh water flux to the ocean from ridging (snow) and clean-up (ice and snow)",
+    ),
+    meta(
+        "fsalt",
+        "kg m-2 s-1",
+        "salt flux to the ocean from the clean-up",
+    ),
+    meta(
+        "fhocn",
+        "W m-2",
+        "heat flux to the ocean from ridging and clean-up (negative: the ocean melts snow and ice)",
+    ),
+    meta(
+        "fpond",
+        "m",
+        "pond water lost by ridging, with sign (-dpnd_ridge), per step",
+    ),
+    meta("dpnd_ridge", "m", "pond water drained by ridging, per step"),
+    meta(
+        "closing",
+        "s-1",
+        "net closing rate of the first ridging pass",
+    ),
+    meta("opening", "s-1", "opening rate of the last ridging pass"),
+    meta("dardg1dt", "s-1", "rate of area loss by ridging ice"),
+    meta("dardg2dt", "s-1", "rate of area gain by new ridges"),
+    meta("dvirdgdt", "m s-1", "rate of ice volume ridged"),
+    meta(
+        "ice_to_ocean",
+        "m",
+        "ice volume per unit area put into the ocean by the clean-up, per step",
+    ),
+    meta(
+        "snow_to_ocean",
+        "m",
+        "snow volume per unit area put into the ocean by ridging and clean-up, per step",
+    ),
+    meta("niter", "1", "number of ridging passes"),
+];
+
+/// The per-category outputs of [`ridge_step_batch`] (Icepack's names and units), in the
+/// order of its `category` argument; `first_ice` is 1 for categories emptied by the clean-up
+/// (Icepack sets `first_ice` there), else 0.
+pub const CATEGORY_OUTPUTS: [OutputMeta; 10] = [
+    meta(
+        "dardg1ndt",
+        "s-1",
+        "rate of area loss by ridging ice, last pass the category ridged",
+    ),
+    meta(
+        "dardg2ndt",
+        "s-1",
+        "rate of area gain by new ridges, last pass the category ridged",
+    ),
+    meta(
+        "dvirdgndt",
+        "m s-1",
+        "rate of ice volume ridged, last pass the category ridged",
+    ),
+    meta("aparticn", "1", "participation function, last pass"),
+    meta(
+        "krdgn",
+        "1",
+        "mean ridge thickness over ridging-ice thickness, last pass",
+    ),
+    meta(
+        "araftn",
+        "1",
+        "rafted new-ridge area, per step (exponential redistribution)",
+    ),
+    meta(
+        "vraftn",
+        "m",
+        "rafting ice volume, per step (exponential redistribution)",
+    ),
+    meta(
+        "aredistn",
+        "1",
+        "new-ridge area from category 1 landing in the category, per step (exponential redistribution)",
+    ),
+    meta(
+        "vredistn",
+        "m",
+        "new-ridge volume from category 1 landing in the category, per step (exponential redistribution)",
+    ),
+    meta(
+        "first_ice",
+        "1",
+        "1 where the clean-up emptied the category, else 0",
+    ),
+];
+
+/// Per-column closing and opening of [`ridge_step_batch`] (1/s, `ncol` values each): the two
+/// calling conventions of [`Closing`].
+#[derive(Debug, Clone, Copy)]
+pub enum BatchClosing<'a> {
+    /// CICE: Icepack's `rdg_conv` and `rdg_shear` ([`Closing::Deformation`]).
+    Deformation {
+        /// Convergence term (1/s, ≥ 0).
+        convergence: ArrayView1<'a, f64>,
+        /// Shear term (1/s, ≥ 0).
+        shear: ArrayView1<'a, f64>,
+    },
+    /// SIS2: the host's net closing and opening rates ([`Closing::Rates`]).
+    Rates {
+        /// Net closing rate (1/s, ≥ 0).
+        closing: ArrayView1<'a, f64>,
+        /// Opening rate (1/s, ≥ 0).
+        opening: ArrayView1<'a, f64>,
+    },
+}
+
+/// The state of `ncol` columns, updated in place by [`ridge_step_batch`].
+#[derive(Debug)]
+pub struct StepBatchMut<'a> {
+    /// Ice area per category (1), `(ncat, ncol)`.
+    pub aicen: ArrayViewMut2<'a, f64>,
+    /// Ice volume per unit cell area (m), `(ncat, ncol)`.
+    pub vicen: ArrayViewMut2<'a, f64>,
+    /// Snow volume per unit cell area (m), `(ncat, ncol)`.
+    pub vsnon: ArrayViewMut2<'a, f64>,
+    /// Tracers `(ncat, ntrcr, ncol)` (units per tracer, see [`TracerLayout`]).
+    pub trcrn: ArrayViewMut3<'a, f64>,
+    /// Open-water fraction (1), `ncol`.
+    pub aice0: ArrayViewMut1<'a, f64>,
+    /// Total ice area (1), `ncol`; recomputed only by the clean-up.
+    pub aice: ArrayViewMut1<'a, f64>,
+}
+
+/// Forcing of [`ridge_step_batch`].
+#[derive(Debug, Clone, Copy)]
+pub struct BatchForcing<'a> {
+    /// Closing and opening per column.
+    pub closing: BatchClosing<'a>,
+    /// Freezing temperature per column (°C), for emptied categories' surface temperature.
+    pub tf: ArrayView1<'a, f64>,
+    /// Dynamics time step (s, > 0).
+    pub dt: f64,
+    /// Dynamics subcycles per thermodynamic step (≥ 1); ocean fluxes are averaged over
+    /// `ndtd·dt`.
+    pub ndtd: u32,
+}
+
+/// The complete ridging step of `ncol` columns (Icepack `icepack_step_ridge` per column, see
+/// [`ridge_step_column`]).
+///
+/// `hin_max`: `ncat + 1` category bounds (m), shared; with [`BatchClosing::Deformation`] the
+/// top bound used is `opts.params.big`, as Icepack's. `valid` (`ncol`): columns to step; the
+/// others keep their state and get `fill` in every output. `cell`: the [`CELL_OUTPUTS`],
+/// `ncol` values each, written (one step's values); `category`: the [`CATEGORY_OUTPUTS`],
+/// `(ncat, ncol)` each, written, or `None`.
+///
+/// Stops at the first failing column with [`ItdError::Column`] (its flat index): earlier
+/// columns are stepped, that one and later ones keep their state. Allocates only the scratch
+/// of one column.
+#[allow(clippy::too_many_arguments)]
+pub fn ridge_step_batch(
+    state: StepBatchMut<'_>,
+    hin_max: &[f64],
+    forcing: BatchForcing<'_>,
+    valid: Option<ArrayView1<'_, bool>>,
+    fill: f64,
+    opts: &RidgeStepOptions,
+    layout: &TracerLayout,
+    cell: &mut [ArrayViewMut1<'_, f64>],
+    mut category: Option<&mut [ArrayViewMut2<'_, f64>]>,
+) -> Result<(), ItdError> {
+    let StepBatchMut {
+        mut aicen,
+        mut vicen,
+        mut vsnon,
+        mut trcrn,
+        mut aice0,
+        mut aice,
+    } = state;
+    let (ncat, ncol) = aicen.dim();
+    let nt = layout.ntrcr();
+    if ncat == 0 {
+        return Err(ItdError::Shape {
+            var: "aicen",
+            expected: vec![1, ncol],
+            found: vec![0, ncol],
+        });
+    }
+    for (var, v) in [("vicen", &vicen), ("vsnon", &vsnon)] {
+        if v.dim() != (ncat, ncol) {
+            return Err(ItdError::Shape {
+                var,
+                expected: vec![ncat, ncol],
+                found: v.shape().to_vec(),
+            });
+        }
+    }
+    if trcrn.dim() != (ncat, nt, ncol) {
+        return Err(ItdError::Shape {
+            var: "trcrn",
+            expected: vec![ncat, nt, ncol],
+            found: trcrn.shape().to_vec(),
+        });
+    }
+    check_len("hin_max", hin_max.len(), ncat + 1)?;
+    check_len("aice0", aice0.len(), ncol)?;
+    check_len("aice", aice.len(), ncol)?;
+    check_len("tf", forcing.tf.len(), ncol)?;
+    let (c1, c2) = match forcing.closing {
+        BatchClosing::Deformation { convergence, shear } => {
+            check_len("convergence", convergence.len(), ncol)?;
+            check_len("shear", shear.len(), ncol)?;
+            (convergence, shear)
+        }
+        BatchClosing::Rates { closing, opening } => {
+            check_len("closing", closing.len(), ncol)?;
+            check_len("opening", opening.len(), ncol)?;
+            (closing, opening)
+        }
+    };
+    if let Some(m) = &valid {
+        check_len("valid", m.len(), ncol)?;
+    }
+    if cell.len() != CELL_OUTPUTS.len() {
+        return Err(ItdError::Shape {
+            var: "cell outputs",
+            expected: vec![CELL_OUTPUTS.len()],
+            found: vec![cell.len()],
+        });
+    }
+    for (m, o) in CELL_OUTPUTS.iter().zip(cell.iter()) {
+        check_len(m.name, o.len(), ncol)?;
+    }
+    if let Some(cat) = category.as_deref() {
+        if cat.len() != CATEGORY_OUTPUTS.len() {
+            return Err(ItdError::Shape {
+                var: "category outputs",
+                expected: vec![CATEGORY_OUTPUTS.len()],
+                found: vec![cat.len()],
+            });
+        }
+        for (m, o) in CATEGORY_OUTPUTS.iter().zip(cat.iter()) {
+            if o.dim() != (ncat, ncol) {
+                return Err(ItdError::Shape {
+                    var: m.name,
+                    expected: vec![ncat, ncol],
+                    found: o.shape().to_vec(),
+                });
+            }
+        }
+    }
+
+    let mut ws = StepWorkspace::new(ncat, nt);
+    let mut a = vec![0.0; ncat];
+    let mut v = vec![0.0; ncat];
+    let mut s = vec![0.0; ncat];
+    let mut t = vec![0.0; ncat * nt];
+    for c in 0..ncol {
+        if valid.as_ref().is_some_and(|m| !m[c]) {
+            for o in cell.iter_mut() {
+                o[c] = fill;
+            }
+            if let Some(cat) = category.as_deref_mut() {
+                for o in cat.iter_mut() {
+                    o.column_mut(c).fill(fill);
+                }
+            }
+            continue;
+        }
+        for n in 0..ncat {
+            a[n] = aicen[[n, c]];
+            v[n] = vicen[[n, c]];
+            s[n] = vsnon[[n, c]];
+            for (it, x) in t[n * nt..(n + 1) * nt].iter_mut().enumerate() {
+                *x = trcrn[[n, it, c]];
+            }
+        }
+        let (mut a0, mut ai) = (aice0[c], aice[c]);
+        let closing = match forcing.closing {
+            BatchClosing::Deformation { .. } => Closing::Deformation {
+                convergence: c1[c],
+                shear: c2[c],
+            },
+            BatchClosing::Rates { .. } => Closing::Rates {
+                closing: c1[c],
+                opening: c2[c],
+            },
+        };
+        let f = StepForcing {
+            closing,
+            dt: forcing.dt,
+            ndtd: forcing.ndtd,
+            tf: forcing.tf[c],
+        };
+        let mut fl = OceanFluxes::default();
+        let mut col = ColumnMut {
+            aicen: &mut a,
+            vicen: &mut v,
+            vsnon: &mut s,
+            trcrn: &mut t,
+            aice0: &mut a0,
+            aice: &mut ai,
+        };
+        let d = ridge_step_column(&mut col, hin_max, f, opts, layout, &mut fl, &mut ws)
+            .map_err(|source| ItdError::Column { column: c, source })?;
+        for n in 0..ncat {
+            aicen[[n, c]] = a[n];
+            vicen[[n, c]] = v[n];
+            vsnon[[n, c]] = s[n];
+            for (it, x) in t[n * nt..(n + 1) * nt].iter().enumerate() {
+                trcrn[[n, it, c]] = *x;
+            }
+        }
+        aice0[c] = a0;
+        aice[c] = ai;
+        let values = [
+            fl.fresh,
+            fl.fsalt,
+            fl.fhocn,
+            fl.fpond,
+            fl.dpnd_ridge,
+            d.closing,
+            d.opening,
+            d.dardg1dt,
+            d.dardg2dt,
+            d.dvirdgdt,
+            d.ice_to_ocean,
+            d.snow_to_ocean,
+            d.niter as f64,
+        ];
+        for (o, x) in cell.iter_mut().zip(values) {
+            o[c] = x;
+        }
+        if let Some(cat) = category.as_deref_mut() {
+            let per = [
+                &ws.dardg1ndt,
+                &ws.dardg2ndt,
+                &ws.dvirdgndt,
+                &ws.aparticn,
+                &ws.krdgn,
+                &ws.araftn,
+                &ws.vraftn,
+                &ws.aredistn,
+                &ws.vredistn,
+            ];
+            for (o, xs) in cat.iter_mut().zip(per) {
+                for (n, x) in xs.iter().enumerate() {
+                    o[[n, c]] = *x;
+                }
+            }
+            let first_ice = cat.last_mut().expect("ten category outputs");
+            for (n, z) in ws.zapped.iter().enumerate() {
+                first_ice[[n, c]] = if *z { 1.0 } else { 0.0 };
+            }
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::itd::CiceTracerFlags;
+    use ndarray::{Array1, Array2, Array3};
+
+    /// The batch equals the column routine bit for bit, in any column order and stride.
+    #[test]
+    fn batch_equals_column_calls() {
+        let layout = TracerLayout::cice(2, 1, CiceTracerFlags::ALL).unwrap();
+        let nt = layout.ntrcr();
+        let (ncat, ncol) = (3, 4);
+        let hin = [0.0, 0.6, 1.4, 2.4];
+        let mut aicen = Array2::from_shape_fn((ncat, ncol), |(n, c)| 0.1 + 0.05 * (n + c) as f64);
+        let mut vicen = Array2::from_shape_fn((ncat, ncol), |(n, c)| {
+            aicen[[n, c]] * (0.4 + 0.8 * n as f64)
+        });
+        let mut vsnon = Array2::from_shape_fn((ncat, ncol), |(n, _)| 0.02 * (n + 1) as f64);
+        let mut trcrn = Array3::from_shape_fn((ncat, nt, ncol), |(n, it, c)| {
+            let (f, _) = layout.field_of(it).unwrap();
+            match f.name.as_str() {
+                "Tsfc" => -5.0,
+                "qice" => -3.0e8,
+                "qsno" => -1.1e8,
+                "sice" => 4.0,
+                "iage" => 1e6 * (c + 1) as f64,
+                _ => 0.1 * (n + 1) as f64,
+            }
+        });
+        let mut aice0 = Array1::from_shape_fn(ncol, |c| 1.0 - aicen.column(c).sum());
+        let mut aice = Array1::from_shape_fn(ncol, |c| aicen.column(c).sum());
+        let conv = Array1::from_elem(ncol, 2e-6);
+        let shear = Array1::from_shape_fn(ncol, |c| 1e-6 * c as f64);
+        let tf = Array1::from_elem(ncol, -1.8);
+        let opts = RidgeStepOptions::default();
+        // Expected: column calls on copies.
+        let mut want = Vec::new();
+        for c in 0..ncol {
+            let mut a = aicen.column(c).to_vec();
+            let mut v = vicen.column(c).to_vec();
+            let mut s = vsnon.column(c).to_vec();
+            let mut t: Vec<f64> = (0..ncat)
+                .flat_map(|n| (0..nt).map(move |it| (n, it)))
+                .map(|(n, it)| trcrn[[n, it, c]])
+                .collect();
+            let (mut a0, mut ai) = (aice0[c], aice[c]);
+            let mut fl = OceanFluxes::default();
+            let mut ws = StepWorkspace::new(ncat, nt);
+            let d = ridge_step_column(
+                &mut ColumnMut {
+                    aicen: &mut a,
+                    vicen: &mut v,
+                    vsnon: &mut s,
+                    trcrn: &mut t,
+                    aice0: &mut a0,
+                    aice: &mut ai,
+                },
+                &hin,
+                StepForcing {
+                    closing: Closing::Deformation {
+                        convergence: conv[c],
+                        shear: shear[c],
+                    },
+                    dt: 3600.0,
+                    ndtd: 1,
+                    tf: -1.8,
+                },
+                &opts,
+                &layout,
+                &mut fl,
+                &mut ws,
+            )
+            .unwrap();
+            want.push((a, v, s, t, a0, ai, fl, d, ws.krdgn.clone()));
+        }
+        let mut cells: Vec<Array1<f64>> = (0..CELL_OUTPUTS.len())
+            .map(|_| Array1::zeros(ncol))
+            .collect();
+        let mut cats: Vec<Array2<f64>> = (0..CATEGORY_OUTPUTS.len())
+            .map(|_| Array2::zeros((ncat, ncol)))
+            .collect();
+        let mut cell_views: Vec<_> = cells.iter_mut().map(|x| x.view_mut()).collect();
+        let mut cat_views: Vec<_> = cats.iter_mut().map(|x| x.view_mut()).collect();
+        ridge_step_batch(
+            StepBatchMut {
+                aicen: aicen.view_mut(),
+                vicen: vicen.view_mut(),
+                vsnon: vsnon.view_mut(),
+                trcrn: trcrn.view_mut(),
+                aice0: aice0.view_mut(),
+                aice: aice.view_mut(),
+            },
+            &hin,
+            BatchForcing {
+                closing: BatchClosing::Deformation {
+                    convergence: conv.view(),
+                    shear: shear.view(),
+                },
+                tf: tf.view(),
+                dt: 3600.0,
+                ndtd: 1,
+            },
+            None,
+            f64::NAN,
+            &opts,
+            &layout,
+            &mut cell_views,
+            Some(&mut cat_views),
+        )
+        .unwrap();
+        for (c, (a, v, s, t, a0, ai, fl, d, krdgn)) in want.iter().enumerate() {
+            assert_eq!(aicen.column(c).to_vec(), *a);
+            assert_eq!(vicen.column(c).to_vec(), *v);
+            assert_eq!(vsnon.column(c).to_vec(), *s);
+            for n in 0..ncat {
+                for it in 0..nt {
+                    assert_eq!(trcrn[[n, it, c]].to_bits(), t[n * nt + it].to_bits());
+                }
+            }
+            assert_eq!(aice0[c], *a0);
+            assert_eq!(aice[c], *ai);
+            assert_eq!(cells[0][c], fl.fresh);
+            assert_eq!(cells[2][c], fl.fhocn);
+            assert_eq!(cells[7][c], d.dardg1dt);
+            assert_eq!(cats[4].column(c).to_vec(), *krdgn);
+        }
+    }
+}

@@ -1,0 +1,401 @@
+//! `pressridge ridge-step` with snow and tracers (the complete step): a NetCDF file with
+//! `vsnon` and the CICE restart tracer variables round-trips through the command line, equals
+//! the library's `ridge_step_column` on the same columns bit for bit, conserves ice, snow
+//! and enthalpy with the ocean fluxes, and keeps `_FillValue` land columns missing.
+
+// Per-category, per-tracer and per-column tables are indexed by number, as in Icepack.
+#![allow(clippy::needless_range_loop, clippy::type_complexity)]
+
+mod common;
+
+use std::path::Path;
+
+use common::{bin, fails_with, scratch, succeeds};
+use pressridge::itd::{
+    CATEGORY_OUTPUTS, CELL_OUTPUTS, CiceTracerFlags, Closing, ColumnMut, OceanFluxes,
+    RidgeStepOptions, StepForcing, StepWorkspace, TracerLayout, ridge_step_column,
+};
+
+const NCAT: usize = 3;
+const NJ: usize = 2;
+const NI: usize = 3;
+const NCOL: usize = NJ * NI;
+const FILL: f64 = 1e30;
+/// The land column (flat C-order index of (nj = 1, ni = 2)).
+const LAND: usize = 5;
+const DT: f64 = 3600.0;
+
+fn layout() -> TracerLayout {
+    TracerLayout::cice(2, 1, CiceTracerFlags::ALL).unwrap()
+}
+
+/// Inputs: per variable, values in C order over (nc, nj, ni) or (nj, ni).
+struct Input {
+    aicen: Vec<f64>,
+    vicen: Vec<f64>,
+    vsnon: Vec<f64>,
+    /// trcrn[it][n * NCOL + c]
+    trcrn: Vec<Vec<f64>>,
+    aice0: Vec<f64>,
+    divu: Vec<f64>,
+    shear: Vec<f64>,
+    hin_max: Vec<f64>,
+}
+
+fn input() -> Input {
+    let l = layout();
+    let nt = l.ntrcr();
+    let mut aicen = vec![0.0; NCAT * NCOL];
+    let mut vicen = vec![0.0; NCAT * NCOL];
+    let mut vsnon = vec![0.0; NCAT * NCOL];
+    let mut trcrn = vec![vec![0.0; NCAT * NCOL]; nt];
+    let mut aice0 = vec![0.0; NCOL];
+    let h = [0.4, 1.0, 2.2];
+    for c in 0..NCOL {
+        let mut sum = 0.0;
+        for n in 0..NCAT {
+            let i = n * NCOL + c;
+            let a = 0.1 + 0.07 * ((n + 2 * c) % 5) as f64;
+            aicen[i] = a;
+            sum += a;
+            vicen[i] = a * h[n] * (1.0 + 0.05 * c as f64);
+            vsnon[i] = a * 0.05 * (n + 1) as f64;
+            for it in 0..nt {
+                let (f, k) = l.field_of(it).unwrap();
+                trcrn[it][i] = match f.name.as_str() {
+                    "Tsfc" => -10.0 - c as f64,
+                    "qice" => -3.0e8 - 1e7 * k as f64 - 1e6 * n as f64,
+                    "qsno" => -1.15e8,
+                    "sice" => 4.0 + k as f64,
+                    "iage" => 1e7 * (n + 1) as f64,
+                    "hpnd" | "ipnd" => 0.1,
+                    _ => 0.3 + 0.1 * n as f64,
+                };
+            }
+        }
+        aice0[c] = 1.0 - sum;
+    }
+    let mut divu = (0..NCOL)
+        .map(|c| -1e-6 * (c + 1) as f64)
+        .collect::<Vec<_>>();
+    let shear = (0..NCOL).map(|c| 5e-7 * c as f64).collect::<Vec<_>>();
+    // Land: every value missing.
+    for v in [&mut aicen, &mut vicen, &mut vsnon] {
+        for n in 0..NCAT {
+            v[n * NCOL + LAND] = FILL;
+        }
+    }
+    for t in trcrn.iter_mut() {
+        for n in 0..NCAT {
+            t[n * NCOL + LAND] = FILL;
+        }
+    }
+    aice0[LAND] = FILL;
+    divu[LAND] = FILL;
+    Input {
+        aicen,
+        vicen,
+        vsnon,
+        trcrn,
+        aice0,
+        divu,
+        shear,
+        hin_max: vec![0.0, 0.6, 1.4, 2.4],
+    }
+}
+
+/// Writes the input file; `skip` names tracer variables to leave out.
+fn write_input(path: &Path, inp: &Input, skip: &[&str]) {
+    // One writer at a time: the tests run on several threads, the NetCDF library is not
+    // thread-safe.
+    static LOCK: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    let _guard = LOCK.lock().unwrap_or_else(|e| e.into_inner());
+    let l = layout();
+    let mut f = netcdf::create_with(path, netcdf::Options::_64BIT_OFFSET).unwrap();
+    f.add_dimension("nc", NCAT).unwrap();
+    f.add_dimension("nj", NJ).unwrap();
+    f.add_dimension("ni", NI).unwrap();
+    f.add_dimension("nb", NCAT + 1).unwrap();
+    let cat = ["nc", "nj", "ni"];
+    let sp = ["nj", "ni"];
+    let names = l.cice_restart_names();
+    let mut vars: Vec<(String, Vec<&str>, &[f64], Option<&str>)> = vec![
+        ("aicen".into(), cat.to_vec(), &inp.aicen, None),
+        ("vicen".into(), cat.to_vec(), &inp.vicen, None),
+        ("vsnon".into(), cat.to_vec(), &inp.vsnon, None),
+        ("aice0".into(), sp.to_vec(), &inp.aice0, None),
+        ("divu".into(), sp.to_vec(), &inp.divu, Some("s-1")),
+        ("shear".into(), sp.to_vec(), &inp.shear, Some("s-1")),
+    ];
+    for (name, t) in names.iter().zip(&inp.trcrn) {
+        if !skip.contains(&name.as_str()) {
+            vars.push((name.clone(), cat.to_vec(), t, None));
+        }
+    }
+    for (name, dims, _, units) in &vars {
+        let mut v = f.add_variable::<f64>(name, dims).unwrap();
+        v.put_attribute("_FillValue", FILL).unwrap();
+        if let Some(u) = units {
+            v.put_attribute("units", *u).unwrap();
+        }
+    }
+    f.add_variable::<f64>("hin_max", &["nb"]).unwrap();
+    f.enddef().unwrap();
+    for (name, _, data, _) in &vars {
+        f.variable_mut(name).unwrap().put_values(data, ..).unwrap();
+    }
+    f.variable_mut("hin_max")
+        .unwrap()
+        .put_values(&inp.hin_max, ..)
+        .unwrap();
+    f.close().unwrap();
+}
+
+fn read(path: &Path, name: &str) -> Vec<f64> {
+    let f = netcdf::open(path).unwrap();
+    let v = f
+        .variable(name)
+        .unwrap_or_else(|| panic!("output has no `{name}`"));
+    let fill: Option<f64> = v
+        .attributes()
+        .find(|a| a.name() == "_FillValue")
+        .and_then(|a| a.value().ok())
+        .and_then(|x| f64::try_from(x).ok());
+    assert_eq!(fill, Some(FILL), "{name}: _FillValue");
+    v.get_values::<f64, _>(..).unwrap()
+}
+
+fn units(path: &Path, name: &str) -> String {
+    let f = netcdf::open(path).unwrap();
+    let v = f.variable(name).unwrap();
+    v.attributes()
+        .find(|a| a.name() == "units")
+        .and_then(|a| a.value().ok())
+        .and_then(|x| String::try_from(x).ok())
+        .unwrap_or_default()
+}
+
+#[test]
+fn snow_and_tracers_round_trip_equal_the_library_and_conserve() {
+    let dir = scratch("ridge-step-complete");
+    let (inp_path, out) = (dir.join("in.nc"), dir.join("out.nc"));
+    let inp = input();
+    write_input(&inp_path, &inp, &[]);
+    succeeds(
+        &bin()
+            .args(["ridge-step", "--input"])
+            .arg(&inp_path)
+            .arg("--output")
+            .arg(&out)
+            .args(["--dt", "3600", "--ndtd", "2"])
+            .output()
+            .unwrap(),
+    );
+    let l = layout();
+    let nt = l.ntrcr();
+    let names = l.cice_restart_names();
+    let got_a = read(&out, "aicen");
+    let got_v = read(&out, "vicen");
+    let got_s = read(&out, "vsnon");
+    let got_t: Vec<Vec<f64>> = names.iter().map(|n| read(&out, n)).collect();
+    let got_a0 = read(&out, "aice0");
+    let cell: Vec<Vec<f64>> = CELL_OUTPUTS.iter().map(|m| read(&out, m.name)).collect();
+    let cats: Vec<Vec<f64>> = CATEGORY_OUTPUTS
+        .iter()
+        .map(|m| read(&out, m.name))
+        .collect();
+    let cell_of =
+        |name: &str, c: usize| cell[CELL_OUTPUTS.iter().position(|m| m.name == name).unwrap()][c];
+    assert_eq!(units(&out, "fhocn"), "W m-2");
+    assert_eq!(units(&out, "fresh"), "kg m-2 s-1");
+    assert_eq!(units(&out, "qice001"), "J m-3");
+    assert_eq!(units(&out, "Tsfcn"), "degC");
+    let opts = RidgeStepOptions::default();
+    let rhoi = opts.params.rhoi;
+    let rhos = opts.step.rhos;
+    for c in 0..NCOL {
+        if c == LAND {
+            // Land stays missing in every gridded output.
+            for n in 0..NCAT {
+                let i = n * NCOL + c;
+                assert_eq!(got_a[i], FILL);
+                assert_eq!(got_s[i], FILL);
+                assert!(got_t.iter().all(|t| t[i] == FILL));
+                assert!(cats.iter().all(|x| x[i] == FILL));
+            }
+            assert_eq!(got_a0[c], FILL);
+            assert!(cell.iter().all(|x| x[c] == FILL));
+            continue;
+        }
+        // The library on the same column.
+        let mut a: Vec<f64> = (0..NCAT).map(|n| inp.aicen[n * NCOL + c]).collect();
+        let mut v: Vec<f64> = (0..NCAT).map(|n| inp.vicen[n * NCOL + c]).collect();
+        let mut s: Vec<f64> = (0..NCAT).map(|n| inp.vsnon[n * NCOL + c]).collect();
+        let mut t: Vec<f64> = (0..NCAT)
+            .flat_map(|n| (0..nt).map(move |it| (n, it)))
+            .map(|(n, it)| inp.trcrn[it][n * NCOL + c])
+            .collect();
+        let (a_in, v_in, s_in, t_in) = (a.clone(), v.clone(), s.clone(), t.clone());
+        let mut a0 = inp.aice0[c];
+        let mut ai: f64 = a.iter().sum();
+        let mut fl = OceanFluxes::default();
+        let mut ws = StepWorkspace::new(NCAT, nt);
+        let (conv, sh) = (f64::max(-inp.divu[c], 0.0), inp.shear[c]);
+        let d = ridge_step_column(
+            &mut ColumnMut {
+                aicen: &mut a,
+                vicen: &mut v,
+                vsnon: &mut s,
+                trcrn: &mut t,
+                aice0: &mut a0,
+                aice: &mut ai,
+            },
+            &inp.hin_max,
+            StepForcing {
+                closing: Closing::Deformation {
+                    convergence: conv,
+                    shear: sh,
+                },
+                dt: DT,
+                ndtd: 2,
+                tf: -1.8,
+            },
+            &opts,
+            &l,
+            &mut fl,
+            &mut ws,
+        )
+        .unwrap();
+        assert!(d.dardg1dt > 0.0, "column {c} ridges");
+        for n in 0..NCAT {
+            let i = n * NCOL + c;
+            assert_eq!(got_a[i].to_bits(), a[n].to_bits(), "aicen col {c} cat {n}");
+            assert_eq!(got_v[i].to_bits(), v[n].to_bits(), "vicen col {c} cat {n}");
+            assert_eq!(got_s[i].to_bits(), s[n].to_bits(), "vsnon col {c} cat {n}");
+            for it in 0..nt {
+                assert_eq!(
+                    got_t[it][i].to_bits(),
+                    t[n * nt + it].to_bits(),
+                    "{} col {c} cat {n}",
+                    names[it]
+                );
+            }
+            assert_eq!(cats[0][i], ws.dardg1ndt[n]);
+            assert_eq!(cats[4][i], ws.krdgn[n]);
+        }
+        assert_eq!(got_a0[c].to_bits(), a0.to_bits());
+        for (name, want) in [
+            ("fresh", fl.fresh),
+            ("fsalt", fl.fsalt),
+            ("fhocn", fl.fhocn),
+            ("fpond", fl.fpond),
+            ("dpnd_ridge", fl.dpnd_ridge),
+            ("dardg1dt", d.dardg1dt),
+            ("opening", d.opening),
+        ] {
+            assert_eq!(cell_of(name, c).to_bits(), want.to_bits(), "{name} col {c}");
+        }
+        // Conservation with the fluxes (fluxes averaged over ndtd·dt).
+        let rel = |x: f64, y: f64| (x - y).abs() / y.abs().max(1e-300);
+        let sum = |x: &[f64]| x.iter().sum::<f64>();
+        let ice_out = cell_of("ice_to_ocean", c);
+        let snow_out = cell_of("snow_to_ocean", c);
+        assert!(rel(sum(&v) + ice_out, sum(&v_in)) < 1e-12);
+        assert!(rel(sum(&s) + snow_out, sum(&s_in)) < 1e-12);
+        assert!((a0 + sum(&a) - 1.0).abs() < 1e-12);
+        let water = (rhoi * ice_out + rhos * snow_out) / (2.0 * DT);
+        assert!(rel(cell_of("fresh", c), water) < 1e-12 || water == 0.0);
+        let (qi, li) = l.field("qice").unwrap();
+        let (qs, ls) = l.field("qsno").unwrap();
+        let enthalpy = |v: &[f64], s: &[f64], t: &[f64]| -> f64 {
+            (0..NCAT)
+                .map(|n| {
+                    let tr = &t[n * nt..(n + 1) * nt];
+                    v[n] * tr[qi..qi + li].iter().sum::<f64>() / li as f64
+                        + s[n] * tr[qs..qs + ls].iter().sum::<f64>() / ls as f64
+                })
+                .sum()
+        };
+        let e0 = enthalpy(&v_in, &s_in, &t_in);
+        let e1 = enthalpy(&v, &s, &t) + cell_of("fhocn", c) * 2.0 * DT;
+        assert!(rel(e1, e0) < 1e-12, "enthalpy col {c}: {e1} vs {e0}");
+        let _ = a_in;
+    }
+    // The output is a valid input again (chained steps).
+    let out2 = dir.join("out2.nc");
+    let r = bin()
+        .args(["ridge-step", "--input"])
+        .arg(&out)
+        .arg("--output")
+        .arg(&out2)
+        .args(["--dt", "3600", "--convergence", "1e-6"])
+        .output()
+        .unwrap();
+    succeeds(&r);
+    // Output over input is refused.
+    let r = bin()
+        .args(["ridge-step", "--input"])
+        .arg(&inp_path)
+        .arg("--output")
+        .arg(&inp_path)
+        .args(["--dt", "3600"])
+        .output()
+        .unwrap();
+    assert_eq!(r.status.code(), Some(1));
+}
+
+#[test]
+fn incomplete_tracer_groups_and_misplaced_options_are_named() {
+    let dir = scratch("ridge-step-complete-errors");
+    let inp = input();
+    let out = dir.join("out.nc");
+    // alvl without vlvl.
+    let p = dir.join("no_vlvl.nc");
+    write_input(&p, &inp, &["vlvl"]);
+    let r = bin()
+        .args(["ridge-step", "--input"])
+        .arg(&p)
+        .arg("--output")
+        .arg(&out)
+        .args(["--dt", "3600"])
+        .output()
+        .unwrap();
+    fails_with(&r, &["vlvl", "alvl"]);
+    // The surface temperature is needed with the other tracers.
+    let p = dir.join("no_tsfc.nc");
+    write_input(&p, &inp, &["Tsfcn"]);
+    let r = bin()
+        .args(["ridge-step", "--input"])
+        .arg(&p)
+        .arg("--output")
+        .arg(&out)
+        .args(["--dt", "3600"])
+        .output()
+        .unwrap();
+    fails_with(&r, &["Tsfcn"]);
+    // No enthalpies at all: vsnon alone is refused.
+    let l = layout();
+    let all: Vec<String> = l.cice_restart_names();
+    let refs: Vec<&str> = all.iter().map(|s| s.as_str()).collect();
+    let p = dir.join("snow_only.nc");
+    write_input(&p, &inp, &refs);
+    let r = bin()
+        .args(["ridge-step", "--input"])
+        .arg(&p)
+        .arg("--output")
+        .arg(&out)
+        .args(["--dt", "3600"])
+        .output()
+        .unwrap();
+    fails_with(&r, &["qice001"]);
+    // Options of the complete step on an area-volume file.
+    let r = bin()
+        .args(["ridge-step", "--input"])
+        .arg(concat!(env!("CARGO_MANIFEST_DIR"), "/data/sample_itd.nc"))
+        .arg("--output")
+        .arg(&out)
+        .args(["--dt", "3600", "--ndtd", "2"])
+        .output()
+        .unwrap();
+    fails_with(&r, &["--ndtd", "complete step"]);
+}
