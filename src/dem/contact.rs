@@ -18,7 +18,7 @@
 
 use super::body::Bodies;
 use super::broadphase::{pair_key, unpack};
-use super::geometry::{V2, overlap};
+use super::geometry::{OverlapScratch, V2, overlap_with};
 use super::world::Dashpot;
 use serde::{Deserialize, Serialize};
 
@@ -174,6 +174,8 @@ pub struct ContactSet {
     prev: Vec<Contact>,
     /// Per contact of `cur`, what the implicit dashpot's second pass needs.
     pending: Vec<Pending>,
+    /// Working space of the overlap geometry.
+    scratch: OverlapScratch,
 }
 
 /// A contact's viscous and friction inputs, kept between the passes of the implicit
@@ -255,11 +257,12 @@ impl ContactSet {
             };
             let (a, b) = unpack(key);
             let (a, b) = (a as usize, b as usize);
-            let Some(ov) = overlap(
+            let Some(ov) = overlap_with(
                 &bodies.world[a],
                 &bodies.world[b],
                 bodies.pos[a],
                 bodies.pos[b],
+                &mut self.scratch,
             ) else {
                 if let Some(o) = old {
                     work.released += o.held();

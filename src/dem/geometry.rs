@@ -453,8 +453,26 @@ pub struct Overlap {
 /// (one polygon inside the other, or a touch of zero length) the normal falls back to the
 /// direction between the centroids, and to `+y` if those coincide.
 pub fn overlap(a: &Outline, b: &Outline, ca: V2, cb: V2) -> Option<Overlap> {
-    let mut bufs = [ClipPoly::default(), ClipPoly::default()];
-    let poly = intersect_in(a, b, &mut bufs)?;
+    overlap_with(a, b, ca, cb, &mut OverlapScratch::default())
+}
+
+/// Working space of [`overlap_with`], kept by the caller so that no buffer is cleared per
+/// pair.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct OverlapScratch {
+    bufs: [ClipPoly; 2],
+    pts: [V2; CLIP_VERTS],
+}
+
+/// [`overlap`] in the caller's working space.
+pub fn overlap_with(
+    a: &Outline,
+    b: &Outline,
+    ca: V2,
+    cb: V2,
+    scratch: &mut OverlapScratch,
+) -> Option<Overlap> {
+    let poly = intersect_in(a, b, &mut scratch.bufs)?;
     if poly.n < 3 {
         return None;
     }
@@ -462,8 +480,8 @@ pub fn overlap(a: &Outline, b: &Outline, ca: V2, cb: V2) -> Option<Overlap> {
     if area <= 0.0 {
         return None;
     }
-    let mut pts = [V2::default(); CLIP_VERTS];
-    let k = poly.crossings(a, b, &mut pts);
+    let pts = &mut scratch.pts;
+    let k = poly.crossings(a, b, pts);
     let ab = cb - ca;
     let scale = a_scale(a).max(a_scale(b));
     let (dir, chord) = chord_direction(&pts[..k]);
