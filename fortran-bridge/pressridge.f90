@@ -194,6 +194,14 @@ module pressridge
        type(c_grid), intent(in) :: grid
        type(c_ptr), value :: aicen, vicen, aice0, valid, options, strength, cf_clamped
      end function c_strength
+     integer(c_int32_t) function c_strength_cell(ncat, aicen, vicen, aice0, options, &
+          strength) bind(C, name="pressridge_strength_cell")
+       import :: c_int32_t, c_int64_t, c_ptr, c_double
+       integer(c_int64_t), value :: ncat
+       type(c_ptr), value :: aicen, vicen
+       real(c_double), value :: aice0
+       type(c_ptr), value :: options, strength
+     end function c_strength_cell
      integer(c_int32_t) function c_ridge_step(grid, aicen, vicen, aice0, hin_max, nbounds, &
           convergence, shear, dt, valid, options, rates) bind(C, name="pressridge_ridge_step")
        import :: c_int32_t, c_int64_t, c_ptr, c_double, c_grid, c_rates
@@ -595,7 +603,6 @@ contains
     real(c_double), intent(in), contiguous, target :: aicen(:), vicen(:)
     real(c_double), intent(inout), target :: strength
     integer, intent(out), optional :: ierr
-    type(c_grid) :: g
     integer(c_int32_t) :: rc
     if (size(vicen) /= size(aicen)) then
        call fail(PRESSRIDGE_ERR_BAD_SIZE, 'vicen and aicen differ in size', &
@@ -607,10 +614,8 @@ contains
             'pressridge_ice_strength', ierr)
        return
     end if
-    g = c_grid(size(aicen, kind=c_int64_t), 1_c_int64_t, 1_c_int64_t, &
-         size(aicen, kind=c_int64_t), size(aicen, kind=c_int64_t), 1_c_int64_t, 1_c_int64_t)
-    rc = c_strength(g, c_loc(aicen), c_loc(vicen), c_loc(aice0), c_null_ptr, &
-         c_loc(icepack_options), c_loc(strength), c_null_ptr)
+    rc = c_strength_cell(size(aicen, kind=c_int64_t), c_loc(aicen), c_loc(vicen), aice0, &
+         c_loc(icepack_options), c_loc(strength))
     call finish(rc, 'pressridge_ice_strength', ierr)
   end subroutine pressridge_ice_strength
 

@@ -489,6 +489,94 @@ pub unsafe extern "C" fn pressridge_strength(
     })
 }
 
+thread_local! {
+    /// The options of this thread's last [`pressridge_strength_cell`] call with a constant
+    /// C_f, and what they convert to (compared bit for bit: NaN never equals, so a bad value
+    /// is checked again every call).
+    static CELL_OPTIONS: RefCell<Option<(PressridgeOptions, StrengthOptions)>> =
+        const { RefCell::new(None) };
+}
+
+/// Ice strength P (N/m) of one grid cell: the per-cell call of CICE's `icepack_ice_strength`,
+/// without a grid descriptor. `aicen` (dimensionless) and `vicen` (m) are `ncat` contiguous
+/// values; `aice0` is the open-water fraction (dimensionless). The result is that of
+/// [`pressridge_strength`] on a one-column grid, bit for bit; errors are reported the same
+/// way. A thread that calls with unchanged options (constant C_f) skips their conversion and
+/// checks.
+///
+/// # Safety
+/// `aicen` and `vicen` must be valid for `ncat` reads, `options` for one read and
+/// `strength` for one write.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pressridge_strength_cell(
+    ncat: i64,
+    aicen: *const f64,
+    vicen: *const f64,
+    aice0: f64,
+    options: *const PressridgeOptions,
+    strength: *mut f64,
+) -> i32 {
+    // SAFETY: every pointer is checked for null and alignment before use; validity for
+    // `ncat` values is the caller's promise.
+    guard(|| unsafe {
+        if ncat <= 0 {
+            return Err(FfiError::new(
+                super::PRESSRIDGE_ERR_BAD_SIZE,
+                format!("ncat must be positive, got {ncat}"),
+            ));
+        }
+        check_ptr(aicen, "aicen")?;
+        check_ptr(vicen, "vicen")?;
+        check_ptr(options, "options")?;
+        check_ptr(strength.cast_const(), "strength")?;
+        let n = ncat as usize;
+        let a = std::slice::from_raw_parts(aicen, n);
+        let v = std::slice::from_raw_parts(vicen, n);
+        let out = strength as usize;
+        for (what, x) in [("aicen", aicen as usize), ("vicen", vicen as usize)] {
+            if out + 8 > x && out < x + 8 * n {
+                return Err(FfiError::new(
+                    super::PRESSRIDGE_ERR_BAD_SIZE,
+                    format!("strength overlaps {what}"),
+                ));
+            }
+        }
+        let o = *options;
+        let r = CELL_OPTIONS.with(|cache| -> FfiResult<ColumnStrength> {
+            let mut cache = cache.borrow_mut();
+            let constant = o.cf_source == PRESSRIDGE_CF_SOURCE_CONSTANT;
+            let hit = constant && cache.as_ref().is_some_and(|(c, _)| same_options(c, &o));
+            if !hit {
+                let so = o.strength_options()?;
+                so.validate()?;
+                *cache = Some((o, so));
+            }
+            let so = &cache.as_ref().expect("just filled").1;
+            let r = with_scratch(n, |sc| strength_column(a, v, Some(aice0), so, &mut sc.ws))
+                .map_err(|source| ItdError::Column { column: 0, source }.into());
+            if !constant {
+                // A table handle may be freed and another made at its address: never kept.
+                *cache = None;
+            }
+            r
+        })?;
+        strength.write(r.strength);
+        Ok(())
+    })
+}
+
+/// Options equal bit for bit (NaN never equal).
+fn same_options(a: &PressridgeOptions, b: &PressridgeOptions) -> bool {
+    a.participation == b.participation
+        && a.redistribution == b.redistribution
+        && a.strength_law == b.strength_law
+        && a.cf_source == b.cf_source
+        && a.cf == b.cf
+        && a.fill.to_bits() == b.fill.to_bits()
+        && a.cf_table == b.cf_table
+        && a.params == b.params
+}
+
 /// Caller-owned outputs of [`pressridge_ridge_step`], one value per column laid out as the
 /// grid's per-column arrays. Any pointer may be null (that rate is not returned).
 #[repr(C)]

@@ -1,4 +1,5 @@
-!> Side-by-side timing of the complete ridging step: Icepack's icepack_step_ridge (built from
+!> Side-by-side timing of the complete ridging step and of the ice strength: Icepack's
+!> icepack_step_ridge and icepack_ice_strength (built from
 !> the user's Icepack checkout by run.sh; no Icepack code is in this repository) and
 !> pressridge's C ABI, per cell and batched, on the same columns in the same run. Workload
 !> as benches/strength.rs and bench_strength.f90: ncat = 5 (bounds 0, 0.6, 1.4, 2.4, 3.6 m),
@@ -10,7 +11,7 @@
 program bench_icepack_ridge
   use, intrinsic :: iso_c_binding, only: c_double
   use, intrinsic :: iso_fortran_env, only: int64
-  use icepack_intfc, only: icepack_step_ridge, icepack_init_tracer_sizes, &
+  use icepack_intfc, only: icepack_step_ridge, icepack_ice_strength, icepack_init_tracer_sizes, &
        icepack_init_tracer_flags, icepack_init_tracer_indices, icepack_init_parameters, &
        icepack_warnings_flush, icepack_warnings_aborted
   use pressridge
@@ -25,6 +26,7 @@ program bench_icepack_ridge
   real(c_double), allocatable :: ia(:, :), iv(:, :), is(:, :), it(:, :, :), ia0(:), iaice(:)
   real(c_double), allocatable :: pa(:, :), pv(:, :), ps(:, :), pt(:, :, :), pa0(:), paice(:)
   real(c_double), allocatable :: fr(:), fs(:), fh(:), fp(:), cv(:), sh(:)
+  real(c_double), allocatable :: sic(:), spc(:), spb(:), ai(:), vi(:)
   real(c_double) :: r, w(ncat), sw, hin(0:ncat), t, tic, tpc, tpb, diff
   real(c_double) :: d1, d2, d3, op, fpond, fresh, fhocn, fsalt, aice, faero(1), fbio(1)
   real(c_double) :: aparticn(ncat), krdgn(ncat), aredistn(ncat), vredistn(ncat), &
@@ -181,6 +183,43 @@ program bench_icepack_ridge
   print '(a, f9.1)', '  pressridge_step_ridge_cells, one call:       ', 1d9 * tpb / ncol
   print '(a, es10.2)', '  largest difference from Icepack (state, tracers relative): ', diff
   call pressridge_ridger_free(rg)
+
+  ! Ice strength, as CICE's step_dyn calls it once per cell; and pressridge batched.
+  allocate(sic(ncol), spc(ncol), spb(ncol), ai(ncol), vi(ncol))
+  do c = 1, ncol
+     ai(c) = sum(a(:, c))
+     vi(c) = sum(v(:, c))
+  end do
+  tic = huge(1.0d0)
+  tpc = huge(1.0d0)
+  tpb = huge(1.0d0)
+  do rep = 1, 3
+     call system_clock(t0)
+     do c = 1, ncol
+        sic(c) = 0
+        call icepack_ice_strength(ai(c), vi(c), a0(c), a(:, c), v(:, c), sic(c))
+     end do
+     call system_clock(t1)
+     tic = min(tic, real(t1 - t0, c_double) / rate)
+     call system_clock(t0)
+     do c = 1, ncol
+        call pressridge_ice_strength(ai(c), vi(c), a0(c), a(:, c), v(:, c), spc(c))
+     end do
+     call system_clock(t1)
+     tpc = min(tpc, real(t1 - t0, c_double) / rate)
+     call system_clock(t0)
+     call pressridge_strength(a, v, spb, aice0=a0)
+     call system_clock(t1)
+     tpb = min(tpb, real(t1 - t0, c_double) / rate)
+  end do
+  if (icepack_warnings_aborted()) error stop 'icepack_ice_strength failed'
+  print '(a, i0, a)', 'ice strength, ncat = 5, ', ncol, ' cells, best of 3 (ns per cell):'
+  print '(a, f9.1)', '  Icepack icepack_ice_strength, per cell:      ', 1d9 * tic / ncol
+  print '(a, f9.1)', '  pressridge_ice_strength, per cell:           ', 1d9 * tpc / ncol
+  print '(a, f9.1)', '  pressridge_strength, one call:               ', 1d9 * tpb / ncol
+  print '(a, es10.2)', '  largest relative difference from Icepack: ', &
+       max(maxval(abs(spc - sic) / max(1.0d0, abs(sic))), &
+       maxval(abs(spb - sic) / max(1.0d0, abs(sic))))
 
 contains
 
