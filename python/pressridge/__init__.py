@@ -163,8 +163,11 @@ def strength(
     Parameters
     ----------
     aicen : array_like, shape (ncat, ...)
-        Ice area fraction of each category (dimensionless), category axis first, then any
-        spatial shape.
+        Ice area fraction of each category (dimensionless). **Axis 0 is the category
+        axis**, whatever the data: the other axes are columns (any spatial shape). A CICE
+        history array ``aicen(time, nc, nj, ni)`` must first be moved
+        (``np.moveaxis(a, 1, 0)``), or given as a dataset to :func:`pressridge.xr.strength`,
+        which finds the category dimension by name.
     vicen : array_like, same shape as ``aicen``
         Ice volume per unit grid-cell area of each category (m).
     aice0 : array_like, shape ``aicen.shape[1:]``, optional
