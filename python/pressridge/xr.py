@@ -23,6 +23,7 @@ Otherwise a NaN is an error. ``mask=True``/``False`` forces either behaviour.
 
 from __future__ import annotations
 
+import itertools
 from typing import Any, Hashable, List, Optional, Union
 
 import numpy as np
@@ -111,13 +112,18 @@ def _valid(a: np.ndarray, v: np.ndarray, a0: Optional[np.ndarray]) -> np.ndarray
     return ~bad
 
 
-def _strength_block(a, v, *rest, has_aice0, mask, options):
+def _strength_block(a, v, *rest, has_aice0, mask, options, clamp_note):
     # apply_ufunc moved the category axis last; put it first again (a view, no copy).
     a = np.moveaxis(a, -1, 0)
     v = np.moveaxis(v, -1, 0)
     a0 = rest[0] if has_aice0 else None
     valid = _valid(a, v, a0) if mask else None
-    return np.asarray(_pr.strength(a, v, a0, valid=valid, **options))
+    return np.asarray(
+        _pr.strength(a, v, a0, valid=valid, _clamp_note=clamp_note, **options)
+    )
+
+
+_calls = itertools.count(1)
 
 
 def strength(
@@ -165,7 +171,18 @@ def strength(
         output_core_dims=[[]],
         dask="parallelized",
         output_dtypes=[np.float64],
-        kwargs=dict(has_aice0=aice0 is not None, mask=use_mask, options=options),
+        kwargs=dict(
+            has_aice0=aice0 is not None,
+            mask=use_mask,
+            options=options,
+            # Lazy data: every chunk warns with the same text (this call's number), which
+            # the warnings filter shows once; eager data is one block: the exact count.
+            clamp_note=(
+                None
+                if aicen.chunks is None
+                else f"pressridge.xr.strength call {next(_calls)}, over dask chunks"
+            ),
+        ),
         keep_attrs=True,  # keeps the coordinates' attributes; data attributes set below
     )
     out = out.transpose(*spatial)

@@ -123,3 +123,21 @@ def test_command_line_outputs_open_with_decoded_coordinates(sample, cli, tmp_pat
         assert o.attrs["category_bounds"].startswith("NCAT")
         for name, v in o.data_vars.items():
             assert "units" in v.attrs and "long_name" in v.attrs, name
+
+
+def test_cf_clamp_warning_once_per_call_not_per_chunk(sample):
+    import warnings
+
+    d = cice_history(sample)
+    nodes = (np.array([0.2, 0.3]), np.array([15.0, 16.0]))  # thicker ridging ice: clamped
+    with warnings.catch_warnings(record=True) as w:
+        warnings.simplefilter("default")
+        lazy = prx.strength(d.chunk({"time": 1, "nj": 4}), cf=nodes)  # 6 chunks
+        assert lazy.data.npartitions == 6
+        lazy.compute(scheduler="threads")
+        prx.strength(d.chunk({"time": 1, "nj": 4}), cf=nodes).compute(scheduler="sync")
+        prx.strength(d, cf=nodes)  # eager: one block, the exact count
+    got = [x for x in w if issubclass(x.category, pr.CfClampedWarning)]
+    assert len(got) == 3, [str(x.message) for x in got]
+    assert "over dask chunks" in str(got[0].message)
+    assert "columns had ridging-ice thicknesses" in str(got[2].message)
