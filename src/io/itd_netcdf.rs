@@ -231,7 +231,8 @@ pub struct ItdGrid {
     pub vicen: Array2<f64>,
     /// Open-water fraction (dimensionless), if present in the file.
     pub aice0: Option<Array1<f64>>,
-    /// Category bounds (m), if present in the file.
+    /// Category bounds (m), ncat + 1 values, if the file has them (`hin_max`, or `NCAT`
+    /// with 0 m prepended; see `hin_max_source`).
     pub hin_max: Option<Vec<f64>>,
     /// Velocity divergence (1/s), if present.
     pub divu: Option<Array1<f64>>,
