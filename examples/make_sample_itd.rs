@@ -107,6 +107,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         shear: None,
         valid: None,
         fill_value: None,
+        ..Default::default()
     };
     let fields = [
         (
@@ -153,6 +154,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             category_fields: &[],
             global: &global,
             fill: None,
+            history: None,
         },
     )?;
     println!("wrote {}", out.display());

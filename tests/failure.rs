@@ -76,14 +76,23 @@ fn an_output_resolving_to_the_input_is_refused_and_the_input_kept() {
 #[test]
 fn a_failed_netcdf_write_leaves_the_old_file_and_no_partial_one() {
     let d = scratch("ncfail");
-    // The category and spatial dimension share a name: readable, but the output cannot
-    // define the dimension twice, so writing fails after the file was created.
+    // The spatial dimension is named as the output's bounds dimension `ncat_bounds`:
+    // readable, but the output cannot define that dimension twice, so writing fails after
+    // the file was created.
     let input = d.join("in.nc");
     write_nc(
         &input,
         &[
-            Var::f64("aicen", &[("n", 2), ("n", 2)], vec![0.3, 0.3, 0.3, 0.3]),
-            Var::f64("vicen", &[("n", 2), ("n", 2)], vec![0.3, 0.3, 0.6, 0.6]),
+            Var::f64(
+                "aicen",
+                &[("ncat", 2), ("ncat_bounds", 2)],
+                vec![0.3, 0.3, 0.3, 0.3],
+            ),
+            Var::f64(
+                "vicen",
+                &[("ncat", 2), ("ncat_bounds", 2)],
+                vec![0.3, 0.3, 0.6, 0.6],
+            ),
         ],
     );
     let out = d.join("out.nc");

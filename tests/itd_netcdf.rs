@@ -38,6 +38,7 @@ fn small_grid(bad: Option<f64>) -> ItdGrid {
         shear: None,
         valid: None,
         fill_value: None,
+        ..Default::default()
     }
 }
 
@@ -52,6 +53,7 @@ fn write_grid(path: &Path, g: &ItdGrid) {
             category_fields: &[],
             global: &[],
             fill: None,
+            history: None,
         },
     )
     .unwrap();
@@ -454,6 +456,7 @@ fn write_output_rejects_wrong_field_length() {
             category_fields: &[],
             global: &[],
             fill: None,
+            history: None,
         },
     )
     .unwrap_err();
@@ -461,8 +464,8 @@ fn write_output_rejects_wrong_field_length() {
 }
 
 /// A CICE-history-like file: `aicen(time, nc, nj, ni)` in single precision with
-/// `_FillValue = 1e30` on a land cell. The length-1 time dimension is dropped, the land cell is
-/// masked (fill on output), the other cells are computed.
+/// `_FillValue = 1e30` on a land cell. The length-1 time dimension is kept as a column
+/// dimension, the land cell is masked (fill on output), the other cells are computed.
 #[test]
 fn cice_like_file_with_time_and_land_fill() {
     let p = tmp("cice_like.nc");
@@ -492,7 +495,11 @@ fn cice_like_file_with_time_and_land_fill() {
     assert_eq!(g.ncat(), 2);
     assert_eq!(
         g.spatial_dims,
-        vec![("nj".to_string(), 2), ("ni".to_string(), 3)]
+        vec![
+            ("time".to_string(), 1),
+            ("nj".to_string(), 2),
+            ("ni".to_string(), 3)
+        ]
     );
     let valid = g.valid.clone().unwrap();
     assert_eq!(valid.to_vec(), vec![true, false, true, true, true, true]);
@@ -525,29 +532,6 @@ fn cice_like_file_with_time_and_land_fill() {
         .try_into()
         .unwrap();
     assert_eq!(fv, 1.0e30f32 as f64);
-
-    // A time dimension longer than 1 is refused, not mistaken for the categories.
-    let p2 = tmp("two_times.nc");
-    {
-        let mut f = netcdf::create_with(&p2, netcdf::Options::_64BIT_OFFSET).unwrap();
-        for (n, l) in [("time", 2), ("nc", 2), ("ni", 3)] {
-            f.add_dimension(n, l).unwrap();
-        }
-        for n in ["aicen", "vicen"] {
-            f.add_variable::<f64>(n, &["time", "nc", "ni"]).unwrap();
-        }
-        f.enddef().unwrap();
-        f.variable_mut("aicen")
-            .unwrap()
-            .put_values(&[0.4; 12], ..)
-            .unwrap();
-        f.variable_mut("vicen")
-            .unwrap()
-            .put_values(&[0.4; 12], ..)
-            .unwrap();
-    }
-    let e = read_itd(&p2).unwrap_err();
-    assert!(e.to_string().contains("time"), "{e}");
 }
 
 /// CICE history strain rates (`divu`, `shear` in %/day) are converted to 1/s and the shear
@@ -599,4 +583,274 @@ fn deformation_terms_are_icepacks() {
     assert_eq!(c, 0.0);
     assert!((s - 1e-6).abs() < 1e-22);
     assert!((percent_per_day_to_per_second(8.64) - 1e-6).abs() < 1e-22);
+}
+
+/// A CICE-history-like file with `ntime` times: `time(time)` (days, noleap calendar),
+/// `TLON`/`TLAT` (float, named by aicen's `coordinates`), `NCAT(nc)` upper bounds, and
+/// `aicen`/`vicen(time, nc, nj, ni)` in single precision with a land cell (nj=0, ni=1) at
+/// `_FillValue = 1e30`. Time `t` holds data that depends on `t`; `times` picks which.
+fn cice_history(path: &Path, times: &[usize], ncat_bounds: &[f32]) {
+    let mut f = netcdf::create_with(path, netcdf::Options::_64BIT_OFFSET).unwrap();
+    f.add_unlimited_dimension("time").unwrap();
+    for (n, l) in [("nc", 2), ("nj", 2), ("ni", 3)] {
+        f.add_dimension(n, l).unwrap();
+    }
+    let mut t = f.add_variable::<f64>("time", &["time"]).unwrap();
+    t.put_attribute("units", "days since 2000-01-01 00:00:00")
+        .unwrap();
+    t.put_attribute("calendar", "noleap").unwrap();
+    for (n, u) in [("TLON", "degrees_east"), ("TLAT", "degrees_north")] {
+        let mut v = f.add_variable::<f32>(n, &["nj", "ni"]).unwrap();
+        v.put_attribute("units", u).unwrap();
+        v.put_attribute("_FillValue", 1.0e30f32).unwrap();
+    }
+    let mut v = f.add_variable::<f32>("NCAT", &["nc"]).unwrap();
+    v.put_attribute("units", "m").unwrap();
+    for n in ["aicen", "vicen"] {
+        let mut v = f
+            .add_variable::<f32>(n, &["time", "nc", "nj", "ni"])
+            .unwrap();
+        v.put_attribute("_FillValue", 1.0e30f32).unwrap();
+        v.put_attribute("coordinates", "TLON TLAT time").unwrap();
+    }
+    f.add_attribute("history", "made by the test").unwrap();
+    f.enddef().unwrap();
+    let (mut a, mut v, mut tv) = (Vec::new(), Vec::new(), Vec::new());
+    for &it in times {
+        tv.push(31.0 * it as f64);
+        for k in 0..2 {
+            for c in 0..6 {
+                let land = c == 1;
+                let x = 0.3 + 0.05 * k as f32 + 0.02 * c as f32 + 0.05 * it as f32;
+                a.push(if land { 1.0e30 } else { x });
+                v.push(if land {
+                    1.0e30
+                } else {
+                    x * (0.5 + 1.5 * k as f32 + 0.3 * it as f32)
+                });
+            }
+        }
+    }
+    f.variable_mut("time")
+        .unwrap()
+        .put_values(&tv, (0..times.len(),))
+        .unwrap();
+    let lon: Vec<f32> = (0..6).map(|c| 10.0 + c as f32).collect();
+    let lat: Vec<f32> = (0..6).map(|c| 70.0 + 0.5 * c as f32).collect();
+    f.variable_mut("TLON")
+        .unwrap()
+        .put_values(&lon, ..)
+        .unwrap();
+    f.variable_mut("TLAT")
+        .unwrap()
+        .put_values(&lat, ..)
+        .unwrap();
+    f.variable_mut("NCAT")
+        .unwrap()
+        .put_values(ncat_bounds, ..)
+        .unwrap();
+    let n = times.len();
+    f.variable_mut("aicen")
+        .unwrap()
+        .put_values(&a, (0..n, .., .., ..))
+        .unwrap();
+    f.variable_mut("vicen")
+        .unwrap()
+        .put_values(&v, (0..n, .., .., ..))
+        .unwrap();
+}
+
+fn str_attr(f: &netcdf::File, var: &str, name: &str) -> String {
+    let v = f.variable(var).unwrap();
+    let a = v.attributes().find(|a| a.name() == name);
+    String::try_from(a.unwrap_or_else(|| panic!("{var}:{name}")).value().unwrap()).unwrap()
+}
+
+/// Strength and the ridging step of a CICE history file with two times: the category
+/// dimension found by name, time kept, each time equal to the same file holding that time
+/// alone; coordinates (time with its calendar, TLON/TLAT) and CF attributes carried over; land
+/// stays missing; the bounds come from NCAT.
+#[test]
+fn cice_history_with_several_times_keeps_time_coordinates_and_land() {
+    let both = tmp("hist2.nc");
+    cice_history(&both, &[0, 1], &[1.0, 99.0]);
+    let run = |cmd: &str, input: &Path, name: &str, extra: &[&str]| -> PathBuf {
+        let out = tmp(name);
+        let mut a = vec![
+            cmd,
+            "--input",
+            input.to_str().unwrap(),
+            "--output",
+            out.to_str().unwrap(),
+        ];
+        a.extend(extra);
+        let o = cli(&a);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        out
+    };
+    let step = ["--dt", "3600", "--convergence", "2e-6", "--shear", "1e-6"];
+    let p2 = run("strength", &both, "hist2_p.nc", &[]);
+    let r2 = run("ridge-step", &both, "hist2_r.nc", &step);
+    let (d, p) = read_field(&p2, "strength").unwrap();
+    assert_eq!(
+        d,
+        vec![
+            ("time".to_string(), 2),
+            ("nj".to_string(), 2),
+            ("ni".to_string(), 3)
+        ]
+    );
+    let (da, a2) = read_field(&r2, "aicen").unwrap();
+    assert_eq!(
+        da.iter().map(|x| x.0.as_str()).collect::<Vec<_>>(),
+        ["time", "nc", "nj", "ni"]
+    );
+    for it in 0..2 {
+        let one = tmp(&format!("hist1_{it}.nc"));
+        cice_history(&one, &[it], &[1.0, 99.0]);
+        let (_, p1) = read_field(
+            &run("strength", &one, &format!("h1p{it}.nc"), &[]),
+            "strength",
+        )
+        .unwrap();
+        assert_eq!(&p[6 * it..6 * it + 6], &p1[..], "time {it}");
+        let (_, a1) = read_field(
+            &run("ridge-step", &one, &format!("h1r{it}.nc"), &step),
+            "aicen",
+        )
+        .unwrap();
+        assert_eq!(&a2[12 * it..12 * it + 12], &a1[..], "time {it}");
+    }
+    // Land: fill in every output, never 0; the others computed.
+    let fill = 1.0e30f32 as f64;
+    for it in 0..2 {
+        assert_eq!(p[6 * it + 1], fill);
+        assert!(
+            (0..6)
+                .filter(|&c| c != 1)
+                .all(|c| p[6 * it + c] > 0.0 && p[6 * it + c] < 1.0e6)
+        );
+        assert_eq!(a2[12 * it + 1], fill);
+    }
+    for out in [&p2, &r2] {
+        let f = netcdf::open(out).unwrap();
+        assert_eq!(
+            String::try_from(f.attribute("Conventions").unwrap().value().unwrap()).unwrap(),
+            "CF-1.8"
+        );
+        let h = String::try_from(f.attribute("history").unwrap().value().unwrap()).unwrap();
+        assert!(h.starts_with("made by the test\n"), "{h}");
+        assert!(h.contains("--input") && h.contains("hist2.nc"), "{h}");
+        assert_eq!(str_attr(&f, "time", "calendar"), "noleap");
+        assert_eq!(
+            str_attr(&f, "time", "units"),
+            "days since 2000-01-01 00:00:00"
+        );
+        assert_eq!(str_attr(&f, "TLAT", "units"), "degrees_north");
+        let t: Vec<f64> = f.variable("time").unwrap().get_values(..).unwrap();
+        assert_eq!(t, vec![0.0, 31.0]);
+    }
+    let f = netcdf::open(&p2).unwrap();
+    assert_eq!(str_attr(&f, "strength", "coordinates"), "TLON TLAT");
+    assert_eq!(str_attr(&f, "strength", "units"), "N m-1");
+    assert_eq!(
+        str_attr(&f, "strength", "standard_name"),
+        "compressive_strength_of_sea_ice"
+    );
+    let f = netcdf::open(&r2).unwrap();
+    let h: Vec<f64> = f.variable("hin_max").unwrap().get_values(..).unwrap();
+    assert_eq!(h, vec![0.0, 1.0, 99.0]);
+    assert!(
+        String::try_from(f.attribute("category_bounds").unwrap().value().unwrap())
+            .unwrap()
+            .starts_with("NCAT")
+    );
+}
+
+/// The category dimension is found by name or refused with the dimensions listed; NCAT and
+/// hin_max must agree.
+#[test]
+fn category_dimension_by_name_or_refused() {
+    let data = vec![0.3; 6];
+    // None of the names.
+    let p = tmp("noname.nc");
+    raw_file(
+        &p,
+        &[("k", 2), ("x", 3)],
+        &[
+            ("aicen", &["k", "x"], data.clone()),
+            ("vicen", &["k", "x"], data.clone()),
+        ],
+    );
+    let e = read_itd(&p).unwrap_err().to_string();
+    assert!(
+        e.contains("(k=2, x=3)") && e.contains("--category-dim") && e.contains("nc, ncat, ct"),
+        "{e}"
+    );
+    let out = tmp("noname_p.nc");
+    let o = cli(&[
+        "strength",
+        "--input",
+        p.to_str().unwrap(),
+        "--output",
+        out.to_str().unwrap(),
+        "--category-dim",
+        "k",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = cli(&[
+        "strength",
+        "--input",
+        p.to_str().unwrap(),
+        "--output",
+        out.to_str().unwrap(),
+        "--category-dim",
+        "nc",
+    ]);
+    let msg = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success() && msg.contains("`nc` given"), "{msg}");
+    // Two of the names: ambiguous.
+    let p = tmp("twonames.nc");
+    raw_file(
+        &p,
+        &[("nc", 2), ("ncat", 3)],
+        &[
+            ("aicen", &["nc", "ncat"], data.clone()),
+            ("vicen", &["nc", "ncat"], data.clone()),
+        ],
+    );
+    let e = read_itd(&p).unwrap_err().to_string();
+    assert!(
+        e.contains("(nc=2, ncat=3)") && e.contains("more than one"),
+        "{e}"
+    );
+    // The category dimension last.
+    let p = tmp("catlast.nc");
+    let a: Vec<f64> = (0..6).map(|i| 0.1 + 0.05 * i as f64).collect();
+    raw_file(
+        &p,
+        &[("x", 3), ("ncat", 2)],
+        &[
+            ("aicen", &["x", "ncat"], a.clone()),
+            ("vicen", &["x", "ncat"], a.iter().map(|x| 2.0 * x).collect()),
+        ],
+    );
+    let g = read_itd(&p).unwrap();
+    assert_eq!(g.cat_axis, 1);
+    assert_eq!(g.aicen.row(0).to_vec(), vec![a[0], a[2], a[4]]);
+    assert_eq!(g.aicen.row(1).to_vec(), vec![a[1], a[3], a[5]]);
+    // hin_max and NCAT disagree.
+    let p = tmp("ncat_vs_hin.nc");
+    raw_file(
+        &p,
+        &[("ncat", 2), ("x", 3), ("nb", 3)],
+        &[
+            ("aicen", &["ncat", "x"], data.clone()),
+            ("vicen", &["ncat", "x"], data.clone()),
+            ("hin_max", &["nb"], vec![0.0, 1.0, 50.0]),
+            ("NCAT", &["ncat"], vec![1.5, 50.0]),
+        ],
+    );
+    let e = read_itd(&p).unwrap_err().to_string();
+    assert!(e.contains("NCAT") && e.contains("disagree"), "{e}");
 }

@@ -155,6 +155,7 @@ def strength(
     law: str = "rothrock",
     cf: CfLike = None,
     valid: Any = None,
+    _clamp_note: Optional[str] = None,
     **params: float,
 ) -> Any:
     """Ice strength P (N/m) of thickness distributions, as CICE/Icepack
@@ -163,8 +164,11 @@ def strength(
     Parameters
     ----------
     aicen : array_like, shape (ncat, ...)
-        Ice area fraction of each category (dimensionless), category axis first, then any
-        spatial shape.
+        Ice area fraction of each category (dimensionless). **Axis 0 is the category
+        axis**, whatever the data: the other axes are columns (any spatial shape). A CICE
+        history array ``aicen(time, nc, nj, ni)`` must first be moved
+        (``np.moveaxis(a, 1, 0)``), or given as a dataset to :func:`pressridge.xr.strength`,
+        which finds the category dimension by name.
     vicen : array_like, same shape as ``aicen``
         Ice volume per unit grid-cell area of each category (m).
     aice0 : array_like, shape ``aicen.shape[1:]``, optional
@@ -228,12 +232,16 @@ def strength(
     )
     if clamped:
         ncol = int(_np.prod(a.shape[1:], dtype=_np.int64))
-        _warnings.warn(
+        # _clamp_note (pressridge.xr, per dask chunk): one text for every chunk of a call, so
+        # that the warnings filter shows it once per call rather than once per chunk.
+        text = (
             f"{clamped} of {ncol} columns had ridging-ice thicknesses outside the C_f "
-            "table; C_f was clamped to the table's end values there",
-            CfClampedWarning,
-            stacklevel=2,
+            "table; C_f was clamped to the table's end values there"
+            if _clamp_note is None
+            else "some columns had ridging-ice thicknesses outside the C_f table; C_f was "
+            f"clamped to the table's end values there ({_clamp_note})"
         )
+        _warnings.warn(text, CfClampedWarning, stacklevel=2)
     return _scalar_if_0d(out)
 
 

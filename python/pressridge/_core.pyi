@@ -15,6 +15,8 @@ _F64 = npt.NDArray[np.float64]
 _Bool = npt.NDArray[np.bool_]
 
 __version__: str
+CATEGORY_DIMS: List[str]
+STRENGTH_META: Tuple[str, str, str]
 
 def strength(
     aicen: _F64,

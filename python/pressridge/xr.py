@@ -1,13 +1,19 @@
 """xarray and dask face of pressridge: ice strength and the ridging step on an
 :class:`xarray.Dataset` holding a thickness distribution.
 
-The dataset has ``aicen`` (dimensionless) and ``vicen`` (m) with the category dimension
-first (as ``data/sample_itd.nc`` and CICE history files, ``aicen(ncat, nj, ni)``), and
-optionally ``aice0``, ``hin_max`` (m, ncat + 1 values), ``divu`` and ``shear`` (1/s). The
-functions go through :func:`xarray.apply_ufunc` with ``dask="parallelized"``: on
-dask-backed data they stay lazy and work chunk by chunk, chunked over the spatial
-dimensions only (the category dimension is gathered into one chunk). Coordinates are kept;
-the outputs carry CF ``units`` and ``long_name`` and the options used as attributes.
+The dataset has ``aicen`` (dimensionless) and ``vicen`` (m) with one category dimension,
+found **by name**, anywhere among their dimensions: ``category_dim=`` if given, else the one
+dimension named as in :data:`CATEGORY_DIMS` (CICE history ``nc``, as in
+``aicen(time, nc, nj, ni)``; CICE restart and ``data/sample_itd.nc`` ``ncat``; SIS2
+diagnostics ``ct``). No such dimension, or more than one, is an error listing the dimensions
+seen. Every other dimension (``time``, ``nj``, ``ni``, an ensemble member...) is kept.
+Optional: ``aice0``, ``hin_max`` (m, ncat + 1 values; else CICE history's ``NCAT``, the
+upper bound of each category, from 0 m), ``divu`` and ``shear`` (1/s). The functions go
+through :func:`xarray.apply_ufunc` with ``dask="parallelized"``: on dask-backed data they
+stay lazy and work chunk by chunk, chunked over the other dimensions only (the category
+dimension is gathered into one chunk). Coordinates are kept; the outputs carry CF
+``units``, ``long_name`` (``standard_name`` where CF has one) and the options used as
+attributes.
 
 Missing data: when ``aicen``, ``vicen`` or ``aice0`` has a ``_FillValue`` or
 ``missing_value`` (so that xarray decoded missing cells to NaN), columns with a NaN are
@@ -17,6 +23,7 @@ Otherwise a NaN is an error. ``mask=True``/``False`` forces either behaviour.
 
 from __future__ import annotations
 
+import itertools
 from typing import Any, Hashable, List, Optional, Union
 
 import numpy as np
@@ -27,29 +34,34 @@ import pressridge as _pr
 __all__ = ["strength", "ridge_step"]
 
 
-#: Names of the category dimension looked for, in order, when ``category_dim`` is not given:
-#: CICE history files (``nc``) and restart files (``ncat``).
-CATEGORY_DIMS = ("nc", "ncat")
-_TIME_DIMS = ("time", "t")
+#: Names of the category dimension looked for, when ``category_dim`` is not given: CICE
+#: history files (``nc``), CICE restart and pressridge files (``ncat``), SIS2 diagnostics
+#: (``ct``). The list is the command line's (``pressridge::io::itd_netcdf::CATEGORY_DIM_NAMES``,
+#: read from the Rust core); assign a longer tuple here to look for more names, e.g.
+#: ``pressridge.xr.CATEGORY_DIMS += ("zaxis_1",)``.
+CATEGORY_DIMS = tuple(_pr._core.CATEGORY_DIMS)
 
 
 def _find_category_dim(aicen: xr.DataArray, category_dim: Optional[Hashable]) -> Hashable:
-    """The category dimension of ``aicen``: ``category_dim`` if given, else the first of
-    :data:`CATEGORY_DIMS` it has, else its first dimension unless that is a time dimension."""
+    """The category dimension of ``aicen``: ``category_dim`` if given, else the one dimension
+    named as in :data:`CATEGORY_DIMS`; none or several is an error listing the dimensions."""
+    dims = ", ".join(f"{d}={n}" for d, n in aicen.sizes.items())
     if category_dim is not None:
         if category_dim not in aicen.dims:
             raise ValueError(f"aicen has no dimension {category_dim!r} (dims {aicen.dims})")
         return category_dim
-    for name in CATEGORY_DIMS:
-        if name in aicen.dims:
-            return name
-    first = aicen.dims[0]
-    if str(first) in _TIME_DIMS:
+    found = [d for d in aicen.dims if d in CATEGORY_DIMS]
+    if len(found) == 1:
+        return found[0]
+    if not found:
         raise ValueError(
-            f"aicen has dimensions {aicen.dims} and none is a category dimension "
+            f"aicen has dimensions ({dims}) and none is a category dimension "
             f"({', '.join(CATEGORY_DIMS)}); name it with category_dim="
         )
-    return first
+    raise ValueError(
+        f"aicen has dimensions ({dims}) and more than one is named as a category dimension "
+        f"({', '.join(map(str, found))}); name the right one with category_dim="
+    )
 
 
 def _category_vars(ds: xr.Dataset, category_dim: Optional[Hashable]):
@@ -100,13 +112,18 @@ def _valid(a: np.ndarray, v: np.ndarray, a0: Optional[np.ndarray]) -> np.ndarray
     return ~bad
 
 
-def _strength_block(a, v, *rest, has_aice0, mask, options):
+def _strength_block(a, v, *rest, has_aice0, mask, options, clamp_note):
     # apply_ufunc moved the category axis last; put it first again (a view, no copy).
     a = np.moveaxis(a, -1, 0)
     v = np.moveaxis(v, -1, 0)
     a0 = rest[0] if has_aice0 else None
     valid = _valid(a, v, a0) if mask else None
-    return np.asarray(_pr.strength(a, v, a0, valid=valid, **options))
+    return np.asarray(
+        _pr.strength(a, v, a0, valid=valid, _clamp_note=clamp_note, **options)
+    )
+
+
+_calls = itertools.count(1)
 
 
 def strength(
@@ -124,10 +141,12 @@ def strength(
 
     Options and parameters as :func:`pressridge.strength` (``cf`` may be a number, a preset
     name, a :class:`pressridge.Table`, a C_f table file or (thickness, cf) nodes).
-    ``category_dim`` names the category dimension (default: the first dimension of
-    ``aicen``); every other dimension is a column dimension.
+    ``category_dim`` names the category dimension (default: the one dimension of ``aicen``
+    named as in :data:`CATEGORY_DIMS`; a dataset with none or several is refused with the
+    dimensions listed); every other dimension (``time``, ``nj``, ``ni``, ensemble...) is a
+    column dimension and is kept, in the order of ``aicen``.
 
-    Returns a :class:`xarray.DataArray` named ``strength`` on the spatial dimensions of
+    Returns a :class:`xarray.DataArray` named ``strength`` (N m-1) on the other dimensions of
     ``aicen``, with their coordinates; lazy (dask) when the input is. Errors in the data
     raise :class:`ValueError` when computed.
     """
@@ -152,15 +171,28 @@ def strength(
         output_core_dims=[[]],
         dask="parallelized",
         output_dtypes=[np.float64],
-        kwargs=dict(has_aice0=aice0 is not None, mask=use_mask, options=options),
+        kwargs=dict(
+            has_aice0=aice0 is not None,
+            mask=use_mask,
+            options=options,
+            # Lazy data: every chunk warns with the same text (this call's number), which
+            # the warnings filter shows once; eager data is one block: the exact count.
+            clamp_note=(
+                None
+                if aicen.chunks is None
+                else f"pressridge.xr.strength call {next(_calls)}, over dask chunks"
+            ),
+        ),
         keep_attrs=True,  # keeps the coordinates' attributes; data attributes set below
     )
     out = out.transpose(*spatial)
     out.name = "strength"
     cf_desc = options["cf"]
+    units, long_name, standard_name = _pr._core.STRENGTH_META
     out.attrs = {
-        "units": "N m-1",
-        "long_name": "compressive ice strength P",
+        "units": units,
+        "long_name": long_name,
+        "standard_name": standard_name,
         "participation": participation,
         "redistribution": redistribution,
         "strength_formula": law,
@@ -212,6 +244,22 @@ def _ridge_block(a, v, *rest, names, scalars, mask, options):
         *[np.broadcast_to(np.asarray(x), a.shape[1:]) for x in r[2:8]],
     )
 
+
+
+def _bounds_from(ds: xr.Dataset) -> Optional[np.ndarray]:
+    """Category bounds (m) from ``hin_max`` or CICE history's ``NCAT`` (upper bounds, from
+    0 m), as the command line; both present must agree (to NCAT's single precision)."""
+    h = np.asarray(ds["hin_max"].values, dtype=np.float64) if "hin_max" in ds else None
+    n = None
+    if "NCAT" in ds:
+        n = np.concatenate([[0.0], np.asarray(ds["NCAT"].values, dtype=np.float64).ravel()])
+    if h is not None and n is not None:
+        if h.shape != n.shape or not np.all(np.abs(h - n) <= 1e-6 * np.maximum(np.abs(h), 1.0)):
+            raise ValueError(
+                f"the category bounds disagree: hin_max is {h.tolist()} m, NCAT (upper "
+                f"bounds, from 0 m) gives {n.tolist()} m"
+            )
+    return h if h is not None else n
 
 
 _PER_SECOND = {"s-1", "1/s", "s^-1", "/s", "s**-1"}
@@ -274,16 +322,18 @@ def ridge_step(
     and :data:`pressridge.STEP_CATEGORY_OUTPUTS` (with their units), and ``hin_max`` as
     Icepack leaves it. A dataset with ``vsnon`` but no ``layout`` is refused.
 
-    The category dimension is ``category_dim`` if given, else the first of
-    :data:`CATEGORY_DIMS` (``nc``, ``ncat``) that ``aicen`` has, else its first dimension
-    (unless that is ``time``); every other dimension (``time``, ``nj``, ``ni``...) is kept.
+    The category dimension is ``category_dim`` if given, else the one dimension of
+    ``aicen`` named as in :data:`CATEGORY_DIMS` (``nc``, ``ncat``, ``ct``; none or several
+    is refused with the dimensions listed); every other dimension (``time``, ``nj``,
+    ``ni``...) is kept.
 
     ``convergence`` (1/s): a number or a DataArray on the spatial dimensions; default
     max(-divu, 0) from the dataset's ``divu``. ``shear`` (1/s): likewise; default the
     dataset's ``shear``, else 0. The dataset's ``divu`` and ``shear`` are read by their
     ``units``: ``s-1`` (or none) as given (``shear`` being the ridging shear term); ``%/day``
     (CICE history) converted, ``shear`` then being CICE's shear strain rate from which the
-    term is formed as Icepack does; other units raise ``ValueError``. ``hin_max`` (m): default the dataset's, else CICE's
+    term is formed as Icepack does; other units raise ``ValueError``. ``hin_max`` (m): default the dataset's ``hin_max``, else
+    its ``NCAT`` (CICE history: upper bounds, from 0 m; both present must agree), else CICE's
     ``kcatbound = 1`` bounds. ``aice0`` defaults to max(1 - sum(aicen), 0). Other options as
     :func:`pressridge.ridge_step`.
 
@@ -359,8 +409,8 @@ def ridge_step(
             dict(convergence=convergence, shear=shear), f"convergence: {conv_desc}; shear: {shear_desc}",
             participation, redistribution, tf, ndtd, cleanup, rebin, params,
         )
-    if hin_max is None and "hin_max" in ds:
-        hin_max = ds["hin_max"].values
+    if hin_max is None:
+        hin_max = _bounds_from(ds)
     options = dict(
         dt=dt,
         hin_max=None if hin_max is None else np.asarray(hin_max, dtype=np.float64),
@@ -485,8 +535,8 @@ def _complete(ds, aicen, vicen, aice0, cat, spatial, use_mask, layout, dt, hin_m
 
     vsnon = cat_var("vsnon") if "vsnon" in ds else xr.zeros_like(ds["aicen"])
     tracers = [cat_var(n) for n in names]
-    if hin_max is None and "hin_max" in ds:
-        hin_max = ds["hin_max"].values
+    if hin_max is None:
+        hin_max = _bounds_from(ds)
     options = dict(
         dt=dt,
         hin_max=None if hin_max is None else np.asarray(hin_max, dtype=np.float64),

@@ -1655,6 +1655,17 @@ impl PyRidgeLookup {
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    // Names of the category dimension looked for in datasets (one list, shared with the CLI).
+    m.add(
+        "CATEGORY_DIMS",
+        pressridge::io::itd_netcdf::CATEGORY_DIM_NAMES.to_vec(),
+    )?;
+    // CF metadata of the strength output (units, long_name, standard_name), as the CLI's.
+    let sm = pressridge::io::itd_netcdf::STRENGTH_META;
+    m.add(
+        "STRENGTH_META",
+        (sm.units, sm.long_name, sm.standard_name.unwrap_or("")),
+    )?;
     m.add_function(wrap_pyfunction!(strength, m)?)?;
     m.add_function(wrap_pyfunction!(layout, m)?)?;
     m.add_function(wrap_pyfunction!(ridge_step, m)?)?;

@@ -1,9 +1,22 @@
 //! NetCDF reading and writing of gridded thickness distributions.
 //!
-//! Input: `aicen` and `vicen` whose first dimension is the category dimension (`ncat`)
-//! followed by any number of spatial dimensions; optional `aice0` (spatial dims; else
-//! 1 − Σ aicen), `hin_max` (length ncat + 1; else the CICE default bounds), `divu` and `shear`
-//! (spatial dims) for the ridging step. Any numeric type is read as `f64`.
+//! Input: `aicen` and `vicen` with one category dimension, found **by name**
+//! ([`CATEGORY_DIM_NAMES`]: CICE history `nc`, CICE restart and pressridge `ncat`, SIS2
+//! diagnostics `ct`; or the name given in [`ReadOptions::category_dim`]), anywhere among
+//! their dimensions. Every other dimension (`time`, `nj`, `ni`, an ensemble member...) is a
+//! column dimension and is kept, in file order, in the outputs. A variable with none of the
+//! names, or with more than one, is refused with a message listing its dimensions.
+//! Optional: `aice0` (the column dimensions; else 1 − Σ aicen), the category bounds (m) from
+//! `hin_max` (length ncat + 1) or CICE history's `NCAT` (on the category dimension: the upper
+//! bound of each category, the lowest bound being 0 m), both checked against each other when
+//! both are present; `divu` and `shear` (column dimensions) for the ridging step. A spatial
+//! variable may lack a leading `time` dimension of length 1 that `aicen` has, or the reverse.
+//! Any numeric type is read as `f64`.
+//!
+//! Coordinates: the coordinate variables of the column dimensions (e.g. `time` with its
+//! `units` and `calendar`) and the auxiliary coordinates named in the `coordinates` attribute
+//! of `aicen` (e.g. CICE's `TLON TLAT`) are copied to the outputs with their attributes, and
+//! the output fields name the auxiliary ones in their own `coordinates` attribute.
 //!
 //! Units of `divu` and `shear`, from their `units` attribute: `s-1` (also `1/s`, `s^-1`, or no
 //! attribute): `divu` is the divergence and `shear` the ridging shear term ½(Δ − |div u|),
@@ -13,7 +26,8 @@
 //! message naming it, so that %/day is never taken for 1/s.
 //!
 //! Output: CF-1.8 attributes (`units`, `long_name`, `standard_name` where CF has one), the
-//! options used and the package version as global attributes.
+//! options used and the package version as global attributes, and the input's `history`
+//! with the command line appended ([`history_line`]).
 
 use std::path::{Path, PathBuf};
 
@@ -23,6 +37,63 @@ use crate::itd::{CfTable, CiceTracerFlags, ItdError, TracerLayout};
 
 /// Dimensions of a variable: (name, length) in file order.
 pub type Dims = Vec<(String, usize)>;
+
+/// Names of the thickness-category dimension looked for when none is given, in this order:
+/// CICE history files (`nc`), CICE restart files and pressridge's own files (`ncat`), SIS2
+/// diagnostics (`ct`). Exactly one of a variable's dimensions may carry one of these names.
+/// (SIS2 and MOM6 restart files use generic FMS axis names such as `zaxis_1`: name the
+/// dimension with `--category-dim`.) Python's `pressridge.xr.CATEGORY_DIMS` is this list.
+pub const CATEGORY_DIM_NAMES: &[&str] = &["nc", "ncat", "ct"];
+
+/// How [`read_itd_with`] reads a file.
+#[derive(Debug, Clone, Default)]
+pub struct ReadOptions {
+    /// Name of the category dimension; `None`: the one dimension of `aicen` named as in
+    /// [`CATEGORY_DIM_NAMES`].
+    pub category_dim: Option<String>,
+}
+
+/// The position of the category dimension among `dims` (the dimensions of `var`): the
+/// dimension called `chosen` if given, else the one dimension named as in
+/// [`CATEGORY_DIM_NAMES`]. Errors list the dimensions seen.
+pub fn category_axis(
+    path: &Path,
+    var: &str,
+    dims: &[(String, usize)],
+    chosen: Option<&str>,
+) -> Result<usize, NetcdfError> {
+    let err = |why: String| NetcdfError::CategoryDim {
+        path: path.to_path_buf(),
+        var: var.into(),
+        dims: fmt_dims(dims),
+        why,
+    };
+    if let Some(name) = chosen {
+        let at: Vec<usize> = (0..dims.len()).filter(|&i| dims[i].0 == name).collect();
+        return match at.as_slice() {
+            [i] => Ok(*i),
+            [] => Err(err(format!(
+                "the category dimension `{name}` given is not among them"
+            ))),
+            _ => Err(err(format!("`{name}` occurs more than once"))),
+        };
+    }
+    let at: Vec<usize> = (0..dims.len())
+        .filter(|&i| CATEGORY_DIM_NAMES.contains(&dims[i].0.as_str()))
+        .collect();
+    match at.as_slice() {
+        [i] => Ok(*i),
+        [] => Err(err(format!(
+            "none is named {}; name it with --category-dim",
+            CATEGORY_DIM_NAMES.join(", ")
+        ))),
+        _ => Err(err(format!(
+            "more than one is named as a category dimension ({}); name the right one with \
+             --category-dim",
+            CATEGORY_DIM_NAMES.join(", ")
+        ))),
+    }
+}
 
 /// Errors of NetCDF input and output.
 #[derive(Debug, thiserror::Error)]
@@ -93,6 +164,19 @@ pub enum NetcdfError {
         /// What is wrong.
         msg: String,
     },
+    /// The category dimension cannot be told (none or several of the known names, or the
+    /// name given is absent).
+    #[error("{path}: variable `{var}` has dimensions {dims}: {why}")]
+    CategoryDim {
+        /// File concerned.
+        path: PathBuf,
+        /// Variable name.
+        var: String,
+        /// The dimensions seen.
+        dims: String,
+        /// What is wrong.
+        why: String,
+    },
     /// Writing the file failed (the path could not be created, synced or renamed).
     #[error(transparent)]
     Io(#[from] crate::io::IoError),
@@ -106,21 +190,49 @@ pub enum NetcdfError {
     },
 }
 
-/// A gridded thickness distribution with its spatial dimensions flattened to `ncol` columns
-/// (C order, last dimension fastest).
+/// A coordinate variable copied from the input to the outputs: its values (as f64) and
+/// attributes (`units`, `calendar`, `standard_name`...).
 #[derive(Debug, Clone, PartialEq)]
+pub struct CoordVar {
+    /// Variable name (e.g. `time`, `TLON`).
+    pub name: String,
+    /// Its dimensions, in file order.
+    pub dims: Vec<String>,
+    /// Its values in C order.
+    pub values: Vec<f64>,
+    /// Its attributes, `_FillValue`/`missing_value` as f64 (the variable is written as f64).
+    pub attrs: Vec<(String, netcdf::AttributeValue)>,
+}
+
+/// A gridded thickness distribution with its column dimensions (every dimension of `aicen`
+/// but the category one) flattened to `ncol` columns (C order, last dimension fastest).
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct ItdGrid {
     /// Name of the category dimension (e.g. `ncat`).
     pub ncat_dim: String,
-    /// Spatial dimensions (name, length) in file order.
+    /// Column dimensions (name, length) in file order, without the category dimension
+    /// (e.g. `time`, `nj`, `ni`).
     pub spatial_dims: Vec<(String, usize)>,
+    /// Position of the category dimension among the dimensions of `aicen` in the file (0:
+    /// first); the category fields are written in that order again.
+    pub cat_axis: usize,
+    /// Coordinate variables to copy to the outputs.
+    pub coords: Vec<CoordVar>,
+    /// The auxiliary coordinates of `aicen` that were copied (its `coordinates` attribute),
+    /// e.g. `TLON TLAT`.
+    pub coordinates: Option<String>,
+    /// The input's global `history` attribute.
+    pub history: Option<String>,
+    /// Where `hin_max` came from (`hin_max`, or `NCAT` of a CICE history file).
+    pub hin_max_source: Option<String>,
     /// Category area fractions (dimensionless), shape (ncat, ncol).
     pub aicen: Array2<f64>,
     /// Category ice volume per unit area (m), shape (ncat, ncol).
     pub vicen: Array2<f64>,
     /// Open-water fraction (dimensionless), if present in the file.
     pub aice0: Option<Array1<f64>>,
-    /// Category bounds (m), if present in the file.
+    /// Category bounds (m), ncat + 1 values, if the file has them (`hin_max`, or `NCAT`
+    /// with 0 m prepended; see `hin_max_source`).
     pub hin_max: Option<Vec<f64>>,
     /// Velocity divergence (1/s), if present.
     pub divu: Option<Array1<f64>>,
@@ -141,6 +253,45 @@ impl ItdGrid {
     /// Number of columns (product of the spatial lengths).
     pub fn ncol(&self) -> usize {
         self.aicen.ncols()
+    }
+    /// Numbers of columns before and after the category dimension in file order: the file
+    /// holds (n_before, ncat, n_after) values.
+    pub fn split(&self) -> (usize, usize) {
+        let k = self.cat_axis.min(self.spatial_dims.len());
+        let before = self.spatial_dims[..k].iter().map(|d| d.1).product();
+        let after = self.spatial_dims[k..].iter().map(|d| d.1).product();
+        (before, after)
+    }
+    /// The dimensions of a category variable in file order (the category dimension at
+    /// `cat_axis` among the column dimensions).
+    pub fn category_dims(&self) -> Vec<(String, usize)> {
+        let mut d = self.spatial_dims.clone();
+        d.insert(
+            self.cat_axis.min(d.len()),
+            (self.ncat_dim.clone(), self.ncat()),
+        );
+        d
+    }
+    /// Values of a category variable in file order, turned into (ncat, ncol).
+    pub fn to_category_major(&self, data: Vec<f64>) -> Array2<f64> {
+        let (ncat, (before, after)) = (self.aicen.nrows(), self.split());
+        let a = Array3::from_shape_vec((before, ncat, after), data)
+            .expect("length checked by the library");
+        a.permuted_axes([1, 0, 2])
+            .as_standard_layout()
+            .into_owned()
+            .into_shape_with_order((ncat, before * after))
+            .expect("standard layout")
+    }
+    /// (ncat, ncol) values in C order turned into the file order of the category variables.
+    pub fn to_file_order(&self, data: &[f64]) -> Vec<f64> {
+        let (ncat, (before, after)) = (self.ncat(), self.split());
+        if before == 1 {
+            return data.to_vec();
+        }
+        let a = ndarray::ArrayView3::from_shape((ncat, before, after), data)
+            .expect("length checked by the caller");
+        a.permuted_axes([1, 0, 2]).iter().copied().collect()
     }
     /// The spatial index of flat column `column`, formatted as `name=i, ...`.
     pub fn spatial_index(&self, column: usize) -> String {
@@ -251,8 +402,8 @@ fn read_spatial(
     let Some(v) = file.variable(name) else {
         return Ok(None);
     };
-    let d = dims_of(&v);
-    if d != spatial {
+    let d = all_dims(&v);
+    if without_unit_time(&d) != without_unit_time(spatial) {
         return Err(NetcdfError::Shape {
             path: path.to_path_buf(),
             var: name.into(),
@@ -338,63 +489,86 @@ fn read_deformation(
     Ok((divu, shear))
 }
 
-/// Reads a gridded thickness distribution (see the module documentation for the layout).
+/// Reads a gridded thickness distribution (see the module documentation for the layout),
+/// the category dimension found by name.
 pub fn read_itd(path: &Path) -> Result<ItdGrid, NetcdfError> {
-    let file = netcdf::open(path).map_err(nc_err(path))?;
-    let get = |name: &str| {
-        file.variable(name)
-            .ok_or_else(|| NetcdfError::MissingVariable {
-                path: path.to_path_buf(),
-                var: name.into(),
-            })
+    read_itd_with(path, &ReadOptions::default())
+}
+
+/// All dimensions of `v` (name, length) in file order.
+fn all_dims(v: &netcdf::Variable<'_>) -> Vec<(String, usize)> {
+    v.dimensions().iter().map(|d| (d.name(), d.len())).collect()
+}
+
+/// `d` without a leading `time`/`t`/`Time` dimension of length 1.
+fn without_unit_time(d: &[(String, usize)]) -> &[(String, usize)] {
+    match d.first() {
+        Some((n, 1)) if d.len() > 1 && matches!(n.as_str(), "time" | "t" | "Time") => &d[1..],
+        _ => d,
+    }
+}
+
+/// A string attribute of `v`, looked up by listing (asking HDF5 for a missing attribute makes
+/// it print errors).
+fn str_attr(v: &netcdf::Variable<'_>, name: &str) -> Option<String> {
+    v.attributes()
+        .find(|a| a.name() == name)
+        .and_then(|a| a.value().ok())
+        .and_then(|x| String::try_from(x).ok())
+}
+
+/// A coordinate variable of `file` to copy, if it is numeric and lies on `allowed` dims.
+fn coord_var(
+    path: &Path,
+    file: &netcdf::File,
+    name: &str,
+    allowed: &[&str],
+) -> Result<Option<CoordVar>, NetcdfError> {
+    let Some(v) = file.variable(name) else {
+        return Ok(None);
     };
-    let av = get("aicen")?;
-    let vv = get("vicen")?;
-    let ad = dims_of(&av);
-    let vd = dims_of(&vv);
-    if ad.is_empty() {
-        return Err(NetcdfError::Shape {
-            path: path.to_path_buf(),
-            var: "aicen".into(),
-            expected: "(ncat, spatial dimensions...)".into(),
-            found: "a scalar".into(),
-        });
+    let dims: Vec<String> = v.dimensions().iter().map(|d| d.name()).collect();
+    if dims.is_empty() || !dims.iter().all(|d| allowed.contains(&d.as_str())) {
+        return Ok(None);
     }
-    if vd != ad {
-        return Err(NetcdfError::Shape {
-            path: path.to_path_buf(),
-            var: "vicen".into(),
-            expected: fmt_dims(&ad),
-            found: fmt_dims(&vd),
-        });
+    let Ok(values) = read_f64(path, &v) else {
+        return Ok(None); // a text coordinate: not copied
+    };
+    let mut attrs = Vec::new();
+    for a in v.attributes() {
+        let n = a.name().to_string();
+        // Bounds variables are not copied; fill values are rewritten as f64.
+        if matches!(
+            n.as_str(),
+            "bounds" | "_FillValue" | "missing_value" | "coordinates"
+        ) {
+            continue;
+        }
+        if let Ok(x) = a.value() {
+            attrs.push((n, x));
+        }
     }
-    if let Some(d0) = av.dimensions().first()
-        && (d0.is_unlimited() || d0.name() == "time" || d0.name() == "t")
-        && d0.len() > 1
-    {
-        return Err(NetcdfError::Shape {
-            path: path.to_path_buf(),
-            var: "aicen".into(),
-            expected:
-                "(ncat, spatial dimensions...), optionally after a time dimension of length 1"
-                    .into(),
-            found: format!(
-                "a leading `{}` dimension of length {}: select one time first",
-                d0.name(),
-                d0.len()
-            ),
-        });
+    if let Some(f) = fill_of(&v) {
+        attrs.push(("_FillValue".into(), f.into()));
     }
-    let ncat = ad[0].1;
-    let spatial: Vec<(String, usize)> = ad[1..].to_vec();
-    let ncol: usize = spatial.iter().map(|d| d.1).product();
-    let aicen = Array2::from_shape_vec((ncat, ncol), read_f64(path, &av)?)
-        .expect("length checked by the library");
-    let vicen = Array2::from_shape_vec((ncat, ncol), read_f64(path, &vv)?)
-        .expect("length checked by the library");
-    let (afill, vfill) = (fill_of(&av), fill_of(&vv));
-    let a0fill = file.variable("aice0").as_ref().and_then(fill_of);
-    let hin_max = match file.variable("hin_max") {
+    Ok(Some(CoordVar {
+        name: name.into(),
+        dims,
+        values,
+        attrs,
+    }))
+}
+
+/// Category bounds (m) from `hin_max` (ncat + 1 values) or CICE history's `NCAT` (the ncat
+/// upper bounds, on the category dimension; the lowest bound is 0 m), checked against each
+/// other when both are present, and validated. Returns the bounds and their source.
+fn read_bounds(
+    path: &Path,
+    file: &netcdf::File,
+    cat_dim: &str,
+    ncat: usize,
+) -> Result<Option<(Vec<f64>, String)>, NetcdfError> {
+    let from_hin_max = match file.variable("hin_max") {
         None => None,
         Some(h) => {
             let vals = read_f64(path, &h)?;
@@ -406,14 +580,114 @@ pub fn read_itd(path: &Path) -> Result<ItdGrid, NetcdfError> {
                     found: fmt_dims(&dims_of(&h)),
                 });
             }
-            crate::itd::bounds::validate_bounds(&vals).map_err(|e| NetcdfError::Value {
-                path: path.to_path_buf(),
-                var: "hin_max".into(),
-                msg: e.to_string(),
-            })?;
             Some(vals)
         }
     };
+    let from_ncat = match file.variable("NCAT") {
+        None => None,
+        Some(v) => {
+            let d = all_dims(&v);
+            if d != [(cat_dim.to_string(), ncat)] {
+                return Err(NetcdfError::Shape {
+                    path: path.to_path_buf(),
+                    var: "NCAT".into(),
+                    expected: format!(
+                        "({cat_dim}={ncat}): the upper bound of each category (CICE history)"
+                    ),
+                    found: fmt_dims(&d),
+                });
+            }
+            let mut b = vec![0.0];
+            b.extend(read_f64(path, &v)?);
+            Some(b)
+        }
+    };
+    let (vals, source) = match (from_hin_max, from_ncat) {
+        (None, None) => return Ok(None),
+        (Some(h), None) => (h, "hin_max from the input".to_string()),
+        (None, Some(n)) => (
+            n,
+            "NCAT from the input (CICE history: upper bounds; lowest bound 0 m)".to_string(),
+        ),
+        (Some(h), Some(n)) => {
+            // NCAT is often single precision: agree to its precision.
+            let agree = h
+                .iter()
+                .zip(&n)
+                .all(|(a, b)| (a - b).abs() <= 1e-6 * a.abs().max(1.0));
+            if !agree {
+                return Err(NetcdfError::Value {
+                    path: path.to_path_buf(),
+                    var: "NCAT".into(),
+                    msg: format!(
+                        "the category bounds disagree: hin_max is {h:?} m, NCAT (upper bounds, \
+                         from 0 m) gives {n:?} m"
+                    ),
+                });
+            }
+            (h, "hin_max from the input (agrees with NCAT)".to_string())
+        }
+    };
+    let var = if source.starts_with("NCAT") {
+        "NCAT"
+    } else {
+        "hin_max"
+    };
+    crate::itd::bounds::validate_bounds(&vals).map_err(|e| NetcdfError::Value {
+        path: path.to_path_buf(),
+        var: var.into(),
+        msg: e.to_string(),
+    })?;
+    Ok(Some((vals, source)))
+}
+
+/// Reads a gridded thickness distribution (see the module documentation for the layout).
+pub fn read_itd_with(path: &Path, opts: &ReadOptions) -> Result<ItdGrid, NetcdfError> {
+    let file = netcdf::open(path).map_err(nc_err(path))?;
+    let get = |name: &str| {
+        file.variable(name)
+            .ok_or_else(|| NetcdfError::MissingVariable {
+                path: path.to_path_buf(),
+                var: name.into(),
+            })
+    };
+    let av = get("aicen")?;
+    let vv = get("vicen")?;
+    let ad = all_dims(&av);
+    let vd = all_dims(&vv);
+    if ad.is_empty() {
+        return Err(NetcdfError::Shape {
+            path: path.to_path_buf(),
+            var: "aicen".into(),
+            expected: "(a category dimension, column dimensions...)".into(),
+            found: "a scalar".into(),
+        });
+    }
+    if vd != ad {
+        return Err(NetcdfError::Shape {
+            path: path.to_path_buf(),
+            var: "vicen".into(),
+            expected: fmt_dims(&ad),
+            found: fmt_dims(&vd),
+        });
+    }
+    let cat_axis = category_axis(path, "aicen", &ad, opts.category_dim.as_deref())?;
+    let (ncat_dim, ncat) = ad[cat_axis].clone();
+    let mut spatial: Vec<(String, usize)> = ad.clone();
+    spatial.remove(cat_axis);
+    let ncol: usize = spatial.iter().map(|d| d.1).product();
+    let mut grid = ItdGrid {
+        ncat_dim: ncat_dim.clone(),
+        spatial_dims: spatial.clone(),
+        cat_axis,
+        aicen: Array2::zeros((ncat, ncol)),
+        ..Default::default()
+    };
+    let aicen = grid.to_category_major(read_f64(path, &av)?);
+    let vicen = grid.to_category_major(read_f64(path, &vv)?);
+    let (afill, vfill) = (fill_of(&av), fill_of(&vv));
+    let a0fill = file.variable("aice0").as_ref().and_then(fill_of);
+    let bounds = read_bounds(path, &file, &ncat_dim, ncat)?;
     let aice0 = read_spatial(path, &file, "aice0", &spatial)?;
     let valid: Array1<bool> = (0..ncol)
         .map(|c| {
@@ -423,21 +697,49 @@ pub fn read_itd(path: &Path) -> Result<ItdGrid, NetcdfError> {
         })
         .collect();
     let (divu, shear) = read_deformation(path, &file, &spatial)?;
-    let grid = ItdGrid {
-        ncat_dim: ad[0].0.clone(),
-        aice0,
-        divu,
-        shear,
-        spatial_dims: spatial,
-        aicen,
-        vicen,
-        hin_max,
-        fill_value: afill.or(vfill).or(a0fill),
-        valid: if valid.iter().all(|&v| v) {
-            None
-        } else {
-            Some(valid)
-        },
+    // Coordinates: those of the column dimensions, and aicen's auxiliary ones.
+    let names: Vec<&str> = spatial.iter().map(|d| d.0.as_str()).collect();
+    let mut coords = Vec::new();
+    for n in &names {
+        if let Some(c) = coord_var(path, &file, n, &names)? {
+            coords.push(c);
+        }
+    }
+    let mut aux = Vec::new();
+    if let Some(list) = str_attr(&av, "coordinates") {
+        for n in list.split_whitespace() {
+            if coords.iter().any(|c| c.name == n) {
+                continue;
+            }
+            if let Some(c) = coord_var(path, &file, n, &names)? {
+                coords.push(c);
+                aux.push(n.to_string());
+            }
+        }
+    }
+    let history = file
+        .attribute("history")
+        .and_then(|a| a.value().ok())
+        .and_then(|x| String::try_from(x).ok());
+    let (hin_max, hin_max_source) = match bounds {
+        Some((b, s)) => (Some(b), Some(s)),
+        None => (None, None),
+    };
+    grid.aicen = aicen;
+    grid.vicen = vicen;
+    grid.aice0 = aice0;
+    grid.divu = divu;
+    grid.shear = shear;
+    grid.hin_max = hin_max;
+    grid.hin_max_source = hin_max_source;
+    grid.coords = coords;
+    grid.coordinates = (!aux.is_empty()).then(|| aux.join(" "));
+    grid.history = history;
+    grid.fill_value = afill.or(vfill).or(a0fill);
+    grid.valid = if valid.iter().all(|&v| v) {
+        None
+    } else {
+        Some(valid)
     };
     check_volume_range(path, &grid)?;
     Ok(grid)
@@ -574,13 +876,12 @@ pub fn read_snow_tracers(path: &Path, grid: &ItdGrid) -> Result<Option<SnowTrace
         }
     }
     let (ncat, ncol) = (grid.ncat(), grid.ncol());
-    let mut dims = vec![(grid.ncat_dim.clone(), ncat)];
-    dims.extend(grid.spatial_dims.iter().cloned());
+    let dims = grid.category_dims();
     let mut fill_value = None;
     let mut missing = vec![false; ncol];
     let mut read_cat = |name: &str| -> Result<Array2<f64>, NetcdfError> {
         let v = file.variable(name).expect("presence checked");
-        let d = dims_of(&v);
+        let d = all_dims(&v);
         if d != dims {
             return Err(NetcdfError::Shape {
                 path: path.to_path_buf(),
@@ -591,8 +892,7 @@ pub fn read_snow_tracers(path: &Path, grid: &ItdGrid) -> Result<Option<SnowTrace
         }
         let fill = fill_of(&v);
         fill_value = fill_value.or(fill);
-        let a = Array2::from_shape_vec((ncat, ncol), read_f64(path, &v)?)
-            .expect("length checked by the library");
+        let a = grid.to_category_major(read_f64(path, &v)?);
         for (c, m) in missing.iter_mut().enumerate() {
             if a.column(c).iter().any(|&x| is_fill(x, fill)) {
                 *m = true;
@@ -747,6 +1047,47 @@ pub struct Output<'a> {
     /// Fill value for masked columns (`grid.valid` false): written as `_FillValue` of every
     /// gridded variable and into the computed `aice0` of masked columns.
     pub fill: Option<f64>,
+    /// A line for the global `history` (see [`history_line`]), appended to the input's.
+    pub history: Option<&'a str>,
+}
+
+/// A `history` line for the command being run: the UTC time (ISO 8601) and the command line,
+/// as CF recommends.
+pub fn history_line() -> String {
+    let args: Vec<String> = std::env::args()
+        .map(|a| {
+            if a.is_empty() || a.contains(char::is_whitespace) {
+                format!("'{a}'")
+            } else {
+                a
+            }
+        })
+        .collect();
+    format!("{}: {}", utc_now(), args.join(" "))
+}
+
+/// The current UTC time as `YYYY-MM-DDTHH:MM:SSZ`.
+fn utc_now() -> String {
+    let secs = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs());
+    let (days, rem) = (secs / 86_400, secs % 86_400);
+    // Civil date from days since 1970-01-01 (H. Hinnant's algorithm).
+    let z = days as i64 + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z - era * 146_097;
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let d = doy - (153 * mp + 2) / 5 + 1;
+    let m = if mp < 10 { mp + 3 } else { mp - 9 };
+    let y = yoe + era * 400 + i64::from(m <= 2);
+    format!(
+        "{y:04}-{m:02}-{d:02}T{:02}:{:02}:{:02}Z",
+        rem / 3600,
+        rem / 60 % 60,
+        rem % 60
+    )
 }
 
 /// Writes `out` to a new file at `path` in the NetCDF 64-bit-offset format (readable by
@@ -786,14 +1127,29 @@ fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), Netc
         }
     }
     let spatial: Vec<&str> = g.spatial_dims.iter().map(|d| d.0.as_str()).collect();
-    let mut cat_dims: Vec<&str> = vec![g.ncat_dim.as_str()];
-    cat_dims.extend(&spatial);
+    let mut cat_dims: Vec<&str> = spatial.clone();
+    cat_dims.insert(g.cat_axis.min(spatial.len()), g.ncat_dim.as_str());
     let bdim = format!("{}_bounds", g.ncat_dim);
 
     // Everything to write: (metadata, dimensions, values). Owned copies of the distribution
-    // in C order (the classic format wants all definitions before any data).
-    let a = g.aicen.as_standard_layout().into_owned();
-    let v = g.vicen.as_standard_layout().into_owned();
+    // in the file's order (the classic format wants all definitions before any data).
+    let a = g.to_file_order(
+        g.aicen
+            .as_standard_layout()
+            .as_slice()
+            .expect("standard layout"),
+    );
+    let v = g.to_file_order(
+        g.vicen
+            .as_standard_layout()
+            .as_slice()
+            .expect("standard layout"),
+    );
+    let cat_data: Vec<Vec<f64>> = out
+        .category_fields
+        .iter()
+        .map(|(_, d)| g.to_file_order(d))
+        .collect();
     let aice0: Vec<f64> = match &g.aice0 {
         Some(a0) => a0.to_vec(),
         None => (0..ncol)
@@ -813,7 +1169,7 @@ fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), Netc
                 standard_name: Some("sea_ice_area_fraction"),
             },
             cat_dims.clone(),
-            a.as_slice().expect("standard layout"),
+            &a,
         ));
         items.push((
             FieldMeta {
@@ -823,7 +1179,7 @@ fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), Netc
                 standard_name: None,
             },
             cat_dims.clone(),
-            v.as_slice().expect("standard layout"),
+            &v,
         ));
         items.push((
             FieldMeta {
@@ -851,15 +1207,34 @@ fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), Netc
     for (meta, data) in out.fields {
         items.push((*meta, spatial.clone(), data));
     }
-    for (meta, data) in out.category_fields {
+    for ((meta, _), data) in out.category_fields.iter().zip(&cat_data) {
         items.push((*meta, cat_dims.clone(), data));
     }
+    let has_cat = out.write_itd || !out.category_fields.is_empty();
+    // Coordinates whose dimensions are all written.
+    let coords: Vec<&CoordVar> = g
+        .coords
+        .iter()
+        .filter(|c| {
+            c.dims
+                .iter()
+                .all(|d| spatial.contains(&d.as_str()) || (has_cat && *d == g.ncat_dim))
+        })
+        .filter(|c| !items.iter().any(|(m, _, _)| m.name == c.name))
+        .collect();
+    let coordinates: Option<String> = g.coordinates.as_ref().and_then(|list| {
+        let kept: Vec<&str> = list
+            .split_whitespace()
+            .filter(|n| coords.iter().any(|c| c.name == *n))
+            .collect();
+        (!kept.is_empty()).then(|| kept.join(" "))
+    });
 
     let mut f = netcdf::create_with(tmp, netcdf::Options::_64BIT_OFFSET).map_err(&e)?;
     for (n, l) in &g.spatial_dims {
         f.add_dimension(n, *l).map_err(&e)?;
     }
-    if out.write_itd || !out.category_fields.is_empty() {
+    if has_cat {
         f.add_dimension(&g.ncat_dim, g.ncat()).map_err(&e)?;
     }
     if out.write_itd {
@@ -879,6 +1254,18 @@ fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), Netc
         {
             var.put_attribute("_FillValue", fill).map_err(&e)?;
         }
+        if let Some(c) = &coordinates
+            && meta.name != "hin_max"
+        {
+            var.put_attribute("coordinates", c.as_str()).map_err(&e)?;
+        }
+    }
+    for c in &coords {
+        let dims: Vec<&str> = c.dims.iter().map(String::as_str).collect();
+        let mut var = f.add_variable::<f64>(&c.name, &dims).map_err(&e)?;
+        for (k, val) in &c.attrs {
+            var.put_attribute(k, val.clone()).map_err(&e)?;
+        }
     }
     f.add_attribute("Conventions", "CF-1.8").map_err(&e)?;
     f.add_attribute(
@@ -891,10 +1278,22 @@ fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), Netc
     for (k, val) in out.global {
         f.add_attribute(k, val.as_str()).map_err(&e)?;
     }
+    let history = match (&g.history, out.history) {
+        (Some(old), Some(new)) if !old.is_empty() => Some(format!("{old}\n{new}")),
+        (_, Some(new)) => Some(new.to_string()),
+        (old, None) => old.clone(),
+    };
+    if let Some(h) = history {
+        f.add_attribute("history", h).map_err(&e)?;
+    }
     f.enddef().map_err(&e)?;
     for (meta, _, data) in &items {
         let mut var = f.variable_mut(meta.name).expect("just defined");
         var.put_values(data, ..).map_err(&e)?;
+    }
+    for c in &coords {
+        let mut var = f.variable_mut(&c.name).expect("just defined");
+        var.put_values(&c.values, ..).map_err(&e)?;
     }
     f.close().map_err(&e)?;
     Ok(())
@@ -908,7 +1307,8 @@ pub const STRENGTH_META: FieldMeta<'static> = FieldMeta {
     name: "strength",
     units: "N m-1",
     long_name: "compressive ice strength P",
-    standard_name: None,
+    // The CF standard name, as CMIP6 SIMIP's `sicompstren` (canonical units N m-1).
+    standard_name: Some("compressive_strength_of_sea_ice"),
 };
 
 /// Reads one variable as `f64` with its dimensions (name, length).

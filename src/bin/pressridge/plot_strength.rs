@@ -96,14 +96,17 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         fields.push(v);
     } else {
         let grid = read_itd(&args.input)?;
-        if grid.spatial_dims.len() != 2 {
+        // Dimensions of length 1 (e.g. the one time of a CICE history file) do not count.
+        let map_dims: Vec<&(String, usize)> =
+            grid.spatial_dims.iter().filter(|d| d.1 > 1).collect();
+        if map_dims.len() != 2 {
             return Err(format!(
-                "a map needs 2 spatial dimensions, the input has {:?}",
+                "a map needs 2 spatial dimensions (besides those of length 1), the input has {:?}",
                 grid.spatial_dims
             )
             .into());
         }
-        (ny, nx) = (grid.spatial_dims[0].1, grid.spatial_dims[1].1);
+        (ny, nx) = (map_dims[0].1, map_dims[1].1);
         ice = (0..grid.ncol())
             .map(|c| grid.aicen.column(c).sum() > 0.0)
             .collect();

@@ -7,8 +7,8 @@ use std::path::{Path, PathBuf};
 
 use ndarray::{Array1, Array2, ArrayViewMut1, ArrayViewMut2};
 use pressridge::io::itd_netcdf::{
-    FieldMeta, ItdGrid, NC_FILL_DOUBLE, Output, SnowTracers, read_itd, read_snow_tracers,
-    write_output,
+    FieldMeta, ItdGrid, NC_FILL_DOUBLE, Output, ReadOptions, SnowTracers, history_line,
+    read_itd_with, read_snow_tracers, write_output,
 };
 use pressridge::io::refuse_output_over_input;
 use pressridge::itd::{
@@ -23,9 +23,14 @@ use crate::strength::{PartArg, RedistArg, check_finite, describe_params, parse_p
 /// Arguments of `pressridge ridge-step`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Input NetCDF with aicen, vicen and optionally aice0, hin_max, divu, shear.
+    /// Input NetCDF with aicen, vicen (the category dimension found by name: nc, ncat or ct;
+    /// every other dimension, e.g. time, nj, ni, is kept) and optionally aice0, hin_max (or
+    /// CICE history's NCAT), divu, shear.
     #[arg(long)]
     pub input: PathBuf,
+    /// Name of the category dimension of aicen/vicen, when it is none of nc, ncat, ct.
+    #[arg(long, value_name = "NAME")]
+    pub category_dim: Option<String>,
     /// Output NetCDF: updated aicen, vicen, aice0, hin_max and the ridging rates.
     #[arg(long)]
     pub output: PathBuf,
@@ -85,7 +90,12 @@ pub fn run(args: Args) -> Result<(), BoxError> {
             );
         }
     }
-    let mut grid = read_itd(&args.input)?;
+    let mut grid = read_itd_with(
+        &args.input,
+        &ReadOptions {
+            category_dim: args.category_dim.clone(),
+        },
+    )?;
     let ncol = grid.ncol();
     let ncat = grid.ncat();
     let conv: Array1<f64> = match (args.convergence, &grid.divu) {
@@ -135,6 +145,10 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         Some(h) => h.clone(),
         None => category_bounds(&CategoryBounds::RoundNumbers, ncat)?,
     };
+    let bounds_source = grid
+        .hin_max_source
+        .clone()
+        .unwrap_or_else(|| "CICE kcatbound = 1 (none in the input)".into());
     let aice0 = match &grid.aice0 {
         Some(a) => a.clone(),
         // As the strength routine: 1 − Σ aicen, never below 0 (full cover can sum to
@@ -150,7 +164,16 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         params: parse_params(&args.params)?,
     };
     if let Some(st) = snow {
-        return run_complete(&args, grid, st, conv, shear, hin_max, aice0, o);
+        return run_complete(
+            &args,
+            grid,
+            st,
+            conv,
+            shear,
+            (hin_max, bounds_source),
+            aice0,
+            o,
+        );
     }
     for (flag, given) in [
         ("--ndtd", args.ndtd.is_some()),
@@ -233,7 +256,8 @@ pub fn run(args: Args) -> Result<(), BoxError> {
             )
         })
         .collect();
-    let global = global_attrs(&args, &o);
+    let mut global = global_attrs(&args, &o);
+    global.push(("category_bounds".into(), bounds_source));
     write_output(
         &args.output,
         &Output {
@@ -244,6 +268,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
             category_fields: &[],
             global: &global,
             fill: grid.valid.as_ref().map(|_| fill),
+            history: Some(&history_line()),
         },
     )?;
     Ok(())
@@ -309,7 +334,7 @@ fn run_complete(
     st: SnowTracers,
     conv: Array1<f64>,
     shear: Array1<f64>,
-    hin_max: Vec<f64>,
+    (hin_max, bounds_source): (Vec<f64>, String),
     mut aice0: Array1<f64>,
     o: RidgeOptions,
 ) -> Result<(), BoxError> {
@@ -490,6 +515,7 @@ fn run_complete(
         ));
     }
     let mut global = global_attrs(args, &o);
+    global.push(("category_bounds".into(), bounds_source));
     global.push((
         "ridging_step".into(),
         "complete (Icepack icepack_step_ridge: snow, tracers, ocean fluxes)".into(),
@@ -509,6 +535,7 @@ fn run_complete(
             category_fields: &category_fields,
             global: &global,
             fill: grid.valid.as_ref().map(|_| fill),
+            history: Some(&history_line()),
         },
     )?;
     Ok(())

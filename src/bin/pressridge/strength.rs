@@ -6,7 +6,8 @@ use std::sync::Arc;
 use clap::ValueEnum;
 use ndarray::Array1;
 use pressridge::io::itd_netcdf::{
-    NC_FILL_DOUBLE, Output, STRENGTH_META, read_cf_table, read_itd, write_output,
+    NC_FILL_DOUBLE, Output, ReadOptions, STRENGTH_META, history_line, read_cf_table, read_itd_with,
+    write_output,
 };
 use pressridge::io::refuse_output_over_input;
 use pressridge::itd::{
@@ -74,12 +75,17 @@ impl From<RedistArg> for Redistribution {
 /// Arguments of `pressridge strength`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Input NetCDF with aicen, vicen (ncat first) and optionally aice0, hin_max.
+    /// Input NetCDF with aicen, vicen (the category dimension found by name: nc, ncat or ct;
+    /// every other dimension, e.g. time, nj, ni, is kept) and optionally aice0.
     #[arg(long)]
     pub input: PathBuf,
-    /// Output NetCDF; gets `strength` (N/m) on the input's spatial dimensions.
+    /// Output NetCDF; gets `strength` (N/m) on the input's other dimensions, with their
+    /// coordinates.
     #[arg(long)]
     pub output: PathBuf,
+    /// Name of the category dimension of aicen/vicen, when it is none of nc, ncat, ct.
+    #[arg(long, value_name = "NAME")]
+    pub category_dim: Option<String>,
     /// Participation function.
     #[arg(long, value_enum, default_value = "exponential")]
     pub participation: PartArg,
@@ -250,7 +256,12 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         inputs.push(("--cf-table", t.as_path()));
     }
     refuse_output_over_input(&args.output, "--output", &inputs)?;
-    let grid = read_itd(&args.input)?;
+    let grid = read_itd_with(
+        &args.input,
+        &ReadOptions {
+            category_dim: args.category_dim.clone(),
+        },
+    )?;
     let mut p = Array1::zeros(grid.ncol());
     let fill = grid.fill_value.unwrap_or(NC_FILL_DOUBLE);
     let summary = strength_batch_masked(
@@ -278,6 +289,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
     let mut global = describe(&o);
     global.push(describe_params(&args.params));
     global.push(("input".into(), args.input.display().to_string()));
+    global.push(("category_dimension".into(), grid.ncat_dim.clone()));
     global.push((
         "cf_clamped_columns".into(),
         summary.cf_clamped_columns.to_string(),
@@ -292,6 +304,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
             category_fields: &[],
             global: &global,
             fill: grid.valid.as_ref().map(|_| fill),
+            history: Some(&history_line()),
         },
     )?;
     Ok(())
