@@ -441,6 +441,23 @@ int32_t pressridge_strength(const struct PressridgeGrid *grid,
                             double *strength,
                             int64_t *cf_clamped_columns);
 
+// Ice strength P (N/m) of one grid cell: the per-cell call of CICE's `icepack_ice_strength`,
+// without a grid descriptor. `aicen` (dimensionless) and `vicen` (m) are `ncat` contiguous
+// values; `aice0` is the open-water fraction (dimensionless). The result is that of
+// [`pressridge_strength`] on a one-column grid, bit for bit; errors are reported the same
+// way. A thread that calls with unchanged options (constant C_f) skips their conversion and
+// checks.
+//
+// # Safety
+// `aicen` and `vicen` must be valid for `ncat` reads, `options` for one read and
+// `strength` for one write.
+int32_t pressridge_strength_cell(int64_t ncat,
+                                 const double *aicen,
+                                 const double *vicen,
+                                 double aice0,
+                                 const struct PressridgeOptions *options,
+                                 double *strength);
+
 // One ridging step of `dt` seconds over `grid->ncol` columns, in place: CICE/Icepack
 // `ridge_ice` without snow and tracers (see `docs/strength.md`).
 //
