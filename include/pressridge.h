@@ -445,12 +445,12 @@ int32_t pressridge_strength(const struct PressridgeGrid *grid,
 // without a grid descriptor. `aicen` (dimensionless) and `vicen` (m) are `ncat` contiguous
 // values; `aice0` is the open-water fraction (dimensionless). The result is that of
 // [`pressridge_strength`] on a one-column grid, bit for bit; errors are reported the same
-// way. A thread that calls with unchanged options (constant C_f) skips their conversion and
-// checks.
+// way. `options` may be null (CICE's defaults). A thread that calls with unchanged options
+// (constant C_f) skips their conversion and checks.
 //
 // # Safety
-// `aicen` and `vicen` must be valid for `ncat` reads, `options` for one read and
-// `strength` for one write.
+// `aicen` and `vicen` must be valid for `ncat` reads, `options` null or valid for one read
+// and `strength` for one write.
 int32_t pressridge_strength_cell(int64_t ncat,
                                  const double *aicen,
                                  const double *vicen,

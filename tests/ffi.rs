@@ -205,8 +205,56 @@ fn single_column_calls_equal_the_batch() {
             assert_eq!(rc, PRESSRIDGE_OK);
             assert_eq!(p.to_bits(), batch[col].to_bits(), "column {col}");
             assert!(clamped == 0 || clamped == 1);
+            // The per-cell entry point, twice (the second call reuses the options).
+            for _ in 0..2 {
+                let mut q = f64::NAN;
+                let rc = unsafe {
+                    pressridge_strength_cell(
+                        ncat as i64,
+                        af[col * ncat..].as_ptr(),
+                        vf[col * ncat..].as_ptr(),
+                        a0[col],
+                        &o,
+                        &mut q,
+                    )
+                };
+                assert_eq!(rc, PRESSRIDGE_OK, "{}", last_error());
+                assert_eq!(q.to_bits(), batch[col].to_bits(), "cell call, column {col}");
+            }
         }
     }
+    // The per-cell entry point refuses what the grid call refuses, naming it; a changed
+    // option after a cached one is seen.
+    let (a1, v1) = ([0.3, 0.4], [0.3, 0.8]);
+    let mut q = 0.0;
+    let cell = |ncat: i64, a: *const f64, o: *const PressridgeOptions, q: *mut f64| unsafe {
+        pressridge_strength_cell(ncat, a, v1.as_ptr(), 0.3, o, q)
+    };
+    assert_eq!(
+        cell(0, a1.as_ptr(), null(), &mut q),
+        PRESSRIDGE_ERR_BAD_SIZE
+    );
+    assert!(last_error().contains("ncat"), "{}", last_error());
+    assert_eq!(cell(2, null(), null(), &mut q), PRESSRIDGE_ERR_NULL_POINTER);
+    assert!(last_error().contains("aicen"), "{}", last_error());
+    assert_eq!(
+        cell(2, a1.as_ptr(), null(), null_mut()),
+        PRESSRIDGE_ERR_NULL_POINTER
+    );
+    let nan = [f64::NAN, 0.4];
+    assert_eq!(
+        cell(2, nan.as_ptr(), null(), &mut q),
+        PRESSRIDGE_ERR_NOT_FINITE
+    );
+    assert_eq!(last_column(), 0);
+    let mut o = default_options();
+    assert_eq!(cell(2, a1.as_ptr(), &o, &mut q), PRESSRIDGE_OK);
+    let p17 = q;
+    o.cf = 2.0 * o.cf;
+    assert_eq!(cell(2, a1.as_ptr(), &o, &mut q), PRESSRIDGE_OK);
+    assert_eq!(q, 2.0 * p17, "C_f doubled, strength doubled");
+    o.cf = f64::NAN;
+    assert_eq!(cell(2, a1.as_ptr(), &o, &mut q), PRESSRIDGE_ERR_NOT_FINITE);
     unsafe { pressridge_cf_table_free(table) };
     // Errors of a single column, and a different ncat afterwards on the same thread.
     let bad = [0.1, -0.2, 0.1];

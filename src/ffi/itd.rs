@@ -501,12 +501,12 @@ thread_local! {
 /// without a grid descriptor. `aicen` (dimensionless) and `vicen` (m) are `ncat` contiguous
 /// values; `aice0` is the open-water fraction (dimensionless). The result is that of
 /// [`pressridge_strength`] on a one-column grid, bit for bit; errors are reported the same
-/// way. A thread that calls with unchanged options (constant C_f) skips their conversion and
-/// checks.
+/// way. `options` may be null (CICE's defaults). A thread that calls with unchanged options
+/// (constant C_f) skips their conversion and checks.
 ///
 /// # Safety
-/// `aicen` and `vicen` must be valid for `ncat` reads, `options` for one read and
-/// `strength` for one write.
+/// `aicen` and `vicen` must be valid for `ncat` reads, `options` null or valid for one read
+/// and `strength` for one write.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn pressridge_strength_cell(
     ncat: i64,
@@ -527,7 +527,6 @@ pub unsafe extern "C" fn pressridge_strength_cell(
         }
         check_ptr(aicen, "aicen")?;
         check_ptr(vicen, "vicen")?;
-        check_ptr(options, "options")?;
         check_ptr(strength.cast_const(), "strength")?;
         let n = ncat as usize;
         let a = std::slice::from_raw_parts(aicen, n);
@@ -541,7 +540,7 @@ pub unsafe extern "C" fn pressridge_strength_cell(
                 ));
             }
         }
-        let o = *options;
+        let o = PressridgeOptions::from_ptr(options)?;
         let r = CELL_OPTIONS.with(|cache| -> FfiResult<ColumnStrength> {
             let mut cache = cache.borrow_mut();
             let constant = o.cf_source == PRESSRIDGE_CF_SOURCE_CONSTANT;
