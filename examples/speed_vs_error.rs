@@ -19,7 +19,7 @@
 //!     reference=runs/sve-reference implicit-0.8=runs/sve-implicit-0.8 > table.md
 //! ```
 
-use pressridge::campaign::{RunRecord, read_records};
+use pressridge::campaign::{RunRecord, read_campaign};
 use pressridge::table::ensemble::{Stat, quantity};
 use pressridge::table::fit::student_t_quantile;
 use std::collections::BTreeMap;
@@ -49,7 +49,17 @@ fn welch(a: &Stat, b: &Stat) -> (f64, f64) {
 type Groups = BTreeMap<String, Vec<RunRecord>>;
 
 fn groups(dir: &Path) -> Result<Groups, Box<dyn std::error::Error>> {
-    let (_, records) = read_records(dir)?;
+    // A campaign still running is read as far as it got: the table gives n per row.
+    let c = read_campaign(dir, true)?;
+    if !c.missing.is_empty() {
+        eprintln!(
+            "{}: {} of {} runs so far",
+            dir.display(),
+            c.records.len(),
+            c.planned
+        );
+    }
+    let records = c.records;
     let mut g = Groups::new();
     for r in records {
         g.entry(r.settings.join(", ")).or_default().push(r);
