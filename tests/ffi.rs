@@ -250,7 +250,7 @@ fn single_column_calls_equal_the_batch() {
     let mut o = default_options();
     assert_eq!(cell(2, a1.as_ptr(), &o, &mut q), PRESSRIDGE_OK);
     let p17 = q;
-    o.cf = 2.0 * o.cf;
+    o.cf *= 2.0;
     assert_eq!(cell(2, a1.as_ptr(), &o, &mut q), PRESSRIDGE_OK);
     assert_eq!(q, 2.0 * p17, "C_f doubled, strength doubled");
     o.cf = f64::NAN;
@@ -1222,4 +1222,41 @@ fn preset_constants_match_the_library() {
     assert_eq!(o.cf, 17.0);
     assert_eq!(o.participation, PRESSRIDGE_PARTICIPATION_EXPONENTIAL);
     assert_eq!(o.strength_law, PRESSRIDGE_STRENGTH_ROTHROCK);
+}
+
+#[test]
+fn ice_thicker_than_any_is_refused_on_every_path() {
+    // vicen = 1e160 m overflowed the squares of the strength into NaN (issue 16); every
+    // path refuses it, naming vicen and the category.
+    let (a, v) = ([0.5, 0.3], [1e160, 0.6]);
+    let mut q = 0.0;
+    let rc = unsafe { pressridge_strength_cell(2, a.as_ptr(), v.as_ptr(), 0.2, null(), &mut q) };
+    assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
+    let e = last_error();
+    assert!(e.contains("vicen") && e.contains("1000"), "{e}");
+    // The batched grid call with 16 columns (the 8-lane kernel), one of them too thick.
+    let ncol = 16;
+    let mut af = Vec::new();
+    let mut vf = Vec::new();
+    for c in 0..ncol {
+        af.extend_from_slice(&a);
+        vf.extend_from_slice(&if c == 11 { v } else { [0.5, 0.6] });
+    }
+    let a0 = vec![0.2; ncol];
+    let mut out = vec![0.0; ncol];
+    let rc = unsafe {
+        pressridge_strength(
+            &fortran_grid(2, ncol),
+            af.as_ptr(),
+            vf.as_ptr(),
+            a0.as_ptr(),
+            null(),
+            null(),
+            out.as_mut_ptr(),
+            null_mut(),
+        )
+    };
+    assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
+    assert_eq!(last_column(), 11);
+    assert!(last_error().contains("vicen"), "{}", last_error());
 }

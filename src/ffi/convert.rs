@@ -16,6 +16,7 @@ fn column_code(e: &ColumnError) -> i32 {
             PRESSRIDGE_ERR_NOT_FINITE
         }
         ColumnError::Negative { .. }
+        | ColumnError::TooThick { .. }
         | ColumnError::AreaSum { .. }
         | ColumnError::IceAreaAboveOne { .. }
         | ColumnError::AreaTooLarge { .. } => PRESSRIDGE_ERR_BAD_VALUE,

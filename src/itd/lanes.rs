@@ -47,13 +47,14 @@ fn kernel<const T: bool, const U: bool>(
     xtmp: f64,
 ) -> Option<[f64; L]> {
     let puny = p.puny;
+    let thick_max = crate::limits::CATEGORY_THICKNESS.max;
     // Validation (the scalar path reports the errors).
     let mut ok = [true; L];
     let mut sum = [0.0; L];
     for n in 0..ncat {
         for l in 0..L {
             let (a, v) = (b.a[n][l], b.v[n][l]);
-            ok[l] &= a.is_finite() & (a >= 0.0) & v.is_finite() & (v >= 0.0);
+            ok[l] &= a.is_finite() & (a >= 0.0) & v.is_finite() & (v >= 0.0) & (v <= thick_max);
             sum[l] += a;
         }
     }

@@ -71,6 +71,23 @@ pub enum ColumnError {
         /// The offending value.
         value: f64,
     },
+    /// A volume per unit area beyond [`crate::limits::CATEGORY_THICKNESS`]: ice (or snow)
+    /// thicker than any, whose squares and exponentials would overflow (vicen ≤ vicen/aicen).
+    #[error(
+        "{var}{} = {value} m exceeds {max} m: thicker than any sea ice (the deepest ridge keels \
+         reach ~50 m)",
+        cat_suffix(*.category)
+    )]
+    TooThick {
+        /// Variable name (`vicen`, `vsnon`).
+        var: &'static str,
+        /// Category index (0-based).
+        category: Option<usize>,
+        /// The offending value (m).
+        value: f64,
+        /// The largest accepted value (m).
+        max: f64,
+    },
     /// The total area differs from 1 by more than the tolerance (strength input).
     #[error(
         "total area aice0 + sum(aicen) = {total} differs from 1 by more than {tolerance}; \
@@ -268,6 +285,21 @@ impl Workspace {
 
 /// Checks one column's raw values: finite and non-negative `aicen`, `vicen` (and `aice0` when
 /// given), and matching lengths. Returns Σ aicen.
+/// Refuses a volume per unit area (m) beyond [`crate::limits::CATEGORY_THICKNESS`].
+#[inline]
+pub(crate) fn too_thick(var: &'static str, n: usize, v: f64) -> Result<(), ColumnError> {
+    let max = crate::limits::CATEGORY_THICKNESS.max;
+    if v > max {
+        return Err(ColumnError::TooThick {
+            var,
+            category: Some(n),
+            value: v,
+            max,
+        });
+    }
+    Ok(())
+}
+
 pub(crate) fn check_column(
     aicen: &[f64],
     vicen: &[f64],
@@ -303,6 +335,7 @@ pub(crate) fn check_column(
                 value: v,
             });
         }
+        too_thick("vicen", n, v)?;
         sum += a;
     }
     if let Some(a0) = aice0 {
