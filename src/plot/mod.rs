@@ -4,6 +4,8 @@
 //! environment variable `PRESSRIDGE_FONT` (a path to a `.ttf`) and then in Debian's
 //! `fonts-dejavu-core` locations (`scripts/setup.sh` installs it).
 
+pub mod animate;
+pub mod gif;
 pub mod render;
 pub mod series;
 pub mod table;
