@@ -250,7 +250,7 @@ fn single_column_calls_equal_the_batch() {
     let mut o = default_options();
     assert_eq!(cell(2, a1.as_ptr(), &o, &mut q), PRESSRIDGE_OK);
     let p17 = q;
-    o.cf = 2.0 * o.cf;
+    o.cf *= 2.0;
     assert_eq!(cell(2, a1.as_ptr(), &o, &mut q), PRESSRIDGE_OK);
     assert_eq!(q, 2.0 * p17, "C_f doubled, strength doubled");
     o.cf = f64::NAN;
