@@ -207,6 +207,8 @@ where
         .map_err(draw_err)?;
     chart
         .configure_mesh()
+        .x_label_formatter(&super::tick)
+        .y_label_formatter(&super::tick)
         .disable_mesh()
         .x_desc("x (m)")
         .y_desc("y (m)")

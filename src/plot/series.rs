@@ -66,6 +66,8 @@ fn plot_energy_at(samples: &[Sample], path: &Path, title: &str) -> Result<(), Pl
         .map_err(draw_err)?;
     chart
         .configure_mesh()
+        .x_label_formatter(&super::tick)
+        .y_label_formatter(&super::tick)
         .x_desc("time (s)")
         .y_desc("energy (kJ/m)")
         .label_style(("sans-serif", 14))
@@ -120,6 +122,8 @@ fn plot_force_at(samples: &[Sample], path: &Path, title: &str) -> Result<(), Plo
         .map_err(draw_err)?;
     chart
         .configure_mesh()
+        .x_label_formatter(&super::tick)
+        .y_label_formatter(&super::tick)
         .x_desc("time (s)")
         .y_desc("ridging force (kN/m)")
         .label_style(("sans-serif", 14))
