@@ -26,6 +26,10 @@ pub struct Args {
     /// Skip the figures (and the animation).
     #[arg(long)]
     no_figures: bool,
+    /// Also write the final state, energy and force figures as SVG (final.svg, energy.svg,
+    /// force.svg) beside the PNGs.
+    #[arg(long)]
+    svg: bool,
     /// Replace an earlier run in `--out`: remove the files a run writes there (and only
     /// those) before starting. Without it a non-empty `--out` is refused.
     #[arg(long)]
@@ -42,6 +46,9 @@ const RUN_FILES: &[&str] = &[
     "final.png",
     "energy.png",
     "force.png",
+    "final.svg",
+    "energy.svg",
+    "force.svg",
     "ridge.gif",
 ];
 
@@ -203,18 +210,21 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         } else {
             render::Window::fit(s, 1.0)
         };
-        render::render_state(s, &a.out.join("final.png"), win, 1000, &title)?;
-        series::plot_energy(
-            &out.series,
-            &a.out.join("energy.png"),
-            &format!("{}: energy budget", scene.name),
-        )?;
-        if scene.sheet.is_some() {
-            series::plot_force(
+        let formats: &[&str] = if a.svg { &["png", "svg"] } else { &["png"] };
+        for ext in formats {
+            render::render_state(s, &a.out.join(format!("final.{ext}")), win, 1000, &title)?;
+            series::plot_energy(
                 &out.series,
-                &a.out.join("force.png"),
-                &format!("{}: ridging force", scene.name),
+                &a.out.join(format!("energy.{ext}")),
+                &format!("{}: energy budget", scene.name),
             )?;
+            if scene.sheet.is_some() {
+                series::plot_force(
+                    &out.series,
+                    &a.out.join(format!("force.{ext}")),
+                    &format!("{}: ridging force", scene.name),
+                )?;
+            }
         }
     }
     if figures && interval > 0.0 {
