@@ -372,7 +372,9 @@ pub struct OutputSection {
     /// Interval between snapshots (s); 0 for none. Default 50.
     pub snapshot_interval: f64,
     /// Snapshot frame [x0, x1, y0, y1] (m). Default [−14, 6, −8, 4]: 20 m × 12 m as in
-    /// Figure 5, the floe nose at x = 0.
+    /// Figure 5, the floe nose at x = 0. The least a snapshot shows: `simulate` grows it
+    /// where needed to hold every rubble block and the sheet and floe within 3 m of the
+    /// rubble (1 m margin), so that a sail or keel past it is not clipped.
     pub frame: [f64; 4],
 }
 

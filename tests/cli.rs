@@ -130,3 +130,29 @@ fn shipped_scene_files_load_and_compose() {
     let out = pressridge::simulation::run(&w, &mut |_| true).unwrap();
     assert!(out.summary.work > 0.0);
 }
+
+#[test]
+fn simulate_svg_writes_svg_figures_beside_the_pngs() {
+    let dir = std::env::temp_dir().join(format!("pressridge-cli-svg-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let out = bin()
+        .args(["simulate", "--svg", "-q", "--set", "duration=0.5"])
+        .arg("--out")
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    for f in ["final", "energy", "force"] {
+        assert!(dir.join(format!("{f}.png")).is_file(), "missing {f}.png");
+        let svg = std::fs::read_to_string(dir.join(format!("{f}.svg"))).unwrap();
+        assert!(
+            svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"),
+            "{f}.svg"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

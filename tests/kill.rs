@@ -192,6 +192,11 @@ fn killed_simulate_leaves_only_complete_files() {
                     assert!(t.lines().all(|l| l.split(',').count() == cols), "{ctx}");
                 }
                 n if n.ends_with(".png") => assert!(png_complete(&p), "{ctx}"),
+                "ridge.gif" => {
+                    // Complete: the header, then the trailer byte last.
+                    let b = std::fs::read(&p).unwrap();
+                    assert!(b.starts_with(b"GIF89a") && b.last() == Some(&0x3B), "{ctx}");
+                }
                 "snapshots" => {
                     for s in names_in(&p) {
                         let q = p.join(&s);

@@ -53,6 +53,74 @@ impl Window {
     }
 }
 
+impl Window {
+    /// The smallest window holding both (m).
+    pub fn union(self, o: Window) -> Window {
+        Window {
+            x0: self.x0.min(o.x0),
+            x1: self.x1.max(o.x1),
+            y0: self.y0.min(o.y0),
+            y1: self.y1.max(o.y1),
+        }
+    }
+
+    /// The window around the ridge: every rubble block (free blocks of role `Rubble` or
+    /// `Block`) and, of the sheet, the floe and any other body, the part within `reach` (m)
+    /// of the rubble's bounding box, all with a `margin` (m). `None` when the state holds
+    /// no rubble. Metres stay square when drawn ([`figure_size`]), whatever the shape.
+    pub fn fit_ridge(s: &Snapshot, reach: f64, margin: f64) -> Option<Window> {
+        let bbox = |b: &crate::dem::world::BodyState| {
+            let mut w = Window {
+                x0: f64::INFINITY,
+                x1: f64::NEG_INFINITY,
+                y0: f64::INFINITY,
+                y1: f64::NEG_INFINITY,
+            };
+            for &p in b.world_outline().verts() {
+                w.x0 = w.x0.min(p.x);
+                w.x1 = w.x1.max(p.x);
+                w.y0 = w.y0.min(p.y);
+                w.y1 = w.y1.max(p.y);
+            }
+            w
+        };
+        let is_rubble = |b: &crate::dem::world::BodyState| {
+            matches!(b.role, Role::Rubble | Role::Block) && !b.drive.is_kinematic()
+        };
+        let rubble = s
+            .bodies
+            .iter()
+            .filter(|b| is_rubble(b))
+            .map(bbox)
+            .reduce(Window::union)?;
+        let near = Window {
+            x0: rubble.x0 - reach,
+            x1: rubble.x1 + reach,
+            y0: rubble.y0 - reach,
+            y1: rubble.y1 + reach,
+        };
+        let mut w = rubble;
+        for b in s.bodies.iter().filter(|b| !is_rubble(b)) {
+            let o = bbox(b);
+            let part = Window {
+                x0: o.x0.max(near.x0),
+                x1: o.x1.min(near.x1),
+                y0: o.y0.max(near.y0),
+                y1: o.y1.min(near.y1),
+            };
+            if part.x0 <= part.x1 && part.y0 <= part.y1 {
+                w = w.union(part);
+            }
+        }
+        Some(Window {
+            x0: w.x0 - margin,
+            x1: w.x1 + margin,
+            y0: w.y0 - margin,
+            y1: w.y1 + margin,
+        })
+    }
+}
+
 /// Draws a saved state into a PNG (or SVG, by the file extension) of `width_px` pixels
 /// wide, height from the window's aspect ratio so that metres are square.
 pub fn render_state(
@@ -75,19 +143,47 @@ fn render_state_at(
     title: &str,
 ) -> Result<(), PlotError> {
     ensure_font()?;
-    let aspect = (window.y1 - window.y0) / (window.x1 - window.x0);
-    // Room for labels: the plot area keeps metres square.
-    let (ml, mb, mt, mr) = (70u32, 50u32, 40u32, 20u32);
-    let plot_w = width_px.saturating_sub(ml + mr).max(100);
-    let height_px = (plot_w as f64 * aspect).round() as u32 + mb + mt;
+    let (width_px, height_px) = figure_size(window, width_px);
     let svg = path.extension().is_some_and(|e| e == "svg");
     if svg {
         let root = SVGBackend::new(path, (width_px, height_px)).into_drawing_area();
-        draw(root, s, window, title, (ml, mb, mt, mr))
+        draw(root, s, window, title, MARGINS)
     } else {
         let root = BitMapBackend::new(path, (width_px, height_px)).into_drawing_area();
-        draw(root, s, window, title, (ml, mb, mt, mr))
+        draw(root, s, window, title, MARGINS)
     }
+}
+
+/// Room for labels around the plot area (px): left, bottom, top, right.
+const MARGINS: (u32, u32, u32, u32) = (70, 50, 40, 20);
+
+/// The figure's size (px) for `window` drawn `width_px` wide: the height follows from the
+/// window's aspect ratio so that the plot area keeps metres square.
+pub fn figure_size(window: Window, width_px: u32) -> (u32, u32) {
+    let (ml, mb, mt, mr) = MARGINS;
+    let aspect = (window.y1 - window.y0) / (window.x1 - window.x0);
+    let plot_w = width_px.saturating_sub(ml + mr).max(100);
+    let width_px = width_px.max(plot_w + ml + mr);
+    let height_px = (plot_w as f64 * aspect).round() as u32 + mb + mt;
+    (width_px, height_px)
+}
+
+/// Draws a state into memory: RGB bytes (3 a pixel, row by row) of the size
+/// [`figure_size`] gives, returned with that size.
+pub fn render_state_rgb(
+    s: &Snapshot,
+    window: Window,
+    width_px: u32,
+    title: &str,
+) -> Result<(Vec<u8>, u32, u32), PlotError> {
+    ensure_font()?;
+    let (w, h) = figure_size(window, width_px);
+    let mut buf = vec![0u8; 3 * w as usize * h as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
+        draw(root, s, window, title, MARGINS)?;
+    }
+    Ok((buf, w, h))
 }
 
 fn draw<DB: DrawingBackend>(
@@ -111,6 +207,8 @@ where
         .map_err(draw_err)?;
     chart
         .configure_mesh()
+        .x_label_formatter(&super::tick)
+        .y_label_formatter(&super::tick)
         .disable_mesh()
         .x_desc("x (m)")
         .y_desc("y (m)")

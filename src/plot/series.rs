@@ -6,7 +6,8 @@ use crate::simulation::Sample;
 use plotters::prelude::*;
 use std::path::Path;
 
-/// Draws every ledger term against time into a PNG, in kJ per metre.
+/// Draws every ledger term against time into a PNG (or SVG, by the file extension), in kJ
+/// per metre.
 pub fn plot_energy(samples: &[Sample], path: &Path, title: &str) -> Result<(), PlotError> {
     crate::io::write_atomic_with(path, |tmp| plot_energy_at(samples, tmp, title))
         .map_err(|e| e.at(path))
@@ -17,7 +18,6 @@ fn plot_energy_at(samples: &[Sample], path: &Path, title: &str) -> Result<(), Pl
     ensure_font()?;
     let series: Vec<EnergyBudget> = samples.iter().map(|s| s.energy).collect();
     let series = &series[..];
-    type Getter = fn(&EnergyBudget) -> f64;
     let lines: [(&str, Getter, RGBColor); 10] = [
         ("work", |e| e.work, RGBColor(0, 0, 0)),
         ("ΔPE", |e| e.potential_energy, RGBColor(31, 119, 180)),
@@ -55,23 +55,48 @@ fn plot_energy_at(samples: &[Sample], path: &Path, title: &str) -> Result<(), Pl
         }
     }
     let pad = 0.05 * (hi - lo).max(1e-9);
-    let root = BitMapBackend::new(path, (900, 560)).into_drawing_area();
+    let size = (900, 560);
+    if path.extension().is_some_and(|e| e == "svg") {
+        let root = SVGBackend::new(path, size).into_drawing_area();
+        draw_energy(root, series, &lines, title, t1, lo - pad, hi + pad)
+    } else {
+        let root = BitMapBackend::new(path, size).into_drawing_area();
+        draw_energy(root, series, &lines, title, t1, lo - pad, hi + pad)
+    }
+}
+
+type Getter = fn(&EnergyBudget) -> f64;
+
+fn draw_energy<DB: DrawingBackend>(
+    root: DrawingArea<DB, plotters::coord::Shift>,
+    series: &[EnergyBudget],
+    lines: &[(&str, Getter, RGBColor)],
+    title: &str,
+    t1: f64,
+    y0: f64,
+    y1: f64,
+) -> Result<(), PlotError>
+where
+    DB::ErrorType: 'static,
+{
     root.fill(&WHITE).map_err(draw_err)?;
     let mut chart = ChartBuilder::on(&root)
         .caption(title, ("sans-serif", 18))
         .margin(12)
         .x_label_area_size(45)
         .y_label_area_size(70)
-        .build_cartesian_2d(0.0..t1, (lo - pad)..(hi + pad))
+        .build_cartesian_2d(0.0..t1, y0..y1)
         .map_err(draw_err)?;
     chart
         .configure_mesh()
+        .x_label_formatter(&super::tick)
+        .y_label_formatter(&super::tick)
         .x_desc("time (s)")
         .y_desc("energy (kJ/m)")
         .label_style(("sans-serif", 14))
         .draw()
         .map_err(draw_err)?;
-    for (name, f, color) in lines {
+    for &(name, f, color) in lines {
         chart
             .draw_series(LineSeries::new(
                 series.iter().map(|e| (e.time, f(e) / 1e3)),
@@ -94,7 +119,8 @@ fn plot_energy_at(samples: &[Sample], path: &Path, title: &str) -> Result<(), Pl
 }
 
 /// Draws the ridging force of eq (9) against time (cf. Hopkins 1994, Figure 6) in kN per
-/// metre, sampled at the scene's interval (0.2 s by default, as in the paper).
+/// metre, sampled at the scene's interval (0.2 s by default, as in the paper); PNG, or SVG
+/// by the file extension.
 pub fn plot_force(samples: &[Sample], path: &Path, title: &str) -> Result<(), PlotError> {
     crate::io::write_atomic_with(path, |tmp| plot_force_at(samples, tmp, title))
         .map_err(|e| e.at(path))
@@ -109,7 +135,27 @@ fn plot_force_at(samples: &[Sample], path: &Path, title: &str) -> Result<(), Plo
         lo = lo.min(s.ridging_force / 1e3);
         hi = hi.max(s.ridging_force / 1e3);
     }
-    let root = BitMapBackend::new(path, (900, 420)).into_drawing_area();
+    let size = (900, 420);
+    if path.extension().is_some_and(|e| e == "svg") {
+        let root = SVGBackend::new(path, size).into_drawing_area();
+        draw_force(root, samples, title, t1, lo, hi)
+    } else {
+        let root = BitMapBackend::new(path, size).into_drawing_area();
+        draw_force(root, samples, title, t1, lo, hi)
+    }
+}
+
+fn draw_force<DB: DrawingBackend>(
+    root: DrawingArea<DB, plotters::coord::Shift>,
+    samples: &[Sample],
+    title: &str,
+    t1: f64,
+    lo: f64,
+    hi: f64,
+) -> Result<(), PlotError>
+where
+    DB::ErrorType: 'static,
+{
     root.fill(&WHITE).map_err(draw_err)?;
     let mut chart = ChartBuilder::on(&root)
         .caption(title, ("sans-serif", 18))
@@ -120,6 +166,8 @@ fn plot_force_at(samples: &[Sample], path: &Path, title: &str) -> Result<(), Plo
         .map_err(draw_err)?;
     chart
         .configure_mesh()
+        .x_label_formatter(&super::tick)
+        .y_label_formatter(&super::tick)
         .x_desc("time (s)")
         .y_desc("ridging force (kN/m)")
         .label_style(("sans-serif", 14))

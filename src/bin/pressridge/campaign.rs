@@ -1,7 +1,6 @@
 //! `pressridge campaign`: a seeded ensemble over a parameter grid, resumable.
 
 use crate::BoxError;
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use pressridge::campaign::{CampaignSpec, run_campaign};
 use std::path::PathBuf;
 use std::sync::atomic::AtomicBool;
@@ -27,14 +26,7 @@ pub fn run(a: Args) -> Result<(), BoxError> {
     let threads = a
         .threads
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
-    let bar = ProgressBar::with_draw_target(
-        Some((total_sim * 10.0) as u64),
-        ProgressDrawTarget::stderr(),
-    );
-    bar.set_style(
-        ProgressStyle::with_template("{spinner} [{elapsed_precise}] {bar:40} {msg} ETA {eta}")?
-            .progress_chars("=> "),
-    );
+    let progress = crate::progress::Progress::new(total_sim, "s simulated");
     // Runs already on disk count as done for the bar.
     let skipped_sim = std::sync::Mutex::new(None::<f64>);
     let stop = AtomicBool::new(false);
@@ -46,12 +38,21 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         &|p| {
             let mut s = skipped_sim.lock().expect("lock");
             let base = *s.get_or_insert(p.skipped as f64 / p.total.max(1) as f64 * total_sim);
-            bar.set_position(((base + p.simulated) * 10.0) as u64);
-            bar.set_message(format!("{} of {} runs", p.skipped + p.done, p.total));
+            let done = base + p.simulated;
+            progress.update_resumed(done, || {
+                (
+                    format!(
+                        "{} of {} runs done, {done:.0} of {total_sim:.0} s simulated",
+                        p.skipped + p.done,
+                        p.total
+                    ),
+                    format!("{} skipped (already on disk), {threads} threads", p.skipped),
+                )
+            });
         },
         &stop,
     )?;
-    bar.finish_and_clear();
+    progress.finish();
     println!(
         "{}: {} runs ({} already done, {} run now) in {}",
         spec.name,

@@ -6,8 +6,10 @@
 
 use clap::{Parser, Subcommand};
 
+mod animate;
 mod campaign;
 mod plot_strength;
+mod progress;
 mod render;
 mod ridge_step;
 mod simulate;
@@ -26,6 +28,15 @@ pub type BoxError = Box<dyn std::error::Error + Send + Sync>;
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// No progress reports on stderr (errors and warnings still appear).
+    #[arg(long, short, global = true)]
+    quiet: bool,
+    /// More detail in the progress reports (steps, step size); repeatable.
+    #[arg(short, long, action = clap::ArgAction::Count, global = true)]
+    verbose: u8,
+    /// Seconds between progress lines when stderr is not a terminal (a log, CI, a pipe).
+    #[arg(long, global = true, default_value_t = 5.0, value_name = "SECONDS")]
+    progress_interval: f64,
 }
 
 #[derive(Subcommand)]
@@ -34,6 +45,8 @@ enum Command {
     Simulate(simulate::Args),
     /// Draw a saved state as a PNG or SVG.
     Render(render::Args),
+    /// A GIF (and MP4 with --mp4 where ffmpeg is found) of a run's snapshots.
+    Animate(animate::Args),
     /// Run a seeded ensemble over a parameter grid (resumable).
     Campaign(campaign::Args),
     /// Tabulate a campaign into a NetCDF lookup table (fits, bands, C_f).
@@ -48,9 +61,22 @@ enum Command {
 
 fn main() {
     let cli = Cli::parse();
+    if !(cli.progress_interval.is_finite() && cli.progress_interval >= 0.0) {
+        eprintln!(
+            "pressridge: error: --progress-interval must be a non-negative number of seconds, not {}",
+            cli.progress_interval
+        );
+        std::process::exit(1);
+    }
+    progress::configure(progress::Options {
+        quiet: cli.quiet,
+        verbose: cli.verbose,
+        interval: cli.progress_interval,
+    });
     let result = match cli.command {
         Command::Simulate(a) => simulate::run(a),
         Command::Render(a) => render::run(a),
+        Command::Animate(a) => animate::run(a),
         Command::Campaign(a) => campaign::run(a),
         Command::Tabulate(a) => tabulate::run(a),
         Command::Strength(a) => strength::run(a),

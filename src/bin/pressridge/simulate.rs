@@ -1,7 +1,6 @@
 //! `pressridge simulate`: run a scene and write its results.
 
 use crate::BoxError;
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use pressridge::dem::World;
 use pressridge::io::{series::write_series_csv, state, write_atomic};
 use pressridge::plot::{render, series};
@@ -24,9 +23,13 @@ pub struct Args {
     /// Print the resolved scene as TOML and exit.
     #[arg(long)]
     print_scene: bool,
-    /// Skip the figures.
+    /// Skip the figures (and the animation).
     #[arg(long)]
     no_figures: bool,
+    /// Also write the final state, energy and force figures as SVG (final.svg, energy.svg,
+    /// force.svg) beside the PNGs.
+    #[arg(long)]
+    svg: bool,
     /// Replace an earlier run in `--out`: remove the files a run writes there (and only
     /// those) before starting. Without it a non-empty `--out` is refused.
     #[arg(long)]
@@ -43,6 +46,10 @@ const RUN_FILES: &[&str] = &[
     "final.png",
     "energy.png",
     "force.png",
+    "final.svg",
+    "energy.svg",
+    "force.svg",
+    "ridge.gif",
 ];
 
 /// Whether `name` is a file a run writes into `snapshots/` (or a temporary of one).
@@ -103,6 +110,17 @@ fn prepare_out_dir(dir: &Path, overwrite: bool) -> Result<(), BoxError> {
     Ok(())
 }
 
+/// The window of a snapshot of a ridging scene: the scene's `output.frame`, grown where
+/// needed to hold every rubble block and the sheet and floe within 3 m of the rubble, with
+/// a 1 m margin ([`render::Window::fit_ridge`]), so that a sail or keel past the frame is
+/// never clipped.
+fn ridge_window(frame: render::Window, s: &pressridge::dem::Snapshot) -> render::Window {
+    match render::Window::fit_ridge(s, 3.0, 1.0) {
+        Some(w) => frame.union(w),
+        None => frame,
+    }
+}
+
 /// Loads a scene file (or the default) and applies the overrides.
 pub fn load_scene(path: Option<&Path>, sets: &[String]) -> Result<Scene, BoxError> {
     let base = match path {
@@ -127,16 +145,7 @@ pub fn run(a: Args) -> Result<(), BoxError> {
     prepare_out_dir(&a.out, a.overwrite)?;
     write_atomic(&a.out.join("scene.toml"), scene.to_toml().as_bytes())?;
 
-    let bar = ProgressBar::with_draw_target(
-        Some((scene.duration * 1000.0).round() as u64),
-        ProgressDrawTarget::stderr(),
-    );
-    bar.set_style(
-        ProgressStyle::with_template(
-            "{spinner} [{elapsed_precise}] {bar:40} {msg} simulated, ETA {eta}",
-        )?
-        .progress_chars("=> "),
-    );
+    let progress = crate::progress::Progress::new(scene.duration, "s simulated");
     let snap_dir = a.out.join("snapshots");
     let interval = scene.output.snapshot_interval;
     let mut next_snap = 0.0;
@@ -151,8 +160,12 @@ pub fn run(a: Args) -> Result<(), BoxError> {
     let figures = !a.no_figures;
     let mut observe = |w: &World| {
         let t = w.time();
-        bar.set_position((t * 1000.0) as u64);
-        bar.set_message(format!("{t:.1} s"));
+        progress.update(t, || {
+            (
+                format!("{t:.1} of {:.1} s simulated", scene.duration),
+                format!("step {}, dt {:.3e} s", w.steps(), w.dt()),
+            )
+        });
         if interval > 0.0 && t >= next_snap - 0.5 * w.dt() {
             next_snap += interval;
             let s = w.snapshot();
@@ -164,7 +177,7 @@ pub fn run(a: Args) -> Result<(), BoxError> {
                         render::render_state(
                             &s,
                             &snap_dir.join(format!("{stem}.png")),
-                            window,
+                            ridge_window(window, &s),
                             800,
                             &format!("t = {t:.0} s"),
                         )
@@ -181,7 +194,7 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         true
     };
     let out = simulation::run(&scene, &mut observe)?;
-    bar.finish_and_clear();
+    progress.finish();
     if let Some(e) = snap_err {
         return Err(e);
     }
@@ -193,23 +206,36 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         let s = &out.final_state;
         let title = format!("{} at t = {:.1} s", scene.name, s.time);
         let win = if scene.sheet.is_some() {
-            window
+            ridge_window(window, s)
         } else {
             render::Window::fit(s, 1.0)
         };
-        render::render_state(s, &a.out.join("final.png"), win, 1000, &title)?;
-        series::plot_energy(
-            &out.series,
-            &a.out.join("energy.png"),
-            &format!("{}: energy budget", scene.name),
-        )?;
-        if scene.sheet.is_some() {
-            series::plot_force(
+        let formats: &[&str] = if a.svg { &["png", "svg"] } else { &["png"] };
+        for ext in formats {
+            render::render_state(s, &a.out.join(format!("final.{ext}")), win, 1000, &title)?;
+            series::plot_energy(
                 &out.series,
-                &a.out.join("force.png"),
-                &format!("{}: ridging force", scene.name),
+                &a.out.join(format!("energy.{ext}")),
+                &format!("{}: energy budget", scene.name),
             )?;
+            if scene.sheet.is_some() {
+                series::plot_force(
+                    &out.series,
+                    &a.out.join(format!("force.{ext}")),
+                    &format!("{}: ridging force", scene.name),
+                )?;
+            }
         }
+    }
+    if figures && interval > 0.0 {
+        // The animation of the snapshots (`pressridge animate` on this run).
+        let gif = a.out.join("ridge.gif");
+        let opts = pressridge::plot::animate::AnimateOptions {
+            fps: 4,
+            width_px: 800,
+            mp4: None,
+        };
+        pressridge::plot::animate::animate(&a.out, &gif, &opts)?;
     }
     let sm = &out.summary;
     println!(
