@@ -71,15 +71,15 @@ pub enum ColumnError {
         /// The offending value.
         value: f64,
     },
-    /// A volume per unit area beyond [`crate::limits::CATEGORY_THICKNESS`]: ice (or snow)
-    /// thicker than any, whose squares and exponentials would overflow (vicen ≤ vicen/aicen).
+    /// A volume per unit area beyond [`crate::limits::CATEGORY_THICKNESS`] in a strength input: ice
+    /// thicker than any, whose squares would overflow (vicen ≤ vicen/aicen).
     #[error(
         "{var}{} = {value} m exceeds {max} m: thicker than any sea ice (the deepest ridge keels \
          reach ~50 m)",
         cat_suffix(*.category)
     )]
     TooThick {
-        /// Variable name (`vicen`, `vsnon`).
+        /// Variable name (`vicen`).
         var: &'static str,
         /// Category index (0-based).
         category: Option<usize>,
@@ -283,8 +283,6 @@ impl Workspace {
     }
 }
 
-/// Checks one column's raw values: finite and non-negative `aicen`, `vicen` (and `aice0` when
-/// given), and matching lengths. Returns Σ aicen.
 /// Refuses a volume per unit area (m) beyond [`crate::limits::CATEGORY_THICKNESS`].
 #[inline]
 pub(crate) fn too_thick(var: &'static str, n: usize, v: f64) -> Result<(), ColumnError> {
@@ -300,6 +298,8 @@ pub(crate) fn too_thick(var: &'static str, n: usize, v: f64) -> Result<(), Colum
     Ok(())
 }
 
+/// Checks one column's raw values: finite and non-negative `aicen`, `vicen` (and `aice0` when
+/// given), and matching lengths. Returns Σ aicen.
 pub(crate) fn check_column(
     aicen: &[f64],
     vicen: &[f64],
@@ -335,7 +335,6 @@ pub(crate) fn check_column(
                 value: v,
             });
         }
-        too_thick("vicen", n, v)?;
         sum += a;
     }
     if let Some(a0) = aice0 {

@@ -475,9 +475,6 @@ fn check_inputs(
                     value: x,
                 });
             }
-            if var != "aicen" {
-                super::too_thick(var, n, x)?;
-            }
         }
     }
     let nt = if col.aicen.is_empty() {

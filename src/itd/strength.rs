@@ -74,6 +74,10 @@ pub fn strength_column(
     );
     let p = &opts.params;
     let sum = check_column(aicen, vicen, aice0)?;
+    // Squares of thicker ice overflow into NaN (the ridging paths take such volumes).
+    for (n, &v) in vicen.iter().enumerate() {
+        super::too_thick("vicen", n, v)?;
+    }
     let aice0 = match aice0 {
         // Empty column (land, or no data): defined as zero strength (CICE: 0/0).
         Some(a0) if a0 == 0.0 && sum == 0.0 => {
