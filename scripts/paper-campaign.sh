@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# The paper's whole experiment campaign (issue 14; Hopkins 1994, Table 1): every set of
+# data/campaigns/ — thickness, friction, modulus, floe, speed — seven seeds each, one after
+# the other on all cores, into runs/paper/<set>/. Resumable: finished runs are kept and
+# re-running continues where it stopped (a run cut off mid-way starts again). Each set's
+# progress goes to runs/paper/<set>.log. About 7–8 CPU-hours with the binary of 2026-11-23;
+# run it under nohup:
+#   nohup scripts/paper-campaign.sh [THREADS] [OUT_ROOT] > runs/paper.log 2>&1 &
+# Then tabulate a set with `pressridge tabulate --campaign runs/paper/<set> ...`
+# (data/README.md gives the commands behind each committed table and report).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+threads=${1:-$(nproc)}
+root=${2:-runs/paper}
+bin=${PRESSRIDGE_BIN:-./target/release/pressridge}
+[ -n "${PRESSRIDGE_BIN:-}" ] || cargo build --release --bin pressridge
+mkdir -p "$root"
+echo "paper campaign: $("$bin" --version 2>/dev/null || echo pressridge), commit $(git rev-parse --short HEAD), $threads threads, $(date -u +%FT%TZ)"
+# Thickness first (it feeds the default lookup table), the long slow-speed runs last.
+for set in thickness friction modulus floe speed; do
+  echo "== $set ($(date -u +%T))"
+  "$bin" campaign --spec "data/campaigns/$set.toml" --out "$root/$set" \
+    --threads "$threads" --progress-interval 60 2> "$root/$set.log"
+done
+echo "paper campaign done $(date -u +%FT%TZ)"
