@@ -266,6 +266,21 @@ module pressridge
        integer(c_int64_t), value :: len
        type(c_ptr), intent(out) :: table
      end function c_cf_table_open
+     integer(c_int32_t) function c_cf_table_open_at_friction(path, len, mu, mu_w, table) &
+          bind(C, name="pressridge_cf_table_open_at_friction")
+       import :: c_int32_t, c_int64_t, c_char, c_double, c_ptr
+       character(kind=c_char), intent(in) :: path(*)
+       integer(c_int64_t), value :: len
+       real(c_double), value :: mu, mu_w
+       type(c_ptr), intent(out) :: table
+     end function c_cf_table_open_at_friction
+     integer(c_int32_t) function c_cf_table_friction(table, mu, mu_w, known) &
+          bind(C, name="pressridge_cf_table_friction")
+       import :: c_int32_t, c_double, c_ptr
+       type(c_ptr), value :: table
+       real(c_double), intent(out) :: mu, mu_w
+       integer(c_int32_t), intent(out) :: known
+     end function c_cf_table_friction
      integer(c_int32_t) function c_cf_table_new(thickness, cf, n, table) &
           bind(C, name="pressridge_cf_table_new")
        import :: c_int32_t, c_int64_t, c_double, c_ptr
@@ -368,6 +383,13 @@ module pressridge
        integer(c_int64_t), value :: set
        type(c_ptr), intent(out) :: cf_table
      end function c_ridge_table_cf_table
+     integer(c_int32_t) function c_ridge_table_friction_set(table, mu, mu_w, set) &
+          bind(C, name="pressridge_ridge_table_friction_set")
+       import :: c_int32_t, c_int64_t, c_double, c_ptr
+       type(c_ptr), value :: table
+       real(c_double), value :: mu, mu_w
+       integer(c_int64_t), intent(out) :: set
+     end function c_ridge_table_friction_set
      integer(c_int32_t) function c_ridge_table_free(table) &
           bind(C, name="pressridge_ridge_table_free")
        import :: c_int32_t, c_ptr
@@ -419,10 +441,12 @@ module pressridge
   public :: pressridge_last_error_column
   public :: pressridge_cf_table_open, pressridge_cf_table_new, pressridge_cf_table_lookup
   public :: pressridge_cf_table_nodes, pressridge_cf_table_free
+  public :: pressridge_cf_table_open_at_friction, pressridge_cf_table_friction
   public :: pressridge_ridge_table_open, pressridge_ridge_table_dims
   public :: pressridge_ridge_table_axes, pressridge_ridge_table_set_name
   public :: pressridge_ridge_table_variable_name, pressridge_ridge_table_value
   public :: pressridge_ridge_table_cf, pressridge_ridge_table_cf_table
+  public :: pressridge_ridge_table_friction_set
   public :: pressridge_ridge_table_free
   public :: pressridge_scene_run, pressridge_run_summary_json, pressridge_run_summary_value
   public :: pressridge_run_free, pressridge_run_scene
@@ -988,6 +1012,32 @@ contains
          'pressridge_cf_table_open('//path//')', ierr)
   end subroutine pressridge_cf_table_open
 
+  !> The C_f at friction mu (between blocks above the water line) and mu_w (below it; both
+  !> dimensionless) of a ridging table of `pressridge tabulate`; PRESSRIDGE_ERR_NOT_FOUND,
+  !> with the pairs the table has in the message, when it has no set at that friction.
+  subroutine pressridge_cf_table_open_at_friction(path, mu, mu_w, table, ierr)
+    character(len=*), intent(in) :: path
+    real(c_double), intent(in) :: mu, mu_w
+    type(pressridge_cf_table), intent(out) :: table
+    integer, intent(out), optional :: ierr
+    call finish(c_cf_table_open_at_friction(path, len(path, kind=c_int64_t), mu, mu_w, &
+         table%ptr), 'pressridge_cf_table_open_at_friction('//path//')', ierr)
+  end subroutine pressridge_cf_table_open_at_friction
+
+  !> The friction pair (mu, mu_w; dimensionless) a C_f table is for; known is .false. (and
+  !> mu, mu_w NaN) when the table does not say.
+  subroutine pressridge_cf_table_friction(table, mu, mu_w, known, ierr)
+    type(pressridge_cf_table), intent(in) :: table
+    real(c_double), intent(out) :: mu, mu_w
+    logical, intent(out) :: known
+    integer, intent(out), optional :: ierr
+    integer(c_int32_t) :: k
+    k = 0
+    call finish(c_cf_table_friction(table%ptr, mu, mu_w, k), 'pressridge_cf_table_friction', &
+         ierr)
+    known = k /= 0
+  end subroutine pressridge_cf_table_friction
+
   !> A C_f table from nodes: thickness (m, strictly increasing) and cf (1, > 0).
   subroutine pressridge_cf_table_new(thickness, cf, table, ierr)
     real(c_double), intent(in) :: thickness(:), cf(:)
@@ -1147,6 +1197,20 @@ contains
     call finish(c_ridge_table_cf_table(table%ptr, int(set - 1, c_int64_t), cf_table%ptr), &
          'pressridge_ridge_table_cf_table', ierr)
   end subroutine pressridge_ridge_table_cf_table
+
+  !> The set (1-based) of a ridging table at friction mu, mu_w (dimensionless);
+  !> PRESSRIDGE_ERR_NOT_FOUND when the table has no such set or no friction coordinates.
+  subroutine pressridge_ridge_table_friction_set(table, mu, mu_w, set, ierr)
+    type(pressridge_ridge_table), intent(in) :: table
+    real(c_double), intent(in) :: mu, mu_w
+    integer, intent(out) :: set
+    integer, intent(out), optional :: ierr
+    integer(c_int64_t) :: s0
+    s0 = -1
+    call finish(c_ridge_table_friction_set(table%ptr, mu, mu_w, s0), &
+         'pressridge_ridge_table_friction_set', ierr)
+    set = int(s0) + 1
+  end subroutine pressridge_ridge_table_friction_set
 
   !> Releases a ridging lookup table.
   subroutine pressridge_ridge_table_free(table)

@@ -672,14 +672,42 @@ int32_t pressridge_run_summary_value(const struct PressridgeRun *run,
 int32_t pressridge_run_free(struct PressridgeRun *run);
 
 // Opens a C_f table from a NetCDF file with 1-D variables `thickness` (m, strictly
-// increasing) and `cf` (dimensionless, > 0). `path` is `path_len` bytes of UTF-8 (no NUL
-// needed). On success `*table` is a new handle.
+// increasing) and `cf` (dimensionless, > 0) — a plain C_f table, or a ridging table of
+// `pressridge tabulate`, of which it takes the C_f at the default friction μ = 1.0,
+// μ_w = 0.6 ([`pressridge_cf_table_open_at_friction`] chooses another). `path` is
+// `path_len` bytes of UTF-8 (no NUL needed). On success `*table` is a new handle.
 //
 // # Safety
 // `path` must be valid for `path_len` bytes; `table` valid for one write.
 int32_t pressridge_cf_table_open(const char *path,
                                  int64_t path_len,
                                  struct PressridgeCfTable **table);
+
+// Opens the C_f at friction `mu` (between blocks above the water line) and `mu_w` (below
+// it; both dimensionless) of a ridging table written by `pressridge tabulate`: the set with
+// that friction pair (equal to 1e-9), or [`super::PRESSRIDGE_ERR_NOT_FOUND`] with a message
+// listing the pairs the table has. A plain C_f table is accepted only when its `cf`
+// attributes `mu`, `mu_w` say it is for that pair. The handle remembers the pair
+// ([`pressridge_cf_table_friction`]).
+//
+// # Safety
+// `path` must be valid for `path_len` bytes; `table` valid for one write.
+int32_t pressridge_cf_table_open_at_friction(const char *path,
+                                             int64_t path_len,
+                                             double mu,
+                                             double mu_w,
+                                             struct PressridgeCfTable **table);
+
+// The friction pair a C_f table is for, μ into `*mu` and μ_w into `*mu_w`
+// (dimensionless), and into `*known` 1 — or NaN, NaN and 0 when the table does not say
+// (a table from nodes, or a plain file without `mu`, `mu_w` attributes).
+//
+// # Safety
+// `table` must be a live handle; `mu`, `mu_w`, `known` valid for one write each.
+int32_t pressridge_cf_table_friction(const struct PressridgeCfTable *table,
+                                     double *mu,
+                                     double *mu_w,
+                                     int32_t *known);
 
 // A C_f table from `n` nodes: `thickness` (m, finite, strictly increasing) and `cf`
 // (dimensionless, finite, > 0). On success `*table` is a new handle.
@@ -825,6 +853,17 @@ int32_t pressridge_ridge_table_cf(const struct PressridgeRidgeTable *table,
 int32_t pressridge_ridge_table_cf_table(const struct PressridgeRidgeTable *table,
                                         int64_t set,
                                         struct PressridgeCfTable **cf_table);
+
+// The 0-based set of a ridging table at friction `mu`, `mu_w` (dimensionless, equal to
+// 1e-9) into `*set`; [`super::PRESSRIDGE_ERR_NOT_FOUND`] when no set has that pair (the
+// message lists those it has) or the table has no friction coordinates.
+//
+// # Safety
+// `table` must be a live handle; `set` valid for one write.
+int32_t pressridge_ridge_table_friction_set(const struct PressridgeRidgeTable *table,
+                                            double mu,
+                                            double mu_w,
+                                            int64_t *set);
 
 // Releases a ridging lookup table handle (null is accepted and ignored).
 //

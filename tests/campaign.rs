@@ -449,3 +449,136 @@ fn shipped_specs_plan_the_papers_sets() {
         assert!((u * p.scene.duration - 100.0).abs() < 1e-9);
     }
 }
+
+/// Two campaigns tabulated into one table (issue 14): a thickness set at the default
+/// friction and a friction set at one thickness. Sets are found from the scenes, the run
+/// both campaigns made is counted once, each set carries its friction pair as coordinates,
+/// and the strength command takes C_f at the friction asked for — or refuses, naming the
+/// pairs the table has.
+#[test]
+fn friction_is_chosen_by_its_value_across_campaigns() {
+    let dir = common::scratch("friction-table");
+    let thick = dir.join("thickness.toml");
+    std::fs::write(&thick, SPEC.replace("seeds = 2", "seeds = 1")).unwrap();
+    let fric = dir.join("friction.toml");
+    std::fs::write(
+        &fric,
+        r#"
+name = "tinyfriction"
+seeds = 1
+sample_interval = 1.0
+set = ["duration=3.0", "sheet.length=8.0", "sheet.thickness=0.25", "sheet.block_width=0.25"]
+
+[[axis]]
+key = "contact.mu"
+values = [0.6, 1.0]
+"#,
+    )
+    .unwrap();
+    for (spec, out) in [(&thick, "a"), (&fric, "b")] {
+        common::succeeds(
+            &bin()
+                .args(["campaign", "--threads", "2", "--quiet", "--spec"])
+                .arg(spec)
+                .arg("--out")
+                .arg(dir.join(out))
+                .output()
+                .unwrap(),
+        );
+    }
+    let table = dir.join("t.nc");
+    let res = bin()
+        .arg("tabulate")
+        .arg("--campaign")
+        .arg(dir.join("a"))
+        .arg("--campaign")
+        .arg(dir.join("b"))
+        .arg("--out")
+        .arg(&table)
+        .args(["--points", "5"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&res.stderr).to_string();
+    common::succeeds(&res);
+    assert!(
+        err.contains("1 runs were in more than one campaign"),
+        "{err}"
+    );
+
+    let nc = netcdf::open(&table).unwrap();
+    let get = |v: &str| -> Vec<f64> { nc.variable(v).unwrap().get_values(..).unwrap() };
+    assert_eq!(get("mu"), vec![1.0, 0.6]);
+    assert_eq!(get("mu_w"), vec![0.6, 0.6]);
+    assert_eq!(get("thickness"), vec![0.25, 0.35]);
+    // Runs behind C_f: set 0 has both thicknesses (the shared 0.25 m run once), set 1 only
+    // 0.25 m; its C_f at 0.35 m is missing, not copied from the other set.
+    assert_eq!(get("cf_runs"), vec![1.0, 1.0, 1.0, 0.0]);
+    let cf_by_set = get("cf_by_set");
+    assert!(cf_by_set[3].is_nan());
+    assert_eq!(get("cf"), cf_by_set[..2].to_vec());
+    let attr = |v: &str, a: &str| nc.variable(v).unwrap().attribute_value(a).unwrap().unwrap();
+    assert_eq!(attr("cf", "mu"), netcdf::AttributeValue::Double(1.0));
+    assert_eq!(
+        attr("cf_by_set", "coordinates"),
+        netcdf::AttributeValue::Str("mu mu_w".into())
+    );
+    drop(nc);
+
+    let lut = pressridge::table::lookup::RidgeLookup::open(&table).unwrap();
+    assert_eq!(lut.friction_set(0.6, 0.6).unwrap(), 1);
+    let low = lut.cf_table_at_friction(0.6, 0.6).unwrap();
+    assert_eq!(
+        (low.thickness(), low.values()),
+        (&[0.25][..], &cf_by_set[2..3])
+    );
+    assert_eq!(low.friction(), Some((0.6, 0.6)));
+    let e = lut.friction_set(0.4, 0.3).unwrap_err().to_string();
+    assert!(
+        e.contains("mu = 0.4, mu_w = 0.3") && e.contains("(1, 0.6), (0.6, 0.6)"),
+        "{e}"
+    );
+
+    let sample = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data/sample_itd.nc");
+    let strength = |extra: &[&str], out: &str| {
+        bin()
+            .arg("strength")
+            .arg("--input")
+            .arg(&sample)
+            .arg("--output")
+            .arg(dir.join(out))
+            .arg("--cf-table")
+            .arg(&table)
+            .args(extra)
+            .output()
+            .unwrap()
+    };
+    for (extra, out, want) in [
+        (&[][..], "p_default.nc", "mu = 1, mu_w = 0.6"),
+        (
+            &["--friction", "0.6,0.6"][..],
+            "p_low.nc",
+            "mu = 0.6, mu_w = 0.6",
+        ),
+    ] {
+        common::succeeds(&strength(extra, out));
+        let nc = netcdf::open(dir.join(out)).unwrap();
+        let cf = match nc.attribute("cf").unwrap().value().unwrap() {
+            netcdf::AttributeValue::Str(s) => s,
+            other => panic!("{other:?}"),
+        };
+        assert!(cf.contains(want), "{out}: cf = {cf}");
+    }
+    common::fails_with(
+        &strength(&["--friction", "0.4,0.3"], "p_none.nc"),
+        &["mu = 0.4, mu_w = 0.3", "(1, 0.6), (0.6, 0.6)"],
+    );
+    assert!(!dir.join("p_none.nc").exists());
+    let res = strength(&["--friction", "1.0"], "p_bad.nc");
+    assert_eq!(
+        res.status.code(),
+        Some(2),
+        "a malformed --friction is a usage error"
+    );
+    assert!(String::from_utf8_lossy(&res.stderr).contains("MU,MU_W"));
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -22,9 +22,9 @@ program test_pressridge
   type(pressridge_ridge_table) :: rt
   type(pressridge_run) :: run
   character(len=:), allocatable :: s
-  real(c_double) :: x, y
+  real(c_double) :: x, y, z
   real(c_double), allocatable :: th(:), cf(:), vol(:)
-  logical :: clamped
+  logical :: clamped, known
   integer :: ns, nh, nv, nf
 
   call get_command_argument(1, sample)
@@ -259,14 +259,29 @@ program test_pressridge
   call pressridge_ridge_table_open(trim(dir)//'/ridge_table.nc', rt, e)
   call check('ridging table opens', e == PRESSRIDGE_OK)
   call pressridge_ridge_table_dims(rt, ns, nh, nv, nf)
-  call check('ridging table dims', ns == 2 .and. nh == 3 .and. nv == 2 .and. nf == 2)
+  call check('ridging table dims', ns == 2 .and. nh == 3 .and. nv == 2 .and. nf == 4)
   call pressridge_ridge_table_axes(rt, th, vol)
   call check('ridging table axes', all(th == [0.2_c_double, 0.3_c_double, 0.45_c_double]) .and. &
        all(vol == [0.0_c_double, 10.0_c_double]))
   call pressridge_ridge_table_set_name(rt, 2, s)
   call check('set names', s == 'contact.mu=0.5')
-  call pressridge_ridge_table_variable_name(rt, 2, s)
+  call pressridge_ridge_table_variable_name(rt, 4, s)
   call check('variable names', s == 'work_mean')
+  call pressridge_ridge_table_friction_set(rt, 0.5_c_double, 0.6_c_double, i)
+  call check('set by friction', i == 2)
+  call pressridge_ridge_table_friction_set(rt, 0.4_c_double, 0.3_c_double, i, e)
+  call check('no set at that friction: PRESSRIDGE_ERR_NOT_FOUND', e == PRESSRIDGE_ERR_NOT_FOUND &
+       .and. index(pressridge_last_error_message(), '(1, 0.6), (0.5, 0.6)') > 0)
+  call pressridge_cf_table_open_at_friction(trim(dir)//'/ridge_table.nc', 0.5_c_double, &
+       0.6_c_double, cft, e)
+  call pressridge_cf_table_lookup(cft, 0.45_c_double, y)
+  call pressridge_cf_table_friction(cft, x, z, known)
+  call check('C_f at a friction', e == PRESSRIDGE_OK .and. y == 8.0_c_double .and. known .and. &
+       x == 0.5_c_double .and. z == 0.6_c_double)
+  call pressridge_cf_table_free(cft)
+  call pressridge_cf_table_open_at_friction(trim(dir)//'/ridge_table.nc', 0.5_c_double, &
+       -1.0_c_double, cft, e)
+  call check('negative mu_w: PRESSRIDGE_ERR_BAD_VALUE', e == PRESSRIDGE_ERR_BAD_VALUE)
   call pressridge_ridge_table_value(rt, 'work_mean', 2, 0.3_c_double, 5.0_c_double, x, clamped)
   call check('table value interpolates', x == 8500.0_c_double .and. .not. clamped)
   call pressridge_ridge_table_value(rt, 'nope', 1, 0.3_c_double, 5.0_c_double, x, ierr=e)

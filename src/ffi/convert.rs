@@ -77,6 +77,7 @@ impl From<LookupError> for FfiError {
             LookupError::Set { .. } => PRESSRIDGE_ERR_BAD_VALUE,
             LookupError::NotFinite { .. } => PRESSRIDGE_ERR_NOT_FINITE,
             LookupError::Invalid(_) => PRESSRIDGE_ERR_BAD_VALUE,
+            LookupError::Friction { .. } | LookupError::NoFriction => PRESSRIDGE_ERR_NOT_FOUND,
         };
         FfiError::new(code, e.to_string())
     }

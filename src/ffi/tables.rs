@@ -10,7 +10,7 @@ use super::{
     FfiError, FfiResult, PRESSRIDGE_ERR_BAD_SIZE, PRESSRIDGE_ERR_BAD_VALUE, guard, put, read_path,
     read_string, write_string,
 };
-use crate::io::itd_netcdf::read_cf_table;
+use crate::io::itd_netcdf::read_cf_table_at_friction;
 use crate::itd::{CfProvider, CfTable};
 use crate::table::lookup::RidgeLookup;
 
@@ -71,8 +71,10 @@ unsafe fn copy_out(src: &[f64], dst: *mut f64, len: i64, what: &str) -> FfiResul
 }
 
 /// Opens a C_f table from a NetCDF file with 1-D variables `thickness` (m, strictly
-/// increasing) and `cf` (dimensionless, > 0). `path` is `path_len` bytes of UTF-8 (no NUL
-/// needed). On success `*table` is a new handle.
+/// increasing) and `cf` (dimensionless, > 0) — a plain C_f table, or a ridging table of
+/// `pressridge tabulate`, of which it takes the C_f at the default friction μ = 1.0,
+/// μ_w = 0.6 ([`pressridge_cf_table_open_at_friction`] chooses another). `path` is
+/// `path_len` bytes of UTF-8 (no NUL needed). On success `*table` is a new handle.
 ///
 /// # Safety
 /// `path` must be valid for `path_len` bytes; `table` valid for one write.
@@ -86,9 +88,73 @@ pub unsafe extern "C" fn pressridge_cf_table_open(
     guard(|| unsafe {
         check_ptr(table, "table")?;
         let p = read_path(path, path_len, "path")?;
-        let t = read_cf_table(Path::new(p))?;
+        let t = read_cf_table_at_friction(Path::new(p), None)?;
         let h = Box::into_raw(Box::new(PressridgeCfTable { table: Arc::new(t) }));
         put(table, h, "table")
+    })
+}
+
+/// Checks a friction coefficient given through the C ABI (dimensionless, finite, ≥ 0).
+fn friction_arg(x: f64, name: &str) -> FfiResult<f64> {
+    if x.is_finite() && x >= 0.0 {
+        Ok(x)
+    } else {
+        Err(FfiError::new(
+            PRESSRIDGE_ERR_BAD_VALUE,
+            format!("{name} = {x}: a friction coefficient must be finite and non-negative"),
+        ))
+    }
+}
+
+/// Opens the C_f at friction `mu` (between blocks above the water line) and `mu_w` (below
+/// it; both dimensionless) of a ridging table written by `pressridge tabulate`: the set with
+/// that friction pair (equal to 1e-9), or [`super::PRESSRIDGE_ERR_NOT_FOUND`] with a message
+/// listing the pairs the table has. A plain C_f table is accepted only when its `cf`
+/// attributes `mu`, `mu_w` say it is for that pair. The handle remembers the pair
+/// ([`pressridge_cf_table_friction`]).
+///
+/// # Safety
+/// `path` must be valid for `path_len` bytes; `table` valid for one write.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pressridge_cf_table_open_at_friction(
+    path: *const c_char,
+    path_len: i64,
+    mu: f64,
+    mu_w: f64,
+    table: *mut *mut PressridgeCfTable,
+) -> i32 {
+    // SAFETY: pointers checked before use; validity is the caller's promise.
+    guard(|| unsafe {
+        check_ptr(table, "table")?;
+        let p = read_path(path, path_len, "path")?;
+        let friction = (friction_arg(mu, "mu")?, friction_arg(mu_w, "mu_w")?);
+        let t = read_cf_table_at_friction(Path::new(p), Some(friction))?;
+        let h = Box::into_raw(Box::new(PressridgeCfTable { table: Arc::new(t) }));
+        put(table, h, "table")
+    })
+}
+
+/// The friction pair a C_f table is for, μ into `*mu` and μ_w into `*mu_w`
+/// (dimensionless), and into `*known` 1 — or NaN, NaN and 0 when the table does not say
+/// (a table from nodes, or a plain file without `mu`, `mu_w` attributes).
+///
+/// # Safety
+/// `table` must be a live handle; `mu`, `mu_w`, `known` valid for one write each.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pressridge_cf_table_friction(
+    table: *const PressridgeCfTable,
+    mu: *mut f64,
+    mu_w: *mut f64,
+    known: *mut i32,
+) -> i32 {
+    // SAFETY: as above.
+    guard(|| unsafe {
+        let t = handle(table, "table")?;
+        let f = t.table.friction();
+        let (a, b) = f.unwrap_or((f64::NAN, f64::NAN));
+        put(mu, a, "mu")?;
+        put(mu_w, b, "mu_w")?;
+        put(known, i32::from(f.is_some()), "known")
     })
 }
 
@@ -414,6 +480,30 @@ pub unsafe extern "C" fn pressridge_ridge_table_cf_table(
         let c = t.table.cf_table(s)?;
         let h = Box::into_raw(Box::new(PressridgeCfTable { table: Arc::new(c) }));
         put(cf_table, h, "cf_table")
+    })
+}
+
+/// The 0-based set of a ridging table at friction `mu`, `mu_w` (dimensionless, equal to
+/// 1e-9) into `*set`; [`super::PRESSRIDGE_ERR_NOT_FOUND`] when no set has that pair (the
+/// message lists those it has) or the table has no friction coordinates.
+///
+/// # Safety
+/// `table` must be a live handle; `set` valid for one write.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pressridge_ridge_table_friction_set(
+    table: *const PressridgeRidgeTable,
+    mu: f64,
+    mu_w: f64,
+    set: *mut i64,
+) -> i32 {
+    // SAFETY: as above.
+    guard(|| unsafe {
+        let t = handle(table, "table")?;
+        check_ptr(set, "set")?;
+        let s = t
+            .table
+            .friction_set(friction_arg(mu, "mu")?, friction_arg(mu_w, "mu_w")?)?;
+        put(set, s as i64, "set")
     })
 }
 

@@ -951,6 +951,61 @@ fn check_volume_range(path: &Path, g: &ItdGrid) -> Result<(), NetcdfError> {
     Ok(())
 }
 
+/// Reads the C_f at a friction pair (μ, μ_w; dimensionless) from `path`: from a ridging
+/// table of `pressridge tabulate` (with coordinates `mu(set)`, `mu_w(set)`), the set at
+/// `friction`, by default [`crate::table::tabulate::DEFAULT_FRICTION`] (μ = 1.0, μ_w = 0.6,
+/// Hopkins 1994's thickness set); from a plain C_f table (1-D `thickness`, `cf`), its one
+/// curve, labelled with the friction of the `cf` attributes `mu`, `mu_w` when present. A
+/// friction asked for that the file does not have, or cannot vouch for, is an error naming
+/// the pairs it has: C_f is never taken at another friction than the one asked for.
+pub fn read_cf_table_at_friction(
+    path: &Path,
+    friction: Option<(f64, f64)>,
+) -> Result<CfTable, NetcdfError> {
+    let err = |msg: String| NetcdfError::Value {
+        path: path.to_path_buf(),
+        var: "mu".into(),
+        msg,
+    };
+    let has_sets = {
+        let file = netcdf::open(path).map_err(nc_err(path))?;
+        file.variable("cf_by_set").is_some() && file.variable("mu").is_some()
+    };
+    if has_sets {
+        let (mu, mu_w) = friction.unwrap_or(crate::table::tabulate::DEFAULT_FRICTION);
+        let t = crate::table::lookup::RidgeLookup::open(path)?;
+        return t
+            .cf_table_at_friction(mu, mu_w)
+            .map_err(|e| err(e.to_string()));
+    }
+    let table = read_cf_table(path)?;
+    let own = {
+        let file = netcdf::open(path).map_err(nc_err(path))?;
+        let v = file.variable("cf");
+        let get = |a: &str| match v.as_ref().and_then(|v| v.attribute_value(a)) {
+            Some(Ok(netcdf::AttributeValue::Double(x))) => Some(x),
+            _ => None,
+        };
+        get("mu").zip(get("mu_w"))
+    };
+    match (friction, own) {
+        (None, None) => Ok(table),
+        (_, Some((a, b))) => {
+            if let Some((mu, mu_w)) = friction
+                && ((a - mu).abs() > 1e-9 || (b - mu_w).abs() > 1e-9)
+            {
+                return Err(err(format!(
+                    "the C_f table is for friction mu = {a}, mu_w = {b}, not the mu = {mu}, mu_w = {mu_w} asked for"
+                )));
+            }
+            Ok(table.with_friction(a, b))
+        }
+        (Some((mu, mu_w)), None) => Err(err(format!(
+            "a plain C_f table without friction coordinates cannot give C_f at mu = {mu}, mu_w = {mu_w}; use a ridging table of `pressridge tabulate`"
+        ))),
+    }
+}
+
 /// Reads a C_f table: 1-D variables `thickness` (m) and `cf` (dimensionless) of equal
 /// length, thickness strictly increasing. See [`CfTable`] for interpolation and clamping.
 pub fn read_cf_table(path: &Path) -> Result<CfTable, NetcdfError> {

@@ -1,9 +1,15 @@
 //! The ridging lookup table as NetCDF (CF-1.8 conventions, 64-bit-offset format, NaN marks
 //! cells that no run reached).
 //!
-//! Dimensions `set`, `thickness` (m), `volume` (m³/m). The 1-D variables `thickness` and `cf`
-//! (the first set's C_f per thickness) make the file usable directly as a `--cf-table` of
-//! `pressridge strength`; `cf_by_set(set, thickness)` holds every set's.
+//! Dimensions `set`, `thickness` (m), `volume` (m³/m). Each set's friction pair is in the
+//! coordinate variables `mu(set)` and `mu_w(set)` (units "1"), named in the `coordinates`
+//! attribute of every variable on `set`: a host model chooses C_f by friction, not by index
+//! (the sets need not form a full μ × μ_w × thickness grid — the paper ran its friction set
+//! at one thickness — so they stay a list). The 1-D variables `thickness` and `cf` (the C_f
+//! of the set at μ = 1.0, μ_w = 0.6, else of the first set; its attributes `mu` and `mu_w`
+//! say which) make the file usable directly as a plain C_f table; `cf_by_set(set,
+//! thickness)` holds every set's, with `cf_std`, `cf_conf_lo`, `cf_conf_hi` (95 % confidence
+//! interval of the mean) and `cf_runs`.
 
 use super::itd_netcdf::NetcdfError;
 use crate::table::tabulate::RidgeTable;
@@ -87,7 +93,22 @@ fn write_ridge_table_at(
     let s2: &[&str] = &["set", "thickness"];
     let sv: &[&str] = &["set", "volume"];
     let s1: &[&str] = &["set"];
+    let ds = t.default_set();
     let vars: Vec<Var> = vec![
+        (
+            "mu",
+            s1,
+            "1",
+            "friction coefficient between ice blocks above the water line",
+            t.mu.clone(),
+        ),
+        (
+            "mu_w",
+            s1,
+            "1",
+            "friction coefficient between ice blocks below the water line",
+            t.mu_w.clone(),
+        ),
         (
             "thickness",
             &["thickness"],
@@ -213,11 +234,39 @@ fn write_ridge_table_at(
             flat2(&t.cf),
         ),
         (
+            "cf_std",
+            s2,
+            "1",
+            "sample standard deviation of the runs' final work over potential energy change",
+            flat2(&t.cf_std),
+        ),
+        (
+            "cf_conf_lo",
+            s2,
+            "1",
+            "lower end of the 95 % confidence interval of cf_by_set (Student t)",
+            t.cf_conf.iter().flatten().map(|c| c.0).collect(),
+        ),
+        (
+            "cf_conf_hi",
+            s2,
+            "1",
+            "upper end of the 95 % confidence interval of cf_by_set (Student t)",
+            t.cf_conf.iter().flatten().map(|c| c.1).collect(),
+        ),
+        (
+            "cf_runs",
+            s2,
+            "1",
+            "number of runs behind cf_by_set",
+            t.cf_runs.iter().flatten().map(|&n| f64::from(n)).collect(),
+        ),
+        (
             "cf",
             &["thickness"],
             "1",
-            "C_f of the first set: ratio of ridging work to potential energy change",
-            t.cf[0].clone(),
+            "C_f at the friction of the attributes mu and mu_w: ratio of ridging work to potential energy change",
+            t.cf[ds].clone(),
         ),
         (
             "pooled_work_a",
@@ -309,6 +358,13 @@ fn write_ridge_table_at(
         v.put_attribute("units", *units).map_err(&e)?;
         v.put_attribute("long_name", *long).map_err(&e)?;
         v.put_attribute("_FillValue", f64::NAN).map_err(&e)?;
+        if dims.first() == Some(&"set") && !matches!(*name, "mu" | "mu_w") {
+            v.put_attribute("coordinates", "mu mu_w").map_err(&e)?;
+        }
+        if *name == "cf" {
+            v.put_attribute("mu", t.mu[ds]).map_err(&e)?;
+            v.put_attribute("mu_w", t.mu_w[ds]).map_err(&e)?;
+        }
     }
     f.add_attribute("Conventions", "CF-1.8").map_err(&e)?;
     f.add_attribute(

@@ -77,6 +77,7 @@ pub trait CfProvider: Send + Sync + std::fmt::Debug {
 pub struct CfTable {
     thickness: Vec<f64>,
     cf: Vec<f64>,
+    friction: Option<(f64, f64)>,
 }
 
 impl CfTable {
@@ -103,7 +104,24 @@ impl CfTable {
                 "cf[{i}] = {c} is not finite and positive"
             )));
         }
-        Ok(Self { thickness, cf })
+        Ok(Self {
+            thickness,
+            cf,
+            friction: None,
+        })
+    }
+
+    /// The same table labelled with the friction pair of the simulations behind it: μ above
+    /// and μ_w below the water line (dimensionless). Shown by [`Cf::describe`], so every
+    /// output that records its C_f says which friction it assumed.
+    pub fn with_friction(mut self, mu: f64, mu_w: f64) -> Self {
+        self.friction = Some((mu, mu_w));
+        self
+    }
+
+    /// The friction pair (μ, μ_w) of the table (dimensionless), when known.
+    pub fn friction(&self) -> Option<(f64, f64)> {
+        self.friction
     }
 
     /// Node thicknesses (m).
@@ -173,10 +191,14 @@ impl Cf {
         match self {
             Cf::Constant(c) => format!("constant {c}"),
             Cf::Table(t) => format!(
-                "table of {} nodes, thickness {} to {} m",
+                "table of {} nodes, thickness {} to {} m{}",
                 t.thickness.len(),
                 t.thickness[0],
-                t.thickness[t.thickness.len() - 1]
+                t.thickness[t.thickness.len() - 1],
+                match t.friction {
+                    Some((mu, mu_w)) => format!(", friction mu = {mu}, mu_w = {mu_w}"),
+                    None => String::new(),
+                }
             ),
             Cf::Custom(p) => format!("custom provider {p:?}"),
         }

@@ -158,6 +158,23 @@ pub enum LookupError {
     /// The table itself is inconsistent.
     #[error("invalid ridging table: {0}")]
     Invalid(String),
+    /// No set of the table has the friction pair asked for.
+    #[error(
+        "the table has no set at friction mu = {mu}, mu_w = {mu_w} (it has: {known}); tabulate runs at that friction (pressridge campaign, then tabulate) or choose one of these"
+    )]
+    Friction {
+        /// μ asked for (dimensionless).
+        mu: f64,
+        /// μ_w asked for (dimensionless).
+        mu_w: f64,
+        /// The pairs the table has.
+        known: String,
+    },
+    /// The table has no friction coordinates (it was made before they were written).
+    #[error(
+        "the table has no friction coordinates mu(set), mu_w(set): it was made by an older pressridge; re-run `pressridge tabulate` on its campaign to choose C_f by friction"
+    )]
+    NoFriction,
 }
 
 /// A ridging lookup table: fields on (set, thickness, volume) with interpolation.
@@ -244,6 +261,39 @@ impl RidgeLookup {
     /// Thickness axis (m).
     pub fn thickness(&self) -> &[f64] {
         &self.thickness
+    }
+
+    /// The friction pair (μ, μ_w) of each set (dimensionless), from the coordinate variables
+    /// `mu(set)` and `mu_w(set)`; `None` for a table made before they were written.
+    pub fn friction(&self) -> Option<Vec<(f64, f64)>> {
+        let (mu, mu_w) = (self.fields.get("mu")?, self.fields.get("mu_w")?);
+        if mu.axes != Axes::SET || mu_w.axes != Axes::SET {
+            return None;
+        }
+        Some(
+            mu.data
+                .iter()
+                .copied()
+                .zip(mu_w.data.iter().copied())
+                .collect(),
+        )
+    }
+
+    /// The set at friction μ = `mu`, μ_w = `mu_w` (dimensionless; equal to 1e-9).
+    pub fn friction_set(&self, mu: f64, mu_w: f64) -> Result<usize, LookupError> {
+        let pairs = self.friction().ok_or(LookupError::NoFriction)?;
+        pairs
+            .iter()
+            .position(|&(a, b)| (a - mu).abs() <= 1e-9 && (b - mu_w).abs() <= 1e-9)
+            .ok_or_else(|| LookupError::Friction {
+                mu,
+                mu_w,
+                known: pairs
+                    .iter()
+                    .map(|(a, b)| format!("({a}, {b})"))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+            })
     }
 
     /// Volume axis (m³/m).
@@ -339,8 +389,14 @@ impl RidgeLookup {
         })
     }
 
+    /// The C_f at friction (`mu`, `mu_w`) as a [`CfTable`] for the strength routine:
+    /// [`RidgeLookup::friction_set`], then [`RidgeLookup::cf_table`].
+    pub fn cf_table_at_friction(&self, mu: f64, mu_w: f64) -> Result<CfTable, LookupError> {
+        self.cf_table(self.friction_set(mu, mu_w)?)
+    }
+
     /// The C_f of set `set` as a [`CfTable`] for the strength routine (the thicknesses where
-    /// C_f is finite and positive).
+    /// C_f is finite and positive), labelled with the set's friction when the table has it.
     pub fn cf_table(&self, set: usize) -> Result<CfTable, LookupError> {
         let f = self
             .fields
@@ -364,7 +420,11 @@ impl RidgeLookup {
             .filter(|(_, c)| c.is_finite() && **c > 0.0)
             .map(|(&h, &c)| (h, c))
             .unzip();
-        CfTable::new(h, c).map_err(|e| LookupError::Invalid(e.to_string()))
+        let t = CfTable::new(h, c).map_err(|e| LookupError::Invalid(e.to_string()))?;
+        Ok(match self.friction() {
+            Some(pairs) => t.with_friction(pairs[set].0, pairs[set].1),
+            None => t,
+        })
     }
 }
 

@@ -1,7 +1,13 @@
 //! From campaign records to a lookup table of ridging energetics (Hopkins 1994, eqs 13–17).
 //!
-//! Runs are grouped into *sets* by their grid settings other than the sheet thickness (and
-//! the block width tied to it), e.g. one set per friction pair. Within a set:
+//! Runs are grouped into *sets* by their resolved scenes: two runs are in one set when their
+//! scenes agree in everything but the sheet thickness, the block width tied to it, the seed
+//! and the name — e.g. one set per friction pair. Runs of several campaigns can be tabulated
+//! together (the thickness set and the friction set share their μ = 1.0, μ_w = 0.6 runs at
+//! 0.30 m); a run met twice (same set, thickness and seed, hence the same scene and, by
+//! determinism, the same result) is counted once. Each set carries its friction pair
+//! ([`RidgeTable::mu`], [`RidgeTable::mu_w`]), the coordinates by which host models choose
+//! a set. Within a set:
 //!
 //! - every run's samples (W, ΔPE, mean force against ridged volume V = U·h·t) are
 //!   interpolated linearly onto a common volume grid, within the volumes the run reached; the
@@ -12,10 +18,11 @@
 //!   standard errors and 95 % confidence and prediction bands of the pooled work curve; the
 //!   force of eq (15) and the ratio dW/dPE of eq (16) follow from the pooled fits;
 //! - C_f per thickness is the ensemble mean of the runs' final W/ΔPE: the ratio the strength
-//!   routine multiplies the potential-energy term by.
+//!   routine multiplies the potential-energy term by, with its sample standard deviation and
+//!   the 95 % confidence interval of the mean (Student t, n − 1 degrees of freedom).
 
 use super::ensemble::{Stat, dissipation_violation};
-use super::fit::{Band, FitError, QuadFit, fit_through_origin, force, ratio};
+use super::fit::{Band, FitError, QuadFit, fit_through_origin, force, ratio, student_t_quantile};
 use crate::campaign::RunRecord;
 
 /// The fits of one group of samples (J/m against m³/m).
@@ -30,8 +37,13 @@ pub struct SetFits {
 /// A tabulated campaign.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RidgeTable {
-    /// Set labels (the settings other than thickness, `key=value` joined by `, `).
+    /// Set labels: the friction pair, then the first run's other settings than thickness
+    /// (`key=value` joined by `, `).
     pub sets: Vec<String>,
+    /// Friction coefficient above the water line μ of each set (dimensionless).
+    pub mu: Vec<f64>,
+    /// Friction coefficient below the water line μ_w of each set (dimensionless).
+    pub mu_w: Vec<f64>,
     /// Sheet thicknesses (m).
     pub thickness: Vec<f64>,
     /// Ridged-volume grid (m³/m).
@@ -61,13 +73,42 @@ pub struct RidgeTable {
     pub force_fit: Vec<Vec<Vec<f64>>>,
     /// dW/dPE of eq (16) from the pooled fits, `[set][volume]`.
     pub ratio_fit: Vec<Vec<f64>>,
-    /// C_f = mean final W/ΔPE per set and thickness.
+    /// C_f = mean final W/ΔPE per set and thickness (dimensionless).
     pub cf: Vec<Vec<f64>>,
+    /// Sample standard deviation of the final W/ΔPE over the runs (dimensionless).
+    pub cf_std: Vec<Vec<f64>>,
+    /// Lower and upper ends of the 95 % confidence interval of C_f (Student t on the runs'
+    /// final W/ΔPE; NaN with fewer than two runs).
+    pub cf_conf: Vec<Vec<(f64, f64)>>,
+    /// Runs behind each C_f.
+    pub cf_runs: Vec<Vec<u32>>,
     /// Seeds used.
     pub seeds: Vec<u64>,
     /// Runs left out, with the reason: those whose dissipation went negative
     /// ([`super::ensemble::dissipation_violation`]).
     pub excluded: Vec<(String, String)>,
+    /// Runs met twice (another campaign's record of the same set, thickness and seed),
+    /// counted once: (id left out, id kept).
+    pub duplicates: Vec<(String, String)>,
+}
+
+/// The friction pair of Hopkins (1994)'s thickness set and of CICE's ridging energetics
+/// default in this crate: μ = 1.0 above and μ_w = 0.6 below the water line.
+pub const DEFAULT_FRICTION: (f64, f64) = (1.0, 0.6);
+
+impl RidgeTable {
+    /// The set at friction (`mu`, `mu_w`) (dimensionless; equal to 1e-9), if any.
+    pub fn friction_set(&self, mu: f64, mu_w: f64) -> Option<usize> {
+        (0..self.sets.len())
+            .find(|&s| (self.mu[s] - mu).abs() <= 1e-9 && (self.mu_w[s] - mu_w).abs() <= 1e-9)
+    }
+
+    /// The set behind the table's 1-D `cf` (the file read as a plain C_f table): the one at
+    /// [`DEFAULT_FRICTION`] when there is one, else the first.
+    pub fn default_set(&self) -> usize {
+        self.friction_set(DEFAULT_FRICTION.0, DEFAULT_FRICTION.1)
+            .unwrap_or(0)
+    }
 }
 
 /// Errors of tabulation.
@@ -83,6 +124,10 @@ pub enum TabulateError {
 
 fn is_thickness_key(s: &str) -> bool {
     s.starts_with("sheet.thickness=") || s.starts_with("sheet.block_width=")
+}
+
+fn is_friction_key(s: &str) -> bool {
+    s.starts_with("contact.mu=") || s.starts_with("contact.mu_water=")
 }
 
 /// Linear interpolation of `ys(xs)` at `x` within [xs[0], xs[last]], else NaN.
@@ -120,31 +165,67 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
     if recs.is_empty() {
         return Err(TabulateError::Empty);
     }
-    let set_of = |r: &RunRecord| {
-        r.settings
-            .iter()
-            .filter(|s| !is_thickness_key(s))
-            .cloned()
-            .collect::<Vec<_>>()
-            .join(", ")
+    // A set is what the scene is apart from the thickness (and the block width tied to it),
+    // the seed and the name.
+    let set_key = |r: &RunRecord| {
+        let mut sc = r.scene.clone();
+        sc.seed = 0;
+        sc.name.clear();
+        if let Some(sh) = sc.sheet.as_mut() {
+            sh.thickness = 0.0;
+            sh.block_width = 0.0;
+        }
+        sc.to_toml()
     };
     let h_of = |r: &RunRecord| r.scene.sheet.as_ref().expect("filtered").thickness;
+    let mut keys: Vec<String> = Vec::new();
     let mut sets: Vec<String> = Vec::new();
+    let (mut mu, mut mu_w) = (Vec::new(), Vec::new());
     let mut thickness: Vec<f64> = Vec::new();
     let mut seeds: Vec<u64> = Vec::new();
-    for r in &recs {
-        let s = set_of(r);
-        if !sets.contains(&s) {
-            sets.push(s);
-        }
+    let mut duplicates = Vec::new();
+    let mut seen: Vec<(usize, u64, u64, &str)> = Vec::new();
+    let mut set_index = Vec::with_capacity(recs.len());
+    let mut kept = Vec::with_capacity(recs.len());
+    for r in recs {
+        let key = set_key(r);
+        let si = match keys.iter().position(|k| *k == key) {
+            Some(si) => si,
+            None => {
+                keys.push(key);
+                let c = &r.scene.contact;
+                let mut label = vec![format!("mu={}, mu_w={}", c.mu, c.mu_water)];
+                label.extend(
+                    r.settings
+                        .iter()
+                        .filter(|s| !is_thickness_key(s) && !is_friction_key(s))
+                        .cloned(),
+                );
+                sets.push(label.join(", "));
+                mu.push(c.mu);
+                mu_w.push(c.mu_water);
+                keys.len() - 1
+            }
+        };
         let h = h_of(r);
+        if let Some(&(.., first)) = seen
+            .iter()
+            .find(|&&(s, hb, seed, _)| s == si && hb == h.to_bits() && seed == r.seed)
+        {
+            duplicates.push((r.id.clone(), first.to_string()));
+            continue;
+        }
+        seen.push((si, h.to_bits(), r.seed, &r.id));
         if !thickness.contains(&h) {
             thickness.push(h);
         }
         if !seeds.contains(&r.seed) {
             seeds.push(r.seed);
         }
+        set_index.push(si);
+        kept.push(r);
     }
+    let recs = kept;
     thickness.sort_by(f64::total_cmp);
     seeds.sort_unstable();
     let vmax = recs
@@ -159,6 +240,8 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
     let grid = || vec![vec![vec![f64::NAN; nv]; nh]; ns];
     let mut t = RidgeTable {
         sets: sets.clone(),
+        mu,
+        mu_w,
         thickness: thickness.clone(),
         volume: volume.clone(),
         work_mean: grid(),
@@ -174,19 +257,25 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
         force_fit: grid(),
         ratio_fit: vec![vec![f64::NAN; nv]; ns],
         cf: vec![vec![f64::NAN; nh]; ns],
+        cf_std: vec![vec![f64::NAN; nh]; ns],
+        cf_conf: vec![vec![(f64::NAN, f64::NAN); nh]; ns],
+        cf_runs: vec![vec![0; nh]; ns],
         seeds,
         excluded,
+        duplicates,
     };
     let mean_std = |xs: &[f64]| -> (f64, f64) {
         let s = Stat::of(xs);
         (s.mean, s.std)
     };
-    for (si, set) in sets.iter().enumerate() {
+    for si in 0..ns {
         let (mut pv, mut pw, mut pp) = (Vec::new(), Vec::new(), Vec::new());
         for (hi, &h) in thickness.iter().enumerate() {
             let group: Vec<&&RunRecord> = recs
                 .iter()
-                .filter(|r| &set_of(r) == set && h_of(r) == h)
+                .zip(&set_index)
+                .filter(|&(r, &s)| s == si && h_of(r) == h)
+                .map(|(r, _)| r)
                 .collect();
             if group.is_empty() {
                 continue;
@@ -239,7 +328,15 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
                 }
             }
             if !finals.is_empty() {
-                t.cf[si][hi] = mean_std(&finals).0;
+                let st = Stat::of(&finals);
+                t.cf[si][hi] = st.mean;
+                t.cf_std[si][hi] = st.std;
+                t.cf_runs[si][hi] = st.n as u32;
+                if st.n > 1 {
+                    let half = student_t_quantile(0.975, (st.n - 1) as f64) * st.std
+                        / (st.n as f64).sqrt();
+                    t.cf_conf[si][hi] = (st.mean - half, st.mean + half);
+                }
             }
             if let (Ok(work), Ok(pe)) = (fit_through_origin(&fv, &fw), fit_through_origin(&fv, &fp))
             {

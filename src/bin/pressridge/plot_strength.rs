@@ -129,6 +129,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
                 cf,
                 None,
                 table,
+                None,
             )?;
             let mut p = Array1::zeros(grid.ncol());
             strength_batch_masked(

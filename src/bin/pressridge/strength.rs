@@ -6,8 +6,8 @@ use std::sync::Arc;
 use clap::ValueEnum;
 use ndarray::Array1;
 use pressridge::io::itd_netcdf::{
-    NC_FILL_DOUBLE, Output, ReadOptions, STRENGTH_META, history_line, read_cf_table, read_itd_with,
-    write_output,
+    NC_FILL_DOUBLE, Output, ReadOptions, STRENGTH_META, history_line, read_cf_table_at_friction,
+    read_itd_with, write_output,
 };
 use pressridge::io::refuse_output_over_input;
 use pressridge::itd::{
@@ -101,9 +101,15 @@ pub struct Args {
     /// Named constant C_f.
     #[arg(long, value_enum, conflicts_with = "cf_table")]
     pub cf_preset: Option<PresetArg>,
-    /// NetCDF table of C_f (`cf`) against ridging-ice thickness (`thickness`, m).
+    /// NetCDF table of C_f (`cf`) against ridging-ice thickness (`thickness`, m): a ridging
+    /// table of `pressridge tabulate` (C_f at the `--friction` pair) or a plain C_f table.
     #[arg(long)]
     pub cf_table: Option<PathBuf>,
+    /// Friction pair MU,MU_W (dimensionless: between blocks above and below the water line)
+    /// of the simulations whose C_f a `--cf-table` gives [default: 1.0,0.6, Hopkins 1994's
+    /// thickness set]. The table must hold that pair; the choice is written to the output.
+    #[arg(long, value_name = "MU,MU_W", requires = "cf_table", value_parser = parse_friction)]
+    pub friction: Option<(f64, f64)>,
     /// Override a parameter, NAME=VALUE (repeatable), e.g. `--param mu_rdg=4`; names as the
     /// fields of `pressridge::itd::ItdParams`.
     #[arg(long = "param", value_name = "NAME=VALUE")]
@@ -172,6 +178,20 @@ pub fn describe_params(list: &[String]) -> (String, String) {
     )
 }
 
+/// Parses `--friction MU,MU_W` (two finite non-negative numbers).
+pub fn parse_friction(s: &str) -> Result<(f64, f64), String> {
+    let bad = || format!("`{s}`: expected MU,MU_W, two finite non-negative numbers, e.g. 1.0,0.6");
+    let (a, b) = s.split_once(',').ok_or_else(bad)?;
+    let (mu, mu_w): (f64, f64) = (
+        a.trim().parse().map_err(|_| bad())?,
+        b.trim().parse().map_err(|_| bad())?,
+    );
+    if !(mu.is_finite() && mu_w.is_finite() && mu >= 0.0 && mu_w >= 0.0) {
+        return Err(bad());
+    }
+    Ok((mu, mu_w))
+}
+
 /// Builds the strength options from the shared flags.
 pub fn options(
     participation: PartArg,
@@ -180,9 +200,10 @@ pub fn options(
     cf: Option<f64>,
     cf_preset: Option<PresetArg>,
     cf_table: Option<&std::path::Path>,
+    friction: Option<(f64, f64)>,
 ) -> Result<StrengthOptions, BoxError> {
     let cf = if let Some(t) = cf_table {
-        Cf::Table(Arc::new(read_cf_table(t)?))
+        Cf::Table(Arc::new(read_cf_table_at_friction(t, friction)?))
     } else if let Some(p) = cf_preset {
         match p {
             PresetArg::Hibler1980 => CfPreset::Hibler1980.into(),
@@ -249,6 +270,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         args.cf,
         args.cf_preset,
         args.cf_table.as_deref(),
+        args.friction,
     )?;
     o.params = parse_params(&args.params)?;
     let mut inputs = vec![("--input", args.input.as_path())];

@@ -9,9 +9,11 @@ use std::path::PathBuf;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// Campaign result directory (from `pressridge campaign`).
-    #[arg(long)]
-    campaign: PathBuf,
+    /// Campaign result directory (from `pressridge campaign`); repeat it to tabulate several
+    /// campaigns into one table (e.g. the thickness and the friction sets). Runs are grouped
+    /// into sets by their scenes, and a run two campaigns share is counted once.
+    #[arg(long, required = true)]
+    campaign: Vec<PathBuf>,
     /// Output NetCDF table.
     #[arg(long)]
     out: PathBuf,
@@ -53,22 +55,32 @@ fn today() -> String {
 }
 
 pub fn run(a: Args) -> Result<(), BoxError> {
-    let campaign = read_campaign(&a.campaign, a.allow_partial)?;
-    if !campaign.is_complete() {
-        eprintln!(
-            "pressridge: warning: partial campaign (--allow-partial): {}",
-            campaign.describe_gaps()
-        );
+    let (mut planned, mut specs, mut records, mut gaps) = (0, Vec::new(), Vec::new(), Vec::new());
+    for dir in &a.campaign {
+        let campaign = read_campaign(dir, a.allow_partial)?;
+        if !campaign.is_complete() {
+            let g = campaign.describe_gaps();
+            eprintln!(
+                "pressridge: warning: partial campaign {} (--allow-partial): {g}",
+                dir.display()
+            );
+            gaps.push(format!("{}: {g}", dir.display()));
+        }
+        planned += campaign.planned;
+        specs.push(campaign.spec);
+        records.extend(campaign.records);
     }
-    let gaps = if campaign.is_complete() {
-        String::new()
-    } else {
-        campaign.describe_gaps()
-    };
-    let (planned, spec, records) = (campaign.planned, campaign.spec, campaign.records);
+    let spec = specs.first().cloned().ok_or("no --campaign given")?;
     let table = tabulate(&records, a.points)?;
+    let mut spec_text = String::new();
+    for s in &specs {
+        if !spec_text.is_empty() {
+            spec_text.push_str("\n# --- next campaign ---\n");
+        }
+        spec_text.push_str(&toml::to_string(s)?);
+    }
     let prov = Provenance {
-        campaign_spec: toml::to_string(&spec)?,
+        campaign_spec: spec_text,
         scene: records
             .first()
             .map(|r| r.scene.to_toml())
@@ -76,8 +88,8 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         command: std::env::args().collect::<Vec<_>>().join(" "),
         date: today(),
         runs_planned: planned,
-        runs_tabulated: records.len(),
-        gaps,
+        runs_tabulated: records.len() - table.duplicates.len(),
+        gaps: gaps.join("; "),
     };
     write_ridge_table(&a.out, &table, &prov)?;
     if let Some(dir) = &a.figures {
@@ -123,10 +135,16 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         let text = pressridge::io::report::campaign_report(&spec.name, &points, &table);
         pressridge::io::write_atomic(path, text.as_bytes())?;
     }
+    if !table.duplicates.is_empty() {
+        eprintln!(
+            "pressridge: note: {} runs were in more than one campaign and are counted once",
+            table.duplicates.len()
+        );
+    }
     println!(
         "{}: {} runs ({} left out), {} sets × {} thicknesses × {} volumes -> {}",
         spec.name,
-        records.len() - table.excluded.len(),
+        records.len() - table.excluded.len() - table.duplicates.len(),
         table.excluded.len(),
         table.sets.len(),
         table.thickness.len(),
@@ -134,9 +152,13 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         a.out.display()
     );
     for (si, set) in table.sets.iter().enumerate() {
-        let label = if set.is_empty() { "all" } else { set.as_str() };
         for (hi, h) in table.thickness.iter().enumerate() {
-            println!("  [{label}] h = {h} m: C_f = {:.2}", table.cf[si][hi]);
+            if table.cf_runs[si][hi] > 0 {
+                println!(
+                    "  [{set}] h = {h} m: C_f = {:.2} ({} runs)",
+                    table.cf[si][hi], table.cf_runs[si][hi]
+                );
+            }
         }
     }
     Ok(())
