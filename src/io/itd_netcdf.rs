@@ -967,11 +967,16 @@ pub fn read_cf_table_at_friction(
         var: "mu".into(),
         msg,
     };
-    let has_sets = {
+    let (has_sets, has_friction) = {
         let file = netcdf::open(path).map_err(nc_err(path))?;
-        file.variable("cf_by_set").is_some() && file.variable("mu").is_some()
+        (
+            file.variable("cf_by_set").is_some(),
+            file.variable("mu").is_some(),
+        )
     };
-    if has_sets {
+    // A table of `pressridge tabulate`; one made before it wrote friction coordinates is
+    // read as a plain table unless a friction is asked for (then refused, saying why).
+    if has_sets && (has_friction || friction.is_some()) {
         let (mu, mu_w) = friction.unwrap_or(crate::table::tabulate::DEFAULT_FRICTION);
         let t = crate::table::lookup::RidgeLookup::open(path)?;
         return t
