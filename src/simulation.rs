@@ -83,6 +83,12 @@ pub struct Summary {
     /// Largest overlap forgiven at a severance (m²).
     #[serde(default)]
     pub max_handover_overlap: f64,
+    /// Largest distance by which the leading edge of the intact lead sheet passed the
+    /// floe's nose, over every step (m; negative if it never reached it): the rafting
+    /// diagnostic ([`crate::table::rafting`]). Absent without a sheet and a floe, and in runs
+    /// made before it was recorded (2026-11-23).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sheet_overrun_max: Option<f64>,
     /// Length of every rubble piece at the end (m).
     pub rubble_block_lengths: Vec<f64>,
 }
@@ -181,10 +187,14 @@ pub fn run_world(
     let mut max_rel: f64 = 0.0;
     let mut work_eq9 = 0.0;
     let mut keep_going = observe(world);
+    let mut overrun = world.sheet_overrun();
     while keep_going && world.time() < scene.duration - 0.5 * world.dt() {
         world.step();
         if let Some(e) = world.fault() {
             return Err(SceneError::World(e.clone()));
+        }
+        if let (Some(o), Some(x)) = (overrun.as_mut(), world.sheet_overrun()) {
+            *o = o.max(x);
         }
         if speed > 0.0 {
             work_eq9 += speed * world.dt() * world.ridging_force();
@@ -238,6 +248,7 @@ pub fn run_world(
         blocks_broken: world.blocks_broken(),
         handover_contacts: world.handovers().count,
         max_handover_overlap: world.handovers().max_area,
+        sheet_overrun_max: overrun,
         rubble_block_lengths: rubble_lengths(world),
     };
     Ok(RunOutput {

@@ -93,6 +93,23 @@ fn tiny_campaign_is_resumable_and_complete() {
         assert!(last.work > 0.0);
         assert_eq!(r.profile.sail.len(), 32);
         assert!(out.join("runs").join(&r.id).join("state.json").is_file());
+        // The rafting diagnostic: the largest overrun over the run bounds the final one, and
+        // a sheet that breaks against the floe stays within the rafting reach.
+        let over = r.summary.sheet_overrun_max.expect("sheet and floe present");
+        let state =
+            pressridge::io::state::load_state(&out.join("runs").join(&r.id).join("state.json"))
+                .unwrap();
+        let w = pressridge::dem::World::from_snapshot(&state).unwrap();
+        let now = w.sheet_overrun().unwrap();
+        assert!(now <= over && over < 2.0, "overrun {over}, final {now}");
+        assert_eq!(
+            pressridge::table::rafting::outcome(r, 2.0),
+            pressridge::table::rafting::Outcome::Ridged
+        );
+        assert_eq!(
+            pressridge::table::rafting::outcome(r, over - 1.0),
+            pressridge::table::rafting::Outcome::Rafted(over)
+        );
     }
     // Ensemble statistics per grid point: two points of two seeds, means over the records.
     let points = pressridge::table::ensemble::summarise(&records);
@@ -157,6 +174,8 @@ fn tiny_campaign_is_resumable_and_complete() {
         "## Energy budget",
         "## Ridge metrics",
         "pooled",
+        "## Rafting",
+        "| sheet.thickness=0.25, sheet.block_width=0.25 | 0 / 2 | – |",
     ] {
         assert!(report.contains(want), "report lacks {want}:\n{report}");
     }

@@ -343,6 +343,24 @@ impl World {
         self.joints.joints()
     }
 
+    /// How far the leading edge of the intact lead sheet lies past the floe's nose (m):
+    /// the right end of the tip block's bounding box minus the left end of the floe's;
+    /// negative while the sheet is short of the floe. `None` without a sheet or a floe. A
+    /// sheet that breaks against the floe keeps this near zero; a sheet that rafts over (or
+    /// under) the floe drives it up by the length it overrides.
+    pub fn sheet_overrun(&self) -> Option<f64> {
+        let tip = *self.boundary.sheet.as_ref()?.blocks.last()?;
+        let nose = self
+            .boundary
+            .floe
+            .as_ref()?
+            .blocks
+            .iter()
+            .map(|&(id, _)| self.bodies.aabb[id as usize].min.x)
+            .reduce(f64::min)?;
+        Some(self.bodies.aabb[tip as usize].max.x - nose)
+    }
+
     /// Number of joints severed so far.
     pub fn blocks_broken(&self) -> u64 {
         self.blocks_broken

@@ -3,6 +3,7 @@
 //! the tables `docs/validation.md` quotes.
 
 use crate::table::ensemble::{PointStats, Stat};
+use crate::table::rafting::PointRafting;
 use crate::table::tabulate::RidgeTable;
 use std::fmt::Write;
 
@@ -29,8 +30,15 @@ fn slope(p: &PointStats, key: &str) -> String {
     t
 }
 
-/// The report for campaign `name`, its grid points and its table.
-pub fn campaign_report(name: &str, points: &[PointStats], table: &RidgeTable) -> String {
+/// The report for campaign `name`, its grid points, its table and the rafting of its runs
+/// at rafting reach `reach` (m; [`crate::table::rafting`]).
+pub fn campaign_report(
+    name: &str,
+    points: &[PointStats],
+    table: &RidgeTable,
+    rafting: &[PointRafting],
+    reach: f64,
+) -> String {
     let mut o = String::new();
     let runs: usize = points.iter().map(|p| p.seeds.len()).sum();
     let _ = writeln!(
@@ -111,6 +119,39 @@ pub fn campaign_report(name: &str, points: &[PointStats], table: &RidgeTable) ->
             slope(p, "keel_slope_lead"),
             slope(p, "keel_slope_floe"),
             pm(g("length_to_thickness"), 1.0, 2),
+        );
+    }
+    let _ = writeln!(
+        o,
+        "\n## Rafting\n\nA run *rafted* when the leading edge of its intact lead sheet passed the \
+         floe's nose by more than {reach} m at some step (`sheet_overrun_max`; docs/tables.md, \
+         \"Rafting\"): it slid over or under the floe instead of breaking against it. Runs made \
+         before the diagnostic existed are unknown. The statistics above include rafted runs.\n"
+    );
+    let _ = writeln!(
+        o,
+        "| point | rafted / known | rafted runs (overrun, W/ΔPE) | largest overrun of the others (m) | W/ΔPE of the others |"
+    );
+    let _ = writeln!(o, "|---|---|---|---|---|");
+    for p in rafting {
+        let runs: Vec<String> = p
+            .rafted
+            .iter()
+            .map(|(id, x, q)| format!("`{id}` ({x:.1} m, {q:.1})"))
+            .collect();
+        let _ = writeln!(
+            o,
+            "| {} | {} / {} | {} | {} | {} |",
+            p.label,
+            p.rafted.len(),
+            p.known,
+            if runs.is_empty() {
+                "–".to_string()
+            } else {
+                runs.join(", ")
+            },
+            pm(Some(p.ridged_overrun), 1.0, 2),
+            pm(Some(p.ridged_ratio), 1.0, 1),
         );
     }
     let _ = writeln!(

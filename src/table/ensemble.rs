@@ -205,8 +205,9 @@ impl PointStats {
     }
 }
 
-/// Groups `records` by their settings (in first-seen order) and summarises each group.
-pub fn summarise(records: &[RunRecord]) -> Vec<PointStats> {
+/// Groups `records` by their settings, in first-seen order: the grid points of a campaign,
+/// labelled `key=value, …` (`all` for a grid of one point).
+pub fn group_by_point(records: &[RunRecord]) -> Vec<(String, Vec<&RunRecord>)> {
     let mut groups: Vec<(String, Vec<&RunRecord>)> = Vec::new();
     for r in records {
         let label = if r.settings.is_empty() {
@@ -220,6 +221,11 @@ pub fn summarise(records: &[RunRecord]) -> Vec<PointStats> {
         }
     }
     groups
+}
+
+/// Groups `records` by their settings ([`group_by_point`]) and summarises each group.
+pub fn summarise(records: &[RunRecord]) -> Vec<PointStats> {
+    group_by_point(records)
         .into_iter()
         .map(|(label, rs)| PointStats {
             label,

@@ -6,10 +6,12 @@
 //!   (Hopkins 1994, eqs 13–16), with confidence and prediction bands;
 //! - [`tabulate`] — campaign records to a lookup table (ensemble statistics on a volume
 //!   grid, fits per thickness and pooled, C_f per thickness);
+//! - [`rafting`] — which runs rafted over the floe instead of ridging against it;
 //! - [`lookup`] — interpolation in a tabulated campaign (clamped and flagged outside its
 //!   range, NaN where no run reached), read back from NetCDF by `RidgeLookup::open`.
 
 pub mod ensemble;
 pub mod fit;
 pub mod lookup;
+pub mod rafting;
 pub mod tabulate;

@@ -34,6 +34,10 @@ pub struct Args {
     /// refused, naming the missing and inconsistent runs.
     #[arg(long)]
     allow_partial: bool,
+    /// A run counts as rafted when its intact lead sheet passed the floe's nose by more than
+    /// this (m); the report gives the rafting frequency per grid point.
+    #[arg(long, default_value_t = pressridge::table::rafting::RAFTING_REACH)]
+    rafting_reach: f64,
 }
 
 /// Today's date (UTC) as YYYY-MM-DD, from the system clock.
@@ -132,9 +136,24 @@ pub fn run(a: Args) -> Result<(), BoxError> {
             .cloned()
             .collect();
         let points = pressridge::table::ensemble::summarise(&kept);
-        let text = pressridge::io::report::campaign_report(&spec.name, &points, &table);
+        let rafting = pressridge::table::rafting::by_point(&kept, a.rafting_reach);
+        let text = pressridge::io::report::campaign_report(
+            &spec.name,
+            &points,
+            &table,
+            &rafting,
+            a.rafting_reach,
+        );
         pressridge::io::write_atomic(path, text.as_bytes())?;
     }
+    let rafting = pressridge::table::rafting::by_point(&records, a.rafting_reach);
+    let (rafted, known) = rafting
+        .iter()
+        .fold((0, 0), |(r, k), p| (r + p.rafted.len(), k + p.known));
+    println!(
+        "rafting: {rafted} of {known} runs with the diagnostic rafted (intact sheet more than {} m past the floe's nose)",
+        a.rafting_reach
+    );
     if !table.duplicates.is_empty() {
         eprintln!(
             "pressridge: note: {} runs were in more than one campaign and are counted once",
