@@ -31,7 +31,7 @@ pub use cf::{Cf, CfLookup, CfPreset, CfProvider, CfTable};
 pub use params::{ItdParams, Participation, Redistribution, StrengthFormula};
 pub use ridge_step::{
     Closing, ColumnMut, OceanFluxes, RidgeStepOptions, RidgeStepParams, SaltFlux, StepDiagnostics,
-    StepForcing, StepWorkspace, deformation_terms, percent_per_day_to_per_second,
+    StepForcing, StepParamMeta, StepWorkspace, deformation_terms, percent_per_day_to_per_second,
     ridge_step_column,
 };
 pub use ridge_step_batch::{

@@ -21,7 +21,8 @@ use pressridge::itd::{
 };
 
 use crate::BoxError;
-use crate::strength::{PartArg, RedistArg, check_finite, describe_params, parse_params};
+use crate::strength::{PartArg, RedistArg, check_finite};
+use pressridge::itd::{ItdParams, RidgeStepParams, SaltFlux};
 
 /// Where the closing and opening rates of `ridge-step` come from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -32,6 +33,15 @@ pub enum RatesArg {
     /// SIS2: the host's net closing and opening rates (1/s), read from the variables named by
     /// --closing-var and --opening-var; the complete step, category bounds as given.
     Host,
+}
+
+/// Salt flux of the ice zapped by the clean-up (Icepack `saltflux_option`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum SaltFluxArg {
+    /// The ice carries `ice_ref_salinity` (Icepack's default; salt not conserved).
+    Constant,
+    /// The ice carries its own mean layer salinity (conserving).
+    Prognostic,
 }
 
 /// Freezing temperature (°C) of the complete step when neither `--tf` nor a `Tf` variable
@@ -82,9 +92,20 @@ pub struct Args {
     /// Ridged-ice redistribution.
     #[arg(long, value_enum, default_value = "exponential")]
     pub redistribution: RedistArg,
-    /// Override a parameter, NAME=VALUE (repeatable), e.g. `--param cs=0.5`.
+    /// Override a parameter, NAME=VALUE (repeatable), e.g. `--param cs=0.5`: the ridging
+    /// parameters (`ItdParams`: rhoi, rhow, mu_rdg, cs, ...) and, for the complete step, its
+    /// thermodynamic constants (`RidgeStepParams`: rhos, lfresh, cp_ice, fsnowrdg,
+    /// ice_ref_salinity, itd_area_min, itd_mass_min, hs_min, tmin), in SI units as listed in
+    /// docs/strength.md. Wins over --param-file.
     #[arg(long = "param", value_name = "NAME=VALUE")]
     pub params: Vec<String>,
+    /// A file of parameter overrides: one `NAME = VALUE` per line, the names of --param;
+    /// `#` starts a comment.
+    #[arg(long, value_name = "PATH")]
+    pub param_file: Option<PathBuf>,
+    /// Complete step only: salt flux of the ice the clean-up zaps (default constant).
+    #[arg(long, value_enum)]
+    pub salt_flux: Option<SaltFluxArg>,
     /// Complete step only: dynamics subcycles per thermodynamic step (>= 1, default 1); the
     /// ocean fluxes are averaged over ndtd·dt.
     #[arg(long)]
@@ -192,10 +213,11 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         }
     };
     let snow = read_snow_tracers(&args.input, &grid)?;
+    let all = parse_all_params(&args)?;
     let o = RidgeOptions {
         participation: args.participation.into(),
         redistribution: args.redistribution.into(),
-        params: parse_params(&args.params)?,
+        params: all.itd,
     };
     let (conv, shear) = match (snow, forcing) {
         (Some(st), forcing) => {
@@ -206,7 +228,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
                 forcing,
                 (hin_max, bounds_source),
                 aice0,
-                o,
+                (o, all),
             );
         }
         // The host's rates need the complete step; without snow or tracers it runs on
@@ -229,14 +251,21 @@ pub fn run(args: Args) -> Result<(), BoxError> {
                 forcing,
                 (hin_max, bounds_source),
                 aice0,
-                o,
+                (o, all),
             );
         }
         (None, Forcing::Deformation { conv, shear }) => (conv, shear),
     };
+    let step_names: Vec<&str> = all.step_overrides.iter().map(|s| s.as_str()).collect();
     for (flag, given) in [
         ("--ndtd", args.ndtd.is_some()),
         ("--tf", args.tf.is_some()),
+        ("--tf-var", args.tf_var.is_some()),
+        ("--salt-flux", args.salt_flux.is_some()),
+        (
+            &*format!("--param {}", step_names.join(", ")),
+            !step_names.is_empty(),
+        ),
         ("--no-cleanup", args.no_cleanup),
         ("--no-rebin", args.no_rebin),
     ] {
@@ -315,7 +344,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
             )
         })
         .collect();
-    let mut global = global_attrs(&args, &o, None);
+    let mut global = global_attrs(&args, &o, None, &all.described);
     global.push(("category_bounds".into(), bounds_source));
     write_output(
         &args.output,
@@ -331,6 +360,79 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         },
     )?;
     Ok(())
+}
+
+/// The parameters of --param-file and --param.
+struct AllParams {
+    /// Ridging parameters.
+    itd: ItdParams,
+    /// Thermodynamic constants of the complete step (salt flux set later).
+    step: RidgeStepParams,
+    /// Names of the step constants overridden (they need the complete step).
+    step_overrides: Vec<String>,
+    /// The overrides as given, for the `parameter_overrides` attribute.
+    described: String,
+}
+
+/// Reads --param-file, then --param (which wins): each NAME=VALUE names an `ItdParams` or a
+/// `RidgeStepParams` constant.
+fn parse_all_params(args: &Args) -> Result<AllParams, BoxError> {
+    let mut items: Vec<(String, String)> = Vec::new();
+    if let Some(path) = &args.param_file {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| format!("--param-file {}: {e}", path.display()))?;
+        for (k, line) in text.lines().enumerate() {
+            let line = line.split('#').next().unwrap_or("").trim();
+            if !line.is_empty() {
+                items.push((format!("{}:{}", path.display(), k + 1), line.to_string()));
+            }
+        }
+    }
+    for p in &args.params {
+        items.push((format!("--param {p}"), p.clone()));
+    }
+    let mut out = AllParams {
+        itd: ItdParams::default(),
+        step: RidgeStepParams::default(),
+        step_overrides: Vec::new(),
+        described: String::new(),
+    };
+    let mut described = Vec::new();
+    for (whence, item) in &items {
+        let (name, value) = item
+            .split_once('=')
+            .ok_or_else(|| format!("{whence}: expected NAME=VALUE"))?;
+        let (name, value) = (name.trim(), value.trim());
+        let x: f64 = value
+            .parse()
+            .map_err(|_| format!("{whence}: `{value}` is not a number"))?;
+        if ItdParams::NAMES.contains(&name) {
+            out.itd.set(name, x).map_err(|e| format!("{whence}: {e}"))?;
+        } else if RidgeStepParams::FIELDS.iter().any(|f| f.name == name) {
+            out.step
+                .set(name, x)
+                .map_err(|e| format!("{whence}: {e}"))?;
+            if !out.step_overrides.iter().any(|n| n == name) {
+                out.step_overrides.push(name.to_string());
+            }
+        } else {
+            let step: Vec<&str> = RidgeStepParams::FIELDS.iter().map(|f| f.name).collect();
+            return Err(format!(
+                "{whence}: unknown parameter `{name}`; ridging parameters: {}; constants of \
+                 the complete step: {}",
+                ItdParams::NAMES.join(", "),
+                step.join(", ")
+            )
+            .into());
+        }
+        described.push(format!("{name}={value}"));
+    }
+    out.described = if described.is_empty() {
+        "none".into()
+    } else {
+        described.join(", ")
+    };
+    Ok(out)
 }
 
 /// Closing and opening of the step, per column.
@@ -401,6 +503,7 @@ fn global_attrs(
     args: &Args,
     o: &RidgeOptions,
     host: Option<(&str, &str)>,
+    overrides: &str,
 ) -> Vec<(String, String)> {
     let mut g = vec![
         (
@@ -444,7 +547,7 @@ fn global_attrs(
         }
     }
     g.push(("input".to_string(), args.input.display().to_string()));
-    g.push(describe_params(&args.params));
+    g.push(("parameter_overrides".into(), overrides.to_string()));
     g
 }
 
@@ -492,7 +595,7 @@ fn run_complete(
     forcing: Forcing,
     (hin_max, bounds_source): (Vec<f64>, String),
     mut aice0: Array1<f64>,
-    o: RidgeOptions,
+    (o, all): (RidgeOptions, AllParams),
 ) -> Result<(), BoxError> {
     let (ncat, ncol) = (grid.ncat(), grid.ncol());
     let SnowTracers {
@@ -560,9 +663,15 @@ fn run_complete(
         participation: o.participation,
         redistribution: o.redistribution,
         params: o.params,
+        step: RidgeStepParams {
+            salt_flux: match args.salt_flux {
+                Some(SaltFluxArg::Prognostic) => SaltFlux::Prognostic,
+                Some(SaltFluxArg::Constant) | None => SaltFlux::Constant,
+            },
+            ..all.step
+        },
         cleanup: !args.no_cleanup,
         rebin: !args.no_rebin,
-        ..Default::default()
     };
     let mut aice: Array1<f64> = (0..ncol).map(|c| grid.aicen.column(c).sum()).collect();
     let mut cell: Vec<Array1<f64>> = CELL_OUTPUTS.iter().map(|_| Array1::zeros(ncol)).collect();
@@ -743,7 +852,16 @@ fn run_complete(
         args,
         &o,
         host_names.as_ref().map(|(c, op)| (c.as_str(), op.as_str())),
+        &all.described,
     );
+    // The thermodynamic constants used, each with its units (the one list of
+    // RidgeStepParams::FIELDS), and the ice density.
+    global.push(("rhoi".into(), format!("{} kg m-3", opts.params.rhoi)));
+    for f in RidgeStepParams::FIELDS {
+        let v = opts.step.get(f.name).expect("a listed constant");
+        global.push((f.name.into(), format!("{v} {}", f.units)));
+    }
+    global.push(("salt_flux".into(), opts.step.salt_flux.name().into()));
     global.push(("category_bounds".into(), bounds_source));
     global.push((
         "ridging_step".into(),
