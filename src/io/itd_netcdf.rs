@@ -873,116 +873,24 @@ pub struct SnowTracers {
     pub fill_value: Option<f64>,
 }
 
-/// Number of consecutive variables `<prefix>001`, `<prefix>002`, ... in the file.
-fn count_levels(file: &netcdf::File, prefix: &str) -> usize {
-    (1..)
-        .take_while(|k| file.variable(&format!("{prefix}{k:03}")).is_some())
-        .count()
-}
-
 /// Reads the snow and tracers that go with `grid` (read from the same file by [`read_itd`]):
 /// `Ok(None)` when the file has none of `vsnon`, `Tsfcn`, `qice001`, `sice001`, `qsno001`
-/// (then only area and volume can be ridged). The numbers of ice and snow layers are those
-/// of the `qice` and `qsno` variables found; each optional tracer group (`iage`; `FY`;
-/// `alvl` with `vlvl`; `apnd`, `hpnd`, `ipnd`) is used when all its variables are present.
-/// Errors name the missing or malformed variable.
+/// (then only area and volume can be ridged). The layout is told from the variable names by
+/// [`TracerLayout::detect_cice`] (the one detection, which Python's `xr.ridge_step` uses
+/// too). Errors name the missing or malformed variable.
 pub fn read_snow_tracers(path: &Path, grid: &ItdGrid) -> Result<Option<SnowTracers>, NetcdfError> {
     let file = netcdf::open(path).map_err(nc_err(path))?;
     let has = |n: &str| file.variable(n).is_some();
-    let nilyr = count_levels(&file, "qice");
-    let nslyr = count_levels(&file, "qsno");
-    let base_probe = TracerLayout::cice(1, 1, CiceTracerFlags::default())
-        .expect("the minimal CICE layout is valid")
-        .cice_restart_names();
-    if !has("vsnon") && !base_probe.iter().any(|n| has(n)) {
-        return Ok(None);
-    }
-    let missing_var = |var: String, why: &str| NetcdfError::Value {
-        path: path.to_path_buf(),
-        var,
-        msg: format!("missing: {why}"),
-    };
-    if nilyr == 0 || nslyr == 0 {
-        let var = if nilyr == 0 { "qice001" } else { "qsno001" };
-        return Err(missing_var(
-            var.into(),
-            "the complete ridging step needs the ice enthalpy qice001.. and snow enthalpy \
-             qsno001.. with vsnon and the other tracers (CICE restart names)",
-        ));
-    }
-    let base = TracerLayout::cice(nilyr, nslyr, CiceTracerFlags::default())
-        .map_err(|source| NetcdfError::Itd {
+    let Some((layout, flags)) =
+        TracerLayout::detect_cice(&has).map_err(|e| NetcdfError::Value {
             path: path.to_path_buf(),
-            source,
+            var: e.var.clone(),
+            msg: e.to_string(),
         })?
-        .cice_restart_names();
-    // Each optional group: the names it adds to the layout below it.
-    let groups: [(CiceTracerFlags, CiceTracerFlags); 4] = {
-        let f = |age, first_year, level_ice, ponds| CiceTracerFlags {
-            age,
-            first_year,
-            level_ice,
-            ponds,
-        };
-        [
-            (f(true, false, false, false), f(false, false, false, false)),
-            (f(false, true, false, false), f(false, false, false, false)),
-            (f(false, false, true, false), f(false, false, false, false)),
-            (f(false, false, true, true), f(false, false, true, false)),
-        ]
+    else {
+        return Ok(None);
     };
-    let mut flags = CiceTracerFlags::default();
-    for (k, (with, without)) in groups.iter().enumerate() {
-        let names = |fl: CiceTracerFlags| {
-            TracerLayout::cice(nilyr, nslyr, fl)
-                .expect("CICE layouts with level ice are valid")
-                .cice_restart_names()
-        };
-        let below = names(*without);
-        let added: Vec<String> = names(*with)
-            .into_iter()
-            .filter(|n| !below.contains(n))
-            .collect();
-        let present: Vec<bool> = added.iter().map(|n| has(n)).collect();
-        if present.iter().all(|p| *p) {
-            match k {
-                0 => flags.age = true,
-                1 => flags.first_year = true,
-                2 => flags.level_ice = true,
-                _ => flags.ponds = true,
-            }
-        } else if present.iter().any(|p| *p) {
-            let miss = added
-                .iter()
-                .zip(&present)
-                .find(|(_, p)| !**p)
-                .map(|(n, _)| n.clone())
-                .unwrap_or_default();
-            return Err(missing_var(
-                miss,
-                &format!("the tracers {} go together", added.join(", ")),
-            ));
-        }
-    }
-    if flags.ponds && !flags.level_ice {
-        flags.ponds = false;
-    }
-    let layout = TracerLayout::cice(nilyr, nslyr, flags).map_err(|source| NetcdfError::Itd {
-        path: path.to_path_buf(),
-        source,
-    })?;
     let names = layout.cice_restart_names();
-    for n in base.iter().chain(&names) {
-        if !has(n) {
-            return Err(missing_var(
-                n.clone(),
-                &format!(
-                    "the file has qice001..qice{nilyr:03} and qsno001..qsno{nslyr:03}, so the \
-                     layout needs {n}"
-                ),
-            ));
-        }
-    }
     let (ncat, ncol) = (grid.ncat(), grid.ncol());
     let dims = grid.category_dims();
     let mut fill_value = None;

@@ -46,7 +46,9 @@ pub use strength::{
     BatchSummary, ColumnStrength, StrengthOptions, strength_batch, strength_batch_masked,
     strength_column,
 };
-pub use tracers::{CiceTracerFlags, TracerBase, TracerField, TracerLayout, TracerRole};
+pub use tracers::{
+    CiceTracerFlags, LayoutDetectError, TracerBase, TracerField, TracerLayout, TracerRole,
+};
 
 /// What is wrong with one column (no column index: see [`ItdError::Column`]).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
