@@ -544,6 +544,10 @@ fn freezing_temperature_per_column_from_the_file() {
     };
     fails_with(&run(&["--tf-var", "Tfrz"]), &["Tfrz", "\"K\"", "degC"]);
     fails_with(&run(&["--tf-var", "Tf"]), &["--tf-var", "`Tf`"]);
+    fails_with(
+        &run(&["--tf-var", "Tfrz", "--tf", "-1.8"]),
+        &["--tf", "--tf-var", "not both"],
+    );
     let n = dir.join("nounits.nc");
     write_input_with(&n, &inp, &[], &[("Tf", &tf, None)]);
     fails_with(

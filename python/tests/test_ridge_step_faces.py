@@ -219,3 +219,41 @@ def test_layout_detection_from_names_and_datasets():
     assert "fhocn" not in r
     with pytest.raises(ValueError, match="rhos belong"):
         prx.ridge_step(bare, dt=1800.0, convergence=2e-6, rhos=300.0)
+
+
+# ---------------------------------------------------------------------------------------
+# The command line and xarray on the same file
+
+
+def test_command_line_host_rates_tf_and_constants_equal_xarray(cli, tmp_path):
+    """``pressridge ridge-step --rates host`` with ``Tf`` per cell and constants from
+    ``--param``/``--param-file`` gives what ``xr.ridge_step`` gives on the same dataset, to
+    the bit, and both write the constants used with their units."""
+    import xarray as xr
+    import pressridge.xr as prx
+
+    ds, layout = _dataset(ntime=1)
+    ds = ds.isel(time=0).drop_vars("time")
+    nj, ni = ds.sizes["nj"], ds.sizes["ni"]
+    closing = np.linspace(1e-7, 4e-6, nj * ni).reshape(nj, ni)
+    ds["closing"] = (("nj", "ni"), closing, {"units": "s-1"})
+    ds["opening"] = (("nj", "ni"), 0.1 * closing, {"units": "s-1"})
+    ds["Tf"] = (("nj", "ni"), np.linspace(-2.0, -1.7, nj * ni).reshape(nj, ni), {"units": "degC"})
+    ds = ds.rename({"nc_bounds": "nb"})
+    # Numbers in order (category first) for the command line.
+    ds = ds.transpose("nc", "nj", "ni", "nb")
+    inp, out = tmp_path / "in.nc", tmp_path / "out.nc"
+    ds.to_netcdf(inp)
+    (tmp_path / "c.txt").write_text("fsnowrdg = 0.25\n")
+    cli("ridge-step", "--input", inp, "--output", out, "--dt", "1800", "--rates", "host",
+        "--param", "rhos=310", "--param-file", tmp_path / "c.txt", "--no-cleanup")
+    want = prx.ridge_step(ds, dt=1800.0, closing=ds.closing, opening=ds.opening,
+                          rhos=310.0, fsnowrdg=0.25, cleanup=False)
+    got = xr.open_dataset(out)
+    for name in layout.names + ["aicen", "vicen", "vsnon", "aice0", "fresh", "fhocn", "fsalt",
+                                "dardg1dt", "opening", "krdgn"]:
+        np.testing.assert_array_equal(got[name].values, want[name].transpose(*got[name].dims).values, err_msg=name)
+    for name in ["rhos", "fsnowrdg", "rhoi"]:
+        assert got.attrs[name] == want.attrs[name], name
+    assert got.attrs["rates"].startswith("host") and "Tf" in got.attrs["tf"]
+    got.close()

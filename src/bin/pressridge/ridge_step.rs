@@ -612,6 +612,13 @@ fn run_complete(
     {
         return Err(format!("--ndtd must be at least 1, got {n}").into());
     }
+    if args.tf.is_some() && args.tf_var.is_some() {
+        return Err(
+            "give --tf (one temperature for every column) or --tf-var (a variable \
+                    of the input), not both"
+                .into(),
+        );
+    }
     // The freezing temperature: --tf for every column, else the file's `Tf` per column,
     // else the default.
     let tf_name = args.tf_var.clone().unwrap_or_else(|| "Tf".to_string());
