@@ -667,6 +667,16 @@ fn thermodynamic_constants_from_options_and_file() {
         assert!(global(&out, f.name).ends_with(f.units), "{}", f.name);
     }
     assert!(global(&out, "parameter_overrides").contains("fsnowrdg=0.3"));
+    // The docs' table and the command line's help list every constant with its units.
+    let docs =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/strength.md")).unwrap();
+    let help = bin().args(["ridge-step", "--help"]).output().unwrap();
+    let help = String::from_utf8_lossy(&help.stdout);
+    for f in pressridge::itd::RidgeStepParams::FIELDS {
+        let row = format!("| `{}` | {} |", f.name, f.units);
+        assert!(docs.contains(&row), "docs/strength.md lacks the row {row}");
+        assert!(help.contains(f.name), "--help lacks {}", f.name);
+    }
     // Errors, by name.
     let run = |extra: &[&str]| {
         bin()
