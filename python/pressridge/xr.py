@@ -8,7 +8,9 @@ dimension named as in :data:`CATEGORY_DIMS` (CICE history ``nc``, as in
 diagnostics ``ct``). No such dimension, or more than one, is an error listing the dimensions
 seen. Every other dimension (``time``, ``nj``, ``ni``, an ensemble member...) is kept.
 Optional: ``aice0``, ``hin_max`` (m, ncat + 1 values; else CICE history's ``NCAT``, the
-upper bound of each category, from 0 m), ``divu`` and ``shear`` (1/s). The functions go
+upper bound of each category, from 0 m), ``divu`` and ``shear`` (1/s); for the complete
+ridging step ``vsnon`` (m), the tracers under their CICE restart names (the layout told from
+them) and ``Tf`` (degC). The functions go
 through :func:`xarray.apply_ufunc` with ``dask="parallelized"``: on dask-backed data they
 stay lazy and work chunk by chunk, chunked over the other dimensions only (the category
 dimension is gathered into one chunk). Coordinates are kept; the outputs carry CF
