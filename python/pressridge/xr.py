@@ -313,11 +313,15 @@ def _temperature_degc(da: xr.DataArray) -> xr.DataArray:
 def _constants_used(params: dict) -> dict:
     """Global attributes: the thermodynamic constants of the complete step used, with their
     units (as the command line writes them)."""
+    def fmt(v: float) -> str:
+        # Shortest round-trip digits, no exponent: Rust's `{}` of an f64, as the CLI writes.
+        return np.format_float_positional(v, trim="-")
+
     rhoi = float(params.get("rhoi", _pr.DEFAULT_PARAMETERS["rhoi"]))
-    out = {"rhoi": f"{rhoi:g} kg m-3"}
+    out = {"rhoi": f"{fmt(rhoi)} kg m-3"}
     for name, (units, _) in _pr.STEP_PARAMETERS.items():
         v = float(params.get(name, _pr.DEFAULT_STEP_PARAMETERS[name]))
-        out[name] = f"{v:g} {units}"
+        out[name] = f"{fmt(v)} {units}"
     return out
 
 

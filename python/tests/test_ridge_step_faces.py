@@ -253,7 +253,7 @@ def test_command_line_host_rates_tf_and_constants_equal_xarray(cli, tmp_path):
     for name in layout.names + ["aicen", "vicen", "vsnon", "aice0", "fresh", "fhocn", "fsalt",
                                 "dardg1dt", "opening", "krdgn"]:
         np.testing.assert_array_equal(got[name].values, want[name].transpose(*got[name].dims).values, err_msg=name)
-    for name in ["rhos", "fsnowrdg", "rhoi"]:
+    for name in ["rhoi", *pr.STEP_PARAMETERS, "salt_flux"]:
         assert got.attrs[name] == want.attrs[name], name
     assert got.attrs["rates"].startswith("host") and "Tf" in got.attrs["tf"]
     got.close()
