@@ -4,7 +4,11 @@
 //! and enthalpy with the ocean fluxes, and keeps `_FillValue` land columns missing.
 
 // Per-category, per-tracer and per-column tables are indexed by number, as in Icepack.
-#![allow(clippy::needless_range_loop, clippy::type_complexity)]
+#![allow(
+    clippy::needless_range_loop,
+    clippy::type_complexity,
+    clippy::field_reassign_with_default
+)]
 
 mod common;
 
@@ -106,6 +110,14 @@ fn input() -> Input {
 
 /// Writes the input file; `skip` names tracer variables to leave out.
 fn write_input(path: &Path, inp: &Input, skip: &[&str]) {
+    write_input_with(path, inp, skip, &[]);
+}
+
+/// A variable on the column dimensions (nj, ni): name, values, units.
+type CellVar<'a> = (&'a str, &'a [f64], Option<&'a str>);
+
+/// [`write_input`] with `extra` variables on the column dimensions.
+fn write_input_with(path: &Path, inp: &Input, skip: &[&str], extra: &[CellVar<'_>]) {
     // One writer at a time: the tests run on several threads, the NetCDF library is not
     // thread-safe.
     static LOCK: std::sync::Mutex<()> = std::sync::Mutex::new(());
@@ -127,6 +139,9 @@ fn write_input(path: &Path, inp: &Input, skip: &[&str]) {
         ("divu".into(), sp.to_vec(), &inp.divu, Some("s-1")),
         ("shear".into(), sp.to_vec(), &inp.shear, Some("s-1")),
     ];
+    for (name, data, units) in extra {
+        vars.push((name.to_string(), sp.to_vec(), data, *units));
+    }
     for (name, t) in names.iter().zip(&inp.trcrn) {
         if !skip.contains(&name.as_str()) {
             vars.push((name.clone(), cat.to_vec(), t, None));
@@ -398,4 +413,304 @@ fn incomplete_tracer_groups_and_misplaced_options_are_named() {
         .output()
         .unwrap();
     fails_with(&r, &["--ndtd", "complete step"]);
+}
+
+/// The freezing temperature per column from the file's `Tf` (degC): the step equals the
+/// library with that `Tf` column by column (an emptied category takes it as its surface
+/// temperature), the output carries `Tf` for the next step, `--tf` overrides it, and other
+/// units or a missing `--tf-var` are refused by name.
+#[test]
+fn freezing_temperature_per_column_from_the_file() {
+    let dir = scratch("ridge-step-complete-tf");
+    let mut inp = input();
+    // Column 0, category 0: a residue the clean-up zaps, so its Tsfcn becomes Tf.
+    let a_old = inp.aicen[0];
+    inp.aicen[0] = 1e-13;
+    inp.vicen[0] = 1e-13 * 0.4;
+    inp.vsnon[0] = 0.0;
+    inp.aice0[0] += a_old - 1e-13;
+    let tf: Vec<f64> = (0..NCOL)
+        .map(|c| {
+            if c == LAND {
+                FILL
+            } else {
+                -1.8 - 0.05 * c as f64
+            }
+        })
+        .collect();
+    let p = dir.join("in.nc");
+    write_input_with(&p, &inp, &[], &[("Tf", &tf, Some("degC"))]);
+    let out = dir.join("out.nc");
+    succeeds(
+        &bin()
+            .args(["ridge-step", "--input"])
+            .arg(&p)
+            .arg("--output")
+            .arg(&out)
+            .args(["--dt", "3600"])
+            .output()
+            .unwrap(),
+    );
+    let l = layout();
+    let nt = l.ntrcr();
+    let names = l.cice_restart_names();
+    let got_t: Vec<Vec<f64>> = names.iter().map(|n| read(&out, n)).collect();
+    let got_a = read(&out, "aicen");
+    let opts = RidgeStepOptions::default();
+    for c in 0..NCOL {
+        if c == LAND {
+            continue;
+        }
+        let mut a: Vec<f64> = (0..NCAT).map(|n| inp.aicen[n * NCOL + c]).collect();
+        let mut v: Vec<f64> = (0..NCAT).map(|n| inp.vicen[n * NCOL + c]).collect();
+        let mut s: Vec<f64> = (0..NCAT).map(|n| inp.vsnon[n * NCOL + c]).collect();
+        let mut t: Vec<f64> = (0..NCAT)
+            .flat_map(|n| (0..nt).map(move |it| (n, it)))
+            .map(|(n, it)| inp.trcrn[it][n * NCOL + c])
+            .collect();
+        let mut a0 = inp.aice0[c];
+        let mut ai: f64 = a.iter().sum();
+        let mut fl = OceanFluxes::default();
+        let mut ws = StepWorkspace::new(NCAT, nt);
+        ridge_step_column(
+            &mut ColumnMut {
+                aicen: &mut a,
+                vicen: &mut v,
+                vsnon: &mut s,
+                trcrn: &mut t,
+                aice0: &mut a0,
+                aice: &mut ai,
+            },
+            &inp.hin_max,
+            StepForcing {
+                closing: Closing::Deformation {
+                    convergence: f64::max(-inp.divu[c], 0.0),
+                    shear: inp.shear[c],
+                },
+                dt: DT,
+                ndtd: 1,
+                tf: tf[c],
+            },
+            &opts,
+            &l,
+            &mut fl,
+            &mut ws,
+        )
+        .unwrap();
+        for n in 0..NCAT {
+            let i = n * NCOL + c;
+            assert_eq!(got_a[i].to_bits(), a[n].to_bits(), "aicen col {c} cat {n}");
+            for it in 0..nt {
+                assert_eq!(
+                    got_t[it][i].to_bits(),
+                    t[n * nt + it].to_bits(),
+                    "{} col {c} cat {n}",
+                    names[it]
+                );
+            }
+        }
+    }
+    // The zapped category took this column's Tf.
+    assert_eq!(got_a[0], 0.0);
+    assert_eq!(got_t[0][0], tf[0]);
+    assert_eq!(read(&out, "Tf"), tf);
+    assert_eq!(units(&out, "Tf"), "degC");
+    // --tf overrides the file for every column.
+    let out2 = dir.join("out2.nc");
+    succeeds(
+        &bin()
+            .args(["ridge-step", "--input"])
+            .arg(&p)
+            .arg("--output")
+            .arg(&out2)
+            .args(["--dt", "3600", "--tf", "-1.5"])
+            .output()
+            .unwrap(),
+    );
+    assert_eq!(read(&out2, "Tsfcn")[0], -1.5);
+    // Kelvin, or no units, is refused naming the variable and the unit.
+    let k = dir.join("kelvin.nc");
+    write_input_with(&k, &inp, &[], &[("Tfrz", &tf, Some("K"))]);
+    let run = |extra: &[&str]| {
+        bin()
+            .args(["ridge-step", "--input"])
+            .arg(&k)
+            .arg("--output")
+            .arg(dir.join("out3.nc"))
+            .args(["--dt", "3600"])
+            .args(extra)
+            .output()
+            .unwrap()
+    };
+    fails_with(&run(&["--tf-var", "Tfrz"]), &["Tfrz", "\"K\"", "degC"]);
+    fails_with(&run(&["--tf-var", "Tf"]), &["--tf-var", "`Tf`"]);
+    fails_with(
+        &run(&["--tf-var", "Tfrz", "--tf", "-1.8"]),
+        &["--tf", "--tf-var", "not both"],
+    );
+    let n = dir.join("nounits.nc");
+    write_input_with(&n, &inp, &[], &[("Tf", &tf, None)]);
+    fails_with(
+        &bin()
+            .args(["ridge-step", "--input"])
+            .arg(&n)
+            .arg("--output")
+            .arg(dir.join("out4.nc"))
+            .args(["--dt", "3600"])
+            .output()
+            .unwrap(),
+        &["Tf", "no `units`", "degC"],
+    );
+}
+
+fn global(path: &Path, name: &str) -> String {
+    let f = netcdf::open(path).unwrap();
+    f.attribute(name)
+        .and_then(|a| a.value().ok())
+        .and_then(|x| String::try_from(x).ok())
+        .unwrap_or_else(|| panic!("no global attribute {name}"))
+}
+
+/// The thermodynamic constants of the complete step from --param and --param-file (one list,
+/// `RidgeStepParams::FIELDS`), and the salt-flux option: the step equals the library with
+/// them bit for bit, every constant used is written as a global attribute with its units,
+/// and bad names, values or misplaced constants are refused by name.
+#[test]
+fn thermodynamic_constants_from_options_and_file() {
+    let dir = scratch("ridge-step-complete-constants");
+    let inp = input();
+    let p = dir.join("in.nc");
+    write_input(&p, &inp, &[]);
+    let pf = dir.join("constants.txt");
+    std::fs::write(
+        &pf,
+        "# thermodynamics\nfsnowrdg = 0.3\nice_ref_salinity = 5  # ppt\nrhos = 250\n",
+    )
+    .unwrap();
+    let out = dir.join("out.nc");
+    succeeds(
+        &bin()
+            .args(["ridge-step", "--input"])
+            .arg(&p)
+            .arg("--output")
+            .arg(&out)
+            .args(["--dt", "3600", "--param", "rhos=300", "--param", "rhoi=900"])
+            .arg("--param-file")
+            .arg(&pf)
+            .args(["--salt-flux", "prognostic"])
+            .output()
+            .unwrap(),
+    );
+    let mut opts = RidgeStepOptions::default();
+    opts.step.rhos = 300.0; // --param wins over the file
+    opts.step.fsnowrdg = 0.3;
+    opts.step.ice_ref_salinity = 5.0;
+    opts.step.salt_flux = pressridge::itd::SaltFlux::Prognostic;
+    opts.params.rhoi = 900.0;
+    let l = layout();
+    let nt = l.ntrcr();
+    let got_s = read(&out, "vsnon");
+    let fresh = read(&out, "fresh");
+    let fhocn = read(&out, "fhocn");
+    for c in (0..NCOL).filter(|&c| c != LAND) {
+        let mut a: Vec<f64> = (0..NCAT).map(|n| inp.aicen[n * NCOL + c]).collect();
+        let mut v: Vec<f64> = (0..NCAT).map(|n| inp.vicen[n * NCOL + c]).collect();
+        let mut s: Vec<f64> = (0..NCAT).map(|n| inp.vsnon[n * NCOL + c]).collect();
+        let mut t: Vec<f64> = (0..NCAT)
+            .flat_map(|n| (0..nt).map(move |it| (n, it)))
+            .map(|(n, it)| inp.trcrn[it][n * NCOL + c])
+            .collect();
+        let mut a0 = inp.aice0[c];
+        let mut ai: f64 = a.iter().sum();
+        let mut fl = OceanFluxes::default();
+        let mut ws = StepWorkspace::new(NCAT, nt);
+        ridge_step_column(
+            &mut ColumnMut {
+                aicen: &mut a,
+                vicen: &mut v,
+                vsnon: &mut s,
+                trcrn: &mut t,
+                aice0: &mut a0,
+                aice: &mut ai,
+            },
+            &inp.hin_max,
+            StepForcing {
+                closing: Closing::Deformation {
+                    convergence: f64::max(-inp.divu[c], 0.0),
+                    shear: inp.shear[c],
+                },
+                dt: DT,
+                ndtd: 1,
+                tf: -1.8,
+            },
+            &opts,
+            &l,
+            &mut fl,
+            &mut ws,
+        )
+        .unwrap();
+        for n in 0..NCAT {
+            assert_eq!(got_s[n * NCOL + c].to_bits(), s[n].to_bits(), "col {c}");
+        }
+        assert_eq!(fresh[c].to_bits(), fl.fresh.to_bits(), "fresh col {c}");
+        assert_eq!(fhocn[c].to_bits(), fl.fhocn.to_bits(), "fhocn col {c}");
+        // Snow on ridging ice reaches the ocean (70 % of it with fsnowrdg = 0.3).
+        assert!(fl.fresh > 0.0);
+    }
+    assert_eq!(global(&out, "rhos"), "300 kg m-3");
+    assert_eq!(global(&out, "fsnowrdg"), "0.3 1");
+    assert_eq!(global(&out, "ice_ref_salinity"), "5 ppt");
+    assert_eq!(global(&out, "rhoi"), "900 kg m-3");
+    assert_eq!(global(&out, "lfresh"), "334000 J kg-1");
+    assert_eq!(global(&out, "salt_flux"), "prognostic");
+    for f in pressridge::itd::RidgeStepParams::FIELDS {
+        assert!(global(&out, f.name).ends_with(f.units), "{}", f.name);
+    }
+    assert!(global(&out, "parameter_overrides").contains("fsnowrdg=0.3"));
+    // The docs' table and the command line's help list every constant with its units.
+    let docs =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/strength.md")).unwrap();
+    let help = bin().args(["ridge-step", "--help"]).output().unwrap();
+    let help = String::from_utf8_lossy(&help.stdout);
+    for f in pressridge::itd::RidgeStepParams::FIELDS {
+        let row = format!("| `{}` | {} |", f.name, f.units);
+        assert!(docs.contains(&row), "docs/strength.md lacks the row {row}");
+        assert!(help.contains(f.name), "--help lacks {}", f.name);
+    }
+    // Errors, by name.
+    let run = |extra: &[&str]| {
+        bin()
+            .args(["ridge-step", "--input"])
+            .arg(&p)
+            .arg("--output")
+            .arg(dir.join("bad.nc"))
+            .args(["--dt", "3600"])
+            .args(extra)
+            .output()
+            .unwrap()
+    };
+    fails_with(&run(&["--param", "rhoz=300"]), &["rhoz", "rhos", "mu_rdg"]);
+    fails_with(&run(&["--param", "fsnowrdg=2"]), &["fsnowrdg", "[0, 1]"]);
+    fails_with(&run(&["--param", "cp_ice=-1"]), &["cp_ice", "positive"]);
+    std::fs::write(&pf, "rhos 300\n").unwrap();
+    let r = bin()
+        .args(["ridge-step", "--input"])
+        .arg(&p)
+        .arg("--output")
+        .arg(dir.join("bad.nc"))
+        .args(["--dt", "3600", "--param-file"])
+        .arg(&pf)
+        .output()
+        .unwrap();
+    fails_with(&r, &["constants.txt:1", "NAME=VALUE"]);
+    // Constants of the complete step on an area-volume file.
+    let r = bin()
+        .args(["ridge-step", "--input"])
+        .arg(concat!(env!("CARGO_MANIFEST_DIR"), "/data/sample_itd.nc"))
+        .arg("--output")
+        .arg(dir.join("bad.nc"))
+        .args(["--dt", "3600", "--param", "rhos=300"])
+        .output()
+        .unwrap();
+    fails_with(&r, &["rhos", "complete step"]);
 }

@@ -49,6 +49,8 @@ __all__ = [
     "tabulate",
     "PARAMETERS",
     "DEFAULT_PARAMETERS",
+    "STEP_PARAMETERS",
+    "DEFAULT_STEP_PARAMETERS",
     "CF_PRESETS",
 ]
 
@@ -57,6 +59,16 @@ __all__ = [
 PARAMETERS: Tuple[str, ...] = tuple(_core.param_names())
 #: CICE/Icepack's default value of every parameter (SI units, see ``docs/strength.md``).
 DEFAULT_PARAMETERS: dict = dict(_core.default_params())
+#: The thermodynamic constants of the complete ridging step, accepted as keywords by
+#: :func:`ridge_step` with the complete step (the Rust ``RidgeStepParams::FIELDS``, the
+#: list the command line's ``--param`` reads too): ``{name: (units, description)}`` —
+#: ``rhos`` (kg m-3), ``lfresh`` (J kg-1), ``cp_ice`` (J kg-1 K-1), ``fsnowrdg`` (1),
+#: ``ice_ref_salinity`` (ppt), ``itd_area_min`` (1), ``itd_mass_min`` (kg m-2), ``hs_min``
+#: (m), ``tmin`` (degC). The ice and sea-water densities are :data:`PARAMETERS` ``rhoi``,
+#: ``rhow`` (kg m-3).
+STEP_PARAMETERS: dict = {n: (u, d) for n, u, d, _ in _core.step_parameters()}
+#: Icepack's default of every :data:`STEP_PARAMETERS` constant, in its units.
+DEFAULT_STEP_PARAMETERS: dict = {n: v for n, _, _, v in _core.step_parameters()}
 #: Named constant values of C_f (dimensionless): ``hibler1980`` = 2, ``flato1991`` = 15,
 #: ``cice`` = 17.
 CF_PRESETS: dict = dict(_core.cf_presets())
@@ -85,13 +97,23 @@ def _bool(x: Any, name: str) -> _np.ndarray:
     return a
 
 
-def _params(params: dict) -> list:
+def _params(params: dict, step: bool = False) -> list:
+    """(name, value) pairs of ITD parameters, or with ``step`` of the complete step's
+    constants (:data:`STEP_PARAMETERS`)."""
     out = []
+    names = STEP_PARAMETERS if step else PARAMETERS
     for k, v in params.items():
-        if k not in PARAMETERS:
+        if k not in names:
             raise ValueError(
                 f"unknown keyword or parameter `{k}`; parameters are: {', '.join(PARAMETERS)}"
+                + (
+                    ""
+                    if step
+                    else f"; constants of the complete step: {', '.join(STEP_PARAMETERS)}"
+                )
             )
+        if isinstance(v, (bool, _np.bool_)):
+            raise ValueError(f"parameter `{k}` must be a number, got {v!r}")
         try:
             out.append((k, float(v)))
         except (TypeError, ValueError):
@@ -335,6 +357,7 @@ def ridge_step(
     ndtd: Optional[int] = None,
     cleanup: Optional[bool] = None,
     rebin: Optional[bool] = None,
+    salt_flux: Optional[str] = None,
     **params: float,
 ) -> RidgeStepResult:
     """One ridging step; the inputs are not modified.
@@ -390,16 +413,24 @@ def ridge_step(
         complete step uses them as given (with ``hin_max`` as given) instead of deriving them
         from ``convergence`` and ``shear`` (CICE's convention). Give both.
     tf : float or array_like, optional
-        Freezing temperature (degC) for the surface temperature of emptied categories;
-        default -1.8.
+        Freezing temperature (degC) for the surface temperature of emptied categories: a
+        number for every column or an array of the spatial shape (one per column, e.g.
+        from the sea-surface salinity); default -1.8.
     ndtd : int, optional
         Dynamics subcycles per thermodynamic step (>= 1, default 1); the ocean fluxes are
         averaged over ``ndtd*dt``.
     cleanup, rebin : bool, optional
         Icepack's ``docleanup`` and ``dorebin`` (default True): run the clean-up (zap tiny
         categories into the ocean fluxes, rebin) after ridging.
+    salt_flux : str, optional
+        Complete step: salt flux of the ice the clean-up zaps, Icepack's
+        ``saltflux_option``: ``"constant"`` (default; ``ice_ref_salinity``) or
+        ``"prognostic"`` (its own salinity).
     **params : float
-        ITD parameter overrides (:data:`PARAMETERS`), e.g. ``cs=0.5``.
+        ITD parameter overrides (:data:`PARAMETERS`, e.g. ``cs=0.5``, ``rhoi=917.0`` in
+        kg m-3) and, for the complete step, its thermodynamic constants
+        (:data:`STEP_PARAMETERS`, e.g. ``rhos=330.0`` kg m-3, ``lfresh=3.34e5`` J kg-1,
+        ``fsnowrdg=0.5``), each in the units listed there.
 
     Returns
     -------
@@ -455,9 +486,10 @@ def ridge_step(
                 ("ndtd", ndtd),
                 ("cleanup", cleanup),
                 ("rebin", rebin),
+                ("salt_flux", salt_flux),
             )
             if x is not None
-        ]
+        ] + [k for k in params if k in STEP_PARAMETERS]
         if extra:
             raise ValueError(
                 f"{', '.join(extra)} belong(s) to the complete step: give trcrn (with layout), "
@@ -486,6 +518,8 @@ def ridge_step(
             a_new, v_new, _scalar_if_0d(a0_new), *[_scalar_if_0d(r) for r in rates]
         )
 
+    step_params = {k: v for k, v in params.items() if k in STEP_PARAMETERS}
+    itd_params = {k: v for k, v in params.items() if k not in STEP_PARAMETERS}
     if vsnon is not None and trcrn is None:
         raise ValueError(
             "vsnon needs trcrn (with layout): the snow's enthalpy is a tracer, and snow "
@@ -537,9 +571,11 @@ def ridge_step(
         ok,
         participation,
         redistribution,
-        _params(params),
+        _params(itd_params),
         True if cleanup is None else bool(cleanup),
         True if rebin is None else bool(rebin),
+        _params(step_params, step=True),
+        "constant" if salt_flux is None else str(salt_flux),
     )
     c = {k: _scalar_if_0d(x) for k, x in cell}
     return RidgeStepResult(

@@ -5,7 +5,7 @@ These functions take already-normalised arguments; the documented API is in
 """
 
 from os import PathLike
-from typing import Callable, List, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -63,6 +63,20 @@ class TracerLayout:
         level_ice: bool = False,
         ponds: bool = False,
     ) -> "TracerLayout": ...
+    @staticmethod
+    def from_fields(fields: Sequence[Union[dict, Sequence[Any]]]) -> "TracerLayout":
+        """Any layout: each field a dict with keys name, levels (>= 1, default 1), base
+        ("area", "ice_volume", "snow_volume"), strata (earlier field names), role
+        ("surface_temperature", "ice_enthalpy", "snow_enthalpy", "ice_salinity", "age",
+        "first_year", "level_area", "level_volume", "pond_area", "pond_depth", "pond_lid",
+        "other"), or a sequence in that order; defaults are Icepack's for the role, the role
+        Icepack's for the name (Tsfc, qice, ...), else "other". ValueError names the field."""
+    @staticmethod
+    def detect(names: Sequence[str]) -> Optional["TracerLayout"]:
+        """The CICE layout of these variable names (CICE restart names), as the command
+        line tells it; None without snow or tracers; ValueError names a missing variable."""
+    def spec(self) -> List[dict]:
+        """The fields as from_fields takes them (dicts name, levels, base, strata, role)."""
     @property
     def ntrcr(self) -> int: ...
     @property
@@ -85,6 +99,10 @@ class TracerLayout:
 def step_outputs() -> Tuple[List[Tuple[str, str, str]], List[Tuple[str, str, str]]]:
     """([(cell output, units, long_name)], [(category output, units, long_name)])."""
 
+def step_parameters() -> List[Tuple[str, str, str, float]]:
+    """The complete step's thermodynamic constants: [(name, SI units, description,
+    Icepack default)]."""
+
 def ridge_step_full(
     aicen: _F64,
     vicen: _F64,
@@ -106,6 +124,8 @@ def ridge_step_full(
     params: Sequence[Tuple[str, float]],
     cleanup: bool,
     rebin: bool,
+    step_params: Sequence[Tuple[str, float]],
+    salt_flux: str,
 ) -> Tuple[
     Tuple[_F64, _F64, _F64],
     Optional[_F64],

@@ -8,7 +8,9 @@ dimension named as in :data:`CATEGORY_DIMS` (CICE history ``nc``, as in
 diagnostics ``ct``). No such dimension, or more than one, is an error listing the dimensions
 seen. Every other dimension (``time``, ``nj``, ``ni``, an ensemble member...) is kept.
 Optional: ``aice0``, ``hin_max`` (m, ncat + 1 values; else CICE history's ``NCAT``, the
-upper bound of each category, from 0 m), ``divu`` and ``shear`` (1/s). The functions go
+upper bound of each category, from 0 m), ``divu`` and ``shear`` (1/s); for the complete
+ridging step ``vsnon`` (m), the tracers under their CICE restart names (the layout told from
+them) and ``Tf`` (degC). The functions go
 through :func:`xarray.apply_ufunc` with ``dask="parallelized"``: on dask-backed data they
 stay lazy and work chunk by chunk, chunked over the other dimensions only (the category
 dimension is gathered into one chunk). Coordinates are kept; the outputs carry CF
@@ -288,6 +290,41 @@ def _rate_per_second(da: xr.DataArray) -> xr.DataArray:
         "(CICE history) or 's-1'"
     )
 
+_DEGC = {"degc", "deg_c", "degrees_c", "degree_c", "degree_celsius", "degrees_celsius",
+         "celsius", "c"}
+
+
+def _temperature_degc(da: xr.DataArray) -> xr.DataArray:
+    """A freezing temperature in degC: other units (K) or none refused by name, as the
+    command line does."""
+    u = _units(da)
+    if u is None:
+        raise ValueError(
+            f"variable `{da.name}` has no `units` attribute; the freezing temperature must be "
+            "in 'degC' (say so with units='degC')"
+        )
+    if u.lower() not in _DEGC:
+        raise ValueError(
+            f"variable `{da.name}` has units {da.attrs.get('units')!r}; expected 'degC'"
+        )
+    return da
+
+
+def _constants_used(params: dict) -> dict:
+    """Global attributes: the thermodynamic constants of the complete step used, with their
+    units (as the command line writes them)."""
+    def fmt(v: float) -> str:
+        # Shortest round-trip digits, no exponent: Rust's `{}` of an f64, as the CLI writes.
+        return np.format_float_positional(v, trim="-")
+
+    rhoi = float(params.get("rhoi", _pr.DEFAULT_PARAMETERS["rhoi"]))
+    out = {"rhoi": f"{fmt(rhoi)} kg m-3"}
+    for name, (units, _) in _pr.STEP_PARAMETERS.items():
+        v = float(params.get(name, _pr.DEFAULT_STEP_PARAMETERS[name]))
+        out[name] = f"{fmt(v)} {units}"
+    return out
+
+
 def ridge_step(
     ds: xr.Dataset,
     *,
@@ -306,21 +343,31 @@ def ridge_step(
     ndtd: Optional[int] = None,
     cleanup: Optional[bool] = None,
     rebin: Optional[bool] = None,
+    salt_flux: Optional[str] = None,
     **params: float,
 ) -> xr.Dataset:
     """One ridging step (``dt`` in s) of the thickness distribution in ``ds``.
 
     **The complete step** (snow, tracers, ocean fluxes; as :func:`pressridge.ridge_step`)
-    runs when ``layout`` (a :class:`pressridge.TracerLayout`) is given: the dataset then
-    holds ``vsnon`` (m; absent: no snow) and one variable per tracer under its CICE restart
-    name (``layout.names``: ``Tsfcn``, ``qice001``.., ``qsno001``.., ``sice001``.., ``iage``,
-    ``FY``, ``alvl``, ``vlvl``, ``apnd``, ``hpnd``, ``ipnd``), each with the dimensions of
-    ``aicen``. ``closing`` and ``opening`` (1/s, numbers or DataArrays) give the host's
-    rates (SIS2) instead of the deformation (CICE); ``tf`` (degC), ``ndtd``, ``cleanup``,
-    ``rebin`` as in :func:`pressridge.ridge_step`. The result then also has ``vsnon``, the
-    tracers, ``aice``, the fluxes and diagnostics of :data:`pressridge.STEP_CELL_OUTPUTS`
-    and :data:`pressridge.STEP_CATEGORY_OUTPUTS` (with their units), and ``hin_max`` as
-    Icepack leaves it. A dataset with ``vsnon`` but no ``layout`` is refused.
+    runs when the dataset holds snow or tracers: ``vsnon`` (m; absent: no snow) and one
+    variable per tracer under its CICE restart name (``Tsfcn``, ``qice001``..,
+    ``qsno001``.., ``sice001``.., ``iage``, ``FY``, ``alvl``, ``vlvl``, ``apnd``, ``hpnd``,
+    ``ipnd``), each with the dimensions of ``aicen``. The tracer layout is told from these
+    names as the command line tells it (:meth:`pressridge.TracerLayout.detect`: the layers
+    counted, each optional group used when complete; a missing member of a group, or
+    ``vsnon`` without the enthalpies, is a ``ValueError`` naming the variable), or given
+    as ``layout`` (a :class:`pressridge.TracerLayout` whose ``names`` the dataset holds; a
+    dataset with CICE tracer variables the layout does not carry is refused as
+    ambiguous). ``closing`` and ``opening`` (1/s, numbers or DataArrays) give the host's
+    rates (SIS2) instead of the deformation (CICE). ``tf`` (degC; a number or a DataArray
+    on the spatial dimensions) defaults to the dataset's ``Tf`` (its ``units`` must be
+    degC), else -1.8. ``ndtd``, ``cleanup``, ``rebin``, ``salt_flux`` and the constants of
+    :data:`pressridge.STEP_PARAMETERS` (keywords, SI units) as in
+    :func:`pressridge.ridge_step`. The result then also has ``vsnon``, the tracers,
+    ``aice``, the fluxes and diagnostics of :data:`pressridge.STEP_CELL_OUTPUTS` and
+    :data:`pressridge.STEP_CATEGORY_OUTPUTS` (with their units), ``hin_max`` as Icepack
+    leaves it, and the thermodynamic constants used as attributes (``rhoi``, ``rhos``, ...
+    with their units).
 
     The category dimension is ``category_dim`` if given, else the one dimension of
     ``aicen`` named as in :data:`CATEGORY_DIMS` (``nc``, ``ncat``, ``ct``; none or several
@@ -341,25 +388,41 @@ def ridge_step(
     ``aicen``, ``vicen``, ``aice0`` after the step and the rates ``closing``, ``opening``,
     ``dardg1dt``, ``dardg2dt`` (1/s) and ``dvirdgdt`` (m/s); lazy when the input is dask.
     """
+    detected = _pr.TracerLayout.detect([str(n) for n in ds.data_vars])
+    if layout is None:
+        layout = detected
+    elif detected is not None:
+        if not isinstance(layout, _pr.TracerLayout):
+            raise ValueError(
+                f"layout must be a pressridge.TracerLayout, got {type(layout).__name__}"
+            )
+        extra_vars = [n for n in detected.names if n not in layout.names]
+        if extra_vars:
+            raise ValueError(
+                f"ambiguous tracers: the dataset has {', '.join(extra_vars)}, which the "
+                f"layout {layout!r} does not carry (they would not move with the ice); "
+                f"pass layout=None to use the layout of the dataset ({detected!r}) or drop "
+                "those variables"
+            )
     if layout is None:
         extra = [
             k
             for k, x in (("closing", closing), ("opening", opening), ("tf", tf), ("ndtd", ndtd),
-                         ("cleanup", cleanup), ("rebin", rebin))
+                         ("cleanup", cleanup), ("rebin", rebin), ("salt_flux", salt_flux))
             if x is not None
-        ]
-        if "vsnon" in ds:
-            raise ValueError(
-                "the dataset has vsnon: snow is ridged with its enthalpy, a tracer; pass "
-                "layout= (a pressridge.TracerLayout naming the tracer variables)"
-            )
+        ] + [k for k in params if k in _pr.STEP_PARAMETERS]
         if extra:
             raise ValueError(
-                f"{', '.join(extra)} belong(s) to the complete step: pass layout= as well"
+                f"{', '.join(extra)} belong(s) to the complete step, but the dataset has no "
+                "snow or tracer variables (vsnon, Tsfcn, qice001.., sice001.., qsno001..); "
+                "pass layout= for tracers under other names"
             )
     aicen, vicen, aice0, cat, spatial = _category_vars(ds, category_dim)
     use_mask = _mask_flag(mask, ds["aicen"], ds["vicen"], aice0)
-    _pr._params(params)
+    _pr._params({k: v for k, v in params.items() if k not in _pr.STEP_PARAMETERS})
+    _pr._params({k: v for k, v in params.items() if k in _pr.STEP_PARAMETERS}, step=True)
+    if layout is not None and tf is None and "Tf" in ds:
+        tf = _temperature_degc(ds["Tf"])
     conv_desc = "max(-divu, 0) from input"
     if layout is not None and closing is not None:
         if convergence is not None or shear is not None:
@@ -369,7 +432,7 @@ def ridge_step(
         return _complete(
             ds, aicen, vicen, aice0, cat, spatial, use_mask, layout, dt, hin_max,
             dict(closing=closing, opening=opening), "host closing/opening",
-            participation, redistribution, tf, ndtd, cleanup, rebin, params,
+            participation, redistribution, tf, ndtd, cleanup, rebin, salt_flux, params,
         )
 
     def _divu() -> Optional[xr.DataArray]:
@@ -407,7 +470,7 @@ def ridge_step(
         return _complete(
             ds, aicen, vicen, aice0, cat, spatial, use_mask, layout, dt, hin_max,
             dict(convergence=convergence, shear=shear), f"convergence: {conv_desc}; shear: {shear_desc}",
-            participation, redistribution, tf, ndtd, cleanup, rebin, params,
+            participation, redistribution, tf, ndtd, cleanup, rebin, salt_flux, params,
         )
     if hin_max is None:
         hin_max = _bounds_from(ds)
@@ -513,7 +576,8 @@ def _complete_block(a, v, s, *rest, nt, names, scalars, mask, layout, options):
 
 
 def _complete(ds, aicen, vicen, aice0, cat, spatial, use_mask, layout, dt, hin_max, forcing,
-              forcing_desc, participation, redistribution, tf, ndtd, cleanup, rebin, params):
+              forcing_desc, participation, redistribution, tf, ndtd, cleanup, rebin, salt_flux,
+              params):
     """The complete step over the dataset (see :func:`ridge_step`)."""
     if not isinstance(layout, _pr.TracerLayout):
         raise ValueError(f"layout must be a pressridge.TracerLayout, got {type(layout).__name__}")
@@ -546,6 +610,7 @@ def _complete(ds, aicen, vicen, aice0, cat, spatial, use_mask, layout, dt, hin_m
         ndtd=ndtd,
         cleanup=cleanup,
         rebin=rebin,
+        salt_flux=salt_flux,
         **params,
     )
     spatial_in = dict(forcing)
@@ -632,6 +697,12 @@ def _complete(ds, aicen, vicen, aice0, cat, spatial, use_mask, layout, dt, hin_m
             "dt": f"{float(dt)} s",
             "forcing": forcing_desc,
             "tracers": " ".join(names),
+            "tf": "dataset variable `Tf` (degC)"
+            if isinstance(tf, xr.DataArray) and tf.name == "Tf"
+            else ("per-cell DataArray (degC)" if isinstance(tf, xr.DataArray)
+                  else f"{-1.8 if tf is None else float(tf)} degC"),
+            "salt_flux": salt_flux or "constant",
+            **_constants_used(params),
             "parameter_overrides": ", ".join(f"{k}={v}" for k, v in params.items()) or "none",
             "history": (ds.attrs.get("history", "") + "\n" if ds.attrs.get("history") else "")
             + f"pressridge.xr.ridge_step (pressridge {_pr.__version__})",

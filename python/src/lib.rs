@@ -32,8 +32,9 @@ use pressridge::io::table_netcdf::{Provenance, write_ridge_table};
 use pressridge::itd::{
     BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, CategoryBounds, Cf, CfPreset,
     CfTable, CiceTracerFlags, ItdError, ItdParams, Participation, Redistribution, RidgeOptions,
-    RidgeRatesMut, RidgeStepOptions, StepBatchMut, StrengthFormula, StrengthOptions, TracerBase,
-    TracerLayout, category_bounds, ridge_batch_masked, ridge_step_batch, strength_batch_masked,
+    RidgeRatesMut, RidgeStepOptions, RidgeStepParams, SaltFlux, StepBatchMut, StrengthFormula,
+    StrengthOptions, TracerBase, TracerField, TracerLayout, TracerRole, category_bounds,
+    ridge_batch_masked, ridge_step_batch, strength_batch_masked,
 };
 use pressridge::scene::{Scene, SceneError};
 use pressridge::simulation;
@@ -620,14 +621,6 @@ fn ridge_step<'py>(
 // ---------------------------------------------------------------------------------------
 // The complete ridging step (snow, tracers, ocean fluxes)
 
-fn base_name(b: TracerBase) -> &'static str {
-    match b {
-        TracerBase::Area => "area",
-        TracerBase::IceVolume => "ice_volume",
-        TracerBase::SnowVolume => "snow_volume",
-    }
-}
-
 /// A tracer layout: which tracers each thickness category carries, in what order and on
 /// what base (the Rust ``pressridge::itd::TracerLayout``, not a copy of it).
 ///
@@ -635,17 +628,158 @@ fn base_name(b: TracerBase) -> &'static str {
 /// level_ice=False, ponds=False)``: CICE/Icepack's order ``Tsfc``, ``qice(nilyr)``,
 /// ``qsno(nslyr)``, ``sice(nilyr)``, then ``iage``, ``FY``, ``alvl``, ``vlvl``, ``apnd``,
 /// ``hpnd``, ``ipnd`` as the flags (Icepack's ``tr_iage``, ``tr_FY``, ``tr_lvl``,
-/// ``tr_pond_lvl``) select; ``ponds`` needs ``level_ice``. Units: ``Tsfc`` degC, enthalpies
-/// J m-3 (negative), salinity ppt, age s, fractions 1, pond depth and lid m.
+/// ``tr_pond_lvl``) select; ``ponds`` needs ``level_ice``. Or with
+/// ``TracerLayout.from_fields(fields)`` for any layout the Rust ``TracerLayout::new``
+/// accepts, or ``TracerLayout.detect(names)`` from CICE restart variable names. Units:
+/// ``Tsfc`` degC, enthalpies J m-3 (negative), salinity ppt, age s, fractions 1, pond depth
+/// and lid m.
 ///
 /// Attributes and methods: ``ntrcr``, ``nilyr``, ``nslyr``, ``flags``, ``fields()`` (name,
-/// first index, levels, base, strata, units, long name), ``field(name)`` (first index,
-/// levels), ``names`` (per tracer, the CICE restart variable name: ``Tsfcn``, ``qice001``...),
-/// ``units``, ``long_names``, ``trcr_depend()`` (Icepack's).
+/// first index, levels, base, strata, units, long name), ``spec()`` (the fields as
+/// ``from_fields`` takes them), ``field(name)`` (first index, levels), ``names`` (per tracer,
+/// the CICE restart variable name: ``Tsfcn``, ``qice001``...), ``units``, ``long_names``,
+/// ``trcr_depend()`` (Icepack's).
 #[pyclass(frozen, name = "TracerLayout", module = "pressridge._core")]
 struct PyTracerLayout {
     inner: Arc<TracerLayout>,
-    flags: CiceTracerFlags,
+}
+
+/// The optional CICE tracers a layout carries, from its fields' roles.
+fn flags_of(l: &TracerLayout) -> CiceTracerFlags {
+    let has = |r: TracerRole| l.fields().iter().any(|f| f.role == r);
+    CiceTracerFlags {
+        age: has(TracerRole::Age),
+        first_year: has(TracerRole::FirstYear),
+        level_ice: has(TracerRole::LevelArea),
+        ponds: has(TracerRole::PondArea),
+    }
+}
+
+/// One field of `from_fields`: a dict (`name`, `levels`, `base`, `strata`, `role`) or a
+/// sequence in that order; missing items default to Icepack's for the role, the role to the
+/// one whose Icepack name is `name` (else `other`).
+fn field_from_py(i: usize, item: &Bound<'_, PyAny>) -> Result<TracerField, BindError> {
+    const KEYS: [&str; 5] = ["name", "levels", "base", "strata", "role"];
+    let mut got: [Option<Bound<'_, PyAny>>; 5] = Default::default();
+    let at = |what: &str| format!("fields[{i}]{what}");
+    if let Ok(d) = item.cast::<PyDict>() {
+        for (k, v) in d.iter() {
+            let k: String = k
+                .extract()
+                .map_err(|_| value_err(at(": keys must be strings")))?;
+            let Some(pos) = KEYS.iter().position(|x| *x == k) else {
+                return Err(value_err(format!(
+                    "{}: unknown key `{k}`; the keys are {}",
+                    at(""),
+                    KEYS.join(", ")
+                )));
+            };
+            got[pos] = Some(v);
+        }
+    } else if let Ok(seq) = item.extract::<Vec<Bound<'_, PyAny>>>()
+        && !item.is_instance_of::<pyo3::types::PyString>()
+    {
+        if seq.is_empty() || seq.len() > 5 {
+            return Err(value_err(at(&format!(
+                ": a sequence of 1 to 5 items ({}), got {}",
+                KEYS.join(", "),
+                seq.len()
+            ))));
+        }
+        for (k, v) in seq.into_iter().enumerate() {
+            got[k] = Some(v);
+        }
+    } else {
+        return Err(value_err(at(&format!(
+            ": a dict with keys {} or a sequence in that order, got {}",
+            KEYS.join(", "),
+            item.get_type()
+                .name()
+                .map(|n| n.to_string())
+                .unwrap_or_default()
+        ))));
+    }
+    let name: String = match &got[0] {
+        Some(v) => v
+            .extract()
+            .map_err(|_| value_err(at(": `name` must be a string")))?,
+        None => return Err(value_err(at(": `name` is missing"))),
+    };
+    let at = |what: &str| format!("fields[{i}] (`{name}`): {what}");
+    let role = match &got[4] {
+        Some(v) if !v.is_none() => {
+            let r: String = v
+                .extract()
+                .map_err(|_| value_err(at("`role` must be a string")))?;
+            TracerRole::from_name(&r).ok_or_else(|| {
+                let all: Vec<&str> = TracerRole::ALL.iter().map(|r| r.name()).collect();
+                value_err(at(&format!(
+                    "unknown role `{r}`; one of {}",
+                    all.join(", ")
+                )))
+            })?
+        }
+        _ => TracerRole::ALL
+            .into_iter()
+            .find(|r| r.icepack().is_some_and(|(n, _, _)| n == name))
+            .unwrap_or(TracerRole::Other),
+    };
+    let levels: usize = match &got[1] {
+        Some(v) if !v.is_none() => {
+            let n: i64 = v
+                .extract()
+                .map_err(|_| value_err(at("`levels` must be an integer")))?;
+            if !(1..=1 << 20).contains(&n) {
+                return Err(value_err(at(&format!("levels = {n}: must be at least 1"))));
+            }
+            n as usize
+        }
+        _ => 1,
+    };
+    let base = match &got[2] {
+        Some(v) if !v.is_none() => {
+            let b: String = v
+                .extract()
+                .map_err(|_| value_err(at("`base` must be a string")))?;
+            TracerBase::from_name(&b).ok_or_else(|| {
+                let all: Vec<&str> = TracerBase::ALL.iter().map(|b| b.name()).collect();
+                value_err(at(&format!(
+                    "unknown base `{b}`; one of {}",
+                    all.join(", ")
+                )))
+            })?
+        }
+        _ => match role.icepack() {
+            Some((_, b, _)) => b,
+            None => {
+                return Err(value_err(at(
+                    "`base` is needed (area, ice_volume or snow_volume) for a tracer of role other",
+                )));
+            }
+        },
+    };
+    let strata: Vec<String> = match &got[3] {
+        Some(v) if !v.is_none() => {
+            if v.is_instance_of::<pyo3::types::PyString>() {
+                return Err(value_err(at(
+                    "`strata` must be a list of field names, not a string",
+                )));
+            }
+            v.extract()
+                .map_err(|_| value_err(at("`strata` must be a list of field names")))?
+        }
+        _ => role
+            .icepack()
+            .map(|(_, _, s)| s.iter().map(|x| x.to_string()).collect())
+            .unwrap_or_default(),
+    };
+    Ok(TracerField {
+        name,
+        role,
+        levels,
+        base,
+        strata,
+    })
 }
 
 #[pymethods]
@@ -674,10 +808,42 @@ impl PyTracerLayout {
             ponds,
         };
         let l = TracerLayout::cice(nilyr as usize, nslyr as usize, flags).map_err(value_err)?;
-        Ok(Self {
-            inner: Arc::new(l),
-            flags,
-        })
+        Ok(Self { inner: Arc::new(l) })
+    }
+
+    /// Any layout (`TracerLayout::new`): `fields` in storage order, each a dict with keys
+    /// `name` (str), `levels` (int >= 1, default 1), `base` (`area`, `ice_volume`,
+    /// `snow_volume`), `strata` (names of earlier single-level fields it is also carried on),
+    /// `role` (`surface_temperature`, `ice_enthalpy`, `snow_enthalpy`, `ice_salinity`, `age`,
+    /// `first_year`, `level_area`, `level_volume`, `pond_area`, `pond_depth`, `pond_lid`,
+    /// `other`), or a sequence in that order. The role defaults to the one whose Icepack name
+    /// is `name` (`Tsfc`, `qice`, `qsno`, `sice`, `iage`, `FY`, `alvl`, `vlvl`, `apnd`,
+    /// `hpnd`, `ipnd`), else `other`; base and strata default to Icepack's for the role.
+    /// Errors name the field and what is wrong.
+    #[staticmethod]
+    fn from_fields(fields: Vec<Bound<'_, PyAny>>) -> PyResult<Self> {
+        let f: Vec<TracerField> = fields
+            .iter()
+            .enumerate()
+            .map(|(i, x)| field_from_py(i, x))
+            .collect::<Result<_, _>>()?;
+        let l = TracerLayout::new(f).map_err(value_err)?;
+        Ok(Self { inner: Arc::new(l) })
+    }
+
+    /// The CICE layout of a dataset or file holding these variable names (CICE restart names:
+    /// `vsnon`, `Tsfcn`, `qice001`.., `qsno001`.., `sice001`.., `iage`, `FY`, `alvl`, `vlvl`,
+    /// `apnd`, `hpnd`, `ipnd`), as the command line tells it (`TracerLayout::detect_cice`):
+    /// None when there is no snow and no tracer; a missing member of a group is a ValueError
+    /// naming the variable.
+    #[staticmethod]
+    fn detect(names: Vec<String>) -> PyResult<Option<Self>> {
+        let has = |n: &str| names.iter().any(|m| m == n);
+        match TracerLayout::detect_cice(&has) {
+            Ok(Some((l, _))) => Ok(Some(Self { inner: Arc::new(l) })),
+            Ok(None) => Ok(None),
+            Err(e) => Err(value_err(format!("tracer variable `{}` {e}", e.var)).into()),
+        }
     }
 
     /// Tracers per category (Icepack `ntrcr`).
@@ -698,11 +864,11 @@ impl PyTracerLayout {
         self.inner.nslyr()
     }
 
-    /// The optional-tracer flags, as a dict of `CiceTracerFlags` field names.
+    /// The optional CICE tracers carried, as a dict of `CiceTracerFlags` field names.
     #[getter]
     fn flags<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
-        let f = self.flags;
+        let f = flags_of(&self.inner);
         for (k, v) in [
             ("age", f.age),
             ("first_year", f.first_year),
@@ -736,11 +902,29 @@ impl PyTracerLayout {
                     f.name.clone(),
                     start,
                     f.levels,
-                    base_name(f.base),
+                    f.base.name(),
                     f.strata.clone(),
                     f.role.units(),
                     f.role.long_name(),
                 )
+            })
+            .collect()
+    }
+
+    /// The fields as `from_fields` takes them: a list of dicts `name`, `levels`, `base`,
+    /// `strata`, `role`.
+    fn spec<'py>(&self, py: Python<'py>) -> PyResult<Vec<Bound<'py, PyDict>>> {
+        self.inner
+            .fields()
+            .iter()
+            .map(|f| {
+                let d = PyDict::new(py);
+                d.set_item("name", &f.name)?;
+                d.set_item("levels", f.levels)?;
+                d.set_item("base", f.base.name())?;
+                d.set_item("strata", f.strata.clone())?;
+                d.set_item("role", f.role.name())?;
+                Ok(d)
             })
             .collect()
     }
@@ -810,65 +994,111 @@ impl PyTracerLayout {
     }
 
     fn __hash__(&self) -> u64 {
-        let f = self.flags;
-        (self.inner.nilyr() as u64) << 8
-            ^ (self.inner.nslyr() as u64) << 4
-            ^ u64::from(f.age)
-            ^ u64::from(f.first_year) << 1
-            ^ u64::from(f.level_ice) << 2
-            ^ u64::from(f.ponds) << 3
+        use std::hash::{Hash, Hasher};
+        let mut h = std::collections::hash_map::DefaultHasher::new();
+        for f in self.inner.fields() {
+            f.name.hash(&mut h);
+            f.levels.hash(&mut h);
+            f.base.name().hash(&mut h);
+            f.role.name().hash(&mut h);
+            f.strata.hash(&mut h);
+        }
+        h.finish()
     }
 
     fn __repr__(&self) -> String {
-        let f = self.flags;
+        let l = &*self.inner;
+        let f = flags_of(l);
+        if TracerLayout::cice(l.nilyr(), l.nslyr(), f).is_ok_and(|c| c == *l) {
+            return format!(
+                "TracerLayout.cice(nilyr={}, nslyr={}, age={}, first_year={}, level_ice={}, ponds={}) with {} tracers",
+                l.nilyr(),
+                l.nslyr(),
+                py_bool(f.age),
+                py_bool(f.first_year),
+                py_bool(f.level_ice),
+                py_bool(f.ponds),
+                l.ntrcr()
+            );
+        }
+        let parts: Vec<String> = l
+            .fields()
+            .iter()
+            .map(|f| {
+                let strata = if f.strata.is_empty() {
+                    String::new()
+                } else {
+                    format!(" on {}", f.strata.join("*"))
+                };
+                format!(
+                    "{}[{}] {} {}{strata}",
+                    f.name,
+                    f.levels,
+                    f.role.name(),
+                    f.base.name()
+                )
+            })
+            .collect();
         format!(
-            "TracerLayout.cice(nilyr={}, nslyr={}, age={}, first_year={}, level_ice={}, ponds={}) with {} tracers",
-            self.inner.nilyr(),
-            self.inner.nslyr(),
-            py_bool(f.age),
-            py_bool(f.first_year),
-            py_bool(f.level_ice),
-            py_bool(f.ponds),
-            self.inner.ntrcr()
+            "TracerLayout.from_fields({}) with {} tracers",
+            parts.join(", "),
+            l.ntrcr()
         )
     }
 
-    /// Pickling (dask workers): rebuilt from its constructor's arguments.
+    /// Pickling (dask workers): rebuilt from its fields.
     #[allow(clippy::type_complexity)]
     fn __reduce__<'py>(
         slf: &Bound<'py, Self>,
-    ) -> PyResult<(Bound<'py, PyAny>, (usize, usize, bool, bool, bool, bool))> {
-        let me = slf.get();
-        let f = me.flags;
-        let make = slf.getattr("_from_args")?;
-        Ok((
-            make,
-            (
-                me.inner.nilyr(),
-                me.inner.nslyr(),
-                f.age,
-                f.first_year,
-                f.level_ice,
-                f.ponds,
-            ),
-        ))
-    }
-
-    #[staticmethod]
-    fn _from_args(
-        nilyr: i64,
-        nslyr: i64,
-        age: bool,
-        first_year: bool,
-        level_ice: bool,
-        ponds: bool,
-    ) -> PyResult<Self> {
-        Self::cice(nilyr, nslyr, age, first_year, level_ice, ponds)
+    ) -> PyResult<(Bound<'py, PyAny>, (Vec<Bound<'py, PyDict>>,))> {
+        let make = slf.getattr("from_fields")?;
+        Ok((make, (slf.get().spec(slf.py())?,)))
     }
 }
 
 fn py_bool(b: bool) -> &'static str {
     if b { "True" } else { "False" }
+}
+
+/// The thermodynamic constants of the complete step from (name, value) pairs of
+/// `RidgeStepParams::FIELDS` names, and the salt-flux option by name.
+fn step_params_from(list: Vec<(String, f64)>, salt_flux: &str) -> PyResult<RidgeStepParams> {
+    let mut p = RidgeStepParams::default();
+    for (name, value) in list {
+        if !RidgeStepParams::FIELDS.iter().any(|f| f.name == name) {
+            let all: Vec<&str> = RidgeStepParams::FIELDS.iter().map(|f| f.name).collect();
+            return Err(value_err(format!(
+                "unknown constant `{name}`; the complete step's constants: {}",
+                all.join(", ")
+            ))
+            .into());
+        }
+        p.set(&name, value).map_err(value_err)?;
+    }
+    p.salt_flux = SaltFlux::from_name(salt_flux).ok_or_else(|| {
+        value_err(format!(
+            "salt_flux = {salt_flux:?}: must be \"constant\" or \"prognostic\""
+        ))
+    })?;
+    Ok(p)
+}
+
+/// The complete step's thermodynamic constants (`RidgeStepParams::FIELDS`): (name, units,
+/// description, Icepack default).
+#[pyfunction]
+fn step_parameters() -> Vec<(&'static str, &'static str, &'static str, f64)> {
+    let d = RidgeStepParams::default();
+    RidgeStepParams::FIELDS
+        .iter()
+        .map(|f| {
+            (
+                f.name,
+                f.units,
+                f.description,
+                d.get(f.name).expect("a listed constant"),
+            )
+        })
+        .collect()
 }
 
 /// Names, units and long names of the per-cell and per-category outputs of the complete step
@@ -903,7 +1133,7 @@ type FullOut<'py> = (
 /// not returned). Returns ([aicen, vicen, vsnon], trcrn, [aice0, aice], hin_max used,
 /// [(cell output, array)], [(category output, array)]); the inputs are not modified.
 #[pyfunction]
-#[pyo3(signature = (aicen, vicen, vsnon, trcrn, layout, aice0, aice, hin_max, c1, c2, rates, tf, dt, ndtd, valid, participation_name, redistribution_name, params, cleanup, rebin))]
+#[pyo3(signature = (aicen, vicen, vsnon, trcrn, layout, aice0, aice, hin_max, c1, c2, rates, tf, dt, ndtd, valid, participation_name, redistribution_name, params, cleanup, rebin, step_params, salt_flux))]
 #[allow(clippy::too_many_arguments)]
 fn ridge_step_full<'py>(
     py: Python<'py>,
@@ -927,6 +1157,8 @@ fn ridge_step_full<'py>(
     params: Vec<(String, f64)>,
     cleanup: bool,
     rebin: bool,
+    step_params: Vec<(String, f64)>,
+    salt_flux: &str,
 ) -> PyResult<FullOut<'py>> {
     let spatial = category_shapes(&aicen, &vicen)?;
     let full = aicen.shape().to_vec();
@@ -987,9 +1219,9 @@ fn ridge_step_full<'py>(
         participation: ro.participation,
         redistribution: ro.redistribution,
         params: ro.params,
+        step: step_params_from(step_params, salt_flux)?,
         cleanup,
         rebin,
-        ..Default::default()
     };
     let hin_max = match hin_max {
         Some(h) => h,
@@ -1671,6 +1903,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(ridge_step, m)?)?;
     m.add_function(wrap_pyfunction!(ridge_step_full, m)?)?;
     m.add_function(wrap_pyfunction!(step_outputs, m)?)?;
+    m.add_function(wrap_pyfunction!(step_parameters, m)?)?;
     m.add_class::<PyTracerLayout>()?;
     m.add_function(wrap_pyfunction!(category_bounds_py, m)?)?;
     m.add_function(wrap_pyfunction!(param_names, m)?)?;

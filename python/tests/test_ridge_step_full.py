@@ -557,7 +557,9 @@ def test_xarray_complete_step_with_time_before_categories():
     ok = prx.ridge_step(bad, dt=1800.0, convergence=2e-6, shear=1e-6, layout=layout,
                         category_dim="cat")
     np.testing.assert_array_equal(ok.fresh.values, r.fresh.values)
-    with pytest.raises(ValueError, match="layout"):
-        prx.ridge_step(ds, dt=1800.0, convergence=1e-6)
+    # Without layout=, the layout is told from the dataset's variables.
+    auto = prx.ridge_step(ds, dt=1800.0, convergence=2e-6, shear=1e-6)
+    np.testing.assert_array_equal(auto.fresh.values, r.fresh.values)
+    np.testing.assert_array_equal(auto.ipnd.values, r.ipnd.values)
     with pytest.raises(ValueError, match="qice002"):
         prx.ridge_step(ds.drop_vars("qice002"), dt=1800.0, convergence=1e-6, layout=layout)

@@ -489,6 +489,114 @@ fn read_deformation(
     Ok((divu, shear))
 }
 
+/// The unit a per-cell field read by [`read_cell_field`] must carry.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CellUnits {
+    /// A rate in 1/s (`s-1`, `1/s`, `s^-1`, `/s`, `s**-1`): the host's closing and opening
+    /// rates. CICE history's `%/day` is refused, never converted: SIS2 gives these rates in
+    /// 1/s, and a %/day value taken for 1/s would be wrong by a factor 8.64e6.
+    PerSecond,
+    /// A temperature in °C (`degC`, `deg_C`, `degrees_C`, `degree_C`, `degree_Celsius`,
+    /// `Celsius`, `C`): the freezing temperature. Kelvin and anything else is refused.
+    DegC,
+}
+
+impl CellUnits {
+    fn accepts(self, u: &str) -> bool {
+        let u: String = u.chars().filter(|c| !c.is_whitespace()).collect();
+        match self {
+            CellUnits::PerSecond => matches!(u.as_str(), "s-1" | "1/s" | "s^-1" | "/s" | "s**-1"),
+            CellUnits::DegC => matches!(
+                u.to_ascii_lowercase().as_str(),
+                "degc"
+                    | "deg_c"
+                    | "degrees_c"
+                    | "degree_c"
+                    | "degree_celsius"
+                    | "degrees_celsius"
+                    | "celsius"
+                    | "c"
+            ),
+        }
+    }
+
+    fn expected(self) -> &'static str {
+        match self {
+            CellUnits::PerSecond => "\"s-1\" (1/s)",
+            CellUnits::DegC => "\"degC\"",
+        }
+    }
+}
+
+/// A per-cell field of the column dimensions, read by [`read_cell_field`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct CellField {
+    /// Values per column (the variable's unit, which [`CellUnits`] checked).
+    pub values: Array1<f64>,
+    /// Columns holding data (false where the value equals the variable's `_FillValue` or
+    /// `missing_value`); `None` when no value is missing.
+    pub valid: Option<Array1<bool>>,
+}
+
+/// Reads the per-cell variable `name` (the column dimensions of `grid`, a leading `time` of
+/// length 1 allowed on one side) from `path`: `Ok(None)` when the file has no such variable.
+/// Its `units` attribute must be present and name `units`; a missing or other unit is an
+/// error naming the variable, the unit found and the one expected.
+pub fn read_cell_field(
+    path: &Path,
+    grid: &ItdGrid,
+    name: &str,
+    units: CellUnits,
+) -> Result<Option<CellField>, NetcdfError> {
+    let file = netcdf::open(path).map_err(nc_err(path))?;
+    let Some(v) = file.variable(name) else {
+        return Ok(None);
+    };
+    let found = v
+        .attributes()
+        .find(|a| a.name() == "units")
+        .and_then(|a| a.value().ok())
+        .and_then(|x| String::try_from(x).ok());
+    match found {
+        None => {
+            return Err(NetcdfError::Value {
+                path: path.to_path_buf(),
+                var: name.into(),
+                msg: format!(
+                    "has no `units` attribute; it must be in {} (say so with units = {})",
+                    units.expected(),
+                    units.expected()
+                ),
+            });
+        }
+        Some(u) if !units.accepts(&u) => {
+            let hint = if units == CellUnits::PerSecond && rate_is_percent_per_day(&u) {
+                " (CICE history's %/day is not converted here: give the host's rates in 1/s)"
+            } else {
+                ""
+            };
+            return Err(NetcdfError::Value {
+                path: path.to_path_buf(),
+                var: name.into(),
+                msg: format!("has units \"{u}\"; expected {}{hint}", units.expected()),
+            });
+        }
+        Some(_) => {}
+    }
+    let fill = fill_of(&v);
+    let values = read_spatial(path, &file, name, &grid.spatial_dims)?.expect("the variable exists");
+    let valid: Array1<bool> = values.iter().map(|&x| !is_fill(x, fill)).collect();
+    Ok(Some(CellField {
+        values,
+        valid: (!valid.iter().all(|&v| v)).then_some(valid),
+    }))
+}
+
+fn rate_is_percent_per_day(u: &str) -> bool {
+    let u: String = u.chars().filter(|c| !c.is_whitespace()).collect();
+    matches!(u.as_str(), "%/day" | "%/d" | "%day-1" | "percent/day")
+}
+
 /// Reads a gridded thickness distribution (see the module documentation for the layout),
 /// the category dimension found by name.
 pub fn read_itd(path: &Path) -> Result<ItdGrid, NetcdfError> {
@@ -765,116 +873,24 @@ pub struct SnowTracers {
     pub fill_value: Option<f64>,
 }
 
-/// Number of consecutive variables `<prefix>001`, `<prefix>002`, ... in the file.
-fn count_levels(file: &netcdf::File, prefix: &str) -> usize {
-    (1..)
-        .take_while(|k| file.variable(&format!("{prefix}{k:03}")).is_some())
-        .count()
-}
-
 /// Reads the snow and tracers that go with `grid` (read from the same file by [`read_itd`]):
 /// `Ok(None)` when the file has none of `vsnon`, `Tsfcn`, `qice001`, `sice001`, `qsno001`
-/// (then only area and volume can be ridged). The numbers of ice and snow layers are those
-/// of the `qice` and `qsno` variables found; each optional tracer group (`iage`; `FY`;
-/// `alvl` with `vlvl`; `apnd`, `hpnd`, `ipnd`) is used when all its variables are present.
-/// Errors name the missing or malformed variable.
+/// (then only area and volume can be ridged). The layout is told from the variable names by
+/// [`TracerLayout::detect_cice`] (the one detection, which Python's `xr.ridge_step` uses
+/// too). Errors name the missing or malformed variable.
 pub fn read_snow_tracers(path: &Path, grid: &ItdGrid) -> Result<Option<SnowTracers>, NetcdfError> {
     let file = netcdf::open(path).map_err(nc_err(path))?;
     let has = |n: &str| file.variable(n).is_some();
-    let nilyr = count_levels(&file, "qice");
-    let nslyr = count_levels(&file, "qsno");
-    let base_probe = TracerLayout::cice(1, 1, CiceTracerFlags::default())
-        .expect("the minimal CICE layout is valid")
-        .cice_restart_names();
-    if !has("vsnon") && !base_probe.iter().any(|n| has(n)) {
-        return Ok(None);
-    }
-    let missing_var = |var: String, why: &str| NetcdfError::Value {
-        path: path.to_path_buf(),
-        var,
-        msg: format!("missing: {why}"),
-    };
-    if nilyr == 0 || nslyr == 0 {
-        let var = if nilyr == 0 { "qice001" } else { "qsno001" };
-        return Err(missing_var(
-            var.into(),
-            "the complete ridging step needs the ice enthalpy qice001.. and snow enthalpy \
-             qsno001.. with vsnon and the other tracers (CICE restart names)",
-        ));
-    }
-    let base = TracerLayout::cice(nilyr, nslyr, CiceTracerFlags::default())
-        .map_err(|source| NetcdfError::Itd {
+    let Some((layout, flags)) =
+        TracerLayout::detect_cice(&has).map_err(|e| NetcdfError::Value {
             path: path.to_path_buf(),
-            source,
+            var: e.var.clone(),
+            msg: e.to_string(),
         })?
-        .cice_restart_names();
-    // Each optional group: the names it adds to the layout below it.
-    let groups: [(CiceTracerFlags, CiceTracerFlags); 4] = {
-        let f = |age, first_year, level_ice, ponds| CiceTracerFlags {
-            age,
-            first_year,
-            level_ice,
-            ponds,
-        };
-        [
-            (f(true, false, false, false), f(false, false, false, false)),
-            (f(false, true, false, false), f(false, false, false, false)),
-            (f(false, false, true, false), f(false, false, false, false)),
-            (f(false, false, true, true), f(false, false, true, false)),
-        ]
+    else {
+        return Ok(None);
     };
-    let mut flags = CiceTracerFlags::default();
-    for (k, (with, without)) in groups.iter().enumerate() {
-        let names = |fl: CiceTracerFlags| {
-            TracerLayout::cice(nilyr, nslyr, fl)
-                .expect("CICE layouts with level ice are valid")
-                .cice_restart_names()
-        };
-        let below = names(*without);
-        let added: Vec<String> = names(*with)
-            .into_iter()
-            .filter(|n| !below.contains(n))
-            .collect();
-        let present: Vec<bool> = added.iter().map(|n| has(n)).collect();
-        if present.iter().all(|p| *p) {
-            match k {
-                0 => flags.age = true,
-                1 => flags.first_year = true,
-                2 => flags.level_ice = true,
-                _ => flags.ponds = true,
-            }
-        } else if present.iter().any(|p| *p) {
-            let miss = added
-                .iter()
-                .zip(&present)
-                .find(|(_, p)| !**p)
-                .map(|(n, _)| n.clone())
-                .unwrap_or_default();
-            return Err(missing_var(
-                miss,
-                &format!("the tracers {} go together", added.join(", ")),
-            ));
-        }
-    }
-    if flags.ponds && !flags.level_ice {
-        flags.ponds = false;
-    }
-    let layout = TracerLayout::cice(nilyr, nslyr, flags).map_err(|source| NetcdfError::Itd {
-        path: path.to_path_buf(),
-        source,
-    })?;
     let names = layout.cice_restart_names();
-    for n in base.iter().chain(&names) {
-        if !has(n) {
-            return Err(missing_var(
-                n.clone(),
-                &format!(
-                    "the file has qice001..qice{nilyr:03} and qsno001..qsno{nslyr:03}, so the \
-                     layout needs {n}"
-                ),
-            ));
-        }
-    }
     let (ncat, ncol) = (grid.ncat(), grid.ncol());
     let dims = grid.category_dims();
     let mut fill_value = None;

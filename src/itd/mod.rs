@@ -31,7 +31,7 @@ pub use cf::{Cf, CfLookup, CfPreset, CfProvider, CfTable};
 pub use params::{ItdParams, Participation, Redistribution, StrengthFormula};
 pub use ridge_step::{
     Closing, ColumnMut, OceanFluxes, RidgeStepOptions, RidgeStepParams, SaltFlux, StepDiagnostics,
-    StepForcing, StepWorkspace, deformation_terms, percent_per_day_to_per_second,
+    StepForcing, StepParamMeta, StepWorkspace, deformation_terms, percent_per_day_to_per_second,
     ridge_step_column,
 };
 pub use ridge_step_batch::{
@@ -46,7 +46,9 @@ pub use strength::{
     BatchSummary, ColumnStrength, StrengthOptions, strength_batch, strength_batch_masked,
     strength_column,
 };
-pub use tracers::{CiceTracerFlags, TracerBase, TracerField, TracerLayout, TracerRole};
+pub use tracers::{
+    CiceTracerFlags, LayoutDetectError, TracerBase, TracerField, TracerLayout, TracerRole,
+};
 
 /// What is wrong with one column (no column index: see [`ItdError::Column`]).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

@@ -62,7 +62,93 @@ pub enum TracerRole {
     Other,
 }
 
+impl TracerBase {
+    /// Every base, in Icepack's `trcr_depend` order.
+    pub const ALL: [TracerBase; 3] = [
+        TracerBase::Area,
+        TracerBase::IceVolume,
+        TracerBase::SnowVolume,
+    ];
+
+    /// Lower-case name (`area`, `ice_volume`, `snow_volume`), as the Python face spells it.
+    pub fn name(self) -> &'static str {
+        match self {
+            TracerBase::Area => "area",
+            TracerBase::IceVolume => "ice_volume",
+            TracerBase::SnowVolume => "snow_volume",
+        }
+    }
+
+    /// The base called `name` ([`TracerBase::name`]).
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|b| b.name() == name)
+    }
+}
+
 impl TracerRole {
+    /// Every role.
+    pub const ALL: [TracerRole; 12] = [
+        TracerRole::SurfaceTemperature,
+        TracerRole::IceEnthalpy,
+        TracerRole::SnowEnthalpy,
+        TracerRole::IceSalinity,
+        TracerRole::Age,
+        TracerRole::FirstYear,
+        TracerRole::LevelArea,
+        TracerRole::LevelVolume,
+        TracerRole::PondArea,
+        TracerRole::PondDepth,
+        TracerRole::PondLid,
+        TracerRole::Other,
+    ];
+
+    /// Lower-case name (`surface_temperature`, `ice_enthalpy`, ..., `other`), as the Python
+    /// face spells it.
+    pub fn name(self) -> &'static str {
+        use TracerRole::*;
+        match self {
+            SurfaceTemperature => "surface_temperature",
+            IceEnthalpy => "ice_enthalpy",
+            SnowEnthalpy => "snow_enthalpy",
+            IceSalinity => "ice_salinity",
+            Age => "age",
+            FirstYear => "first_year",
+            LevelArea => "level_area",
+            LevelVolume => "level_volume",
+            PondArea => "pond_area",
+            PondDepth => "pond_depth",
+            PondLid => "pond_lid",
+            Other => "other",
+        }
+    }
+
+    /// The role called `name` ([`TracerRole::name`]).
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|r| r.name() == name)
+    }
+
+    /// Icepack's field name of this role (`Tsfc`, `qice`, `qsno`, `sice`, `iage`, `FY`,
+    /// `alvl`, `vlvl`, `apnd`, `hpnd`, `ipnd`; none for [`TracerRole::Other`]), and its base
+    /// and strata as [`TracerLayout::cice`] carries it.
+    pub fn icepack(self) -> Option<(&'static str, TracerBase, &'static [&'static str])> {
+        use TracerBase::*;
+        use TracerRole::*;
+        Some(match self {
+            SurfaceTemperature => ("Tsfc", Area, &[]),
+            IceEnthalpy => ("qice", IceVolume, &[]),
+            SnowEnthalpy => ("qsno", SnowVolume, &[]),
+            IceSalinity => ("sice", IceVolume, &[]),
+            Age => ("iage", IceVolume, &[]),
+            FirstYear => ("FY", Area, &[]),
+            LevelArea => ("alvl", Area, &[]),
+            LevelVolume => ("vlvl", IceVolume, &[]),
+            PondArea => ("apnd", Area, &["alvl"]),
+            PondDepth => ("hpnd", Area, &["alvl", "apnd"]),
+            PondLid => ("ipnd", Area, &["alvl", "apnd"]),
+            Other => return None,
+        })
+    }
+
     /// CF `units` of a tracer of this role (CICE's units: °C, J m⁻³, ppt, s, m; `""` for
     /// [`TracerRole::Other`], whose units the host defines).
     pub fn units(self) -> &'static str {
@@ -159,6 +245,16 @@ impl CiceTracerFlags {
         level_ice: true,
         ponds: true,
     };
+}
+
+/// Why [`TracerLayout::detect_cice`] cannot tell the layout: a variable is missing.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("missing: {why}")]
+pub struct LayoutDetectError {
+    /// The variable (CICE restart name) missing.
+    pub var: String,
+    /// Why it is needed.
+    pub why: String,
 }
 
 /// A validated tracer layout with the per-tracer index tables the ridging step uses.
@@ -443,6 +539,107 @@ impl TracerLayout {
         names
     }
 
+    /// The CICE layout of a file or dataset holding snow and tracers under their CICE restart
+    /// names ([`TracerLayout::cice_restart_names`]), told from which variable names it has
+    /// (`has`): `Ok(None)` when it has none of `vsnon`, `Tsfcn`, `qice001`, `sice001`,
+    /// `qsno001` (no snow, no tracers); the numbers of ice and snow layers are those of the
+    /// consecutive `qice001..` and `qsno001..` found; each optional group (`iage`; `FY`;
+    /// `alvl` with `vlvl`; `apnd`, `hpnd`, `ipnd`) is used when all its variables are there.
+    /// A missing member of a group, or a base tracer missing for the layers found, is an
+    /// error naming the variable. The NetCDF reader and Python's `xr.ridge_step` both use it.
+    pub fn detect_cice(
+        has: &dyn Fn(&str) -> bool,
+    ) -> Result<Option<(TracerLayout, CiceTracerFlags)>, LayoutDetectError> {
+        let count = |prefix: &str| {
+            (1..)
+                .take_while(|k| has(&format!("{prefix}{k:03}")))
+                .count()
+        };
+        let nilyr = count("qice");
+        let nslyr = count("qsno");
+        let probe = TracerLayout::cice(1, 1, CiceTracerFlags::default())
+            .expect("the minimal CICE layout is valid")
+            .cice_restart_names();
+        if !has("vsnon") && !probe.iter().any(|n| has(n)) {
+            return Ok(None);
+        }
+        let missing = |var: String, why: String| LayoutDetectError { var, why };
+        if nilyr == 0 || nslyr == 0 {
+            let var = if nilyr == 0 { "qice001" } else { "qsno001" };
+            return Err(missing(
+                var.into(),
+                "the complete ridging step needs the ice enthalpy qice001.. and snow enthalpy \
+                 qsno001.. with vsnon and the other tracers (CICE restart names)"
+                    .into(),
+            ));
+        }
+        let names = |fl: CiceTracerFlags| {
+            TracerLayout::cice(nilyr, nslyr, fl)
+                .expect("CICE layouts with level ice are valid")
+                .cice_restart_names()
+        };
+        let f = |age, first_year, level_ice, ponds| CiceTracerFlags {
+            age,
+            first_year,
+            level_ice,
+            ponds,
+        };
+        // Each optional group: the names it adds to the layout below it.
+        let groups: [(CiceTracerFlags, CiceTracerFlags); 4] = [
+            (f(true, false, false, false), f(false, false, false, false)),
+            (f(false, true, false, false), f(false, false, false, false)),
+            (f(false, false, true, false), f(false, false, false, false)),
+            (f(false, false, true, true), f(false, false, true, false)),
+        ];
+        let mut flags = CiceTracerFlags::default();
+        for (k, (with, without)) in groups.iter().enumerate() {
+            let below = names(*without);
+            let added: Vec<String> = names(*with)
+                .into_iter()
+                .filter(|n| !below.contains(n))
+                .collect();
+            let present: Vec<bool> = added.iter().map(|n| has(n)).collect();
+            if present.iter().all(|p| *p) {
+                match k {
+                    0 => flags.age = true,
+                    1 => flags.first_year = true,
+                    2 => flags.level_ice = true,
+                    _ => flags.ponds = true,
+                }
+            } else if present.iter().any(|p| *p) {
+                let miss = added
+                    .iter()
+                    .zip(&present)
+                    .find(|(_, p)| !**p)
+                    .map(|(n, _)| n.clone())
+                    .unwrap_or_default();
+                return Err(missing(
+                    miss,
+                    format!("the tracers {} go together", added.join(", ")),
+                ));
+            }
+        }
+        if flags.ponds && !flags.level_ice {
+            flags.ponds = false;
+        }
+        let layout = TracerLayout::cice(nilyr, nslyr, flags).map_err(|e| LayoutDetectError {
+            var: "qice001".into(),
+            why: e.to_string(),
+        })?;
+        for n in layout.cice_restart_names() {
+            if !has(&n) {
+                return Err(missing(
+                    n.clone(),
+                    format!(
+                        "there are qice001..qice{nilyr:03} and qsno001..qsno{nslyr:03}, so the \
+                         layout needs {n}"
+                    ),
+                ));
+            }
+        }
+        Ok(Some((layout, flags)))
+    }
+
     /// The field of tracer `it` (index order) and the tracer's level in it (0-based).
     pub fn field_of(&self, it: usize) -> Option<(&TracerField, usize)> {
         let i = self.starts.iter().rposition(|&s| s <= it)?;
@@ -579,6 +776,44 @@ mod tests {
             Some(("sice", 3))
         );
         assert!(l.field_of(23).is_none());
+    }
+
+    /// Detection from variable names: the layout that names them, nothing without snow or
+    /// tracers, and a missing member named.
+    #[test]
+    fn detect_cice_from_names() {
+        let want = TracerLayout::cice(
+            3,
+            2,
+            CiceTracerFlags {
+                first_year: true,
+                level_ice: true,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        let mut names = want.cice_restart_names();
+        names.push("vsnon".into());
+        let has = |n: &str| names.iter().any(|m| m == n);
+        let (got, flags) = TracerLayout::detect_cice(&has).unwrap().unwrap();
+        assert_eq!(got, want);
+        assert!(flags.first_year && flags.level_ice && !flags.age && !flags.ponds);
+        assert_eq!(TracerLayout::detect_cice(&|n| n == "aicen").unwrap(), None);
+        let without_vlvl = |n: &str| n != "vlvl" && has(n);
+        let e = TracerLayout::detect_cice(&without_vlvl).unwrap_err();
+        assert_eq!(e.var, "vlvl");
+        assert!(e.why.contains("alvl"), "{e}");
+        let without_sice2 = |n: &str| n != "sice002" && has(n);
+        assert_eq!(
+            TracerLayout::detect_cice(&without_sice2).unwrap_err().var,
+            "sice002"
+        );
+        for r in TracerRole::ALL {
+            assert_eq!(TracerRole::from_name(r.name()), Some(r));
+        }
+        for b in TracerBase::ALL {
+            assert_eq!(TracerBase::from_name(b.name()), Some(b));
+        }
     }
 
     #[test]
