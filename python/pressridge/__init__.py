@@ -121,12 +121,61 @@ def _params(params: dict, step: bool = False) -> list:
     return out
 
 
-def _cf_args(cf: CfLike) -> Tuple[Optional[float], Optional[tuple], Optional[str]]:
-    """Normalises ``cf`` to (constant, (thickness, cf) nodes, file) for the core."""
+#: The friction pair (mu, mu_w) whose C_f a ridging table gives by default: Hopkins
+#: (1994)'s thickness set, 1.0 between blocks above and 0.6 below the water line.
+DEFAULT_FRICTION: Tuple[float, float] = tuple(_core.DEFAULT_FRICTION)  # type: ignore[assignment]
+
+
+def _friction_arg(friction: Any) -> Optional[Tuple[float, float]]:
+    if friction is None:
+        return None
+    try:
+        mu, mu_w = (float(x) for x in friction)
+    except (TypeError, ValueError):
+        raise ValueError(
+            f"friction must be a pair (mu, mu_w) of numbers, e.g. (1.0, 0.6); got {friction!r}"
+        ) from None
+    if not (_np.isfinite(mu) and _np.isfinite(mu_w) and mu >= 0 and mu_w >= 0):
+        raise ValueError(f"friction = {friction!r}: mu and mu_w must be finite and non-negative")
+    return mu, mu_w
+
+
+def _cf_table_nodes(cf: CfLike, friction: Any) -> Tuple[Optional[tuple], Optional[Tuple[float, float]]]:
+    """For a table or a table file, the (thickness, cf) nodes at ``friction`` and the
+    friction they are for (None when the source does not say); else (None, None)."""
+    f = _friction_arg(friction)
+    if isinstance(cf, Table):
+        pairs = cf.friction
+        if pairs is None:
+            if f is not None:
+                raise ValueError(
+                    f"{cf.path}: the table has no friction coordinates mu(set), mu_w(set) (made "
+                    "by an older pressridge); re-tabulate its campaign to choose C_f by friction"
+                )
+            return cf.cf_nodes(0), None
+        want = f or DEFAULT_FRICTION
+        s = cf.friction_set(*want)
+        return cf.cf_nodes(s), tuple(pairs[s])
+    if isinstance(cf, (str, _os.PathLike)) and not (isinstance(cf, str) and cf in CF_PRESETS):
+        p = _os.fspath(cf)
+        if _os.path.exists(p):
+            h, c, label = _core.read_cf_table_at_friction(p, f)
+            return (h, c), (None if label is None else tuple(label))
+    if f is not None:
+        raise ValueError(
+            "friction chooses the C_f of a table: give cf= a pressridge.Table or a table file"
+        )
+    return None, None
+
+
+def _cf_args(cf: CfLike, friction: Any = None) -> Tuple[Optional[float], Optional[tuple], Optional[str]]:
+    """Normalises ``cf`` to (constant, (thickness, cf) nodes, file) for the core; tables
+    and table files give the nodes at ``friction`` (default :data:`DEFAULT_FRICTION`)."""
+    nodes, _ = _cf_table_nodes(cf, friction)
+    if nodes is not None:
+        return None, (list(nodes[0]), list(nodes[1])), None
     if cf is None:
         return None, None, None
-    if isinstance(cf, Table):
-        return None, cf.cf_nodes(0), None
     if isinstance(cf, (bool, _np.bool_)):
         raise ValueError("cf must be a number, a preset name, a table or a file, not a bool")
     if isinstance(cf, (int, float, _np.integer, _np.floating)):
@@ -152,9 +201,10 @@ def _cf_args(cf: CfLike) -> Tuple[Optional[float], Optional[tuple], Optional[str
     )
 
 
-def _resolve_cf(cf: CfLike) -> CfLike:
-    """``cf`` with files read into (thickness, cf) nodes, so that it pickles cheaply."""
-    value, nodes, path = _cf_args(cf)
+def _resolve_cf(cf: CfLike, friction: Any = None) -> CfLike:
+    """``cf`` with tables and files read into (thickness, cf) nodes at ``friction``, so
+    that it pickles cheaply."""
+    value, nodes, path = _cf_args(cf, friction)
     if path is not None:
         h, c = _core.read_cf_table(path)
         return (h, c)
@@ -176,6 +226,7 @@ def strength(
     redistribution: str = "exponential",
     law: str = "rothrock",
     cf: CfLike = None,
+    friction: Optional[Tuple[float, float]] = None,
     valid: Any = None,
     _clamp_note: Optional[str] = None,
     **params: float,
@@ -215,6 +266,13 @@ def strength(
         arrays ``(thickness_m, cf)``. Tables are interpolated linearly in the thickness of
         the ridging category and clamped outside their range (with a
         :class:`CfClampedWarning`).
+    friction : (float, float), optional
+        With a :class:`Table` or a table file made by ``pressridge tabulate``: the friction
+        pair (mu, mu_w) (dimensionless, between blocks above and below the water line) of
+        the simulations whose C_f to use; default :data:`DEFAULT_FRICTION` (1.0, 0.6). A
+        pair the table does not hold raises :class:`ValueError` listing the pairs it has.
+        An error with a constant C_f. :func:`pressridge.xr.strength` records the pair in
+        the ``cf_friction`` attribute.
     valid : array_like of bool, shape ``aicen.shape[1:]``, optional
         Columns to compute; the others (land, missing data) are not checked and get NaN.
     **params : float
@@ -238,7 +296,7 @@ def strength(
     v = _f64(vicen, "vicen")
     a0 = None if aice0 is None else _f64(aice0, "aice0")
     ok = None if valid is None else _bool(valid, "valid")
-    value, nodes, path = _cf_args(cf)
+    value, nodes, path = _cf_args(cf, friction)
     out, clamped = _core.strength(
         a,
         v,

@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 import os
-from typing import Any, Dict, List, Tuple, Union
+from typing import Any, Dict, List, Optional, Tuple, Union
 
 import numpy as np
 
@@ -137,6 +137,19 @@ class Table:
         if h.ndim == 0:
             vals, clamped = vals[()], clamped[()]
         return (vals, clamped) if return_clamped else vals
+
+    @property
+    def friction(self) -> Optional[List[Tuple[float, float]]]:
+        """The friction pair (mu, mu_w) of each set (dimensionless, between blocks above
+        and below the water line), from the table's ``mu(set)`` and ``mu_w(set)``; None for a
+        table made before they were written."""
+        f = self._core.friction()
+        return None if f is None else [(float(a), float(b)) for a, b in f]
+
+    def friction_set(self, mu: float, mu_w: float) -> int:
+        """The index of the set at friction (mu, mu_w); :class:`ValueError` listing the
+        pairs the table has when it has not that one."""
+        return int(self._core.friction_set(float(mu), float(mu_w)))
 
     def cf_nodes(self, set: Union[int, str] = 0) -> Tuple[np.ndarray, np.ndarray]:
         """The (thickness in m, C_f) nodes of a set where C_f is finite and positive: what

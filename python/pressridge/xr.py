@@ -26,7 +26,7 @@ Otherwise a NaN is an error. ``mask=True``/``False`` forces either behaviour.
 from __future__ import annotations
 
 import itertools
-from typing import Any, Hashable, List, Optional, Union
+from typing import Any, Hashable, List, Optional, Tuple, Union
 
 import numpy as np
 import xarray as xr
@@ -135,6 +135,7 @@ def strength(
     redistribution: str = "exponential",
     law: str = "rothrock",
     cf: Any = None,
+    friction: Optional[Tuple[float, float]] = None,
     category_dim: Optional[Hashable] = None,
     mask: Union[str, bool] = "auto",
     **params: float,
@@ -142,7 +143,9 @@ def strength(
     """Ice strength P (N/m) of the thickness distribution in ``ds``.
 
     Options and parameters as :func:`pressridge.strength` (``cf`` may be a number, a preset
-    name, a :class:`pressridge.Table`, a C_f table file or (thickness, cf) nodes).
+    name, a :class:`pressridge.Table`, a C_f table file or (thickness, cf) nodes; with a
+    table, ``friction`` = (mu, mu_w) chooses its set, default (1.0, 0.6), and the output's
+    ``cf_friction`` attribute records the pair).
     ``category_dim`` names the category dimension (default: the one dimension of ``aicen``
     named as in :data:`CATEGORY_DIMS`; a dataset with none or several is refused with the
     dimensions listed); every other dimension (``time``, ``nj``, ``ni``, ensemble...) is a
@@ -159,9 +162,10 @@ def strength(
         participation=participation,
         redistribution=redistribution,
         law=law,
-        cf=_pr._resolve_cf(cf),
+        cf=_pr._resolve_cf(cf, friction),
         **params,
     )
+    _, cf_friction = _pr._cf_table_nodes(cf, friction)
     _pr._params(params)  # unknown names fail now, not at compute time
     args: List[xr.DataArray] = [aicen, vicen]
     if aice0 is not None:
@@ -199,6 +203,13 @@ def strength(
         "redistribution": redistribution,
         "strength_formula": law,
         "cf": _describe_cf(cf, cf_desc),
+        "cf_friction": (
+            "not applicable: constant C_f"
+            if not isinstance(cf_desc, tuple)
+            else "unknown: the C_f source does not say"
+            if cf_friction is None
+            else f"mu = {cf_friction[0]:g}, mu_w = {cf_friction[1]:g}"
+        ),
         "parameter_overrides": ", ".join(f"{k}={v}" for k, v in params.items()) or "none",
         "source": f"pressridge {_pr.__version__} (Python)",
     }

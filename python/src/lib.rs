@@ -1418,6 +1418,34 @@ fn read_cf_table_py<'py>(py: Python<'py>, path: PathBuf) -> PyResult<Pair<'py, f
     ))
 }
 
+/// The C_f of a table file at friction `friction` = (μ, μ_w) (dimensionless; None: the
+/// default 1.0, 0.6 for a ridging table, the one curve of a plain table), as
+/// `--cf-table FILE --friction MU,MU_W`: returns (thickness, cf, friction of the curve or
+/// None when the file does not say).
+#[pyfunction]
+#[pyo3(signature = (path, friction=None))]
+#[allow(clippy::type_complexity)]
+fn read_cf_table_at_friction<'py>(
+    py: Python<'py>,
+    path: PathBuf,
+    friction: Option<(f64, f64)>,
+) -> PyResult<(
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<f64>>,
+    Option<(f64, f64)>,
+)> {
+    let t = detached(py, || {
+        file_missing(&path)?;
+        pressridge::io::itd_netcdf::read_cf_table_at_friction(&path, friction)
+            .map_err(BindError::from)
+    })?;
+    Ok((
+        PyArray1::from_slice(py, t.thickness()),
+        PyArray1::from_slice(py, t.values()),
+        t.friction(),
+    ))
+}
+
 /// Names of the parameters that `strength` and `ridge_step` accept as keywords.
 #[pyfunction]
 fn param_names() -> Vec<&'static str> {
@@ -1755,6 +1783,17 @@ impl PyRidgeLookup {
         self.inner.sets().to_vec()
     }
 
+    /// The friction pair (μ, μ_w) of each set (dimensionless), or None for a table made
+    /// before friction coordinates were written.
+    fn friction(&self) -> Option<Vec<(f64, f64)>> {
+        self.inner.friction()
+    }
+
+    /// The set at friction (`mu`, `mu_w`); ValueError listing the pairs the table has.
+    fn friction_set(&self, mu: f64, mu_w: f64) -> PyResult<usize> {
+        Ok(self.inner.friction_set(mu, mu_w).map_err(lookup_err)?)
+    }
+
     /// Thickness axis (m).
     fn thickness<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
         PyArray1::from_slice(py, self.inner.thickness())
@@ -1909,6 +1948,11 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(param_names, m)?)?;
     m.add_function(wrap_pyfunction!(cf_presets, m)?)?;
     m.add_function(wrap_pyfunction!(read_cf_table_py, m)?)?;
+    m.add_function(wrap_pyfunction!(read_cf_table_at_friction, m)?)?;
+    m.add(
+        "DEFAULT_FRICTION",
+        pressridge::table::tabulate::DEFAULT_FRICTION,
+    )?;
     m.add_function(wrap_pyfunction!(default_params, m)?)?;
     m.add_function(wrap_pyfunction!(scene_toml, m)?)?;
     m.add_function(wrap_pyfunction!(simulate, m)?)?;

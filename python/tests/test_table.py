@@ -121,3 +121,32 @@ def test_errors(table, sample, tmp_path):
         table.cf(0.3, set="mu=1")
     with pytest.raises(ValueError, match="thickness = NaN is not finite"):
         table.value("work_mean", np.nan, 1.0)
+
+
+def test_friction_chooses_the_set(table, cli_campaign, cli, sample, tmp_path):
+    """The table's sets carry their friction pair; strength takes C_f at the pair asked for
+    (default 1.0, 0.6), equal to the command line's --friction, and refuses a pair the table
+    does not hold, naming the pairs it has."""
+    assert table.friction == [(1.0, 0.6)]
+    assert table.friction_set(1.0, 0.6) == 0
+    assert pr.DEFAULT_FRICTION == (1.0, 0.6)
+    out = tmp_path / "p.nc"
+    cli("strength", "--input", sample, "--output", out, "--cf-table", cli_campaign[1],
+        "--friction", "1.0,0.6")
+    want = xr.load_dataset(out).strength.values
+    itd = xr.load_dataset(sample)
+    for cf in (table, table.path):
+        with pytest.warns(pr.CfClampedWarning):
+            got = pr.strength(itd.aicen.values, itd.vicen.values, itd.aice0.values, cf=cf,
+                              friction=(1.0, 0.6))
+        np.testing.assert_array_equal(got, want)
+        with pytest.raises(ValueError, match=r"mu = 0.4, mu_w = 0.3.*\(1, 0.6\)"):
+            pr.strength(itd.aicen.values, itd.vicen.values, itd.aice0.values, cf=cf,
+                        friction=(0.4, 0.3))
+    with pytest.raises(ValueError, match="friction chooses the C_f of a table"):
+        pr.strength(itd.aicen.values, itd.vicen.values, cf=17.0, friction=(1.0, 0.6))
+    with pytest.raises(ValueError, match="friction must be a pair"):
+        pr.strength(itd.aicen.values, itd.vicen.values, cf=table, friction=1.0)
+    lazy = prx.strength(itd.chunk({"nj": 30}), cf=table)
+    assert lazy.attrs["cf_friction"] == "mu = 1, mu_w = 0.6"
+    assert prx.strength(itd, cf=17).attrs["cf_friction"].startswith("not applicable")
