@@ -28,6 +28,8 @@ import numpy as _np
 
 from . import _core
 from ._table import Table
+from . import _progress
+from ._run import Run, State, load_run, load_state, plot_state
 
 __version__: str = _core.__version__
 
@@ -52,6 +54,12 @@ __all__ = [
     "STEP_PARAMETERS",
     "DEFAULT_STEP_PARAMETERS",
     "CF_PRESETS",
+    "DEFAULT_FRICTION",
+    "Run",
+    "State",
+    "load_run",
+    "load_state",
+    "plot_state",
 ]
 
 #: Names of the ITD parameters accepted as keywords by :func:`strength` and
@@ -725,6 +733,7 @@ def simulate(
     scene: Optional[PathLike] = None,
     *,
     sets: Optional[Sequence[str]] = None,
+    progress: Any = True,
     **overrides: Any,
 ) -> Simulation:
     """Runs the discrete-element ridge simulator on a scene.
@@ -736,6 +745,11 @@ def simulate(
         paper's Figure 5 experiment, 400 s) when omitted.
     sets : list of str, optional
         Overrides as on the command line, ``"contact.mu=0.4"``.
+    progress : bool or callable, default True
+        True shows the simulated time against the scene's duration with an ETA (a tqdm bar
+        when tqdm is installed — a widget in notebooks —, else a line on stderr, every few
+        seconds when stderr is not a terminal); False is silent; a callable is called with
+        ``(time_s, duration_s)`` instead, at most five times a second.
     **overrides
         Overrides by keyword; a dotted key is written with ``__`` (``contact__mu=0.4``) or
         passed as ``**{"contact.mu": 0.4}``. Values are numbers, booleans, strings or
@@ -750,7 +764,12 @@ def simulate(
     :class:`KeyboardInterrupt`. Unknown keys and bad values raise :class:`ValueError`.
     """
     path = None if scene is None else _os.fspath(scene)
-    summary, toml, series = _core.simulate(path, _overrides(overrides, sets))
+    show, bar = _progress.callback(progress, "simulate", "s simulated")
+    try:
+        summary, toml, series = _core.simulate(path, _overrides(overrides, sets), show)
+    finally:
+        if bar is not None:
+            bar.close()
     return Simulation(
         summary=_json.loads(summary),
         series=dict(series),
@@ -787,7 +806,7 @@ def campaign(
     client: Any = None,
     *,
     threads: Optional[int] = None,
-    progress: Optional[Callable[[dict], None]] = None,
+    progress: Any = True,
 ) -> CampaignResult:
     """Runs a seeded campaign (a spec TOML, as ``pressridge campaign``) into the result
     directory ``out``, skipping runs already there.
@@ -800,14 +819,31 @@ def campaign(
     interrupted anywhere resumes by calling this again. Runs are deterministic: the
     records equal the command line's bit for bit (but for the wall-clock time).
 
-    ``progress``, if given, is called with a dict (``skipped``, ``done``, ``total``, and
-    without a client ``simulated`` seconds) as runs finish.
+    ``progress``: True (the default) shows the runs done against the runs to do (a tqdm
+    bar when tqdm is installed, else lines on stderr as :func:`simulate`); False is silent;
+    a callable is called with a dict (``skipped``, ``done``, ``total``, and without a
+    client ``simulated`` seconds) as runs finish.
 
     Raises :class:`ValueError` for a bad spec or a directory holding another campaign,
     :class:`OSError` for files.
     """
     spec_p = _os.path.abspath(_os.fspath(spec))
     out_p = _os.path.abspath(_os.fspath(out))
+    bar = None
+    if progress is True:
+        show, bar = _progress.callback(True, "campaign", "runs")
+
+        def progress(d: dict) -> None:
+            show(d["skipped"] + d["done"], d["total"])
+
+    try:
+        return _campaign(spec_p, out_p, client, threads, progress or None)
+    finally:
+        if bar is not None:
+            bar.close()
+
+
+def _campaign(spec_p: str, out_p: str, client: Any, threads: Optional[int], progress: Any) -> CampaignResult:
     if client is None:
         n = threads if threads is not None else (_os.cpu_count() or 1)
         if int(n) < 1:

@@ -149,7 +149,9 @@ DEFAULT_FRICTION: Tuple[float, float]
 def default_params() -> dict[str, float]: ...
 def scene_toml(scene: Optional[_Path], sets: Sequence[str]) -> str: ...
 def simulate(
-    scene: Optional[_Path], sets: Sequence[str]
+    scene: Optional[_Path],
+    sets: Sequence[str],
+    progress: Optional[Callable[[float, float], None]] = None,
 ) -> Tuple[str, str, List[Tuple[str, _F64]]]:
     """(summary JSON, resolved scene TOML, [(series column, values)])."""
 

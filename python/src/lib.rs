@@ -1511,17 +1511,32 @@ type SimOut<'py> = (String, String, Vec<(String, Bound<'py, PyArray1<f64>>)>);
 /// Runs a scene; returns (summary JSON, resolved scene TOML, [(column, samples)]).
 /// Ctrl-C stops the run at the next sample with `KeyboardInterrupt`.
 #[pyfunction]
-#[pyo3(signature = (scene, sets))]
+#[pyo3(signature = (scene, sets, progress=None))]
 fn simulate<'py>(
     py: Python<'py>,
     scene: Option<PathBuf>,
     sets: Vec<String>,
+    progress: Option<Py<PyAny>>,
 ) -> PyResult<SimOut<'py>> {
     let sc = guarded(|| load_scene(scene.as_deref(), &sets))?;
+    let duration = sc.duration;
     let out = detached(py, || {
         let mut interrupted: Option<PyErr> = None;
-        let out = simulation::run(&sc, &mut |_| {
-            let r = Python::attach(|py| py.check_signals());
+        // `progress(time, duration)` (s) at most every 0.2 s of wall time, and at the end.
+        let mut last = std::time::Instant::now();
+        let out = simulation::run(&sc, &mut |w| {
+            let t = w.time();
+            let due = last.elapsed().as_secs_f64() >= 0.2 || t >= duration - 0.5 * w.dt();
+            let r = Python::attach(|py| {
+                py.check_signals()?;
+                if let (Some(cb), true) = (&progress, due) {
+                    cb.call1(py, (t, duration))?;
+                }
+                Ok::<(), PyErr>(())
+            });
+            if due {
+                last = std::time::Instant::now();
+            }
             match r {
                 Ok(()) => true,
                 Err(e) => {

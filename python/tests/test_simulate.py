@@ -69,3 +69,48 @@ def test_ctrl_c_stops_a_run():
         pr.simulate()  # the 400 s default scene: minutes if not stopped
     timer.join()
     assert time.perf_counter() - t0 < 10.0
+
+
+def test_progress_shows_and_is_silent_on_request(capsys):
+    seen = []
+    pr.simulate(sets=SETS, progress=lambda t, d: seen.append((t, d)))
+    assert seen and all(d == 2.0 for _, d in seen)
+    assert [t for t, _ in seen] == sorted(t for t, _ in seen)
+    assert abs(seen[-1][0] - 2.0) < 1e-3, "the last report is at the end"
+    capsys.readouterr()
+    pr.simulate(sets=SETS, progress=False)
+    assert capsys.readouterr().err == ""
+    pr.simulate(sets=SETS)  # the default shows progress (stderr is not a terminal here)
+    err = capsys.readouterr().err
+    assert "simulate:" in err and "of 2 s simulated (100.0 %)" in err, err
+    with pytest.raises(ValueError, match="progress must be"):
+        pr.simulate(sets=SETS, progress="yes")
+
+
+def test_a_run_directory_loads_and_plots(cli, tmp_path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.collections import PolyCollection
+
+    out = tmp_path / "run"
+    cli("simulate", *[x for s in SETS for x in ("--set", s)], "--out", out, "--no-figures")
+    run = pr.load_run(out)
+    want = json.loads((out / "summary.json").read_text())
+    assert run.summary == want
+    assert run.series["work"].attrs["units"] == "J/m"
+    assert run.series["time"].size == 5 and run.units["ridging_force"] == "N/m"
+    np.testing.assert_array_equal(run.series["work"].values[-1], want["work"])
+    st = run.state
+    assert len(st.polygons) == want["bodies"] == len(st.roles)
+    assert abs(st.time - want["time"]) < 1e-12 and st.water_level == 0.0
+    assert {"Sheet", "Floe"} <= set(st.roles)
+    # Each outline is its block moved to its pose: the centroid of the vertices of a
+    # rectangle is its centre.
+    k = st.roles.index("Sheet")
+    np.testing.assert_allclose(st.polygons[k].mean(axis=0), st.pos[k], atol=1e-9)
+    ax = pr.plot_state(run)
+    coll = [c for c in ax.collections if isinstance(c, PolyCollection)]
+    assert len(coll) == 1 and len(coll[0].get_paths()) == want["bodies"]
+    with pytest.raises(FileNotFoundError, match="not a run directory"):
+        pr.load_run(tmp_path)
