@@ -1,5 +1,6 @@
 //! Figures of a tabulated campaign (cf. Hopkins 1994, Figures 8–12).
 
+use super::layout::{Axis, Layout};
 use super::{PlotError, draw_err, ensure_font};
 use crate::observe::Profile;
 use crate::table::tabulate::RidgeTable;
@@ -46,20 +47,13 @@ fn plot_work_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> 
     } else {
         format!("work against ridged volume ({})", t.sets[s])
     };
-    let mut chart = ChartBuilder::on(&root)
-        .caption(title, ("sans-serif", 18))
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(70)
-        .build_cartesian_2d(0.0..vmax, 0.0..(wmax * 1.05).max(1e-9))
-        .map_err(draw_err)?;
-    chart
-        .configure_mesh()
-        .x_desc("ridged volume V (m³/m)")
-        .y_desc("work (MJ/m)")
-        .label_style(("sans-serif", 14))
-        .draw()
-        .map_err(draw_err)?;
+    let (x, y) = (
+        Axis::new(0.0, vmax, "ridged volume V (m³/m)"),
+        Axis::new(0.0, (wmax * 1.05).max(1e-9), "work (MJ/m)"),
+    );
+    let layout = Layout::new(900, &x, &y, &title).with_height(600);
+    let mut chart = layout.chart(&root, &x, &y, &title, true)?;
+    let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
     if let Some(b) = band {
         let area = |lo: &[f64], hi: &[f64]| -> Vec<(f64, f64)> {
             let mut p: Vec<(f64, f64)> = b.v.iter().zip(hi).map(|(v, y)| (*v, y / 1e6)).collect();
@@ -78,9 +72,9 @@ fn plot_work_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> 
             )))
             .map_err(draw_err)?
             .label("95 % prediction band")
-            .legend(|(x, y)| {
+            .legend(move |(x, y)| {
                 Rectangle::new(
-                    [(x, y - 5), (x + 18, y + 5)],
+                    [(x, y - key / 4), (x + key, y + key / 4)],
                     RGBColor(200, 200, 200).filled(),
                 )
             });
@@ -91,20 +85,22 @@ fn plot_work_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> 
             )))
             .map_err(draw_err)?
             .label("95 % confidence band")
-            .legend(|(x, y)| {
+            .legend(move |(x, y)| {
                 Rectangle::new(
-                    [(x, y - 5), (x + 18, y + 5)],
+                    [(x, y - key / 4), (x + key, y + key / 4)],
                     RGBColor(120, 120, 120).filled(),
                 )
             });
         chart
             .draw_series(LineSeries::new(
                 b.v.iter().zip(&b.fit).map(|(v, y)| (*v, y / 1e6)),
-                BLACK.stroke_width(2),
+                BLACK.stroke_width(line),
             ))
             .map_err(draw_err)?
             .label("eq (13), pooled fit")
-            .legend(|(x, y)| PathElement::new([(x, y), (x + 18, y)], BLACK.stroke_width(2)));
+            .legend(move |(x, y)| {
+                PathElement::new([(x, y), (x + key, y)], BLACK.stroke_width(line))
+            });
     }
     for (hi, th) in t.thickness.iter().enumerate() {
         let c = COLORS[hi % COLORS.len()];
@@ -116,16 +112,16 @@ fn plot_work_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> 
             .map(|(v, w)| (*v, w / 1e6))
             .collect();
         chart
-            .draw_series(LineSeries::new(pts, c.stroke_width(2)))
+            .draw_series(LineSeries::new(pts, c.stroke_width(line)))
             .map_err(draw_err)?
             .label(format!("h = {th:.2} m, ensemble mean"))
-            .legend(move |(x, y)| PathElement::new([(x, y), (x + 18, y)], c.stroke_width(2)));
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + key, y)], c.stroke_width(line)));
     }
     chart
         .configure_series_labels()
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
-        .label_font(("sans-serif", 13))
+        .label_font(("sans-serif", layout.fonts.legend))
         .position(SeriesLabelPosition::UpperLeft)
         .draw()
         .map_err(draw_err)?;
@@ -152,23 +148,14 @@ fn plot_force_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError>
     ) / 1e3;
     let root = BitMapBackend::new(path, (900, 520)).into_drawing_area();
     root.fill(&WHITE).map_err(draw_err)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(
-            "ridging force against volume and thickness",
-            ("sans-serif", 18),
-        )
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(70)
-        .build_cartesian_2d(0.0..vmax, 0.0..(fmax * 1.05).max(1e-9))
-        .map_err(draw_err)?;
-    chart
-        .configure_mesh()
-        .x_desc("ridged volume V (m³/m)")
-        .y_desc("force (kN/m)")
-        .label_style(("sans-serif", 14))
-        .draw()
-        .map_err(draw_err)?;
+    let title = "ridging force against volume and thickness";
+    let (x, y) = (
+        Axis::new(0.0, vmax, "ridged volume V (m³/m)"),
+        Axis::new(0.0, (fmax * 1.05).max(1e-9), "force (kN/m)"),
+    );
+    let layout = Layout::new(900, &x, &y, title).with_height(520);
+    let mut chart = layout.chart(&root, &x, &y, title, true)?;
+    let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
     for (hi, th) in t.thickness.iter().enumerate() {
         let c = COLORS[hi % COLORS.len()];
         chart
@@ -178,11 +165,11 @@ fn plot_force_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError>
                     .zip(&t.force_fit[s][hi])
                     .filter(|(_, f)| f.is_finite())
                     .map(|(v, f)| (*v, f / 1e3)),
-                c.stroke_width(2),
+                c.stroke_width(line),
             ))
             .map_err(draw_err)?
             .label(format!("h = {th:.2} m, eq (15)"))
-            .legend(move |(x, y)| PathElement::new([(x, y), (x + 18, y)], c.stroke_width(2)));
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + key, y)], c.stroke_width(line)));
         chart
             .draw_series(
                 t.volume
@@ -197,7 +184,7 @@ fn plot_force_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError>
         .configure_series_labels()
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
-        .label_font(("sans-serif", 13))
+        .label_font(("sans-serif", layout.fonts.legend))
         .position(SeriesLabelPosition::UpperLeft)
         .draw()
         .map_err(draw_err)?;
@@ -223,20 +210,14 @@ fn plot_profiles_at(profiles: &[(String, Profile)], path: &Path) -> Result<(), P
     let bottom = finite_max(profiles.iter().flat_map(|(_, p)| p.keel.iter().copied())).max(1.0);
     let root = BitMapBackend::new(path, (900, 560)).into_drawing_area();
     root.fill(&WHITE).map_err(draw_err)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption("averaged final profiles (1-m strips)", ("sans-serif", 18))
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(60)
-        .build_cartesian_2d(first.x0..x1, -(bottom * 1.1)..(top * 1.8))
-        .map_err(draw_err)?;
-    chart
-        .configure_mesh()
-        .x_desc("x (m), floe nose at 0")
-        .y_desc("height (m)")
-        .label_style(("sans-serif", 14))
-        .draw()
-        .map_err(draw_err)?;
+    let title = "averaged final profiles (1-m strips)";
+    let (x, y) = (
+        Axis::new(first.x0, x1, "x (m), floe nose at 0"),
+        Axis::new(-(bottom * 1.1), top * 1.8, "height (m)"),
+    );
+    let layout = Layout::new(900, &x, &y, title).with_height(560);
+    let mut chart = layout.chart(&root, &x, &y, title, true)?;
+    let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
     for (k, (label, p)) in profiles.iter().enumerate() {
         let c = COLORS[k % COLORS.len()];
         let steps = |vals: &[f64], sign: f64| -> Vec<(f64, f64)> {
@@ -249,12 +230,12 @@ fn plot_profiles_at(profiles: &[(String, Profile)], path: &Path) -> Result<(), P
                 .collect()
         };
         chart
-            .draw_series(LineSeries::new(steps(&p.sail, 1.0), c.stroke_width(2)))
+            .draw_series(LineSeries::new(steps(&p.sail, 1.0), c.stroke_width(line)))
             .map_err(draw_err)?
             .label(label.clone())
-            .legend(move |(x, y)| PathElement::new([(x, y), (x + 18, y)], c.stroke_width(2)));
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + key, y)], c.stroke_width(line)));
         chart
-            .draw_series(LineSeries::new(steps(&p.keel, -1.0), c.stroke_width(2)))
+            .draw_series(LineSeries::new(steps(&p.keel, -1.0), c.stroke_width(line)))
             .map_err(draw_err)?;
         chart
             .draw_series(LineSeries::new(
@@ -279,7 +260,7 @@ fn plot_profiles_at(profiles: &[(String, Profile)], path: &Path) -> Result<(), P
         .configure_series_labels()
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
-        .label_font(("sans-serif", 13))
+        .label_font(("sans-serif", layout.fonts.legend))
         .position(SeriesLabelPosition::UpperLeft)
         .draw()
         .map_err(draw_err)?;
