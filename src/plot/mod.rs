@@ -4,6 +4,18 @@
 //! environment variable `PRESSRIDGE_FONT` (a path to a `.ttf`) and then in Debian's
 //! `fonts-dejavu-core` locations (`scripts/setup.sh` installs it).
 
+/// Draws `$draw(root, args..)` into the file `$path` of `$size` px: SVG when its extension
+/// is `svg`, else PNG.
+macro_rules! to_file {
+    ($path:expr, $size:expr, $draw:ident ( $($arg:expr),* )) => {{
+        if $path.extension().is_some_and(|e| e == "svg") {
+            $draw(SVGBackend::new($path, $size).into_drawing_area(), $($arg),*)
+        } else {
+            $draw(BitMapBackend::new($path, $size).into_drawing_area(), $($arg),*)
+        }
+    }};
+}
+
 pub mod animate;
 pub mod gif;
 pub mod layout;

@@ -63,6 +63,9 @@ pub struct RidgeTable {
     pub ratio_fit: Vec<Vec<f64>>,
     /// C_f = mean final W/ΔPE per set and thickness.
     pub cf: Vec<Vec<f64>>,
+    /// Each run's final W/ΔPE per set and thickness, in the runs' order (the seed spread
+    /// behind `cf`; dimensionless).
+    pub cf_runs: Vec<Vec<Vec<f64>>>,
     /// Seeds used.
     pub seeds: Vec<u64>,
     /// Runs left out, with the reason: those whose dissipation went negative
@@ -83,6 +86,79 @@ pub enum TabulateError {
 
 fn is_thickness_key(s: &str) -> bool {
     s.starts_with("sheet.thickness=") || s.starts_with("sheet.block_width=")
+}
+
+/// What is missing or not a number in the fits of a table, one sentence each: an empty fit
+/// table (no fit at all), a set without a pooled fit, a thickness without its own fit, a fit
+/// coefficient or C_f that is NaN. Empty when every fit is there and finite.
+pub fn fit_warnings(t: &RidgeTable) -> Vec<String> {
+    let mut out = Vec::new();
+    let name = |si: usize| {
+        if t.sets[si].is_empty() {
+            "all runs".to_string()
+        } else {
+            format!("set `{}`", t.sets[si])
+        }
+    };
+    let finite = |f: &SetFits| {
+        [
+            f.work.a,
+            f.work.b,
+            f.potential_energy.a,
+            f.potential_energy.b,
+        ]
+        .iter()
+        .all(|v| v.is_finite())
+    };
+    if t.pooled.iter().all(Option::is_none) && t.fits.iter().flatten().all(Option::is_none) {
+        out.push(
+            "the fit table is empty: no set or thickness had enough samples with V > 0 for \
+             eqs (13)-(14) (runs too short for the sample interval?)"
+                .to_string(),
+        );
+        return out;
+    }
+    for si in 0..t.sets.len() {
+        match &t.pooled[si] {
+            None => out.push(format!("{}: no pooled fit of eqs (13)-(14)", name(si))),
+            Some(f) if !finite(f) => out.push(format!(
+                "{}: the pooled fit is not a number (NaN)",
+                name(si)
+            )),
+            _ => {}
+        }
+        for (hi, h) in t.thickness.iter().enumerate() {
+            if t.runs[si][hi].iter().all(|&n| n == 0) {
+                continue;
+            }
+            match &t.fits[si][hi] {
+                None => out.push(format!("{}, h = {h} m: no fit of eqs (13)-(14)", name(si))),
+                Some(f) if !finite(f) => out.push(format!(
+                    "{}, h = {h} m: the fit is not a number (NaN)",
+                    name(si)
+                )),
+                _ => {}
+            }
+            if !t.cf[si][hi].is_finite() {
+                out.push(format!(
+                    "{}, h = {h} m: C_f is not a number (no run with ΔPE > 0 at its end)",
+                    name(si)
+                ));
+            }
+        }
+    }
+    out
+}
+
+/// The set a run belongs to: its grid settings other than the sheet thickness (and the
+/// block width tied to it), `key=value` joined by `, ` (empty for a thickness-only grid).
+pub fn set_label(r: &RunRecord) -> String {
+    r.settings
+        .iter()
+        .filter(|s| !is_thickness_key(s))
+        .cloned()
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 /// Linear interpolation of `ys(xs)` at `x` within [xs[0], xs[last]], else NaN.
@@ -120,14 +196,7 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
     if recs.is_empty() {
         return Err(TabulateError::Empty);
     }
-    let set_of = |r: &RunRecord| {
-        r.settings
-            .iter()
-            .filter(|s| !is_thickness_key(s))
-            .cloned()
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
+    let set_of = set_label;
     let h_of = |r: &RunRecord| r.scene.sheet.as_ref().expect("filtered").thickness;
     let mut sets: Vec<String> = Vec::new();
     let mut thickness: Vec<f64> = Vec::new();
@@ -174,6 +243,7 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
         force_fit: grid(),
         ratio_fit: vec![vec![f64::NAN; nv]; ns],
         cf: vec![vec![f64::NAN; nh]; ns],
+        cf_runs: vec![vec![Vec::new(); nh]; ns],
         seeds,
         excluded,
     };
@@ -241,6 +311,7 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
             if !finals.is_empty() {
                 t.cf[si][hi] = mean_std(&finals).0;
             }
+            t.cf_runs[si][hi] = finals;
             if let (Ok(work), Ok(pe)) = (fit_through_origin(&fv, &fw), fit_through_origin(&fv, &fp))
             {
                 t.fits[si][hi] = Some(SetFits {
