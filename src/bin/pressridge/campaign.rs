@@ -29,7 +29,11 @@ pub fn run(a: Args) -> Result<(), BoxError> {
     let threads = a
         .threads
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
-    let progress = crate::progress::Progress::new(total_sim, "s simulated");
+    let progress = crate::progress::Progress::new(
+        total_sim,
+        "s simulated",
+        pressridge::eta::Model::ConstantRate,
+    );
     // Runs already on disk count as done for the bar.
     let skipped_sim = std::sync::Mutex::new(None::<f64>);
     let stop = AtomicBool::new(false);
