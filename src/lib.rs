@@ -28,6 +28,7 @@
 
 pub mod campaign;
 pub mod dem;
+pub mod eta;
 pub mod ffi;
 pub mod io;
 pub mod itd;

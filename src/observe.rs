@@ -172,6 +172,34 @@ pub fn mean_profile(ps: &[Profile]) -> Option<Profile> {
     })
 }
 
+/// The strip-by-strip sample standard deviation (n − 1; 0 for one profile) of several
+/// profiles on the same strips (m): the seed spread around [`mean_profile`].
+pub fn profile_spread(ps: &[Profile]) -> Option<Profile> {
+    let mean = mean_profile(ps)?;
+    let n = mean.sail.len();
+    let k = if ps.len() > 1 {
+        1.0 / (ps.len() - 1) as f64
+    } else {
+        0.0
+    };
+    let sd = |f: fn(&Profile) -> &Vec<f64>| -> Vec<f64> {
+        (0..n)
+            .map(|i| {
+                let m = f(&mean)[i];
+                (ps.iter().map(|p| (f(p)[i] - m).powi(2)).sum::<f64>() * k).sqrt()
+            })
+            .collect()
+    };
+    Some(Profile {
+        x0: mean.x0,
+        dx: mean.dx,
+        sail: sd(|p| &p.sail),
+        keel: sd(|p| &p.keel),
+        rubble_sail: sd(|p| &p.rubble_sail),
+        rubble_keel: sd(|p| &p.rubble_keel),
+    })
+}
+
 /// Flank slopes (degrees) of a strip profile: (lead side, floe side); see the module docs.
 pub fn flank_slopes(values: &[f64], x0: f64, dx: f64) -> (Option<f64>, Option<f64>) {
     let Some((peak_i, &peak)) = values.iter().enumerate().max_by(|a, b| a.1.total_cmp(b.1)) else {
@@ -255,6 +283,24 @@ mod tests {
         assert!((lead.unwrap() - 45.0).abs() < 1e-9);
         assert!((floe.unwrap() - 0.5f64.atan().to_degrees()).abs() < 1e-9);
         assert_eq!(flank_slopes(&[0.0; 4], 0.0, 1.0), (None, None));
+    }
+
+    #[test]
+    fn spread_of_two_profiles() {
+        let p = |v: f64| Profile {
+            x0: -1.0,
+            dx: 1.0,
+            sail: vec![v, 2.0 * v],
+            keel: vec![v; 2],
+            rubble_sail: vec![0.0; 2],
+            rubble_keel: vec![v; 2],
+        };
+        let m = mean_profile(&[p(1.0), p(3.0)]).unwrap();
+        let s = profile_spread(&[p(1.0), p(3.0)]).unwrap();
+        assert_eq!(m.sail, vec![2.0, 4.0]);
+        assert_eq!(s.sail, vec![2f64.sqrt(), 8f64.sqrt()]);
+        assert_eq!(s.rubble_sail, vec![0.0; 2]);
+        assert_eq!(profile_spread(&[p(1.0)]).unwrap().keel, vec![0.0; 2]);
     }
 
     #[test]

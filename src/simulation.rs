@@ -39,8 +39,10 @@ pub struct Summary {
     pub work_eq9: f64,
     /// Change of potential energy, eq (10) (J/m).
     pub potential_energy: f64,
-    /// Change of kinetic energy (J/m).
-    pub kinetic_energy: f64,
+    /// Change of kinetic energy since the start (J/m). Named `kinetic_energy` before;
+    /// files with that name still load.
+    #[serde(alias = "kinetic_energy")]
+    pub kinetic_energy_change: f64,
     /// Frictional dissipation Φ_f, eq (11) (J/m).
     pub friction_dissipation: f64,
     /// Viscous contact dissipation Φ_i, eq (12) (J/m).
@@ -226,7 +228,7 @@ pub fn run_world(
         frame_work: e.frame_work,
         work_eq9,
         potential_energy: e.potential_energy,
-        kinetic_energy: e.kinetic_energy,
+        kinetic_energy_change: e.kinetic_energy,
         friction_dissipation: e.friction_dissipation,
         viscous_dissipation: e.viscous_dissipation,
         drag_dissipation: e.drag_dissipation,

@@ -179,8 +179,63 @@ fn tiny_campaign_is_resumable_and_complete() {
     ] {
         assert!(report.contains(want), "report lacks {want}:\n{report}");
     }
-    for f in ["work_set0.png", "force_set0.png", "profiles.png"] {
-        assert!(dir.join("fig").join(f).is_file(), "missing figure {f}");
+    for f in ["work_set0", "force_set0", "cf", "profiles"] {
+        for ext in ["png", "svg"] {
+            let path = dir.join("fig").join(format!("{f}.{ext}"));
+            assert!(path.is_file(), "missing figure {f}.{ext}");
+        }
+    }
+    // C_f against thickness with each seed and the spread; profiles with the seed spread.
+    let svg = |f: &str| std::fs::read_to_string(dir.join("fig").join(f)).unwrap();
+    let cf_svg = svg("cf.svg");
+    for want in [
+        "C_f = W/ΔPE",
+        "sheet thickness h (m)",
+        "(2 seeds)",
+        "CICE default",
+    ] {
+        assert!(cf_svg.contains(want), "cf.svg lacks {want}");
+    }
+    assert!(cf_svg.matches("<circle").count() >= 4, "a dot per run");
+    let prof_svg = svg("profiles.svg");
+    for want in [
+        "h = 0.25 m (2 seeds)",
+        "h = 0.35 m (2 seeds)",
+        "mean ± 1 s.d.",
+    ] {
+        assert!(prof_svg.contains(want), "profiles.svg lacks {want}");
+    }
+    {
+        use pressridge::table::tabulate::tabulate;
+        let t = tabulate(&records, 11).unwrap();
+        for (h, runs) in t.cf_finals[0].iter().enumerate() {
+            assert_eq!(runs.len(), 2);
+            let mean = runs.iter().sum::<f64>() / 2.0;
+            assert!((mean - t.cf[0][h]).abs() <= 1e-12 * mean);
+        }
+        // An empty fit table and a NaN fit are warned about; one seed shows as "(1 seed)".
+        use pressridge::table::tabulate::fit_warnings;
+        assert!(fit_warnings(&t).is_empty(), "{:?}", fit_warnings(&t));
+        let mut short = records[..1].to_vec();
+        short[0].samples.truncate(2);
+        let w = fit_warnings(&tabulate(&short, 11).unwrap());
+        assert!(w[0].contains("fit table is empty"), "{w:?}");
+        let mut nan = records[..1].to_vec();
+        nan[0].samples[2].work = f64::NAN;
+        assert!(!fit_warnings(&tabulate(&nan, 11).unwrap()).is_empty());
+        let one = pressridge::table::ensemble::summarise(&records[..1]);
+        let t1 = tabulate(&records[..1], 11).unwrap();
+        let text = pressridge::io::report::campaign_report("one", &one, &t1, &[], 2.0);
+        assert!(text.contains("(1 seed)"), "{text}");
+        assert!(!text.contains("± 0.0 |"), "{text}");
+        let ps: Vec<_> = records[..2].iter().map(|r| r.profile.clone()).collect();
+        let m = pressridge::observe::mean_profile(&ps).unwrap();
+        let sd = pressridge::observe::profile_spread(&ps).unwrap();
+        for i in 0..m.sail.len() {
+            let half = 0.5 * (ps[0].sail[i] - ps[1].sail[i]).abs();
+            assert!((sd.sail[i] - half * 2f64.sqrt()).abs() <= 1e-12 + 1e-9 * half);
+            assert!((m.sail[i] - 0.5 * (ps[0].sail[i] + ps[1].sail[i])).abs() <= 1e-12);
+        }
     }
     let nc = netcdf::open(&table).unwrap();
     let dim = |n: &str| nc.dimension(n).unwrap().len();

@@ -38,7 +38,7 @@ fn simulate_then_render() {
         "potential_energy",
         "friction_dissipation",
         "viscous_dissipation",
-        "kinetic_energy",
+        "kinetic_energy_change",
         "drag_dissipation",
         "other_dissipation",
         "residual",
@@ -155,4 +155,21 @@ fn simulate_svg_writes_svg_figures_beside_the_pngs() {
         );
     }
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `kinetic_energy_change` was `kinetic_energy` in summaries written before 2026-11-23:
+/// those still load, and are written back under the new name.
+#[test]
+fn summaries_with_the_old_kinetic_energy_name_still_load() {
+    let old = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/docs/figures/figure5-summary.json"
+    ))
+    .unwrap();
+    assert!(old.contains("\"kinetic_energy\""));
+    let s: pressridge::simulation::Summary = serde_json::from_str(&old).unwrap();
+    assert_eq!(s.kinetic_energy_change, -535.6536815566316);
+    let back = serde_json::to_string(&s).unwrap();
+    assert!(back.contains("\"kinetic_energy_change\""), "{back}");
+    assert!(!back.contains("\"kinetic_energy\""), "{back}");
 }

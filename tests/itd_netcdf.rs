@@ -854,3 +854,79 @@ fn category_dimension_by_name_or_refused() {
     let e = read_itd(&p).unwrap_err().to_string();
     assert!(e.contains("NCAT") && e.contains("disagree"), "{e}");
 }
+
+/// CICE's ocean mask `tmask` (1 ocean, 0 land; no time dimension) makes land missing in the
+/// output even where the history file holds 0 there rather than a fill value. The sample
+/// CICE history file with its land fill values replaced by 0 gives the strength of the
+/// original on ocean and missing values exactly where tmask is 0, at both times.
+#[test]
+fn tmask_zero_is_land_like_fill() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("data/cice_history_sample.nc");
+    let f = netcdf::open(&src).unwrap();
+    let get = |n: &str| -> Vec<f64> {
+        let v: Vec<f32> = f.variable(n).unwrap().get_values(..).unwrap();
+        v.into_iter()
+            .map(|x| if x >= 1e29 { 0.0 } else { x as f64 })
+            .collect()
+    };
+    let (nt, nc, nj, ni) = (2, 5, 30, 40);
+    let cat = [("time", nt), ("nc", nc), ("nj", nj), ("ni", ni)];
+    let tmask = get("tmask");
+    assert!(tmask.contains(&0.0) && tmask.contains(&1.0));
+    let zeroed = tmp("cice_tmask_zero_land.nc");
+    common::write_nc(
+        &zeroed,
+        &[
+            common::Var::f64("aicen", &cat, get("aicen")),
+            common::Var::f64("vicen", &cat, get("vicen")),
+            common::Var::f64("tmask", &[("nj", nj), ("ni", ni)], tmask.clone()),
+            common::Var::f64("NCAT", &[("nc", nc)], get("NCAT")),
+        ],
+    );
+    let g = read_itd(&zeroed).unwrap();
+    let valid = g.valid.clone().expect("land from tmask");
+    assert_eq!(valid.len(), nt * nj * ni);
+    for (c, v) in valid.iter().enumerate() {
+        assert_eq!(*v, tmask[c % (nj * ni)] != 0.0, "column {c}");
+    }
+    let run = |input: &Path, name: &str| -> Vec<f64> {
+        let out = tmp(name);
+        let o = cli(&[
+            "strength",
+            "--input",
+            input.to_str().unwrap(),
+            "--output",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        read_field(&out, "strength").unwrap().1
+    };
+    let p = run(&zeroed, "cice_tmask_p.nc");
+    let p_orig = run(&src, "cice_tmask_orig_p.nc");
+    let fill = pressridge::io::itd_netcdf::NC_FILL_DOUBLE;
+    for c in 0..p.len() {
+        if tmask[c % (nj * ni)] == 0.0 {
+            assert_eq!(p[c], fill, "land column {c} not missing");
+        } else {
+            assert!(
+                p[c].is_finite() && p[c] != fill,
+                "ocean column {c}: {}",
+                p[c]
+            );
+            assert_relative_eq!(p[c], p_orig[c], max_relative = 1e-12);
+        }
+    }
+    // A tmask over a dimension the fields do not have is refused by name.
+    let bad = tmp("cice_tmask_bad.nc");
+    common::write_nc(
+        &bad,
+        &[
+            common::Var::f64("aicen", &cat, get("aicen")),
+            common::Var::f64("vicen", &cat, get("vicen")),
+            common::Var::f64("tmask", &[("y", nj), ("ni", ni)], tmask),
+            common::Var::f64("NCAT", &[("nc", nc)], get("NCAT")),
+        ],
+    );
+    let e = read_itd(&bad).unwrap_err().to_string();
+    assert!(e.contains("tmask"), "{e}");
+}

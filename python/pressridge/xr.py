@@ -20,7 +20,10 @@ attributes.
 Missing data: when ``aicen``, ``vicen`` or ``aice0`` has a ``_FillValue`` or
 ``missing_value`` (so that xarray decoded missing cells to NaN), columns with a NaN are
 treated as masked (land) and give NaN, as ``pressridge strength`` does with fill values.
-Otherwise a NaN is an error. ``mask=True``/``False`` forces either behaviour.
+Otherwise a NaN is an error. ``mask=True``/``False`` forces either behaviour. CICE's
+ocean mask ``tmask`` (1 ocean, 0 land), where the dataset has it, marks land too: cells
+where it is 0 are missing in the outputs, as ``pressridge strength`` does (not with
+``mask=False``).
 """
 
 from __future__ import annotations
@@ -106,6 +109,23 @@ def _mask_flag(mask: Union[str, bool], *vars: Optional[xr.DataArray]) -> bool:
     raise ValueError(f"mask must be 'auto', True or False, got {mask!r}")
 
 
+def _apply_tmask(ds: xr.Dataset, aicen: xr.DataArray, use_mask: bool, mask: Union[str, bool]):
+    """CICE's ocean mask ``tmask`` (1 ocean, 0 land; over ``nj, ni``, without ``time``):
+    land cells (0 or missing) become missing in ``aicen`` and so in the outputs, as a
+    ``_FillValue`` does, unless ``mask=False``."""
+    if mask is False or "tmask" not in ds:
+        return aicen, use_mask
+    tmask = ds["tmask"]
+    extra = set(tmask.dims) - set(aicen.dims)
+    if extra:
+        raise ValueError(
+            f"tmask has dimensions {tuple(tmask.dims)}, not all among those of aicen "
+            f"{tuple(aicen.dims)}"
+        )
+    ocean = (tmask != 0) & tmask.notnull()
+    return aicen.where(ocean).transpose(*aicen.dims), True
+
+
 def _valid(a: np.ndarray, v: np.ndarray, a0: Optional[np.ndarray]) -> np.ndarray:
     """Columns without a missing (NaN) value; a, v have the category axis first."""
     bad = np.isnan(a).any(axis=0) | np.isnan(v).any(axis=0)
@@ -157,6 +177,7 @@ def strength(
     """
     aicen, vicen, aice0, cat, spatial = _category_vars(ds, category_dim)
     use_mask = _mask_flag(mask, ds["aicen"], ds["vicen"], aice0)
+    aicen, use_mask = _apply_tmask(ds, aicen, use_mask, mask)
     # Read a C_f file once here, so that the tasks carry only small arrays.
     options = dict(
         participation=participation,
@@ -430,6 +451,7 @@ def ridge_step(
             )
     aicen, vicen, aice0, cat, spatial = _category_vars(ds, category_dim)
     use_mask = _mask_flag(mask, ds["aicen"], ds["vicen"], aice0)
+    aicen, use_mask = _apply_tmask(ds, aicen, use_mask, mask)
     _pr._params({k: v for k, v in params.items() if k not in _pr.STEP_PARAMETERS})
     _pr._params({k: v for k, v in params.items() if k in _pr.STEP_PARAMETERS}, step=True)
     if layout is not None and tf is None and "Tf" in ds:

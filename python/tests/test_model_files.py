@@ -141,3 +141,28 @@ def test_cf_clamp_warning_once_per_call_not_per_chunk(sample):
     assert len(got) == 3, [str(x.message) for x in got]
     assert "over dask chunks" in str(got[0].message)
     assert "columns had ridging-ice thicknesses" in str(got[2].message)
+
+
+def test_tmask_zero_is_land(sample):
+    """CICE's ocean mask ``tmask`` (1 ocean, 0 land; over nj, ni without time) makes cells
+    missing like a _FillValue, at every time, even where aicen holds numbers there."""
+    d = cice_history(sample)
+    p_all = prx.strength(d, cf=17.0).values
+    tmask = xr.ones_like(d.TLON).transpose("nj", "ni").astype(np.float32).reset_coords(drop=True)
+    tmask[1, :3] = 0.0  # ocean values in aicen, land by the mask
+    d["tmask"] = tmask
+    p = prx.strength(d, cf=17.0)
+    assert p.dims == ("time", "nj", "ni")
+    land = np.broadcast_to((tmask.values == 0)[None], p.shape)
+    assert np.isnan(p.values[land]).all()
+    ok = ~land & ~np.isnan(p_all)
+    np.testing.assert_array_equal(p.values[ok], p_all[ok])
+    assert np.isnan(prx.strength(d.chunk({"nj": 4}), cf=17.0).values[land]).all()
+    r = prx.ridge_step(d, dt=1800.0, convergence=2e-6, shear=1e-6)
+    assert np.isnan(r.aicen.values[:, :, 1, :3]).all()
+    # The shipped CICE history sample: missing exactly where its tmask is 0.
+    s = xr.open_dataset(sample.parent / "cice_history_sample.nc")
+    ps = prx.strength(s, cf=17.0)
+    np.testing.assert_array_equal(
+        np.isnan(ps.values), np.broadcast_to((s.tmask.values == 0)[None], ps.shape)
+    )

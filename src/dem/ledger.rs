@@ -115,7 +115,7 @@ pub const LEDGER_TERMS: [(&str, &str, bool); 15] = [
     ("work", "J/m", false),
     ("frame_work", "J/m", false),
     ("potential_energy", "J/m", false),
-    ("kinetic_energy", "J/m", false),
+    ("kinetic_energy_change", "J/m", false),
     ("friction_dissipation", "J/m", true),
     ("viscous_dissipation", "J/m", true),
     ("drag_dissipation", "J/m", true),

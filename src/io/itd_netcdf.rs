@@ -13,6 +13,11 @@
 //! variable may lack a leading `time` dimension of length 1 that `aicen` has, or the reverse.
 //! Any numeric type is read as `f64`.
 //!
+//! Land: a column is missing (written as the fill value, never computed) where `aicen`,
+//! `vicen` or `aice0` holds its `_FillValue`/`missing_value`, or where CICE's ocean mask
+//! `tmask` (1 ocean, 0 land) is 0 or fill. `tmask` may lack column dimensions (CICE writes
+//! it without `time`); it then applies at every value of those.
+//!
 //! Coordinates: the coordinate variables of the column dimensions (e.g. `time` with its
 //! `units` and `calendar`) and the auxiliary coordinates named in the `coordinates` attribute
 //! of `aicen` (e.g. CICE's `TLON TLAT`) are copied to the outputs with their attributes, and
@@ -414,6 +419,53 @@ fn read_spatial(
     Ok(Some(Array1::from(read_f64(path, &v)?)))
 }
 
+/// The ocean mask of CICE history files, `tmask` (1 ocean, 0 land), over the column
+/// dimensions: `None` without `tmask`; otherwise per column whether it is ocean. `tmask` may
+/// lack column dimensions (it has no `time`): it is then the same at every value of those.
+/// A zero or fill value is land. A `tmask` with a dimension that is not a column dimension
+/// of the same length is refused.
+fn read_ocean_mask(
+    path: &Path,
+    file: &netcdf::File,
+    spatial: &[(String, usize)],
+) -> Result<Option<Vec<bool>>, NetcdfError> {
+    let Some(v) = file.variable("tmask") else {
+        return Ok(None);
+    };
+    let d = all_dims(&v);
+    let pos: Option<Vec<usize>> = d
+        .iter()
+        .map(|(n, l)| spatial.iter().position(|(m, k)| m == n && k == l))
+        .collect();
+    let Some(pos) = pos else {
+        return Err(NetcdfError::Shape {
+            path: path.to_path_buf(),
+            var: "tmask".into(),
+            expected: format!("column dimensions of aicen, {}", fmt_dims(spatial)),
+            found: fmt_dims(&d),
+        });
+    };
+    let vals = read_f64(path, &v)?;
+    let fill = fill_of(&v);
+    let ncol: usize = spatial.iter().map(|s| s.1).product();
+    let mut idx = vec![0usize; spatial.len()];
+    let mut out = Vec::with_capacity(ncol);
+    for c in 0..ncol {
+        let mut rem = c;
+        for k in (0..spatial.len()).rev() {
+            idx[k] = rem % spatial[k].1;
+            rem /= spatial[k].1;
+        }
+        let j = pos
+            .iter()
+            .zip(&d)
+            .fold(0usize, |j, (&p, (_, l))| j * l + idx[p]);
+        let m = vals[j];
+        out.push(!(is_fill(m, fill) || m == 0.0));
+    }
+    Ok(Some(out))
+}
+
 /// Units of a strain rate.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum RateUnits {
@@ -797,11 +849,13 @@ pub fn read_itd_with(path: &Path, opts: &ReadOptions) -> Result<ItdGrid, NetcdfE
     let a0fill = file.variable("aice0").as_ref().and_then(fill_of);
     let bounds = read_bounds(path, &file, &ncat_dim, ncat)?;
     let aice0 = read_spatial(path, &file, "aice0", &spatial)?;
+    let ocean = read_ocean_mask(path, &file, &spatial)?;
     let valid: Array1<bool> = (0..ncol)
         .map(|c| {
-            !(aicen.column(c).iter().any(|&x| is_fill(x, afill))
-                || vicen.column(c).iter().any(|&x| is_fill(x, vfill))
-                || aice0.as_ref().is_some_and(|a| is_fill(a[c], a0fill)))
+            ocean.as_ref().is_none_or(|o| o[c])
+                && !(aicen.column(c).iter().any(|&x| is_fill(x, afill))
+                    || vicen.column(c).iter().any(|&x| is_fill(x, vfill))
+                    || aice0.as_ref().is_some_and(|a| is_fill(a[c], a0fill)))
         })
         .collect();
     let (divu, shear) = read_deformation(path, &file, &spatial)?;

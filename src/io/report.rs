@@ -7,9 +7,11 @@ use crate::table::rafting::PointRafting;
 use crate::table::tabulate::RidgeTable;
 use std::fmt::Write;
 
-/// `mean ± std` of `s` scaled by `k`, with `prec` decimals; `–` when no run had a value.
+/// `mean ± std` of `s` scaled by `k`, with `prec` decimals; `mean (1 seed)` when one run
+/// had a value (no spread to show); `–` when none had.
 fn pm(s: Option<Stat>, k: f64, prec: usize) -> String {
     match s {
+        Some(s) if s.n == 1 && s.mean.is_finite() => format!("{:.prec$} (1 seed)", s.mean * k),
         Some(s) if s.n > 0 && s.mean.is_finite() => {
             format!("{:.prec$} ± {:.prec$}", s.mean * k, s.std * k)
         }
@@ -185,6 +187,13 @@ pub fn campaign_report(
             fit_row(&mut o, label, "pooled", f);
         }
     }
+    let warnings = crate::table::tabulate::fit_warnings(table);
+    if !warnings.is_empty() {
+        let _ = writeln!(o, "\n**Warnings:**\n");
+        for w in &warnings {
+            let _ = writeln!(o, "- {w}");
+        }
+    }
     let _ = writeln!(
         o,
         "\n## Eq (16): dW/dPE from the pooled fits, and C_f per thickness\n"
@@ -198,7 +207,7 @@ pub fn campaign_report(
     for &k in &picks {
         let _ = write!(o, " dW/dPE at V = {:.2} m³/m |", table.volume[k]);
     }
-    let _ = writeln!(o, " C_f = mean final W/ΔPE per thickness |");
+    let _ = writeln!(o, " C_f = mean final W/ΔPE ± s.d. per thickness |");
     let _ = writeln!(o, "|---|{}---|", "---|".repeat(picks.len()));
     for (si, set) in table.sets.iter().enumerate() {
         let label = if set.is_empty() { "all" } else { set.as_str() };
@@ -209,8 +218,8 @@ pub fn campaign_report(
         let cf: Vec<String> = table
             .thickness
             .iter()
-            .zip(&table.cf[si])
-            .map(|(h, c)| format!("{h} m: {c:.1}"))
+            .zip(&table.cf_finals[si])
+            .map(|(h, runs)| format!("{h} m: {}", pm(Some(Stat::of(runs)), 1.0, 1)))
             .collect();
         let _ = writeln!(o, " {} |", cf.join(", "));
     }

@@ -4,8 +4,21 @@
 //! environment variable `PRESSRIDGE_FONT` (a path to a `.ttf`) and then in Debian's
 //! `fonts-dejavu-core` locations (`scripts/setup.sh` installs it).
 
+/// Draws `$draw(root, args..)` into the file `$path` of `$size` px: SVG when its extension
+/// is `svg`, else PNG.
+macro_rules! to_file {
+    ($path:expr, $size:expr, $draw:ident ( $($arg:expr),* )) => {{
+        if $path.extension().is_some_and(|e| e == "svg") {
+            $draw(SVGBackend::new($path, $size).into_drawing_area(), $($arg),*)
+        } else {
+            $draw(BitMapBackend::new($path, $size).into_drawing_area(), $($arg),*)
+        }
+    }};
+}
+
 pub mod animate;
 pub mod gif;
+pub mod layout;
 pub mod render;
 pub mod series;
 pub mod table;
@@ -75,32 +88,7 @@ pub fn ensure_font() -> Result<(), PlotError> {
     if ok { Ok(()) } else { Err(PlotError::NoFont) }
 }
 
-/// A tick label without needless decimals: `900` rather than `900.0`, `0.25`, `-1.5`
-/// (at most 3 decimals, trailing zeros dropped, never `-0`).
-pub(crate) fn tick(v: &f64) -> String {
-    let s = format!("{v:.3}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" { "0".into() } else { s.into() }
-}
-
 /// Converts any plotters drawing error into a [`PlotError`].
 pub(crate) fn draw_err<E: std::fmt::Display>(e: E) -> PlotError {
     PlotError::Draw(e.to_string())
-}
-
-#[cfg(test)]
-mod tests {
-    #[test]
-    fn ticks_drop_needless_decimals() {
-        for (v, t) in [
-            (900.0, "900"),
-            (0.25, "0.25"),
-            (-1.5, "-1.5"),
-            (-0.0, "0"),
-            (2.0, "2"),
-            (0.1 + 0.2, "0.3"),
-        ] {
-            assert_eq!(super::tick(&v), t);
-        }
-    }
 }

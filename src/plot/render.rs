@@ -1,5 +1,6 @@
 //! Ridge snapshots: blocks, the water, axes in metres (cf. Hopkins 1994, Figure 5).
 
+use super::layout::{Axis, Layout};
 use super::{PlotError, draw_err, ensure_font};
 use crate::dem::{Role, Snapshot};
 use plotters::prelude::*;
@@ -122,7 +123,8 @@ impl Window {
 }
 
 /// Draws a saved state into a PNG (or SVG, by the file extension) of `width_px` pixels
-/// wide, height from the window's aspect ratio so that metres are square.
+/// wide, height from the window's aspect ratio so that metres are square. Fonts and margins
+/// scale with the width ([`super::layout`]).
 pub fn render_state(
     s: &Snapshot,
     path: &Path,
@@ -143,33 +145,48 @@ fn render_state_at(
     title: &str,
 ) -> Result<(), PlotError> {
     ensure_font()?;
-    let (width_px, height_px) = figure_size(window, width_px);
+    let layout = state_layout(window, width_px, title);
+    let size = (layout.width, layout.height);
     let svg = path.extension().is_some_and(|e| e == "svg");
     if svg {
-        let root = SVGBackend::new(path, (width_px, height_px)).into_drawing_area();
-        draw(root, s, window, title, MARGINS)
+        let root = SVGBackend::new(path, size).into_drawing_area();
+        draw(root, s, window, title, &layout)
     } else {
-        let root = BitMapBackend::new(path, (width_px, height_px)).into_drawing_area();
-        draw(root, s, window, title, MARGINS)
+        let root = BitMapBackend::new(path, size).into_drawing_area();
+        draw(root, s, window, title, &layout)
     }
 }
 
-/// Room for labels around the plot area (px): left, bottom, top, right.
-const MARGINS: (u32, u32, u32, u32) = (70, 50, 40, 20);
+/// The axes of a state figure: x and y in metres over the window.
+fn axes(window: Window) -> (Axis, Axis) {
+    (
+        Axis::new(window.x0, window.x1, "x (m)"),
+        Axis::new(window.y0, window.y1, "y (m)"),
+    )
+}
 
-/// The figure's size (px) for `window` drawn `width_px` wide: the height follows from the
+/// The layout of a state figure of `window` drawn `width_px` wide (at least 200 px) with
+/// `title` (may be empty): margins measured from its labels, the height following from the
 /// window's aspect ratio so that the plot area keeps metres square.
-pub fn figure_size(window: Window, width_px: u32) -> (u32, u32) {
-    let (ml, mb, mt, mr) = MARGINS;
+pub fn state_layout(window: Window, width_px: u32, title: &str) -> Layout {
+    let (x, y) = axes(window);
+    let l = Layout::new(width_px.max(200), &x, &y, title);
     let aspect = (window.y1 - window.y0) / (window.x1 - window.x0);
-    let plot_w = width_px.saturating_sub(ml + mr).max(100);
-    let width_px = width_px.max(plot_w + ml + mr);
-    let height_px = (plot_w as f64 * aspect).round() as u32 + mb + mt;
-    (width_px, height_px)
+    let plot_w = l.plot_width().max(100);
+    let mut l = l;
+    l.width = plot_w + l.left + l.right;
+    l.with_plot_height((plot_w as f64 * aspect).round().max(1.0) as u32)
+}
+
+/// The figure's size (px) for `window` drawn `width_px` wide with a title: see
+/// [`state_layout`].
+pub fn figure_size(window: Window, width_px: u32) -> (u32, u32) {
+    let l = state_layout(window, width_px, "t");
+    (l.width, l.height)
 }
 
 /// Draws a state into memory: RGB bytes (3 a pixel, row by row) of the size
-/// [`figure_size`] gives, returned with that size.
+/// [`state_layout`] gives, returned with that size.
 pub fn render_state_rgb(
     s: &Snapshot,
     window: Window,
@@ -177,11 +194,12 @@ pub fn render_state_rgb(
     title: &str,
 ) -> Result<(Vec<u8>, u32, u32), PlotError> {
     ensure_font()?;
-    let (w, h) = figure_size(window, width_px);
+    let layout = state_layout(window, width_px, title);
+    let (w, h) = (layout.width, layout.height);
     let mut buf = vec![0u8; 3 * w as usize * h as usize];
     {
         let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
-        draw(root, s, window, title, MARGINS)?;
+        draw(root, s, window, title, &layout)?;
     }
     Ok((buf, w, h))
 }
@@ -191,30 +209,15 @@ fn draw<DB: DrawingBackend>(
     s: &Snapshot,
     win: Window,
     title: &str,
-    (ml, mb, mt, mr): (u32, u32, u32, u32),
+    layout: &Layout,
 ) -> Result<(), PlotError>
 where
     DB::ErrorType: 'static,
 {
     root.fill(&WHITE).map_err(draw_err)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(title, ("sans-serif", 18))
-        .margin_top(mt.saturating_sub(30))
-        .margin_right(mr)
-        .x_label_area_size(mb)
-        .y_label_area_size(ml)
-        .build_cartesian_2d(win.x0..win.x1, win.y0..win.y1)
-        .map_err(draw_err)?;
-    chart
-        .configure_mesh()
-        .x_label_formatter(&super::tick)
-        .y_label_formatter(&super::tick)
-        .disable_mesh()
-        .x_desc("x (m)")
-        .y_desc("y (m)")
-        .label_style(("sans-serif", 14))
-        .draw()
-        .map_err(draw_err)?;
+    let (x, y) = axes(win);
+    let mut chart = layout.chart(&root, &x, &y, title, false)?;
+    let line = layout.fonts.px(1.0);
     if let Some(w) = &s.params.water {
         let water = RGBColor(198, 226, 245);
         chart
@@ -250,7 +253,7 @@ where
         chart
             .draw_series(std::iter::once(PathElement::new(
                 outline,
-                BLACK.stroke_width(1),
+                BLACK.stroke_width(line),
             )))
             .map_err(draw_err)?;
     }
@@ -258,7 +261,7 @@ where
         chart
             .draw_series(LineSeries::new(
                 [(win.x0, w.level), (win.x1, w.level)],
-                RGBColor(30, 90, 160).stroke_width(2),
+                RGBColor(30, 90, 160).stroke_width(2 * line),
             ))
             .map_err(draw_err)?;
     }

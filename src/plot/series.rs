@@ -1,5 +1,6 @@
 //! Energy budget against time (cf. Hopkins 1994, Figure 7).
 
+use super::layout::{Axis, Layout};
 use super::{PlotError, draw_err, ensure_font};
 use crate::dem::EnergyBudget;
 use crate::simulation::Sample;
@@ -80,37 +81,31 @@ where
     DB::ErrorType: 'static,
 {
     root.fill(&WHITE).map_err(draw_err)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(title, ("sans-serif", 18))
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(70)
-        .build_cartesian_2d(0.0..t1, y0..y1)
-        .map_err(draw_err)?;
-    chart
-        .configure_mesh()
-        .x_label_formatter(&super::tick)
-        .y_label_formatter(&super::tick)
-        .x_desc("time (s)")
-        .y_desc("energy (kJ/m)")
-        .label_style(("sans-serif", 14))
-        .draw()
-        .map_err(draw_err)?;
+    let (x, y) = (
+        Axis::new(0.0, t1, "time (s)"),
+        Axis::new(y0, y1, "energy (kJ/m)"),
+    );
+    let (w, h) = root.dim_in_pixel();
+    let layout = Layout::new(w, &x, &y, title).with_height(h);
+    let mut chart = layout.chart(&root, &x, &y, title, true)?;
+    let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
     for &(name, f, color) in lines {
         chart
             .draw_series(LineSeries::new(
                 series.iter().map(|e| (e.time, f(e) / 1e3)),
-                color.stroke_width(2),
+                color.stroke_width(line),
             ))
             .map_err(draw_err)?
             .label(name)
-            .legend(move |(x, y)| PathElement::new([(x, y), (x + 18, y)], color.stroke_width(2)));
+            .legend(move |(x, y)| {
+                PathElement::new([(x, y), (x + key, y)], color.stroke_width(line))
+            });
     }
     chart
         .configure_series_labels()
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
-        .label_font(("sans-serif", 14))
+        .label_font(("sans-serif", layout.fonts.legend))
         .position(SeriesLabelPosition::UpperLeft)
         .draw()
         .map_err(draw_err)?;
@@ -157,28 +152,19 @@ where
     DB::ErrorType: 'static,
 {
     root.fill(&WHITE).map_err(draw_err)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(title, ("sans-serif", 18))
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(70)
-        .build_cartesian_2d(0.0..t1, lo..(hi * 1.05))
-        .map_err(draw_err)?;
-    chart
-        .configure_mesh()
-        .x_label_formatter(&super::tick)
-        .y_label_formatter(&super::tick)
-        .x_desc("time (s)")
-        .y_desc("ridging force (kN/m)")
-        .label_style(("sans-serif", 14))
-        .draw()
-        .map_err(draw_err)?;
+    let (x, y) = (
+        Axis::new(0.0, t1, "time (s)"),
+        Axis::new(lo, hi * 1.05, "ridging force (kN/m)"),
+    );
+    let (w, h) = root.dim_in_pixel();
+    let layout = Layout::new(w, &x, &y, title).with_height(h);
+    let mut chart = layout.chart(&root, &x, &y, title, true)?;
     chart
         .draw_series(LineSeries::new(
             samples
                 .iter()
                 .map(|s| (s.energy.time, s.ridging_force / 1e3)),
-            RGBColor(31, 119, 180).stroke_width(1),
+            RGBColor(31, 119, 180).stroke_width(layout.fonts.px(1.0)),
         ))
         .map_err(draw_err)?;
     root.present().map_err(draw_err)?;

@@ -1,8 +1,10 @@
 //! Figures of a tabulated campaign (cf. Hopkins 1994, Figures 8–12).
 
+use super::layout::{Axis, Layout};
 use super::{PlotError, draw_err, ensure_font};
 use crate::observe::Profile;
 use crate::table::tabulate::RidgeTable;
+use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
 
@@ -30,6 +32,17 @@ pub fn plot_work(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError>
 /// [`plot_work`] into the file `path` (a temporary file renamed by the caller).
 fn plot_work_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> {
     ensure_font()?;
+    to_file!(path, (900, 600), draw_work(t, s))
+}
+
+fn draw_work<DB: DrawingBackend>(
+    root: DrawingArea<DB, Shift>,
+    t: &RidgeTable,
+    s: usize,
+) -> Result<(), PlotError>
+where
+    DB::ErrorType: 'static,
+{
     let vmax = t.volume.last().copied().unwrap_or(1.0).max(1e-9);
     let band = t.work_band[s].as_ref();
     let wmax = finite_max(
@@ -39,27 +52,20 @@ fn plot_work_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> 
             .copied()
             .chain(band.into_iter().flat_map(|b| b.pred_hi.iter().copied())),
     ) / 1e6;
-    let root = BitMapBackend::new(path, (900, 600)).into_drawing_area();
     root.fill(&WHITE).map_err(draw_err)?;
     let title = if t.sets[s].is_empty() {
         "work against ridged volume".to_string()
     } else {
         format!("work against ridged volume ({})", t.sets[s])
     };
-    let mut chart = ChartBuilder::on(&root)
-        .caption(title, ("sans-serif", 18))
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(70)
-        .build_cartesian_2d(0.0..vmax, 0.0..(wmax * 1.05).max(1e-9))
-        .map_err(draw_err)?;
-    chart
-        .configure_mesh()
-        .x_desc("ridged volume V (m³/m)")
-        .y_desc("work (MJ/m)")
-        .label_style(("sans-serif", 14))
-        .draw()
-        .map_err(draw_err)?;
+    let (x, y) = (
+        Axis::new(0.0, vmax, "ridged volume V (m³/m)"),
+        Axis::new(0.0, (wmax * 1.05).max(1e-9), "work (MJ/m)"),
+    );
+    let layout =
+        Layout::new(root.dim_in_pixel().0, &x, &y, &title).with_height(root.dim_in_pixel().1);
+    let mut chart = layout.chart(&root, &x, &y, &title, true)?;
+    let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
     if let Some(b) = band {
         let area = |lo: &[f64], hi: &[f64]| -> Vec<(f64, f64)> {
             let mut p: Vec<(f64, f64)> = b.v.iter().zip(hi).map(|(v, y)| (*v, y / 1e6)).collect();
@@ -78,9 +84,9 @@ fn plot_work_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> 
             )))
             .map_err(draw_err)?
             .label("95 % prediction band")
-            .legend(|(x, y)| {
+            .legend(move |(x, y)| {
                 Rectangle::new(
-                    [(x, y - 5), (x + 18, y + 5)],
+                    [(x, y - key / 4), (x + key, y + key / 4)],
                     RGBColor(200, 200, 200).filled(),
                 )
             });
@@ -91,20 +97,22 @@ fn plot_work_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> 
             )))
             .map_err(draw_err)?
             .label("95 % confidence band")
-            .legend(|(x, y)| {
+            .legend(move |(x, y)| {
                 Rectangle::new(
-                    [(x, y - 5), (x + 18, y + 5)],
+                    [(x, y - key / 4), (x + key, y + key / 4)],
                     RGBColor(120, 120, 120).filled(),
                 )
             });
         chart
             .draw_series(LineSeries::new(
                 b.v.iter().zip(&b.fit).map(|(v, y)| (*v, y / 1e6)),
-                BLACK.stroke_width(2),
+                BLACK.stroke_width(line),
             ))
             .map_err(draw_err)?
             .label("eq (13), pooled fit")
-            .legend(|(x, y)| PathElement::new([(x, y), (x + 18, y)], BLACK.stroke_width(2)));
+            .legend(move |(x, y)| {
+                PathElement::new([(x, y), (x + key, y)], BLACK.stroke_width(line))
+            });
     }
     for (hi, th) in t.thickness.iter().enumerate() {
         let c = COLORS[hi % COLORS.len()];
@@ -116,16 +124,16 @@ fn plot_work_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> 
             .map(|(v, w)| (*v, w / 1e6))
             .collect();
         chart
-            .draw_series(LineSeries::new(pts, c.stroke_width(2)))
+            .draw_series(LineSeries::new(pts, c.stroke_width(line)))
             .map_err(draw_err)?
             .label(format!("h = {th:.2} m, ensemble mean"))
-            .legend(move |(x, y)| PathElement::new([(x, y), (x + 18, y)], c.stroke_width(2)));
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + key, y)], c.stroke_width(line)));
     }
     chart
         .configure_series_labels()
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
-        .label_font(("sans-serif", 13))
+        .label_font(("sans-serif", layout.fonts.legend))
         .position(SeriesLabelPosition::UpperLeft)
         .draw()
         .map_err(draw_err)?;
@@ -142,6 +150,17 @@ pub fn plot_force(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError
 /// [`plot_force`] into the file `path` (a temporary file renamed by the caller).
 fn plot_force_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> {
     ensure_font()?;
+    to_file!(path, (900, 520), draw_force(t, s))
+}
+
+fn draw_force<DB: DrawingBackend>(
+    root: DrawingArea<DB, Shift>,
+    t: &RidgeTable,
+    s: usize,
+) -> Result<(), PlotError>
+where
+    DB::ErrorType: 'static,
+{
     let vmax = t.volume.last().copied().unwrap_or(1.0).max(1e-9);
     let fmax = finite_max(
         t.force_fit[s]
@@ -150,25 +169,16 @@ fn plot_force_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError>
             .flatten()
             .copied(),
     ) / 1e3;
-    let root = BitMapBackend::new(path, (900, 520)).into_drawing_area();
     root.fill(&WHITE).map_err(draw_err)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(
-            "ridging force against volume and thickness",
-            ("sans-serif", 18),
-        )
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(70)
-        .build_cartesian_2d(0.0..vmax, 0.0..(fmax * 1.05).max(1e-9))
-        .map_err(draw_err)?;
-    chart
-        .configure_mesh()
-        .x_desc("ridged volume V (m³/m)")
-        .y_desc("force (kN/m)")
-        .label_style(("sans-serif", 14))
-        .draw()
-        .map_err(draw_err)?;
+    let title = "ridging force against volume and thickness";
+    let (x, y) = (
+        Axis::new(0.0, vmax, "ridged volume V (m³/m)"),
+        Axis::new(0.0, (fmax * 1.05).max(1e-9), "force (kN/m)"),
+    );
+    let layout =
+        Layout::new(root.dim_in_pixel().0, &x, &y, title).with_height(root.dim_in_pixel().1);
+    let mut chart = layout.chart(&root, &x, &y, title, true)?;
+    let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
     for (hi, th) in t.thickness.iter().enumerate() {
         let c = COLORS[hi % COLORS.len()];
         chart
@@ -178,11 +188,11 @@ fn plot_force_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError>
                     .zip(&t.force_fit[s][hi])
                     .filter(|(_, f)| f.is_finite())
                     .map(|(v, f)| (*v, f / 1e3)),
-                c.stroke_width(2),
+                c.stroke_width(line),
             ))
             .map_err(draw_err)?
             .label(format!("h = {th:.2} m, eq (15)"))
-            .legend(move |(x, y)| PathElement::new([(x, y), (x + 18, y)], c.stroke_width(2)));
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + key, y)], c.stroke_width(line)));
         chart
             .draw_series(
                 t.volume
@@ -197,7 +207,7 @@ fn plot_force_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError>
         .configure_series_labels()
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
-        .label_font(("sans-serif", 13))
+        .label_font(("sans-serif", layout.fonts.legend))
         .position(SeriesLabelPosition::UpperLeft)
         .draw()
         .map_err(draw_err)?;
@@ -205,39 +215,89 @@ fn plot_force_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError>
     Ok(())
 }
 
-/// Averaged final profiles (cf. Figures 8 and 10): mean sail height up and keel depth down
-/// in 1-m strips, one colour per label, all ice (solid) and rubble alone (dashed look: thin).
-pub fn plot_profiles(profiles: &[(String, Profile)], path: &Path) -> Result<(), PlotError> {
-    crate::io::write_atomic_with(path, |tmp| plot_profiles_at(profiles, tmp))
-        .map_err(|e| e.at(path))
+/// One ensemble of final profiles: the strip-by-strip mean and sample standard deviation
+/// over its runs ([`crate::observe::mean_profile`], [`crate::observe::profile_spread`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ProfileGroup {
+    /// Legend label (e.g. `h = 0.30 m`).
+    pub label: String,
+    /// Mean profile (m).
+    pub mean: Profile,
+    /// Standard deviation over the runs (m).
+    pub spread: Profile,
+    /// Number of runs (seeds).
+    pub runs: usize,
+}
+
+/// `(1 seed)` or `(n seeds)`.
+pub fn seeds(n: usize) -> String {
+    if n == 1 {
+        "(1 seed)".into()
+    } else {
+        format!("({n} seeds)")
+    }
+}
+
+/// Ensemble-averaged final profiles (cf. Hopkins 1994, Figures 8 and 10): per group, the
+/// mean sail height (up) and keel depth (down) of all ice in 1-m strips as a thick line, the
+/// mean ± one standard deviation over the seeds as a shaded band, the rubble-only mean as a
+/// thin line; the water line at 0. PNG, or SVG by the extension.
+pub fn plot_profiles(groups: &[ProfileGroup], path: &Path) -> Result<(), PlotError> {
+    crate::io::write_atomic_with(path, |tmp| plot_profiles_at(groups, tmp)).map_err(|e| e.at(path))
 }
 
 /// [`plot_profiles`] into the file `path` (a temporary file renamed by the caller).
-fn plot_profiles_at(profiles: &[(String, Profile)], path: &Path) -> Result<(), PlotError> {
+fn plot_profiles_at(groups: &[ProfileGroup], path: &Path) -> Result<(), PlotError> {
     ensure_font()?;
-    let Some((_, first)) = profiles.first() else {
-        return Ok(());
+    to_file!(path, (900, 560), draw_profiles(groups))
+}
+
+fn draw_profiles<DB: DrawingBackend>(
+    root: DrawingArea<DB, Shift>,
+    groups: &[ProfileGroup],
+) -> Result<(), PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    root.fill(&WHITE).map_err(draw_err)?;
+    let Some(first) = groups.first().map(|g| &g.mean) else {
+        return root.present().map_err(draw_err);
     };
     let x1 = first.x0 + first.dx * first.sail.len() as f64;
-    let top = finite_max(profiles.iter().flat_map(|(_, p)| p.sail.iter().copied())).max(1.0);
-    let bottom = finite_max(profiles.iter().flat_map(|(_, p)| p.keel.iter().copied())).max(1.0);
-    let root = BitMapBackend::new(path, (900, 560)).into_drawing_area();
-    root.fill(&WHITE).map_err(draw_err)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption("averaged final profiles (1-m strips)", ("sans-serif", 18))
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(60)
-        .build_cartesian_2d(first.x0..x1, -(bottom * 1.1)..(top * 1.8))
-        .map_err(draw_err)?;
-    chart
-        .configure_mesh()
-        .x_desc("x (m), floe nose at 0")
-        .y_desc("height (m)")
-        .label_style(("sans-serif", 14))
-        .draw()
-        .map_err(draw_err)?;
-    for (k, (label, p)) in profiles.iter().enumerate() {
+    let up = |g: &ProfileGroup| {
+        g.mean
+            .sail
+            .iter()
+            .zip(&g.spread.sail)
+            .map(|(m, s)| m + s)
+            .collect::<Vec<_>>()
+    };
+    let down = |g: &ProfileGroup| {
+        g.mean
+            .keel
+            .iter()
+            .zip(&g.spread.keel)
+            .map(|(m, s)| m + s)
+            .collect::<Vec<_>>()
+    };
+    let top = finite_max(groups.iter().flat_map(up)).max(1.0);
+    let bottom = finite_max(groups.iter().flat_map(down)).max(1.0);
+    let title = "ensemble-averaged final profiles (1-m strips, mean ± 1 s.d. over seeds)";
+    let (x, y) = (
+        Axis::new(first.x0, x1, "x (m), floe nose at 0"),
+        Axis::new(
+            -(bottom * 1.1),
+            top * 1.8,
+            "sail height up, keel depth down (m)",
+        ),
+    );
+    let (w, h) = root.dim_in_pixel();
+    let layout = Layout::new(w, &x, &y, title).with_height(h);
+    let mut chart = layout.chart(&root, &x, &y, title, true)?;
+    let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
+    let thin = layout.fonts.px(1.0);
+    for (k, g) in groups.iter().enumerate() {
+        let p = &g.mean;
         let c = COLORS[k % COLORS.len()];
         let steps = |vals: &[f64], sign: f64| -> Vec<(f64, f64)> {
             vals.iter()
@@ -248,39 +308,159 @@ fn plot_profiles_at(profiles: &[(String, Profile)], path: &Path) -> Result<(), P
                 })
                 .collect()
         };
+        for (mean, sd, sign) in [
+            (&p.sail, &g.spread.sail, 1.0),
+            (&p.keel, &g.spread.keel, -1.0),
+        ] {
+            let hi: Vec<f64> = mean.iter().zip(sd).map(|(m, s)| m + s).collect();
+            let lo: Vec<f64> = mean.iter().zip(sd).map(|(m, s)| (m - s).max(0.0)).collect();
+            let mut band = steps(&hi, sign);
+            band.extend(steps(&lo, sign).into_iter().rev());
+            chart
+                .draw_series(std::iter::once(Polygon::new(band, c.mix(0.2).filled())))
+                .map_err(draw_err)?;
+        }
         chart
-            .draw_series(LineSeries::new(steps(&p.sail, 1.0), c.stroke_width(2)))
+            .draw_series(LineSeries::new(steps(&p.sail, 1.0), c.stroke_width(line)))
             .map_err(draw_err)?
-            .label(label.clone())
-            .legend(move |(x, y)| PathElement::new([(x, y), (x + 18, y)], c.stroke_width(2)));
+            .label(format!("{} {}", g.label, seeds(g.runs)))
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + key, y)], c.stroke_width(line)));
         chart
-            .draw_series(LineSeries::new(steps(&p.keel, -1.0), c.stroke_width(2)))
+            .draw_series(LineSeries::new(steps(&p.keel, -1.0), c.stroke_width(line)))
             .map_err(draw_err)?;
-        chart
-            .draw_series(LineSeries::new(
-                steps(&p.rubble_sail, 1.0),
-                c.mix(0.5).stroke_width(1),
-            ))
-            .map_err(draw_err)?;
-        chart
-            .draw_series(LineSeries::new(
-                steps(&p.rubble_keel, -1.0),
-                c.mix(0.5).stroke_width(1),
-            ))
-            .map_err(draw_err)?;
+        for (vals, sign) in [(&p.rubble_sail, 1.0), (&p.rubble_keel, -1.0)] {
+            chart
+                .draw_series(LineSeries::new(
+                    steps(vals, sign),
+                    c.mix(0.6).stroke_width(thin),
+                ))
+                .map_err(draw_err)?;
+        }
     }
     chart
         .draw_series(LineSeries::new(
             [(first.x0, 0.0), (x1, 0.0)],
-            RGBColor(30, 90, 160),
+            RGBColor(30, 90, 160).stroke_width(thin),
         ))
         .map_err(draw_err)?;
     chart
         .configure_series_labels()
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
-        .label_font(("sans-serif", 13))
-        .position(SeriesLabelPosition::UpperLeft)
+        .label_font(("sans-serif", layout.fonts.legend))
+        .position(SeriesLabelPosition::LowerRight)
+        .draw()
+        .map_err(draw_err)?;
+    root.present().map_err(draw_err)?;
+    Ok(())
+}
+
+/// C_f (the final W/ΔPE) against sheet thickness: per set,
+/// each run's value as a dot, the ensemble mean joined by a line with ± one standard
+/// deviation over the seeds as whiskers, and CICE's default C_f = 17 dashed. PNG, or SVG by
+/// the extension.
+pub fn plot_cf(t: &RidgeTable, path: &Path) -> Result<(), PlotError> {
+    crate::io::write_atomic_with(path, |tmp| plot_cf_at(t, tmp)).map_err(|e| e.at(path))
+}
+
+/// [`plot_cf`] into the file `path` (a temporary file renamed by the caller).
+fn plot_cf_at(t: &RidgeTable, path: &Path) -> Result<(), PlotError> {
+    ensure_font()?;
+    to_file!(path, (900, 560), draw_cf(t))
+}
+
+fn draw_cf<DB: DrawingBackend>(
+    root: DrawingArea<DB, Shift>,
+    t: &RidgeTable,
+) -> Result<(), PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    root.fill(&WHITE).map_err(draw_err)?;
+    let stat = |xs: &[f64]| crate::table::ensemble::Stat::of(xs);
+    let hmin = t.thickness.first().copied().unwrap_or(0.0);
+    let hmax = t.thickness.last().copied().unwrap_or(1.0);
+    let pad = 0.1 * (hmax - hmin).max(0.1);
+    let cmax = finite_max(
+        t.cf_finals
+            .iter()
+            .flatten()
+            .flatten()
+            .copied()
+            .chain(t.cf_finals.iter().flatten().map(|r| {
+                let s = stat(r);
+                s.mean + s.std
+            }))
+            .chain([17.0]),
+    );
+    let title = "C_f = W/ΔPE at the end of the runs against sheet thickness";
+    let (x, y) = (
+        Axis::new((hmin - pad).max(0.0), hmax + pad, "sheet thickness h (m)"),
+        Axis::new(0.0, cmax * 1.15, "C_f = W/ΔPE"),
+    );
+    let (w, h) = root.dim_in_pixel();
+    let layout = Layout::new(w, &x, &y, title).with_height(h);
+    let mut chart = layout.chart(&root, &x, &y, title, true)?;
+    let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
+    let dot = layout.fonts.px(3.0);
+    let whisker = (x.hi - x.lo) * 0.012;
+    let grey = RGBColor(90, 90, 90);
+    chart
+        .draw_series(DashedLineSeries::new(
+            [(x.lo, 17.0), (x.hi, 17.0)],
+            layout.fonts.px(8.0),
+            layout.fonts.px(5.0),
+            grey.stroke_width(layout.fonts.px(1.0)),
+        ))
+        .map_err(draw_err)?
+        .label("C_f = 17 (CICE default)")
+        .legend(move |(x, y)| PathElement::new([(x, y), (x + key, y)], grey.stroke_width(1)));
+    for (si, set) in t.sets.iter().enumerate() {
+        let c = COLORS[si % COLORS.len()];
+        let stats: Vec<(f64, crate::table::ensemble::Stat)> = t
+            .thickness
+            .iter()
+            .zip(&t.cf_finals[si])
+            .filter(|(_, r)| !r.is_empty())
+            .map(|(h, r)| (*h, stat(r)))
+            .collect();
+        let n: usize = t.cf_finals[si].iter().map(Vec::len).max().unwrap_or(0);
+        let name = if set.is_empty() {
+            "ensemble mean".to_string()
+        } else {
+            set.clone()
+        };
+        chart
+            .draw_series(LineSeries::new(
+                stats.iter().map(|(h, s)| (*h, s.mean)),
+                c.stroke_width(line),
+            ))
+            .map_err(draw_err)?
+            .label(format!("{name} ± 1 s.d. {}", seeds(n)))
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + key, y)], c.stroke_width(line)));
+        for (h, s) in &stats {
+            let (lo, hi) = (s.mean - s.std, s.mean + s.std);
+            chart
+                .draw_series([
+                    PathElement::new([(*h, lo), (*h, hi)], c.stroke_width(line)),
+                    PathElement::new([(h - whisker, lo), (h + whisker, lo)], c.stroke_width(line)),
+                    PathElement::new([(h - whisker, hi), (h + whisker, hi)], c.stroke_width(line)),
+                ])
+                .map_err(draw_err)?;
+        }
+        chart
+            .draw_series(t.thickness.iter().zip(&t.cf_finals[si]).flat_map(|(h, r)| {
+                r.iter()
+                    .map(move |v| Circle::new((*h + 2.0 * whisker, *v), dot, c.mix(0.6).filled()))
+            }))
+            .map_err(draw_err)?;
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", layout.fonts.legend))
+        .position(SeriesLabelPosition::UpperRight)
         .draw()
         .map_err(draw_err)?;
     root.present().map_err(draw_err)?;

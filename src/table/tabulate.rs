@@ -82,6 +82,11 @@ pub struct RidgeTable {
     pub cf_conf: Vec<Vec<(f64, f64)>>,
     /// Runs behind each C_f.
     pub cf_runs: Vec<Vec<u32>>,
+    /// Each run's final W/ΔPE per set and thickness, in the runs' order (the seed spread
+    /// behind `cf`; dimensionless).
+    pub cf_finals: Vec<Vec<Vec<f64>>>,
+    /// The set of every run tabulated: (run id, set index).
+    pub run_set: Vec<(String, usize)>,
     /// Seeds used.
     pub seeds: Vec<u64>,
     /// Runs left out, with the reason: those whose dissipation went negative
@@ -97,6 +102,12 @@ pub struct RidgeTable {
 pub const DEFAULT_FRICTION: (f64, f64) = (1.0, 0.6);
 
 impl RidgeTable {
+    /// The set index of the tabulated run `id`, if it was tabulated (not left out by the
+    /// gate, not a duplicate).
+    pub fn set_of(&self, id: &str) -> Option<usize> {
+        self.run_set.iter().find(|(r, _)| r == id).map(|&(_, s)| s)
+    }
+
     /// The set at friction (`mu`, `mu_w`) (dimensionless; equal to 1e-9), if any.
     pub fn friction_set(&self, mu: f64, mu_w: f64) -> Option<usize> {
         (0..self.sets.len())
@@ -128,6 +139,68 @@ fn is_thickness_key(s: &str) -> bool {
 
 fn is_friction_key(s: &str) -> bool {
     s.starts_with("contact.mu=") || s.starts_with("contact.mu_water=")
+}
+
+/// What is missing or not a number in the fits of a table, one sentence each: an empty fit
+/// table (no fit at all), a set without a pooled fit, a thickness without its own fit, a fit
+/// coefficient or C_f that is NaN. Empty when every fit is there and finite.
+pub fn fit_warnings(t: &RidgeTable) -> Vec<String> {
+    let mut out = Vec::new();
+    let name = |si: usize| {
+        if t.sets[si].is_empty() {
+            "all runs".to_string()
+        } else {
+            format!("set `{}`", t.sets[si])
+        }
+    };
+    let finite = |f: &SetFits| {
+        [
+            f.work.a,
+            f.work.b,
+            f.potential_energy.a,
+            f.potential_energy.b,
+        ]
+        .iter()
+        .all(|v| v.is_finite())
+    };
+    if t.pooled.iter().all(Option::is_none) && t.fits.iter().flatten().all(Option::is_none) {
+        out.push(
+            "the fit table is empty: no set or thickness had enough samples with V > 0 for \
+             eqs (13)-(14) (runs too short for the sample interval?)"
+                .to_string(),
+        );
+        return out;
+    }
+    for si in 0..t.sets.len() {
+        match &t.pooled[si] {
+            None => out.push(format!("{}: no pooled fit of eqs (13)-(14)", name(si))),
+            Some(f) if !finite(f) => out.push(format!(
+                "{}: the pooled fit is not a number (NaN)",
+                name(si)
+            )),
+            _ => {}
+        }
+        for (hi, h) in t.thickness.iter().enumerate() {
+            if t.runs[si][hi].iter().all(|&n| n == 0) {
+                continue;
+            }
+            match &t.fits[si][hi] {
+                None => out.push(format!("{}, h = {h} m: no fit of eqs (13)-(14)", name(si))),
+                Some(f) if !finite(f) => out.push(format!(
+                    "{}, h = {h} m: the fit is not a number (NaN)",
+                    name(si)
+                )),
+                _ => {}
+            }
+            if !t.cf[si][hi].is_finite() {
+                out.push(format!(
+                    "{}, h = {h} m: C_f is not a number (no run with ΔPE > 0 at its end)",
+                    name(si)
+                ));
+            }
+        }
+    }
+    out
 }
 
 /// Linear interpolation of `ys(xs)` at `x` within [xs[0], xs[last]], else NaN.
@@ -260,6 +333,12 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
         cf_std: vec![vec![f64::NAN; nh]; ns],
         cf_conf: vec![vec![(f64::NAN, f64::NAN); nh]; ns],
         cf_runs: vec![vec![0; nh]; ns],
+        cf_finals: vec![vec![Vec::new(); nh]; ns],
+        run_set: recs
+            .iter()
+            .zip(&set_index)
+            .map(|(r, &si)| (r.id.clone(), si))
+            .collect(),
         seeds,
         excluded,
         duplicates,
@@ -338,6 +417,7 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
                     t.cf_conf[si][hi] = (st.mean - half, st.mean + half);
                 }
             }
+            t.cf_finals[si][hi] = finals;
             if let (Ok(work), Ok(pe)) = (fit_through_origin(&fv, &fw), fit_through_origin(&fv, &fp))
             {
                 t.fits[si][hi] = Some(SetFits {

@@ -1,9 +1,12 @@
 //! Progress of long commands (`simulate`, `campaign`) on stderr: a bar on a terminal, and
 //! when stderr is not a terminal (a log file, CI, a pipe) one line every
 //! `--progress-interval` seconds with the elapsed time, the work done, the rate and an ETA.
+//! Both show the same ETA, from [`pressridge::eta`]: `simulate` assumes the cost of a
+//! simulated second grows linearly as the ridge grows, `campaign` a constant rate.
 //! `--quiet` silences both; `-v` adds detail (steps, step size, runs).
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use pressridge::eta::{Eta, Model};
 use std::io::IsTerminal;
 use std::sync::Mutex;
 use std::sync::OnceLock;
@@ -54,6 +57,8 @@ pub struct Progress {
     last: Mutex<Option<Instant>>,
     /// Work done before this process started (resumed campaigns): not in the rate.
     base: Mutex<Option<f64>>,
+    /// The ETA estimator ([`pressridge::eta`]), fed at every report.
+    eta: Mutex<Eta>,
 }
 
 /// `d` as `1h02m03s`, `2m03s` or `3s`.
@@ -73,8 +78,9 @@ pub fn hms(d: f64) -> String {
 }
 
 impl Progress {
-    /// A progress report towards `total` (in `unit`), drawn as the options and stderr say.
-    pub fn new(total: f64, unit: &'static str) -> Progress {
+    /// A progress report towards `total` (in `unit`), drawn as the options and stderr say,
+    /// its ETA estimated with `model` (see [`pressridge::eta`]).
+    pub fn new(total: f64, unit: &'static str, model: Model) -> Progress {
         let o = options();
         let kind = if o.quiet {
             Kind::Quiet
@@ -83,9 +89,9 @@ impl Progress {
                 Some((total * 1000.0).round().max(1.0) as u64),
                 ProgressDrawTarget::stderr(),
             );
-            if let Ok(style) = ProgressStyle::with_template(
-                "{spinner} [{elapsed_precise}] {bar:40} {msg} ETA {eta}",
-            ) {
+            if let Ok(style) =
+                ProgressStyle::with_template("{spinner} [{elapsed_precise}] {bar:40} {msg}")
+            {
                 bar.set_style(style.progress_chars("=> "));
             }
             Kind::Bar(bar)
@@ -100,6 +106,7 @@ impl Progress {
             interval: Duration::from_secs_f64(o.interval),
             last: Mutex::new(None),
             base: Mutex::new(None),
+            eta: Mutex::new(Eta::new(total, model)),
         }
     }
 
@@ -134,24 +141,24 @@ impl Progress {
             *last = Some(now);
         }
         let (msg, detail) = text();
+        let elapsed = now.duration_since(self.start).as_secs_f64();
+        let eta = {
+            let mut e = self.eta.lock().expect("progress lock");
+            e.observe(elapsed, done);
+            e.remaining().map_or_else(|| "?".into(), hms)
+        };
         match &self.kind {
             Kind::Quiet => {}
             Kind::Bar(bar) => {
                 bar.set_position((done * 1000.0).round().max(0.0) as u64);
                 if verbose && !detail.is_empty() {
-                    bar.set_message(format!("{msg}, {detail}"));
+                    bar.set_message(format!("{msg}, {detail}, ETA {eta}"));
                 } else {
-                    bar.set_message(msg);
+                    bar.set_message(format!("{msg}, ETA {eta}"));
                 }
             }
             Kind::Lines => {
-                let elapsed = now.duration_since(self.start).as_secs_f64();
                 let rate = (done - base) / elapsed.max(1e-9);
-                let eta = if rate > 0.0 {
-                    hms((self.total - done).max(0.0) / rate)
-                } else {
-                    "?".into()
-                };
                 let pct = 100.0 * done / self.total.max(f64::MIN_POSITIVE);
                 let mut line = format!(
                     "pressridge: {} elapsed, {msg} ({pct:.1} %), {rate:.3} {}/s, ETA {eta}",

@@ -16,7 +16,7 @@ pub struct Args {
     /// Window x0,x1,y0,y1 in metres; fitted to the free blocks when omitted.
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     window: Option<Vec<f64>>,
-    /// Image width in pixels.
+    /// Image width in pixels (200 to 8000); fonts, lines and margins scale with it.
     #[arg(long, default_value_t = 1000)]
     width: u32,
 }

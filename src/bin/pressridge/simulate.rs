@@ -145,7 +145,11 @@ pub fn run(a: Args) -> Result<(), BoxError> {
     prepare_out_dir(&a.out, a.overwrite)?;
     write_atomic(&a.out.join("scene.toml"), scene.to_toml().as_bytes())?;
 
-    let progress = crate::progress::Progress::new(scene.duration, "s simulated");
+    let progress = crate::progress::Progress::new(
+        scene.duration,
+        "s simulated",
+        pressridge::eta::Model::GrowingCost,
+    );
     let snap_dir = a.out.join("snapshots");
     let interval = scene.output.snapshot_interval;
     let mut next_snap = 0.0;

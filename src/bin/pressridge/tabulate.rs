@@ -3,7 +3,9 @@
 use crate::BoxError;
 use pressridge::campaign::read_campaign;
 use pressridge::io::table_netcdf::{Provenance, write_ridge_table};
+use pressridge::observe::{Profile, mean_profile, profile_spread};
 use pressridge::plot;
+use pressridge::plot::table::ProfileGroup;
 use pressridge::table::tabulate::tabulate;
 use std::path::PathBuf;
 
@@ -20,8 +22,11 @@ pub struct Args {
     /// Points of the ridged-volume grid.
     #[arg(long, default_value_t = 41)]
     points: usize,
-    /// Also draw figures into this directory: work against volume with the fit and its
-    /// bands, force against volume and thickness (per set), averaged final profiles.
+    /// Also draw figures into this directory, each as PNG and SVG: work against volume with
+    /// the fit and its bands and force against volume and thickness (per set:
+    /// work_set<k>, force_set<k>), C_f against thickness with each seed's value and the
+    /// spread (cf), ensemble-averaged final profiles with the spread over the seeds
+    /// (profiles).
     #[arg(long)]
     figures: Option<PathBuf>,
     /// Also write a Markdown report: per grid point the mean and spread over the seeds of
@@ -98,31 +103,53 @@ pub fn run(a: Args) -> Result<(), BoxError> {
     write_ridge_table(&a.out, &table, &prov)?;
     if let Some(dir) = &a.figures {
         std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-        for s in 0..table.sets.len() {
-            plot::table::plot_work(&table, s, &dir.join(format!("work_set{s}.png")))?;
-            plot::table::plot_force(&table, s, &dir.join(format!("force_set{s}.png")))?;
-        }
-        // Averaged final profiles per grid point (all seeds of a setting).
-        let mut groups: Vec<(String, Vec<pressridge::observe::Profile>)> = Vec::new();
-        for r in &records {
-            let label = if r.settings.is_empty() {
-                "all".to_string()
+        // Ensemble final profiles per grid point (all seeds of a setting), runs left out by
+        // the physical-consistency gate excepted.
+        let mut groups: Vec<(String, Vec<Profile>)> = Vec::new();
+        for r in records.iter() {
+            // Runs left out by the gate, and second copies of runs shared by two campaigns,
+            // have no set.
+            let Some(si) = table.set_of(&r.id) else {
+                continue;
+            };
+            let set = if table.sets.len() == 1 {
+                String::new()
             } else {
-                r.settings.join(", ")
+                table.sets[si].clone()
+            };
+            let h = r.scene.sheet.as_ref().map(|s| s.thickness);
+            let label = match (set.is_empty(), h) {
+                (true, Some(h)) => format!("h = {h:.2} m"),
+                (false, Some(h)) => format!("{set}, h = {h:.2} m"),
+                (_, None) => r.settings.join(", "),
             };
             match groups.iter_mut().find(|(l, _)| *l == label) {
                 Some((_, v)) => v.push(r.profile.clone()),
                 None => groups.push((label, vec![r.profile.clone()])),
             }
         }
-        let profiles: Vec<(String, pressridge::observe::Profile)> = groups
+        let profiles: Vec<ProfileGroup> = groups
             .into_iter()
-            .filter_map(|(l, ps)| {
-                let n = ps.len();
-                pressridge::observe::mean_profile(&ps).map(|p| (format!("{l} ({n} runs)"), p))
+            .filter_map(|(label, ps)| {
+                Some(ProfileGroup {
+                    label,
+                    mean: mean_profile(&ps)?,
+                    spread: profile_spread(&ps)?,
+                    runs: ps.len(),
+                })
             })
             .collect();
-        plot::table::plot_profiles(&profiles, &dir.join("profiles.png"))?;
+        for ext in ["png", "svg"] {
+            for s in 0..table.sets.len() {
+                plot::table::plot_work(&table, s, &dir.join(format!("work_set{s}.{ext}")))?;
+                plot::table::plot_force(&table, s, &dir.join(format!("force_set{s}.{ext}")))?;
+            }
+            plot::table::plot_cf(&table, &dir.join(format!("cf.{ext}")))?;
+            plot::table::plot_profiles(&profiles, &dir.join(format!("profiles.{ext}")))?;
+        }
+    }
+    for w in pressridge::table::tabulate::fit_warnings(&table) {
+        eprintln!("pressridge: warning: {w}");
     }
     for (id, why) in &table.excluded {
         eprintln!(
