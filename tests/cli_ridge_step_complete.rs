@@ -14,10 +14,11 @@ mod common;
 
 use std::path::Path;
 
-use common::{bin, fails_with, scratch, succeeds};
+use common::column::{Column, Stepped, step};
+use common::{bin, fails_with, fill_value, global, read_values, scratch, succeeds};
 use pressridge::itd::{
-    CATEGORY_OUTPUTS, CELL_OUTPUTS, CiceTracerFlags, Closing, ColumnMut, OceanFluxes,
-    RidgeStepOptions, StepForcing, StepWorkspace, TracerLayout, ridge_step_column,
+    CATEGORY_OUTPUTS, CELL_OUTPUTS, CiceTracerFlags, Closing, RidgeStepOptions, StepForcing,
+    TracerLayout,
 };
 
 const NCAT: usize = 3;
@@ -167,17 +168,33 @@ fn write_input_with(path: &Path, inp: &Input, skip: &[&str], extra: &[CellVar<'_
 }
 
 fn read(path: &Path, name: &str) -> Vec<f64> {
-    let f = netcdf::open(path).unwrap();
-    let v = f
-        .variable(name)
-        .unwrap_or_else(|| panic!("output has no `{name}`"));
-    let fill: Option<f64> = v
-        .attributes()
-        .find(|a| a.name() == "_FillValue")
-        .and_then(|a| a.value().ok())
-        .and_then(|x| f64::try_from(x).ok());
-    assert_eq!(fill, Some(FILL), "{name}: _FillValue");
-    v.get_values::<f64, _>(..).unwrap()
+    assert_eq!(fill_value(path, name), Some(FILL), "{name}: _FillValue");
+    read_values(path, name)
+}
+
+/// The library's step of column `c` of the input, closing by its divergence and shear, with
+/// `ndtd` subcycles and freezing temperature `tf`: the column before the step, and the step.
+fn library(
+    inp: &Input,
+    c: usize,
+    ndtd: u32,
+    tf: f64,
+    opts: &RidgeStepOptions,
+) -> (Column, Stepped) {
+    let col = Column::gather(
+        NCOL, c, &inp.aicen, &inp.vicen, &inp.vsnon, &inp.trcrn, &inp.aice0,
+    );
+    let forcing = StepForcing {
+        closing: Closing::Deformation {
+            convergence: f64::max(-inp.divu[c], 0.0),
+            shear: inp.shear[c],
+        },
+        dt: DT,
+        ndtd,
+        tf,
+    };
+    let r = step(&col, &inp.hin_max, forcing, opts, &layout());
+    (col, r)
 }
 
 fn units(path: &Path, name: &str) -> String {
@@ -243,44 +260,17 @@ fn snow_and_tracers_round_trip_equal_the_library_and_conserve() {
             continue;
         }
         // The library on the same column.
-        let mut a: Vec<f64> = (0..NCAT).map(|n| inp.aicen[n * NCOL + c]).collect();
-        let mut v: Vec<f64> = (0..NCAT).map(|n| inp.vicen[n * NCOL + c]).collect();
-        let mut s: Vec<f64> = (0..NCAT).map(|n| inp.vsnon[n * NCOL + c]).collect();
-        let mut t: Vec<f64> = (0..NCAT)
-            .flat_map(|n| (0..nt).map(move |it| (n, it)))
-            .map(|(n, it)| inp.trcrn[it][n * NCOL + c])
-            .collect();
-        let (a_in, v_in, s_in, t_in) = (a.clone(), v.clone(), s.clone(), t.clone());
-        let mut a0 = inp.aice0[c];
-        let mut ai: f64 = a.iter().sum();
-        let mut fl = OceanFluxes::default();
-        let mut ws = StepWorkspace::new(NCAT, nt);
-        let (conv, sh) = (f64::max(-inp.divu[c], 0.0), inp.shear[c]);
-        let d = ridge_step_column(
-            &mut ColumnMut {
-                aicen: &mut a,
-                vicen: &mut v,
-                vsnon: &mut s,
-                trcrn: &mut t,
-                aice0: &mut a0,
-                aice: &mut ai,
-            },
-            &inp.hin_max,
-            StepForcing {
-                closing: Closing::Deformation {
-                    convergence: conv,
-                    shear: sh,
-                },
-                dt: DT,
-                ndtd: 2,
-                tf: -1.8,
-            },
-            &opts,
-            &l,
-            &mut fl,
-            &mut ws,
-        )
-        .unwrap();
+        let (col, r) = library(&inp, c, 2, -1.8, &opts);
+        let d = r.result.unwrap();
+        let (a, v, s, t, a0) = (
+            r.col.aicen,
+            r.col.vicen,
+            r.col.vsnon,
+            r.col.trcrn,
+            r.col.aice0,
+        );
+        let (fl, ws) = (r.fluxes, r.ws);
+        let (v_in, s_in, t_in) = (col.vicen, col.vsnon, col.trcrn);
         assert!(d.dardg1dt > 0.0, "column {c} ridges");
         for n in 0..NCAT {
             let i = n * NCOL + c;
@@ -334,7 +324,6 @@ fn snow_and_tracers_round_trip_equal_the_library_and_conserve() {
         let e0 = enthalpy(&v_in, &s_in, &t_in);
         let e1 = enthalpy(&v, &s, &t) + cell_of("fhocn", c) * 2.0 * DT;
         assert!(rel(e1, e0) < 1e-12, "enthalpy col {c}: {e1} vs {e0}");
-        let _ = a_in;
     }
     // The output is a valid input again (chained steps).
     let out2 = dir.join("out2.nc");
@@ -461,42 +450,9 @@ fn freezing_temperature_per_column_from_the_file() {
         if c == LAND {
             continue;
         }
-        let mut a: Vec<f64> = (0..NCAT).map(|n| inp.aicen[n * NCOL + c]).collect();
-        let mut v: Vec<f64> = (0..NCAT).map(|n| inp.vicen[n * NCOL + c]).collect();
-        let mut s: Vec<f64> = (0..NCAT).map(|n| inp.vsnon[n * NCOL + c]).collect();
-        let mut t: Vec<f64> = (0..NCAT)
-            .flat_map(|n| (0..nt).map(move |it| (n, it)))
-            .map(|(n, it)| inp.trcrn[it][n * NCOL + c])
-            .collect();
-        let mut a0 = inp.aice0[c];
-        let mut ai: f64 = a.iter().sum();
-        let mut fl = OceanFluxes::default();
-        let mut ws = StepWorkspace::new(NCAT, nt);
-        ridge_step_column(
-            &mut ColumnMut {
-                aicen: &mut a,
-                vicen: &mut v,
-                vsnon: &mut s,
-                trcrn: &mut t,
-                aice0: &mut a0,
-                aice: &mut ai,
-            },
-            &inp.hin_max,
-            StepForcing {
-                closing: Closing::Deformation {
-                    convergence: f64::max(-inp.divu[c], 0.0),
-                    shear: inp.shear[c],
-                },
-                dt: DT,
-                ndtd: 1,
-                tf: tf[c],
-            },
-            &opts,
-            &l,
-            &mut fl,
-            &mut ws,
-        )
-        .unwrap();
+        let (_, r) = library(&inp, c, 1, tf[c], &opts);
+        r.result.unwrap();
+        let (a, t) = (r.col.aicen, r.col.trcrn);
         for n in 0..NCAT {
             let i = n * NCOL + c;
             assert_eq!(got_a[i].to_bits(), a[n].to_bits(), "aicen col {c} cat {n}");
@@ -563,14 +519,6 @@ fn freezing_temperature_per_column_from_the_file() {
     );
 }
 
-fn global(path: &Path, name: &str) -> String {
-    let f = netcdf::open(path).unwrap();
-    f.attribute(name)
-        .and_then(|a| a.value().ok())
-        .and_then(|x| String::try_from(x).ok())
-        .unwrap_or_else(|| panic!("no global attribute {name}"))
-}
-
 /// The thermodynamic constants of the complete step from --param and --param-file (one list,
 /// `RidgeStepParams::FIELDS`), and the salt-flux option: the step equals the library with
 /// them bit for bit, every constant used is written as a global attribute with its units,
@@ -607,48 +555,13 @@ fn thermodynamic_constants_from_options_and_file() {
     opts.step.ice_ref_salinity = 5.0;
     opts.step.salt_flux = pressridge::itd::SaltFlux::Prognostic;
     opts.params.rhoi = 900.0;
-    let l = layout();
-    let nt = l.ntrcr();
     let got_s = read(&out, "vsnon");
     let fresh = read(&out, "fresh");
     let fhocn = read(&out, "fhocn");
     for c in (0..NCOL).filter(|&c| c != LAND) {
-        let mut a: Vec<f64> = (0..NCAT).map(|n| inp.aicen[n * NCOL + c]).collect();
-        let mut v: Vec<f64> = (0..NCAT).map(|n| inp.vicen[n * NCOL + c]).collect();
-        let mut s: Vec<f64> = (0..NCAT).map(|n| inp.vsnon[n * NCOL + c]).collect();
-        let mut t: Vec<f64> = (0..NCAT)
-            .flat_map(|n| (0..nt).map(move |it| (n, it)))
-            .map(|(n, it)| inp.trcrn[it][n * NCOL + c])
-            .collect();
-        let mut a0 = inp.aice0[c];
-        let mut ai: f64 = a.iter().sum();
-        let mut fl = OceanFluxes::default();
-        let mut ws = StepWorkspace::new(NCAT, nt);
-        ridge_step_column(
-            &mut ColumnMut {
-                aicen: &mut a,
-                vicen: &mut v,
-                vsnon: &mut s,
-                trcrn: &mut t,
-                aice0: &mut a0,
-                aice: &mut ai,
-            },
-            &inp.hin_max,
-            StepForcing {
-                closing: Closing::Deformation {
-                    convergence: f64::max(-inp.divu[c], 0.0),
-                    shear: inp.shear[c],
-                },
-                dt: DT,
-                ndtd: 1,
-                tf: -1.8,
-            },
-            &opts,
-            &l,
-            &mut fl,
-            &mut ws,
-        )
-        .unwrap();
+        let (_, r) = library(&inp, c, 1, -1.8, &opts);
+        r.result.unwrap();
+        let (s, fl) = (r.col.vsnon, r.fluxes);
         for n in 0..NCAT {
             assert_eq!(got_s[n * NCOL + c].to_bits(), s[n].to_bits(), "col {c}");
         }

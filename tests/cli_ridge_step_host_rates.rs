@@ -19,28 +19,10 @@ mod common;
 
 use std::path::Path;
 
-use common::{bin, fails_with, scratch, succeeds};
-use pressridge::itd::{
-    CELL_OUTPUTS, CiceTracerFlags, Closing, ColumnMut, OceanFluxes, Participation, Redistribution,
-    RidgeStepOptions, StepForcing, StepWorkspace, TracerLayout, ridge_step_column,
-};
-use serde_json::Value;
-
-const FILE: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/tests/data/icepack/ridge_step_cases.jsonl"
-);
-
-fn num(v: &Value) -> f64 {
-    match v {
-        Value::Number(n) => n.as_f64().unwrap(),
-        _ => panic!("not a number: {v}"),
-    }
-}
-
-fn nums(v: &Value) -> Vec<f64> {
-    v.as_array().unwrap().iter().map(num).collect()
-}
+use common::column::{Column, step};
+use common::icepack::{num, nums};
+use common::{bin, fails_with, global, read_values as read, scratch, succeeds};
+use pressridge::itd::{CELL_OUTPUTS, Closing, RidgeStepOptions, StepForcing, TracerLayout};
 
 /// One case's inputs, as the command line gets them.
 struct Case {
@@ -62,51 +44,17 @@ struct Case {
 }
 
 fn cases() -> (TracerLayout, Vec<Case>) {
-    let text = std::fs::read_to_string(FILE).expect("reference file");
-    let mut lines = text.lines().filter(|l| !l.trim().is_empty());
-    let params: Value = serde_json::from_str(lines.next().unwrap()).unwrap();
-    let flags = &params["tracer_flags"];
-    let flag = |k: &str| flags[k].as_bool().unwrap();
-    let layout = TracerLayout::cice(
-        params["nilyr"].as_u64().unwrap() as usize,
-        params["nslyr"].as_u64().unwrap() as usize,
-        CiceTracerFlags {
-            age: flag("tr_iage"),
-            first_year: flag("tr_FY"),
-            level_ice: flag("tr_lvl"),
-            ponds: flag("tr_pond_lvl"),
-        },
-    )
-    .unwrap();
-    let nt = layout.ntrcr();
+    let (params, all) = common::icepack::read();
+    let layout = common::icepack::layout(&params);
     let mut out = Vec::new();
-    for line in lines {
-        let c: Value = serde_json::from_str(line).unwrap();
+    for c in &all {
         let i = &c["inputs"];
         if i["closing_in"].is_null() {
             continue;
         }
         let ncat = i["ncat"].as_u64().unwrap() as usize;
-        let mut t = vec![f64::NAN; ncat * nt];
-        for (name, per_cat) in i["trcrn"].as_object().unwrap() {
-            let (start, levels) = layout.field(name).unwrap();
-            for (n, lv) in per_cat.as_array().unwrap().iter().enumerate() {
-                let lv = nums(lv);
-                t[n * nt + start..n * nt + start + levels].copy_from_slice(&lv);
-            }
-        }
-        let mut opts = RidgeStepOptions::default();
-        opts.participation = match i["krdg_partic"].as_i64().unwrap() {
-            0 => Participation::Thorndike,
-            _ => Participation::Exponential,
-        };
-        opts.redistribution = match i["krdg_redist"].as_i64().unwrap() {
-            0 => Redistribution::Uniform,
-            _ => Redistribution::Exponential,
-        };
-        opts.params.mu_rdg = num(&i["mu_rdg"]);
-        opts.cleanup = i["docleanup"].as_bool().unwrap();
-        opts.rebin = i["dorebin"].as_bool().unwrap();
+        let t = common::icepack::tracers(&i["trcrn"], &layout, ncat);
+        let opts = common::icepack::options(i);
         out.push(Case {
             name: c["case"].as_str().unwrap().to_string(),
             ncat,
@@ -167,22 +115,6 @@ fn write_case(path: &Path, c: &Case, layout: &TracerLayout, rate_units: Option<&
     f.close().unwrap();
 }
 
-fn read(path: &Path, name: &str) -> Vec<f64> {
-    let f = netcdf::open(path).unwrap();
-    let v = f
-        .variable(name)
-        .unwrap_or_else(|| panic!("output has no `{name}`"));
-    v.get_values::<f64, _>(..).unwrap()
-}
-
-fn global(path: &Path, name: &str) -> String {
-    let f = netcdf::open(path).unwrap();
-    f.attribute(name)
-        .and_then(|a| a.value().ok())
-        .and_then(|x| String::try_from(x).ok())
-        .unwrap_or_else(|| panic!("no global attribute {name}"))
-}
-
 /// The command line of a case.
 fn command(c: &Case, input: &Path, output: &Path) -> std::process::Command {
     let mut cmd = bin();
@@ -220,41 +152,32 @@ fn host_rates_on_the_reference_cases_equal_the_library_bit_for_bit() {
         write_case(&inp, c, &layout, Some("s-1"));
         let r = command(c, &inp, &out).output().unwrap();
         // The library on the same column.
-        let (mut a, mut v, mut s, mut t) = (
+        let col = Column::new(
             c.aicen.clone(),
             c.vicen.clone(),
             c.vsnon.clone(),
             c.trcrn.clone(),
+            c.aice0,
         );
-        let mut a0 = c.aice0;
-        let mut ai: f64 = a.iter().sum();
-        let mut fl = OceanFluxes::default();
-        let mut ws = StepWorkspace::new(c.ncat, nt);
-        let res = ridge_step_column(
-            &mut ColumnMut {
-                aicen: &mut a,
-                vicen: &mut v,
-                vsnon: &mut s,
-                trcrn: &mut t,
-                aice0: &mut a0,
-                aice: &mut ai,
+        let forcing = StepForcing {
+            closing: Closing::Rates {
+                closing: c.closing,
+                opening: c.opening,
             },
-            &c.hin_max,
-            StepForcing {
-                closing: Closing::Rates {
-                    closing: c.closing,
-                    opening: c.opening,
-                },
-                dt: c.dt,
-                ndtd: c.ndtd,
-                tf: c.tf,
-            },
-            &c.opts,
-            &layout,
-            &mut fl,
-            &mut ws,
+            dt: c.dt,
+            ndtd: c.ndtd,
+            tf: c.tf,
+        };
+        let lib = step(&col, &c.hin_max, forcing, &c.opts, &layout);
+        let (a, v, s, t, a0) = (
+            lib.col.aicen,
+            lib.col.vicen,
+            lib.col.vsnon,
+            lib.col.trcrn,
+            lib.col.aice0,
         );
-        let d = match res {
+        let (fl, ws) = (lib.fluxes, lib.ws);
+        let d = match lib.result {
             Ok(d) => d,
             Err(e) => {
                 // The command line refuses the column with the library's message, or

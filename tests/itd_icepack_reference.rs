@@ -14,55 +14,14 @@
     clippy::too_many_arguments
 )]
 
+mod common;
+
+use common::column::{Column, Stepped, step};
+use common::icepack::{num, nums, tracers};
 use pressridge::itd::{
-    CiceTracerFlags, Closing, ColumnError, ColumnMut, OceanFluxes, Participation, Redistribution,
-    RidgeStepOptions, StepForcing, StepWorkspace, TracerBase, TracerLayout, ridge_step_column,
+    Closing, OceanFluxes, RidgeStepOptions, StepForcing, TracerBase, TracerLayout,
 };
 use serde_json::Value;
-
-const FILE: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/tests/data/icepack/ridge_step_cases.jsonl"
-);
-
-fn num(v: &Value) -> f64 {
-    match v {
-        Value::Number(n) => n.as_f64().unwrap(),
-        Value::String(s) => match s.as_str() {
-            "nan" => f64::NAN,
-            "inf" => f64::INFINITY,
-            "-inf" => f64::NEG_INFINITY,
-            _ => panic!("bad number {s}"),
-        },
-        _ => panic!("not a number: {v}"),
-    }
-}
-
-fn nums(v: &Value) -> Vec<f64> {
-    v.as_array().unwrap().iter().map(num).collect()
-}
-
-/// Tracers of a case as `trcrn[n * ntrcr + it]`.
-fn tracers(v: &Value, layout: &TracerLayout, ncat: usize) -> Vec<f64> {
-    let nt = layout.ntrcr();
-    let mut t = vec![f64::NAN; ncat * nt];
-    let obj = v.as_object().unwrap();
-    assert_eq!(obj.len(), layout.fields().len(), "tracer fields");
-    for (name, per_cat) in obj {
-        let (start, levels) = layout
-            .field(name)
-            .unwrap_or_else(|| panic!("tracer {name} not in the layout"));
-        let per_cat = per_cat.as_array().unwrap();
-        assert_eq!(per_cat.len(), ncat);
-        for (n, lv) in per_cat.iter().enumerate() {
-            let lv = nums(lv);
-            assert_eq!(lv.len(), levels, "{name} levels");
-            t[n * nt + start..n * nt + start + levels].copy_from_slice(&lv);
-        }
-    }
-    assert!(t.iter().all(|x| !x.is_nan()), "every tracer given");
-    t
-}
 
 struct Cmp {
     case: String,
@@ -113,25 +72,11 @@ struct Case {
 }
 
 fn read_cases() -> (Value, TracerLayout, Vec<Case>) {
-    let text = std::fs::read_to_string(FILE).expect("reference file");
-    let mut lines = text.lines().filter(|l| !l.trim().is_empty());
-    let params: Value = serde_json::from_str(lines.next().unwrap()).unwrap();
+    let (params, lines) = common::icepack::read();
     assert_eq!(params["kind"], "params");
     let nilyr = params["nilyr"].as_u64().unwrap() as usize;
     let nslyr = params["nslyr"].as_u64().unwrap() as usize;
-    let flags = &params["tracer_flags"];
-    let flag = |k: &str| flags[k].as_bool().unwrap();
-    let layout = TracerLayout::cice(
-        nilyr,
-        nslyr,
-        CiceTracerFlags {
-            age: flag("tr_iage"),
-            first_year: flag("tr_FY"),
-            level_ice: flag("tr_lvl"),
-            ponds: flag("tr_pond_lvl"),
-        },
-    )
-    .unwrap();
+    let layout = common::icepack::layout(&params);
     // The layout is Icepack's, index for index.
     assert_eq!(layout.ntrcr(), params["ntrcr"].as_u64().unwrap() as usize);
     for f in params["tracer_layout"].as_array().unwrap() {
@@ -175,27 +120,13 @@ fn read_cases() -> (Value, TracerLayout, Vec<Case>) {
     assert_eq!(p["saltflux_option"], "constant");
 
     let mut cases = Vec::new();
-    for line in lines {
-        let c: Value = serde_json::from_str(line).unwrap();
+    for c in &lines {
         assert_eq!(c["kind"], "case");
         let i = &c["inputs"];
         let ncat = i["ncat"].as_u64().unwrap() as usize;
         assert_eq!(i["nilyr"].as_u64().unwrap() as usize, nilyr);
         assert_eq!(i["nslyr"].as_u64().unwrap() as usize, nslyr);
-        let mut opts = RidgeStepOptions::default();
-        opts.participation = match i["krdg_partic"].as_i64().unwrap() {
-            0 => Participation::Thorndike,
-            1 => Participation::Exponential,
-            k => panic!("krdg_partic {k}"),
-        };
-        opts.redistribution = match i["krdg_redist"].as_i64().unwrap() {
-            0 => Redistribution::Uniform,
-            1 => Redistribution::Exponential,
-            k => panic!("krdg_redist {k}"),
-        };
-        opts.params.mu_rdg = num(&i["mu_rdg"]);
-        opts.cleanup = i["docleanup"].as_bool().unwrap();
-        opts.rebin = i["dorebin"].as_bool().unwrap();
+        let opts = common::icepack::options(i);
         let closing = if i["closing_in"].is_null() {
             Closing::Deformation {
                 convergence: num(&i["rdg_conv"]),
@@ -238,48 +169,17 @@ fn read_cases() -> (Value, TracerLayout, Vec<Case>) {
     (params, layout, cases)
 }
 
-struct Run {
-    aicen: Vec<f64>,
-    vicen: Vec<f64>,
-    vsnon: Vec<f64>,
-    trcrn: Vec<f64>,
-    aice0: f64,
-    aice: f64,
-    fluxes: OceanFluxes,
-    result: Result<pressridge::itd::StepDiagnostics, ColumnError>,
-    ws: StepWorkspace,
-}
-
-fn run(c: &Case, layout: &TracerLayout) -> Run {
-    let mut r = Run {
-        aicen: c.aicen.clone(),
-        vicen: c.vicen.clone(),
-        vsnon: c.vsnon.clone(),
-        trcrn: c.trcrn.clone(),
-        aice0: c.aice0,
-        aice: c.aice,
-        fluxes: OceanFluxes::default(),
-        result: Ok(Default::default()),
-        ws: StepWorkspace::new(c.ncat, layout.ntrcr()),
-    };
-    let mut col = ColumnMut {
-        aicen: &mut r.aicen,
-        vicen: &mut r.vicen,
-        vsnon: &mut r.vsnon,
-        trcrn: &mut r.trcrn,
-        aice0: &mut r.aice0,
-        aice: &mut r.aice,
-    };
-    r.result = ridge_step_column(
-        &mut col,
-        &c.hin_max,
-        c.forcing,
-        &c.opts,
-        layout,
-        &mut r.fluxes,
-        &mut r.ws,
+/// The library on the case's column (with the case's `aice`).
+fn run(c: &Case, layout: &TracerLayout) -> Stepped {
+    let mut col = Column::new(
+        c.aicen.clone(),
+        c.vicen.clone(),
+        c.vsnon.clone(),
+        c.trcrn.clone(),
+        c.aice0,
     );
-    r
+    col.aice = c.aice;
+    step(&col, &c.hin_max, c.forcing, &c.opts, layout)
 }
 
 /// Whether tracer `it` of category `n` has a base (and strata) above puny in `state`.
@@ -337,9 +237,9 @@ fn check_typical(c: &Case, layout: &TracerLayout, puny: f64, cmp: &mut Cmp) {
             return;
         }
     };
-    cmp.all("aicen", &r.aicen, &nums(&o["aicen"]));
-    cmp.all("vicen", &r.vicen, &nums(&o["vicen"]));
-    cmp.all("vsnon", &r.vsnon, &nums(&o["vsnon"]));
+    cmp.all("aicen", &r.col.aicen, &nums(&o["aicen"]));
+    cmp.all("vicen", &r.col.vicen, &nums(&o["vicen"]));
+    cmp.all("vsnon", &r.col.vsnon, &nums(&o["vsnon"]));
     // Documented deviation (docs/strength.md): after scaling an area excess Icepack sets
     // aice0 = 0 even where it has just zapped categories into open water, so its cell is short
     // of 1 by the zapped area; pressridge keeps that open water.
@@ -350,8 +250,8 @@ fn check_typical(c: &Case, layout: &TracerLayout, puny: f64, cmp: &mut Cmp) {
     } else {
         ia0
     };
-    cmp.close("aice0", r.aice0, want_aice0);
-    cmp.close("aice", r.aice, num(&o["aice"]));
+    cmp.close("aice0", r.col.aice0, want_aice0);
+    cmp.close("aice", r.col.aice, num(&o["aice"]));
     let mut hin = c.hin_max.clone();
     *hin.last_mut().unwrap() = d.hin_max_top;
     cmp.all("hin_max", &hin, &nums(&o["hin_max"]));
@@ -398,7 +298,7 @@ fn check_typical(c: &Case, layout: &TracerLayout, puny: f64, cmp: &mut Cmp) {
             if tracer_defined(layout, it, n, &ea, &ev, &es, &want, puny) {
                 cmp.close(
                     &format!("trcrn[cat {n}, tracer {it}]"),
-                    r.trcrn[n * nt + it],
+                    r.col.trcrn[n * nt + it],
                     want[n * nt + it],
                 );
             }
@@ -415,10 +315,14 @@ fn check_stress(c: &Case, layout: &TracerLayout, params: &Value, cmp: &mut Cmp) 
             // A clear error, and the column left as it was.
             let msg = e.to_string();
             assert!(!msg.is_empty());
-            assert_eq!(r.aicen, c.aicen, "{}: column unchanged on error", c.name);
-            assert_eq!(r.vicen, c.vicen);
-            assert_eq!(r.vsnon, c.vsnon);
-            assert_eq!(r.trcrn, c.trcrn);
+            assert_eq!(
+                r.col.aicen, c.aicen,
+                "{}: column unchanged on error",
+                c.name
+            );
+            assert_eq!(r.col.vicen, c.vicen);
+            assert_eq!(r.col.vsnon, c.vsnon);
+            assert_eq!(r.col.trcrn, c.trcrn);
             assert_eq!(r.fluxes, OceanFluxes::default());
             println!("{}: error: {msg}", c.name);
             return;
@@ -426,15 +330,15 @@ fn check_stress(c: &Case, layout: &TracerLayout, params: &Value, cmp: &mut Cmp) 
         Ok(d) => *d,
     };
     println!("{}: answer after {} passes", c.name, d.niter);
-    for x in r.aicen.iter().chain(&r.vicen).chain(&r.vsnon) {
+    for x in r.col.aicen.iter().chain(&r.col.vicen).chain(&r.col.vsnon) {
         assert!(
             x.is_finite() && *x >= 0.0,
             "{}: negative or NaN {x}",
             c.name
         );
     }
-    assert!(r.aice0 >= 0.0 && r.trcrn.iter().all(|t| t.is_finite()));
-    let total = r.aice0 + r.aicen.iter().sum::<f64>();
+    assert!(r.col.aice0 >= 0.0 && r.col.trcrn.iter().all(|t| t.is_finite()));
+    let total = r.col.aice0 + r.col.aicen.iter().sum::<f64>();
     assert!(
         (total - 1.0).abs() < 1e-10,
         "{}: total area {total}",
@@ -462,10 +366,10 @@ fn check_stress(c: &Case, layout: &TracerLayout, params: &Value, cmp: &mut Cmp) 
     };
     let tau = c.forcing.dt * c.forcing.ndtd as f64;
     let m0 = mass(&c.vicen, &c.vsnon);
-    let m1 = mass(&r.vicen, &r.vsnon) + r.fluxes.fresh * tau;
+    let m1 = mass(&r.col.vicen, &r.col.vsnon) + r.fluxes.fresh * tau;
     cmp.close("water mass (conservation)", m1, m0);
     let e0 = heat(&c.vicen, &c.vsnon, &c.trcrn);
-    let e1 = heat(&r.vicen, &r.vsnon, &r.trcrn) + r.fluxes.fhocn * tau;
+    let e1 = heat(&r.col.vicen, &r.col.vsnon, &r.col.trcrn) + r.fluxes.fhocn * tau;
     assert!(
         (e1 - e0).abs() <= 1e-12 * e0.abs() + 1e-6,
         "{}: enthalpy {e1} against {e0}",

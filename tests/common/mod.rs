@@ -1,6 +1,10 @@
 //! Helpers of the integration tests that run the command-line tool: the binary,
-//! scratch directories and small NetCDF inputs written value by value.
+//! scratch directories and small NetCDF inputs written value by value; the library's step
+//! of one column ([`column`]) and Icepack's reference cases ([`icepack`]).
 #![allow(dead_code)]
+
+pub mod column;
+pub mod icepack;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -128,6 +132,36 @@ pub fn write_nc(path: &Path, vars: &[Var]) {
         }
     }
     f.close().unwrap();
+}
+
+/// The `_FillValue` of variable `name` of a NetCDF file, if it has one as a number.
+pub fn fill_value(path: &Path, name: &str) -> Option<f64> {
+    let f = netcdf::open(path).unwrap();
+    let v = f
+        .variable(name)
+        .unwrap_or_else(|| panic!("output has no `{name}`"));
+    v.attributes()
+        .find(|a| a.name() == "_FillValue")
+        .and_then(|a| a.value().ok())
+        .and_then(|x| f64::try_from(x).ok())
+}
+
+/// The values of variable `name` of a NetCDF file, as `f64`, in C order.
+pub fn read_values(path: &Path, name: &str) -> Vec<f64> {
+    let f = netcdf::open(path).unwrap();
+    let v = f
+        .variable(name)
+        .unwrap_or_else(|| panic!("output has no `{name}`"));
+    v.get_values::<f64, _>(..).unwrap()
+}
+
+/// The text global attribute `name` of a NetCDF file.
+pub fn global(path: &Path, name: &str) -> String {
+    let f = netcdf::open(path).unwrap();
+    f.attribute(name)
+        .and_then(|a| a.value().ok())
+        .and_then(|x| String::try_from(x).ok())
+        .unwrap_or_else(|| panic!("no global attribute {name}"))
 }
 
 /// A valid 2-category distribution on a 2 × 3 grid with bounds, divergence and shear.

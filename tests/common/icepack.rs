@@ -1,0 +1,100 @@
+//! Reading Icepack 1.5.3's reference cases of the complete step
+//! (`tests/data/icepack/ridge_step_cases.jsonl`, described in the README next to it).
+
+use pressridge::itd::{
+    CiceTracerFlags, Participation, Redistribution, RidgeStepOptions, TracerLayout,
+};
+use serde_json::Value;
+
+/// The reference file.
+pub const FILE: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/tests/data/icepack/ridge_step_cases.jsonl"
+);
+
+/// The file's first line (the parameters) and its cases, one JSON value a line.
+pub fn read() -> (Value, Vec<Value>) {
+    let text = std::fs::read_to_string(FILE).expect("reference file");
+    let mut lines = text.lines().filter(|l| !l.trim().is_empty());
+    let params: Value = serde_json::from_str(lines.next().unwrap()).unwrap();
+    let cases = lines.map(|l| serde_json::from_str(l).unwrap()).collect();
+    (params, cases)
+}
+
+/// A number (`"nan"`, `"inf"` and `"-inf"` stand for themselves).
+pub fn num(v: &Value) -> f64 {
+    match v {
+        Value::Number(n) => n.as_f64().unwrap(),
+        Value::String(s) => match s.as_str() {
+            "nan" => f64::NAN,
+            "inf" => f64::INFINITY,
+            "-inf" => f64::NEG_INFINITY,
+            _ => panic!("bad number {s}"),
+        },
+        _ => panic!("not a number: {v}"),
+    }
+}
+
+pub fn nums(v: &Value) -> Vec<f64> {
+    v.as_array().unwrap().iter().map(num).collect()
+}
+
+/// The CICE tracer layout of the parameters' `nilyr`, `nslyr` and `tracer_flags`.
+pub fn layout(params: &Value) -> TracerLayout {
+    let flags = &params["tracer_flags"];
+    let flag = |k: &str| flags[k].as_bool().unwrap();
+    TracerLayout::cice(
+        params["nilyr"].as_u64().unwrap() as usize,
+        params["nslyr"].as_u64().unwrap() as usize,
+        CiceTracerFlags {
+            age: flag("tr_iage"),
+            first_year: flag("tr_FY"),
+            level_ice: flag("tr_lvl"),
+            ponds: flag("tr_pond_lvl"),
+        },
+    )
+    .unwrap()
+}
+
+/// Tracers of a case as `trcrn[n * ntrcr + it]`.
+pub fn tracers(v: &Value, layout: &TracerLayout, ncat: usize) -> Vec<f64> {
+    let nt = layout.ntrcr();
+    let mut t = vec![f64::NAN; ncat * nt];
+    let obj = v.as_object().unwrap();
+    assert_eq!(obj.len(), layout.fields().len(), "tracer fields");
+    for (name, per_cat) in obj {
+        let (start, levels) = layout
+            .field(name)
+            .unwrap_or_else(|| panic!("tracer {name} not in the layout"));
+        let per_cat = per_cat.as_array().unwrap();
+        assert_eq!(per_cat.len(), ncat);
+        for (n, lv) in per_cat.iter().enumerate() {
+            let lv = nums(lv);
+            assert_eq!(lv.len(), levels, "{name} levels");
+            t[n * nt + start..n * nt + start + levels].copy_from_slice(&lv);
+        }
+    }
+    assert!(t.iter().all(|x| !x.is_nan()), "every tracer given");
+    t
+}
+
+/// The options of a case's inputs: participation, redistribution, `mu_rdg`, clean-up and
+/// rebinning; the rest the library's defaults.
+#[allow(clippy::field_reassign_with_default)]
+pub fn options(i: &Value) -> RidgeStepOptions {
+    let mut opts = RidgeStepOptions::default();
+    opts.participation = match i["krdg_partic"].as_i64().unwrap() {
+        0 => Participation::Thorndike,
+        1 => Participation::Exponential,
+        k => panic!("krdg_partic {k}"),
+    };
+    opts.redistribution = match i["krdg_redist"].as_i64().unwrap() {
+        0 => Redistribution::Uniform,
+        1 => Redistribution::Exponential,
+        k => panic!("krdg_redist {k}"),
+    };
+    opts.params.mu_rdg = num(&i["mu_rdg"]);
+    opts.cleanup = i["docleanup"].as_bool().unwrap();
+    opts.rebin = i["dorebin"].as_bool().unwrap();
+    opts
+}
