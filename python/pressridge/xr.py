@@ -183,10 +183,14 @@ def strength(
         participation=participation,
         redistribution=redistribution,
         law=law,
-        cf=_pr._resolve_cf(cf, friction),
+        cf=None,
         **params,
     )
-    _, cf_friction = _pr._cf_table_nodes(cf, friction)
+    # A table (or its file) is read once: its nodes at the friction asked for, and the pair.
+    nodes, cf_friction = _pr._cf_table_nodes(cf, friction)
+    options["cf"] = (
+        _pr._resolve_cf(cf) if nodes is None else (np.asarray(nodes[0]), np.asarray(nodes[1]))
+    )
     _pr._params(params)  # unknown names fail now, not at compute time
     args: List[xr.DataArray] = [aicen, vicen]
     if aice0 is not None:

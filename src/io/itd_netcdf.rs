@@ -1037,11 +1037,18 @@ pub fn read_cf_table_at_friction(
         var: "mu".into(),
         msg,
     };
-    let (has_sets, has_friction) = {
+    // One look at the file: its layout, and the friction a plain table's `cf` declares.
+    let (has_sets, has_friction, own) = {
         let file = netcdf::open(path).map_err(nc_err(path))?;
+        let v = file.variable("cf");
+        let get = |a: &str| match v.as_ref().and_then(|v| v.attribute_value(a)) {
+            Some(Ok(netcdf::AttributeValue::Double(x))) => Some(x),
+            _ => None,
+        };
         (
             file.variable("cf_by_set").is_some(),
             file.variable("mu").is_some(),
+            get("mu").zip(get("mu_w")),
         )
     };
     // A table of `pressridge tabulate`; one made before it wrote friction coordinates is
@@ -1054,15 +1061,6 @@ pub fn read_cf_table_at_friction(
             .map_err(|e| err(e.to_string()));
     }
     let table = read_cf_table(path)?;
-    let own = {
-        let file = netcdf::open(path).map_err(nc_err(path))?;
-        let v = file.variable("cf");
-        let get = |a: &str| match v.as_ref().and_then(|v| v.attribute_value(a)) {
-            Some(Ok(netcdf::AttributeValue::Double(x))) => Some(x),
-            _ => None,
-        };
-        get("mu").zip(get("mu_w"))
-    };
     match (friction, own) {
         (None, None) => Ok(table),
         (_, Some((a, b))) => {
