@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-apt_pkgs=(pkg-config gfortran libnetcdf-dev libnetcdff-dev libhdf5-dev netcdf-bin fonts-dejavu-core)
+apt_pkgs=(pkg-config gfortran libnetcdf-dev libnetcdff-dev libhdf5-dev netcdf-bin fonts-dejavu-core ffmpeg)
 missing=()
 for p in "${apt_pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

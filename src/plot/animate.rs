@@ -200,3 +200,61 @@ fn write_mp4(path: &Path, size: (u32, u32), frames: &[Vec<u8>], fps: u32) -> Res
         Ok(())
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `ffprobe`'s answer for the video stream of `path`: (codec, width, height, frames).
+    fn probe(path: &Path) -> (String, u32, u32, usize) {
+        let out = std::process::Command::new("ffprobe")
+            .args(["-v", "error", "-count_frames", "-select_streams", "v:0"])
+            .args([
+                "-show_entries",
+                "stream=codec_name,width,height,nb_read_frames",
+            ])
+            .args(["-of", "csv=p=0"])
+            .arg(path)
+            .output()
+            .expect("ffprobe runs (it comes with ffmpeg)");
+        let text = String::from_utf8_lossy(&out.stdout);
+        let f: Vec<&str> = text.trim().split(',').collect();
+        assert_eq!(f.len(), 4, "ffprobe said {text:?}");
+        (
+            f[0].to_string(),
+            f[1].parse().unwrap(),
+            f[2].parse().unwrap(),
+            f[3].parse().unwrap(),
+        )
+    }
+
+    /// Three frames of an odd size become an H.264 MP4 of three frames, padded to even
+    /// sizes, written atomically. ffmpeg is installed by `scripts/setup.sh`; without it this
+    /// test fails rather than passing unexercised.
+    #[test]
+    fn mp4_of_odd_sized_frames() {
+        assert!(
+            ffmpeg_found(),
+            "ffmpeg is not on the PATH: run scripts/setup.sh (it installs ffmpeg)"
+        );
+        let (w, h) = (33_u32, 21_u32);
+        let frames: Vec<Vec<u8>> = (0..3_u8)
+            .map(|k| {
+                (0..w * h)
+                    .flat_map(|i| [(i % 251) as u8, 80 * k, 255 - (i % 199) as u8])
+                    .collect()
+            })
+            .collect();
+        let dir = std::env::temp_dir().join(format!("pressridge-mp4-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("a.mp4");
+        write_mp4(&path, (w, h), &frames, 5).unwrap();
+        assert_eq!(probe(&path), ("h264".to_string(), 34, 22, 3));
+        let names: Vec<String> = std::fs::read_dir(&dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        assert_eq!(names, ["a.mp4"], "no temporary file left");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
