@@ -204,7 +204,12 @@ impl Layout {
     /// The margins of a figure `width` wide with axes `x` and `y` and a title (empty: none);
     /// the height is set by [`Layout::with_height`] or [`Layout::with_plot_height`].
     pub fn new(width: u32, x: &Axis, y: &Axis, title: &str) -> Layout {
-        let fonts = Fonts::for_width(width);
+        Layout::with_fonts(width, Fonts::for_width(width), x, y, title)
+    }
+
+    /// As [`Layout::new`] for one chart `width` px wide of a larger figure whose fonts are
+    /// `fonts` (a row of panels keeps the fonts of the whole figure).
+    pub fn with_fonts(width: u32, fonts: Fonts, x: &Axis, y: &Axis, title: &str) -> Layout {
         let tick_mark = fonts.px(5.0);
         let pad = fonts.px(8.0);
         let y_tick_width = y

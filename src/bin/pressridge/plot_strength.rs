@@ -1,4 +1,4 @@
-//! `pressridge plot-strength`: a PNG map of ice strength on a 2-D grid.
+//! `pressridge plot-strength`: a map of ice strength on a 2-D grid (PNG or SVG).
 //!
 //! Either plots the `strength` variable of a file written by `pressridge strength`, or, with
 //! one or more `--cf` (constant C_f) or `--cf-table` (C_f of the ridging ice's thickness from a
@@ -11,7 +11,7 @@ use ndarray::Array1;
 use pressridge::io::itd_netcdf::{has_variable, read_field, read_fill, read_itd};
 use pressridge::io::refuse_output_over_input;
 use pressridge::itd::strength_batch_masked;
-use pressridge::plot::strength_map::{Panel, draw_strength_maps};
+use pressridge::plot::strength_map::{Panel, default_width, draw_strength_maps};
 
 use crate::BoxError;
 use crate::strength::{FormulaArg, PartArg, RedistArg, options};
@@ -23,9 +23,13 @@ pub struct Args {
     /// `--cf`.
     #[arg(long)]
     pub input: PathBuf,
-    /// Output PNG.
+    /// Output figure: PNG, or SVG when the name ends in `.svg`.
     #[arg(long)]
     pub output: PathBuf,
+    /// Figure width (px); fonts scale with it. Default: 500 per panel + 160 for the colour
+    /// bar.
+    #[arg(long)]
+    pub width: Option<u32>,
     /// Compute and draw the Rothrock strength for this C_f (repeatable: one panel each).
     #[arg(long)]
     pub cf: Vec<f64>,
@@ -154,7 +158,8 @@ pub fn run(args: Args) -> Result<(), BoxError> {
             values: v,
         })
         .collect();
-    draw_strength_maps(&args.output, &panels, ny, nx)?;
+    let width = args.width.unwrap_or_else(|| default_width(panels.len()));
+    draw_strength_maps(&args.output, &panels, ny, nx, width)?;
     println!("| field | ice cells | min (kN/m) | median (kN/m) | mean (kN/m) | max (kN/m) |");
     println!("|---|---|---|---|---|---|");
     for (t, v) in titles.iter().zip(&fields) {
