@@ -225,6 +225,18 @@ pub struct RunDigest {
     pub files: Vec<(String, String)>,
 }
 
+/// The file that marks a campaign directory as a records-only archive: its run records
+/// (`run.json`, with the summary, samples, final profile and metrics tabulate needs) without
+/// the final states the runs wrote, e.g. a finished campaign committed under `data/paper/`.
+/// Its records are checked for their id and scene digest only ([`RunRecord::verify`]); it is
+/// never resumed into (a campaign run there refuses the directory).
+pub const RECORDS_ONLY: &str = "RECORDS-ONLY";
+
+/// Whether `out` is a records-only archive ([`RECORDS_ONLY`]).
+pub fn is_records_only(out: &Path) -> bool {
+    out.join(RECORDS_ONLY).is_file()
+}
+
 /// The digest of what a run is: its id, seed and resolved scene (as TOML).
 pub fn scene_digest(id: &str, seed: u64, scene: &Scene) -> String {
     crate::io::digest::sha256_hex(format!("{id}\n{seed}\n{}", scene.to_toml()).as_bytes())
@@ -234,8 +246,10 @@ impl RunRecord {
     /// Checks this record, read from the run directory of planned run `id`, against that
     /// id, its own scene and seed, and the files its digest lists; `Err` says what does not
     /// match. A record without a digest (older versions) is checked for its id and its
-    /// `state.json` only.
+    /// `state.json` only. In a records-only archive ([`RECORDS_ONLY`] in `out`) the files
+    /// are not there: the id and the scene digest are checked.
     pub fn verify(&self, out: &Path, id: &str) -> Result<(), String> {
+        let files = !is_records_only(out);
         if self.id != id {
             return Err(format!(
                 "its record names run `{}` (copied from another run directory?)",
@@ -245,7 +259,7 @@ impl RunRecord {
         let record = record_path(out, id);
         let dir = record.parent().unwrap_or(out);
         let Some(d) = &self.digest else {
-            return if dir.join("state.json").is_file() {
+            return if !files || dir.join("state.json").is_file() {
                 Ok(())
             } else {
                 Err("its state.json is missing".into())
@@ -254,7 +268,7 @@ impl RunRecord {
         if d.scene != scene_digest(&self.id, self.seed, &self.scene) {
             return Err("its record's scene or seed does not match its digest (edited?)".into());
         }
-        for (name, want) in &d.files {
+        for (name, want) in d.files.iter().filter(|_| files) {
             let path = dir.join(name);
             if !path.is_file() {
                 return Err(format!("its {name} is missing"));
@@ -681,6 +695,13 @@ pub fn prepare_campaign(
     out: &Path,
 ) -> Result<PreparedCampaign, CampaignError> {
     let plan = spec.plan(base_dir)?;
+    if is_records_only(out) {
+        return Err(CampaignError::Mismatch(format!(
+            "{} is a records-only archive ({RECORDS_ONLY}): tabulate it, do not run into it; \
+             use a new output directory",
+            out.display()
+        )));
+    }
     let spec_path = out.join("campaign.json");
     if spec_path.is_file() {
         let old: CampaignSpec = read_json(&spec_path)?;

@@ -111,6 +111,39 @@ fn tiny_campaign_is_resumable_and_complete() {
             pressridge::table::rafting::Outcome::Rafted(over)
         );
     }
+    // A records-only archive (the run records without the states, as committed under
+    // data/paper/) reads as the same campaign once marked; unmarked it is incomplete; a
+    // campaign refuses to run into it.
+    {
+        use pressridge::campaign::RECORDS_ONLY;
+        let archive = dir.join("archive");
+        for r in &records {
+            let to = archive.join("runs").join(&r.id);
+            std::fs::create_dir_all(&to).unwrap();
+            std::fs::copy(
+                out.join("runs").join(&r.id).join("run.json"),
+                to.join("run.json"),
+            )
+            .unwrap();
+        }
+        for f in ["campaign.json", "plan.json"] {
+            std::fs::copy(out.join(f), archive.join(f)).unwrap();
+        }
+        let why = read_campaign(&archive, false).unwrap_err().to_string();
+        assert!(why.contains("state.json is missing"), "{why}");
+        std::fs::write(archive.join(RECORDS_ONLY), "records only\n").unwrap();
+        assert_eq!(read_records(&archive).unwrap().1, records);
+        let res = bin()
+            .args(["campaign", "--threads", "1", "--spec"])
+            .arg(&spec)
+            .arg("--out")
+            .arg(&archive)
+            .output()
+            .unwrap();
+        assert!(!res.status.success());
+        let err = String::from_utf8_lossy(&res.stderr);
+        assert!(err.contains("records-only archive"), "{err}");
+    }
     // Ensemble statistics per grid point: two points of two seeds, means over the records.
     let points = pressridge::table::ensemble::summarise(&records);
     assert_eq!(points.len(), 2);
