@@ -56,7 +56,7 @@ where
     let title = if t.sets[s].is_empty() {
         "work against ridged volume".to_string()
     } else {
-        format!("work against ridged volume ({})", t.sets[s])
+        format!("work against ridged volume ({})", set_display(&t.sets[s]))
     };
     let (x, y) = (
         Axis::new(0.0, vmax, "ridged volume V (m³/m)"),
@@ -170,7 +170,15 @@ where
             .copied(),
     ) / 1e3;
     root.fill(&WHITE).map_err(draw_err)?;
-    let title = "ridging force against volume and thickness";
+    let title = if t.sets[s].is_empty() {
+        "ridging force against volume and thickness".to_string()
+    } else {
+        format!(
+            "ridging force against volume and thickness ({})",
+            set_display(&t.sets[s])
+        )
+    };
+    let title = title.as_str();
     let (x, y) = (
         Axis::new(0.0, vmax, "ridged volume V (m³/m)"),
         Axis::new(0.0, (fmax * 1.05).max(1e-9), "force (kN/m)"),
@@ -428,7 +436,7 @@ where
         let name = if set.is_empty() {
             "ensemble mean".to_string()
         } else {
-            set.clone()
+            set_display(set)
         };
         chart
             .draw_series(LineSeries::new(
@@ -465,4 +473,33 @@ where
         .map_err(draw_err)?;
     root.present().map_err(draw_err)?;
     Ok(())
+}
+
+/// A set's label as a legend or title shows it: `mu=1, mu_w=0.6` becomes
+/// `μ = 1, μ_w = 0.6`; other scene settings keep their key, with spaces around `=`.
+pub fn set_display(set: &str) -> String {
+    set.split(", ")
+        .map(|part| match part.split_once('=') {
+            Some(("mu", v)) => format!("μ = {v}"),
+            Some(("mu_w", v)) => format!("μ_w = {v}"),
+            Some((k, v)) => format!("{k} = {v}"),
+            None => part.to_string(),
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::set_display;
+
+    #[test]
+    fn set_labels_read_as_symbols() {
+        assert_eq!(set_display("mu=1, mu_w=0.6"), "μ = 1, μ_w = 0.6");
+        assert_eq!(
+            set_display("mu=0.4, mu_w=0.3, sheet.youngs_modulus=1e8"),
+            "μ = 0.4, μ_w = 0.3, sheet.youngs_modulus = 1e8"
+        );
+        assert_eq!(set_display(""), "");
+    }
 }
