@@ -606,10 +606,34 @@ values = [0.6, 1.0]
         .arg("--out")
         .arg(&table)
         .args(["--points", "5"])
+        .arg("--figures")
+        .arg(dir.join("fig"))
         .output()
         .unwrap();
     let err = String::from_utf8_lossy(&res.stderr).to_string();
     common::succeeds(&res);
+    // Several sets: work and profiles per set, and at the thickness both sets have (0.25 m)
+    // one curve per set (cf. Figures 8 and 9), legends in symbols.
+    let fig = |f: &str| std::fs::read_to_string(dir.join("fig").join(f)).unwrap();
+    for f in ["work_sets_h0.25.svg", "profiles_h0.25.svg"] {
+        let svg = fig(f);
+        for want in ["μ = 1, μ_w = 0.6", "μ = 0.6, μ_w = 0.6"] {
+            assert!(svg.contains(want), "{f} lacks {want}");
+        }
+    }
+    for f in [
+        "profiles_set0.svg",
+        "profiles_set1.png",
+        "work_set1.png",
+        "cf.png",
+    ] {
+        assert!(dir.join("fig").join(f).is_file(), "missing {f}");
+    }
+    assert!(fig("profiles_set0.svg").contains("h = 0.35 m (1 seed)"));
+    assert!(
+        !dir.join("fig/work_sets_h0.35.png").exists(),
+        "one set at 0.35 m"
+    );
     assert!(
         err.contains("1 runs were in more than one campaign"),
         "{err}"

@@ -141,6 +141,81 @@ where
     Ok(())
 }
 
+/// Work against ridged volume at thickness index `hi` for every set that has runs there
+/// (cf. Figure 9, the eight friction sets at 0.30 m): one ensemble-mean curve per set, in
+/// MJ/m. PNG, or SVG by the extension.
+pub fn plot_work_sets(t: &RidgeTable, hi: usize, path: &Path) -> Result<(), PlotError> {
+    crate::io::write_atomic_with(path, |tmp| plot_work_sets_at(t, hi, tmp)).map_err(|e| e.at(path))
+}
+
+/// [`plot_work_sets`] into the file `path` (a temporary file renamed by the caller).
+fn plot_work_sets_at(t: &RidgeTable, hi: usize, path: &Path) -> Result<(), PlotError> {
+    ensure_font()?;
+    to_file!(path, (900, 600), draw_work_sets(t, hi))
+}
+
+/// The sets with at least one run at thickness index `hi`.
+pub fn sets_at(t: &RidgeTable, hi: usize) -> Vec<usize> {
+    (0..t.sets.len())
+        .filter(|&s| t.runs[s][hi].iter().any(|&n| n > 0))
+        .collect()
+}
+
+fn draw_work_sets<DB: DrawingBackend>(
+    root: DrawingArea<DB, Shift>,
+    t: &RidgeTable,
+    hi: usize,
+) -> Result<(), PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    let sets = sets_at(t, hi);
+    let vmax = t.volume.last().copied().unwrap_or(1.0).max(1e-9);
+    let wmax = finite_max(
+        sets.iter()
+            .flat_map(|&s| t.work_mean[s][hi].iter().copied()),
+    ) / 1e6;
+    root.fill(&WHITE).map_err(draw_err)?;
+    let title = format!(
+        "work against ridged volume, h = {:.2} m, ensemble means per set",
+        t.thickness[hi]
+    );
+    let (x, y) = (
+        Axis::new(0.0, vmax, "ridged volume V (m³/m)"),
+        Axis::new(0.0, (wmax * 1.05).max(1e-9), "work (MJ/m)"),
+    );
+    let layout =
+        Layout::new(root.dim_in_pixel().0, &x, &y, &title).with_height(root.dim_in_pixel().1);
+    let mut chart = layout.chart(&root, &x, &y, &title, true)?;
+    let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
+    for (k, &s) in sets.iter().enumerate() {
+        let c = COLORS[k % COLORS.len()];
+        let pts: Vec<(f64, f64)> = t
+            .volume
+            .iter()
+            .zip(&t.work_mean[s][hi])
+            .filter(|(_, w)| w.is_finite())
+            .map(|(v, w)| (*v, w / 1e6))
+            .collect();
+        let n = t.runs[s][hi].iter().copied().max().unwrap_or(0) as usize;
+        chart
+            .draw_series(LineSeries::new(pts, c.stroke_width(line)))
+            .map_err(draw_err)?
+            .label(format!("{} {}", set_display(&t.sets[s]), seeds(n)))
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + key, y)], c.stroke_width(line)));
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", layout.fonts.legend))
+        .position(SeriesLabelPosition::UpperLeft)
+        .draw()
+        .map_err(draw_err)?;
+    root.present().map_err(draw_err)?;
+    Ok(())
+}
+
 /// Ridging force against volume for set `s`: eq (15) from the pooled fit per thickness
 /// (lines) and the ensemble mean of the runs' interval-mean force (dots), in kN/m.
 pub fn plot_force(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> {

@@ -26,7 +26,8 @@ pub struct Args {
     /// the fit and its bands and force against volume and thickness (per set:
     /// work_set<k>, force_set<k>), C_f against thickness with each seed's value and the
     /// spread (cf), ensemble-averaged final profiles with the spread over the seeds
-    /// (profiles).
+    /// (profiles; with several sets profiles_set<k> per set and, for each thickness several
+    /// sets share, profiles_h<h> and work_sets_h<h>: one curve per set, cf. Figures 8, 9).
     #[arg(long)]
     figures: Option<PathBuf>,
     /// Also write a Markdown report: per grid point the mean and spread over the seeds of
@@ -103,49 +104,79 @@ pub fn run(a: Args) -> Result<(), BoxError> {
     write_ridge_table(&a.out, &table, &prov)?;
     if let Some(dir) = &a.figures {
         std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-        // Ensemble final profiles per grid point (all seeds of a setting), runs left out by
-        // the physical-consistency gate excepted.
-        let mut groups: Vec<(String, Vec<Profile>)> = Vec::new();
+        // Ensemble final profiles per grid point (all seeds of a set and thickness), runs
+        // left out by the gate and second copies of runs shared by two campaigns excepted.
+        let mut points: Vec<(usize, f64, Vec<Profile>)> = Vec::new();
         for r in records.iter() {
-            // Runs left out by the gate, and second copies of runs shared by two campaigns,
-            // have no set.
-            let Some(si) = table.set_of(&r.id) else {
+            let (Some(si), Some(h)) = (
+                table.set_of(&r.id),
+                r.scene.sheet.as_ref().map(|s| s.thickness),
+            ) else {
                 continue;
             };
-            let set = if table.sets.len() == 1 {
-                String::new()
-            } else {
-                table.sets[si].clone()
-            };
-            let h = r.scene.sheet.as_ref().map(|s| s.thickness);
-            let label = match (set.is_empty(), h) {
-                (true, Some(h)) => format!("h = {h:.2} m"),
-                (false, Some(h)) => format!("{set}, h = {h:.2} m"),
-                (_, None) => r.settings.join(", "),
-            };
-            match groups.iter_mut().find(|(l, _)| *l == label) {
-                Some((_, v)) => v.push(r.profile.clone()),
-                None => groups.push((label, vec![r.profile.clone()])),
+            match points.iter_mut().find(|(s, hh, _)| *s == si && *hh == h) {
+                Some((.., v)) => v.push(r.profile.clone()),
+                None => points.push((si, h, vec![r.profile.clone()])),
             }
         }
-        let profiles: Vec<ProfileGroup> = groups
-            .into_iter()
-            .filter_map(|(label, ps)| {
-                Some(ProfileGroup {
-                    label,
-                    mean: mean_profile(&ps)?,
-                    spread: profile_spread(&ps)?,
-                    runs: ps.len(),
-                })
+        let group = |label: String, ps: &[Profile]| {
+            Some(ProfileGroup {
+                label,
+                mean: mean_profile(ps)?,
+                spread: profile_spread(ps)?,
+                runs: ps.len(),
             })
-            .collect();
+        };
+        // One set: every thickness in `profiles` (cf. Figure 10). Several sets: per set
+        // (`profiles_set<k>`, its thicknesses) and per thickness that several sets share
+        // (`profiles_h<h>`, one curve per set, cf. Figure 8).
+        let mut profile_figures: Vec<(String, Vec<ProfileGroup>)> = Vec::new();
+        for s in 0..table.sets.len() {
+            let mut groups: Vec<ProfileGroup> = points
+                .iter()
+                .filter(|p| p.0 == s)
+                .filter_map(|(_, h, ps)| group(format!("h = {h:.2} m"), ps))
+                .collect();
+            groups.sort_by(|a, b| a.label.cmp(&b.label));
+            let name = if table.sets.len() == 1 {
+                "profiles".to_string()
+            } else {
+                format!("profiles_set{s}")
+            };
+            profile_figures.push((name, groups));
+        }
+        let mut shared = Vec::new();
+        if table.sets.len() > 1 {
+            for (hi, h) in table.thickness.iter().enumerate() {
+                if plot::table::sets_at(&table, hi).len() < 2 {
+                    continue;
+                }
+                shared.push(hi);
+                let groups: Vec<ProfileGroup> = points
+                    .iter()
+                    .filter(|p| p.1 == *h)
+                    .filter_map(|(s, _, ps)| group(plot::table::set_display(&table.sets[*s]), ps))
+                    .collect();
+                profile_figures.push((format!("profiles_h{h:.2}"), groups));
+            }
+        }
         for ext in ["png", "svg"] {
             for s in 0..table.sets.len() {
                 plot::table::plot_work(&table, s, &dir.join(format!("work_set{s}.{ext}")))?;
                 plot::table::plot_force(&table, s, &dir.join(format!("force_set{s}.{ext}")))?;
             }
+            for &hi in &shared {
+                let h = table.thickness[hi];
+                plot::table::plot_work_sets(
+                    &table,
+                    hi,
+                    &dir.join(format!("work_sets_h{h:.2}.{ext}")),
+                )?;
+            }
             plot::table::plot_cf(&table, &dir.join(format!("cf.{ext}")))?;
-            plot::table::plot_profiles(&profiles, &dir.join(format!("profiles.{ext}")))?;
+            for (name, groups) in &profile_figures {
+                plot::table::plot_profiles(groups, &dir.join(format!("{name}.{ext}")))?;
+            }
         }
     }
     for w in pressridge::table::tabulate::fit_warnings(&table) {
