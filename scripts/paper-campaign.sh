@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The paper's whole experiment campaign (issue 14; Hopkins 1994, Table 1): every set of
 # data/campaigns/ — thickness, friction, modulus, floe, speed, the lookup table's
-# extension to 0.10-1.00 m (thickness-thick, thickness-thin) and the sheet-length check of
-# rafting (sheet-length) — seven seeds each, one after
+# extension to 0.10-1.00 m (thickness-thick, thickness-thin) and the checks of rafting
+# (sheet-length, thickness-thick-floe) — seven seeds each, one after
 # the other on all cores, into runs/paper/<set>/. Resumable: finished runs are kept and
 # re-running continues where it stopped (a run cut off mid-way starts again). Each set's
 # progress goes to runs/paper/<set>.log. Most of a day on two cores with the binary of
@@ -19,10 +19,10 @@ bin=${PRESSRIDGE_BIN:-./target/release/pressridge}
 mkdir -p "$root"
 echo "paper campaign: $("$bin" --version 2>/dev/null || echo pressridge), commit $(git rev-parse --short HEAD), $threads threads, $(date -u +%FT%TZ)"
 # Thickness first (it feeds the default lookup table), then the table's thick end (cheap:
-# few, heavy blocks), the sheet-length check, the friction set (the table's friction
-# coordinates), the other sets, the long slow-speed runs, and last the thin end (many small
-# blocks: the costliest runs).
-for set in thickness thickness-thick sheet-length friction modulus floe speed thickness-thin; do
+# few, heavy blocks), the sheet-length and floe checks of rafting, the friction set (the
+# table's friction coordinates), the other sets, the long slow-speed runs, and last the thin
+# end (many small blocks: the costliest runs).
+for set in thickness thickness-thick sheet-length thickness-thick-floe friction modulus floe speed thickness-thin; do
   echo "== $set ($(date -u +%T))"
   "$bin" campaign --spec "data/campaigns/$set.toml" --out "$root/$set" \
     --threads "$threads" --progress-interval 60 2> "$root/$set.log"

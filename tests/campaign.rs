@@ -535,6 +535,7 @@ fn shipped_specs_plan_the_papers_sets() {
     assert_eq!(count("thickness-thick.toml"), 3 * 7);
     assert_eq!(count("thickness-thin.toml"), 2 * 7);
     assert_eq!(count("sheet-length.toml"), 7);
+    assert_eq!(count("thickness-thick-floe.toml"), 3 * 7);
     // The three-seed copies run exactly the first seeds of the paper's sets.
     for (short, full) in [
         ("default-table.toml", "thickness.toml"),
