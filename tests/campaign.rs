@@ -270,6 +270,43 @@ fn tiny_campaign_is_resumable_and_complete() {
             assert!((m.sail[i] - 0.5 * (ps[0].sail[i] + ps[1].sail[i])).abs() <= 1e-12);
         }
     }
+    // --exclude-rafted with a reach between the two largest overruns: the run that slid
+    // farthest is left out of the table (named, with its reason), and still counted as
+    // rafted.
+    {
+        let mut over: Vec<(f64, String)> = records
+            .iter()
+            .map(|r| (r.summary.sheet_overrun_max.unwrap(), r.id.clone()))
+            .collect();
+        over.sort_by(|a, b| b.0.total_cmp(&a.0));
+        let reach = 0.5 * (over[0].0 + over[1].0);
+        let t2 = dir.join("table-ridged.nc");
+        let res = bin()
+            .args(["tabulate", "--exclude-rafted", "--rafting-reach"])
+            .arg(reach.to_string())
+            .arg("--campaign")
+            .arg(&out)
+            .arg("--out")
+            .arg(&t2)
+            .args(["--points", "11"])
+            .output()
+            .unwrap();
+        common::succeeds(&res);
+        let stdout = String::from_utf8_lossy(&res.stdout);
+        assert!(stdout.contains("3 runs (1 left out)"), "{stdout}");
+        assert!(stdout.contains("rafting: 1 of 4 runs"), "{stdout}");
+        let nc = netcdf::open(&t2).unwrap();
+        let ex = match nc.attribute("excluded_runs").unwrap().value().unwrap() {
+            netcdf::AttributeValue::Str(s) => s,
+            other => panic!("{other:?}"),
+        };
+        assert!(ex.contains(&over[0].1) && ex.contains("rafted"), "{ex}");
+        let runs: Vec<f64> = nc.variable("runs").unwrap().get_values(..).unwrap();
+        assert_eq!(
+            runs.iter().take(11).fold(0.0f64, |a, b| a.max(*b)) + runs[11],
+            3.0
+        );
+    }
     let nc = netcdf::open(&table).unwrap();
     let dim = |n: &str| nc.dimension(n).unwrap().len();
     assert_eq!((dim("set"), dim("thickness"), dim("volume")), (1, 2, 11));

@@ -44,6 +44,12 @@ pub struct Args {
     /// this (m); the report gives the rafting frequency per grid point.
     #[arg(long, default_value_t = pressridge::table::rafting::RAFTING_REACH)]
     rafting_reach: f64,
+    /// Leave rafted runs (see --rafting-reach) out of the table, as the consistency gate
+    /// leaves out unstable ones: a table of ridging alone. They are listed in the table's
+    /// `excluded_runs` attribute and on stderr; the report's rafting section still counts
+    /// them. Off by default: the default table keeps every sound run.
+    #[arg(long)]
+    exclude_rafted: bool,
 }
 
 /// Today's date (UTC) as YYYY-MM-DD, from the system clock.
@@ -81,7 +87,35 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         records.extend(campaign.records);
     }
     let spec = specs.first().cloned().ok_or("no --campaign given")?;
-    let table = tabulate(&records, a.points)?;
+    if !(a.rafting_reach.is_finite() && a.rafting_reach >= 0.0) {
+        return Err(format!(
+            "--rafting-reach must be a finite length >= 0 m, not {}",
+            a.rafting_reach
+        )
+        .into());
+    }
+    // Every run read, before --exclude-rafted: the rafting statistics count them all.
+    let all_records = records.clone();
+    let mut rafted_out: Vec<(String, String)> = Vec::new();
+    if a.exclude_rafted {
+        use pressridge::table::rafting::{Outcome, outcome};
+        records.retain(|r| match outcome(r, a.rafting_reach) {
+            Outcome::Rafted(over) => {
+                rafted_out.push((
+                    r.id.clone(),
+                    format!(
+                        "sheet rafted {over:.1} m past the floe's nose (--exclude-rafted, reach {} m)",
+                        a.rafting_reach
+                    ),
+                ));
+                false
+            }
+            Outcome::Ridged | Outcome::Unknown => true,
+        });
+    }
+    let mut table = tabulate(&records, a.points)?;
+    let gate_excluded = table.excluded.clone();
+    table.excluded.extend(rafted_out.iter().cloned());
     let mut spec_text = String::new();
     for s in &specs {
         if !spec_text.is_empty() {
@@ -182,10 +216,13 @@ pub fn run(a: Args) -> Result<(), BoxError> {
     for w in pressridge::table::tabulate::fit_warnings(&table) {
         eprintln!("pressridge: warning: {w}");
     }
-    for (id, why) in &table.excluded {
+    for (id, why) in &gate_excluded {
         eprintln!(
             "pressridge: warning: run {id} left out: its {why}; a dissipation cannot be negative, so the run went numerically unstable"
         );
+    }
+    for (id, why) in &rafted_out {
+        eprintln!("pressridge: note: run {id} left out: its {why}");
     }
     if let Some(path) = &a.report {
         let kept: Vec<_> = records
@@ -194,7 +231,12 @@ pub fn run(a: Args) -> Result<(), BoxError> {
             .cloned()
             .collect();
         let points = pressridge::table::ensemble::summarise(&kept);
-        let rafting = pressridge::table::rafting::by_point(&kept, a.rafting_reach);
+        let sound: Vec<_> = all_records
+            .iter()
+            .filter(|r| !gate_excluded.iter().any(|(id, _)| *id == r.id))
+            .cloned()
+            .collect();
+        let rafting = pressridge::table::rafting::by_point(&sound, a.rafting_reach);
         let text = pressridge::io::report::campaign_report(
             &spec.name,
             &points,
@@ -204,7 +246,7 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         );
         pressridge::io::write_atomic(path, text.as_bytes())?;
     }
-    let rafting = pressridge::table::rafting::by_point(&records, a.rafting_reach);
+    let rafting = pressridge::table::rafting::by_point(&all_records, a.rafting_reach);
     let (rafted, known) = rafting
         .iter()
         .fold((0, 0), |(r, k), p| (r + p.rafted.len(), k + p.known));
@@ -221,7 +263,7 @@ pub fn run(a: Args) -> Result<(), BoxError> {
     println!(
         "{}: {} runs ({} left out), {} sets × {} thicknesses × {} volumes -> {}",
         spec.name,
-        records.len() - table.excluded.len() - table.duplicates.len(),
+        all_records.len() - table.excluded.len() - table.duplicates.len(),
         table.excluded.len(),
         table.sets.len(),
         table.thickness.len(),
