@@ -23,8 +23,22 @@ fn finite_max(xs: impl Iterator<Item = f64>) -> f64 {
     xs.filter(|x| x.is_finite()).fold(0.0, f64::max)
 }
 
+/// The ensemble-mean work curve of set `s` at thickness index `hi` (V in m³/m, W in MJ/m),
+/// drawn only where at least half of its runs reached the volume: beyond, the mean of the
+/// one or two runs that went farthest jumps about and is no ensemble mean.
+fn mean_work_curve(t: &RidgeTable, s: usize, hi: usize) -> Vec<(f64, f64)> {
+    let n = t.runs[s][hi].iter().copied().max().unwrap_or(0);
+    t.volume
+        .iter()
+        .zip(&t.work_mean[s][hi])
+        .zip(&t.runs[s][hi])
+        .filter(|((_, w), k)| w.is_finite() && 2 * **k >= n && **k > 0)
+        .map(|((v, w), _)| (*v, w / 1e6))
+        .collect()
+}
+
 /// Work against ridged volume for set `s` (cf. Figures 9, 11, 12): the ensemble mean of each
-/// thickness, the pooled fit of eq (13) and its 95 % confidence and prediction bands, in MJ/m.
+/// thickness (where at least half its runs reached), the pooled fit of eq (13) and its 95 % confidence and prediction bands, in MJ/m.
 pub fn plot_work(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> {
     crate::io::write_atomic_with(path, |tmp| plot_work_at(t, s, tmp)).map_err(|e| e.at(path))
 }
@@ -116,13 +130,7 @@ where
     }
     for (hi, th) in t.thickness.iter().enumerate() {
         let c = COLORS[hi % COLORS.len()];
-        let pts: Vec<(f64, f64)> = t
-            .volume
-            .iter()
-            .zip(&t.work_mean[s][hi])
-            .filter(|(_, w)| w.is_finite())
-            .map(|(v, w)| (*v, w / 1e6))
-            .collect();
+        let pts = mean_work_curve(t, s, hi);
         chart
             .draw_series(LineSeries::new(pts, c.stroke_width(line)))
             .map_err(draw_err)?
@@ -190,13 +198,7 @@ where
     let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
     for (k, &s) in sets.iter().enumerate() {
         let c = COLORS[k % COLORS.len()];
-        let pts: Vec<(f64, f64)> = t
-            .volume
-            .iter()
-            .zip(&t.work_mean[s][hi])
-            .filter(|(_, w)| w.is_finite())
-            .map(|(v, w)| (*v, w / 1e6))
-            .collect();
+        let pts = mean_work_curve(t, s, hi);
         let n = t.runs[s][hi].iter().copied().max().unwrap_or(0) as usize;
         chart
             .draw_series(LineSeries::new(pts, c.stroke_width(line)))
