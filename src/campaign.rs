@@ -27,7 +27,7 @@
 //! spec changed so that a written run would now mean something else, the campaign stops with
 //! an error rather than mixing the two.
 
-use crate::dem::Snapshot;
+use crate::dem::{EnergyBudget, Snapshot};
 use crate::io::IoError;
 use crate::io::state::{read_json, save_state, write_json};
 use crate::observe::{self, Profile, RidgeMetrics};
@@ -187,6 +187,43 @@ pub struct RunSample {
     pub fracture_dissipation: f64,
     /// Mean ridging force over the interval ending here, Δwork/(U·Δt) (N/m).
     pub mean_force: f64,
+}
+
+impl RunSample {
+    /// The campaign's record of sample `x` of a run, with ridged volume `volume` (m³/m).
+    pub fn of(x: &simulation::Sample, volume: f64) -> RunSample {
+        let e = &x.energy;
+        RunSample {
+            time: e.time,
+            volume,
+            work: e.work,
+            potential_energy: e.potential_energy,
+            friction_dissipation: e.friction_dissipation,
+            viscous_dissipation: e.viscous_dissipation,
+            drag_dissipation: e.drag_dissipation,
+            joint_dissipation: e.joint_dissipation,
+            boundary_dissipation: e.boundary_dissipation,
+            fracture_dissipation: e.fracture_dissipation,
+            mean_force: x.mean_force,
+        }
+    }
+
+    /// The sample as an energy budget (J/m): the terms a sample records (work, ΔPE and
+    /// every dissipation), the others zero.
+    pub fn energy(&self) -> EnergyBudget {
+        EnergyBudget {
+            time: self.time,
+            work: self.work,
+            potential_energy: self.potential_energy,
+            friction_dissipation: self.friction_dissipation,
+            viscous_dissipation: self.viscous_dissipation,
+            drag_dissipation: self.drag_dissipation,
+            joint_dissipation: self.joint_dissipation,
+            boundary_dissipation: self.boundary_dissipation,
+            fracture_dissipation: self.fracture_dissipation,
+            ..EnergyBudget::default()
+        }
+    }
 }
 
 /// What one run of a campaign leaves behind (`run.json`).
@@ -497,19 +534,7 @@ pub fn run_one(
     let samples = out
         .series
         .iter()
-        .map(|x| RunSample {
-            time: x.energy.time,
-            volume: speed * h * x.energy.time,
-            work: x.energy.work,
-            potential_energy: x.energy.potential_energy,
-            friction_dissipation: x.energy.friction_dissipation,
-            viscous_dissipation: x.energy.viscous_dissipation,
-            drag_dissipation: x.energy.drag_dissipation,
-            joint_dissipation: x.energy.joint_dissipation,
-            boundary_dissipation: x.energy.boundary_dissipation,
-            fracture_dissipation: x.energy.fracture_dissipation,
-            mean_force: x.mean_force,
-        })
+        .map(|x| RunSample::of(x, speed * h * x.energy.time))
         .collect();
     let ps = &spec.profile;
     let profile = observe::profile(
@@ -848,6 +873,29 @@ pub fn run_campaign(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A sample records every dissipation of the ledger ([`crate::dem::ledger::LEDGER_TERMS`]),
+    /// so the dissipation gate of the tables sees them all.
+    #[test]
+    fn run_sample_keeps_every_dissipation() {
+        let e = EnergyBudget {
+            friction_dissipation: 1.0,
+            viscous_dissipation: 2.0,
+            drag_dissipation: 3.0,
+            joint_dissipation: 4.0,
+            boundary_dissipation: 5.0,
+            fracture_dissipation: 6.0,
+            ..Default::default()
+        };
+        let x = simulation::Sample {
+            energy: e,
+            ..Default::default()
+        };
+        let kept: Vec<_> = RunSample::of(&x, 0.0).energy().dissipations().collect();
+        let all: Vec<_> = e.dissipations().collect();
+        assert_eq!(kept, all);
+        assert!(all.iter().all(|&(_, v)| v > 0.0), "{all:?}");
+    }
 
     /// A planned run survives JSON exactly, so it can be run in another process.
     #[test]

@@ -859,6 +859,8 @@ impl Scene {
     pub fn build(&self) -> Result<World, SceneError> {
         self.validate()?;
         let mut world = World::new(self.world_params())?;
+        // Δt is derived once, from the complete world (not after every block and joint).
+        world.defer_time_step();
         let mut rng = Xoshiro256PlusPlus::seed_from_u64(self.seed);
         let level = self.water.level;
         if let Some(p) = &self.pile {
@@ -881,8 +883,7 @@ impl Scene {
         if let Some(sh) = &self.sheet {
             self.build_sheet(&mut world, sh)?;
         }
-        world.refresh_time_step();
-        world.check_time_step()?;
+        world.finish_time_step()?;
         Ok(world)
     }
 

@@ -95,6 +95,31 @@ pub struct Summary {
     pub rubble_block_lengths: Vec<f64>,
 }
 
+impl Summary {
+    /// The ledger at the end of the run as an energy budget (J/m; its `time` is the
+    /// simulated time, s).
+    pub fn energy(&self) -> EnergyBudget {
+        EnergyBudget {
+            time: self.time,
+            work: self.work,
+            frame_work: self.frame_work,
+            potential_energy: self.potential_energy,
+            kinetic_energy: self.kinetic_energy_change,
+            friction_dissipation: self.friction_dissipation,
+            viscous_dissipation: self.viscous_dissipation,
+            drag_dissipation: self.drag_dissipation,
+            joint_dissipation: self.joint_dissipation,
+            boundary_dissipation: self.boundary_dissipation,
+            fracture_dissipation: self.fracture_dissipation,
+            contact_hysteresis: self.contact_hysteresis,
+            cut_away: self.cut_away,
+            elastic_energy: self.elastic_energy,
+            other_dissipation: self.other_dissipation,
+            residual: self.residual,
+        }
+    }
+}
+
 /// One sample of a run.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct Sample {

@@ -15,19 +15,9 @@ fn gif_frames(bytes: &[u8]) -> usize {
 
 #[test]
 fn animate_a_short_run() {
-    let dir = std::env::temp_dir().join(format!("pressridge-animate-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    let out = bin()
-        .args(["simulate", "--set", "duration=2"])
-        .args(["--set", "output.snapshot_interval=1"])
-        .arg("--out")
-        .arg(&dir)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    let dir = common::simulate(
+        "animate",
+        &["--set", "duration=2", "--set", "output.snapshot_interval=1"],
     );
     let own = std::fs::read(dir.join("ridge.gif")).expect("simulate writes ridge.gif");
     assert_eq!(&own[..6], b"GIF89a");
@@ -68,8 +58,7 @@ fn animate_a_short_run() {
 
 #[test]
 fn a_run_without_snapshots_is_named() {
-    let dir = std::env::temp_dir().join(format!("pressridge-nosnap-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = common::scratch("nosnap");
     let out = bin().arg("animate").arg(&dir).output().unwrap();
     assert!(!out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);

@@ -5,18 +5,14 @@ use common::bin;
 
 #[test]
 fn simulate_then_render() {
-    let dir = std::env::temp_dir().join(format!("pressridge-cli-{}", std::process::id()));
-    let out = bin()
-        .args(["simulate", "--set", "duration=0.5"])
-        .args(["--set", "output.snapshot_interval=0.25"])
-        .arg("--out")
-        .arg(&dir)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    let dir = common::simulate(
+        "cli",
+        &[
+            "--set",
+            "duration=0.5",
+            "--set",
+            "output.snapshot_interval=0.25",
+        ],
     );
     for f in [
         "summary.json",
@@ -133,19 +129,7 @@ fn shipped_scene_files_load_and_compose() {
 
 #[test]
 fn simulate_svg_writes_svg_figures_beside_the_pngs() {
-    let dir = std::env::temp_dir().join(format!("pressridge-cli-svg-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    let out = bin()
-        .args(["simulate", "--svg", "-q", "--set", "duration=0.5"])
-        .arg("--out")
-        .arg(&dir)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let dir = common::simulate("cli-svg", &["--svg", "-q", "--set", "duration=0.5"]);
     for f in ["final", "energy", "force"] {
         assert!(dir.join(format!("{f}.png")).is_file(), "missing {f}.png");
         let svg = std::fs::read_to_string(dir.join(format!("{f}.svg"))).unwrap();

@@ -109,21 +109,6 @@ fn bad_column_is_located_by_spatial_index() {
     );
 }
 
-/// Writes a bare classic-format file with the given dimensions and variables.
-fn raw_file(path: &Path, dims: &[(&str, usize)], vars: &[(&str, &[&str], Vec<f64>)]) {
-    let mut f = netcdf::create_with(path, netcdf::Options::_64BIT_OFFSET).unwrap();
-    for (n, l) in dims {
-        f.add_dimension(n, *l).unwrap();
-    }
-    for (n, d, _) in vars {
-        f.add_variable::<f64>(n, d).unwrap();
-    }
-    f.enddef().unwrap();
-    for (n, _, v) in vars {
-        f.variable_mut(n).unwrap().put_values(v, ..).unwrap();
-    }
-}
-
 /// Without `aice0`, open water is 1 − Σ aicen clamped at 0, as in the strength routine: the
 /// sample file without its `aice0` ridges, although some fully covered columns sum to
 /// 1 + 2e-16 (e.g. nj = 20, ni = 38).
@@ -137,7 +122,7 @@ fn ridge_step_without_aice0_accepts_full_cover_round_off() {
     let flat = |a: &ndarray::Array2<f64>| a.iter().copied().collect::<Vec<f64>>();
     let (_, divu) = read_field(&sample(), "divu").unwrap();
     let (_, shear) = read_field(&sample(), "shear").unwrap();
-    raw_file(
+    common::write_f64(
         &p,
         &[("nc", ncat), ("nj", ny), ("ni", nx)],
         &[
@@ -166,7 +151,7 @@ fn ridge_step_without_aice0_accepts_full_cover_round_off() {
 fn missing_and_mismatched_variables_are_named() {
     // No vicen.
     let p = tmp("novicen.nc");
-    raw_file(
+    common::write_f64(
         &p,
         &[("ncat", 2), ("x", 3)],
         &[("aicen", &["ncat", "x"], vec![0.1; 6])],
@@ -178,7 +163,7 @@ fn missing_and_mismatched_variables_are_named() {
     );
     // vicen on other dimensions.
     let p = tmp("shape.nc");
-    raw_file(
+    common::write_f64(
         &p,
         &[("ncat", 2), ("x", 3), ("y", 2)],
         &[
@@ -193,7 +178,7 @@ fn missing_and_mismatched_variables_are_named() {
     );
     // aice0 on the wrong dimensions.
     let p = tmp("shape0.nc");
-    raw_file(
+    common::write_f64(
         &p,
         &[("ncat", 2), ("x", 3)],
         &[
@@ -209,7 +194,7 @@ fn missing_and_mismatched_variables_are_named() {
     );
     // hin_max of the wrong length.
     let p = tmp("hin.nc");
-    raw_file(
+    common::write_f64(
         &p,
         &[("ncat", 2), ("x", 3), ("nb", 2)],
         &[
@@ -774,7 +759,7 @@ fn category_dimension_by_name_or_refused() {
     let data = vec![0.3; 6];
     // None of the names.
     let p = tmp("noname.nc");
-    raw_file(
+    common::write_f64(
         &p,
         &[("k", 2), ("x", 3)],
         &[
@@ -811,7 +796,7 @@ fn category_dimension_by_name_or_refused() {
     assert!(!o.status.success() && msg.contains("`nc` given"), "{msg}");
     // Two of the names: ambiguous.
     let p = tmp("twonames.nc");
-    raw_file(
+    common::write_f64(
         &p,
         &[("nc", 2), ("ncat", 3)],
         &[
@@ -827,7 +812,7 @@ fn category_dimension_by_name_or_refused() {
     // The category dimension last.
     let p = tmp("catlast.nc");
     let a: Vec<f64> = (0..6).map(|i| 0.1 + 0.05 * i as f64).collect();
-    raw_file(
+    common::write_f64(
         &p,
         &[("x", 3), ("ncat", 2)],
         &[
@@ -841,7 +826,7 @@ fn category_dimension_by_name_or_refused() {
     assert_eq!(g.aicen.row(1).to_vec(), vec![a[1], a[3], a[5]]);
     // hin_max and NCAT disagree.
     let p = tmp("ncat_vs_hin.nc");
-    raw_file(
+    common::write_f64(
         &p,
         &[("ncat", 2), ("x", 3), ("nb", 3)],
         &[

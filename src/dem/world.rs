@@ -231,6 +231,9 @@ pub struct World {
     steps: u64,
     /// Set when a step produced a non-finite state; the world then no longer steps.
     fault: Option<WorldError>,
+    /// While set, adding bodies and joints leaves Δt alone; [`World::finish_time_step`]
+    /// derives it once when the world is complete.
+    defer_time_step: bool,
     // Scratch, reused every step.
     vel_old: Vec<V2>,
     omega_old: Vec<f64>,
@@ -260,6 +263,7 @@ impl World {
             time: 0.0,
             steps: 0,
             fault: None,
+            defer_time_step: false,
             vel_old: Vec::new(),
             omega_old: Vec::new(),
             vbar: Vec::new(),
@@ -274,7 +278,7 @@ impl World {
         let id = self
             .bodies
             .push(shape, self.params.ice_density, pos, theta, drive);
-        if self.steps == 0 {
+        if self.steps == 0 && !self.defer_time_step {
             self.refresh_time_step();
         }
         self.acc.kinetic_start += self.body_kinetic_energy(id as usize);
@@ -300,7 +304,7 @@ impl World {
         self.bodies.role[id as usize] = role;
         self.bodies.block[id as usize] = Some(b);
         self.acc.kinetic_start += self.body_kinetic_energy(id as usize);
-        if self.steps == 0 {
+        if self.steps == 0 && !self.defer_time_step {
             self.refresh_time_step();
         }
         Ok(id)
@@ -332,7 +336,7 @@ impl World {
             .push(Joint::new(a, b, pa, pb, h, skeletal, gauge, mat));
         // The time step is derived while the world is built and then kept for the run
         // (blocks the sheet grows later are alike and need no new bound).
-        if self.steps == 0 {
+        if self.steps == 0 && !self.defer_time_step {
             self.refresh_time_step();
         }
         Ok(k)
@@ -429,6 +433,29 @@ impl World {
             Some(dt) => dt,
             None => self.params.time_step_safety * self.stable_time_step(),
         };
+    }
+
+    /// Stops [`World::add_block`], [`World::add_rect`] and [`World::join`] re-deriving the
+    /// time step (each derivation solves one eigenproblem per joint) until
+    /// [`World::finish_time_step`].
+    pub(crate) fn defer_time_step(&mut self) {
+        self.defer_time_step = true;
+    }
+
+    /// Ends [`World::defer_time_step`]: derives the time step once from the bodies and
+    /// joints present, as [`World::refresh_time_step`], and checks it against the stable
+    /// limit, as [`World::check_time_step`].
+    pub(crate) fn finish_time_step(&mut self) -> Result<(), WorldError> {
+        self.defer_time_step = false;
+        let limit = self.stable_time_step();
+        self.dt = match self.params.time_step {
+            Some(dt) => dt,
+            None => self.params.time_step_safety * limit,
+        };
+        if self.dt > limit {
+            return Err(WorldError::Unstable { dt: self.dt, limit });
+        }
+        Ok(())
     }
 
     /// Checks a fixed time step against the stable limit of the bodies and joints present;

@@ -151,37 +151,17 @@ pub const DISSIPATION_TOLERANCE: f64 = 1e-6;
 pub fn dissipation_violation(r: &RunRecord) -> Option<String> {
     let s = &r.summary;
     let tol = DISSIPATION_TOLERANCE * s.work.abs().max(1.0);
-    let finals = [
-        ("friction_dissipation", s.friction_dissipation),
-        ("viscous_dissipation", s.viscous_dissipation),
-        ("drag_dissipation", s.drag_dissipation),
-        ("joint_dissipation", s.joint_dissipation),
-        ("boundary_dissipation", s.boundary_dissipation),
-        ("fracture_dissipation", s.fracture_dissipation),
-    ];
-    for (name, v) in finals {
-        if v < -tol || !v.is_finite() {
-            return Some(format!(
-                "{name} = {v:.4e} J/m at the end (work {:.4e} J/m)",
-                s.work
-            ));
-        }
+    let bad = |v: f64| v < -tol || !v.is_finite();
+    if let Some((name, v)) = s.energy().dissipations().find(|&(_, v)| bad(v)) {
+        return Some(format!(
+            "{name} = {v:.4e} J/m at the end (work {:.4e} J/m)",
+            s.work
+        ));
     }
-    for x in &r.samples {
-        for (name, v) in [
-            ("friction_dissipation", x.friction_dissipation),
-            ("viscous_dissipation", x.viscous_dissipation),
-            ("drag_dissipation", x.drag_dissipation),
-            ("joint_dissipation", x.joint_dissipation),
-            ("boundary_dissipation", x.boundary_dissipation),
-            ("fracture_dissipation", x.fracture_dissipation),
-        ] {
-            if v < -tol || !v.is_finite() {
-                return Some(format!("{name} = {v:.4e} J/m at t = {} s", x.time));
-            }
-        }
-    }
-    None
+    r.samples.iter().find_map(|x| {
+        let (name, v) = x.energy().dissipations().find(|&(_, v)| bad(v))?;
+        Some(format!("{name} = {v:.4e} J/m at t = {} s", x.time))
+    })
 }
 
 /// Statistics of one grid point (all seeds of one setting).

@@ -134,6 +134,25 @@ pub fn write_nc(path: &Path, vars: &[Var]) {
     f.close().unwrap();
 }
 
+/// Writes `vars` (name, dimension names, values) into a new classic-format NetCDF file with
+/// the dimensions `dims` (name, length): [`write_nc`] for `f64` variables.
+pub fn write_f64(path: &Path, dims: &[(&str, usize)], vars: &[(&str, &[&str], Vec<f64>)]) {
+    let len = |d: &str| {
+        dims.iter()
+            .find(|x| x.0 == d)
+            .unwrap_or_else(|| panic!("no dimension {d}"))
+            .1
+    };
+    let vars: Vec<Var> = vars
+        .iter()
+        .map(|(name, ds, v)| {
+            let ds: Vec<(&str, usize)> = ds.iter().map(|&d| (d, len(d))).collect();
+            Var::f64(name, &ds, v.clone())
+        })
+        .collect();
+    write_nc(path, &vars);
+}
+
 /// The `_FillValue` of variable `name` of a NetCDF file, if it has one as a number.
 pub fn fill_value(path: &Path, name: &str) -> Option<f64> {
     let f = netcdf::open(path).unwrap();
@@ -180,6 +199,16 @@ pub fn good_itd() -> Vec<Var> {
         Var::f64("divu", &sp, vec![-1e-6; 6]),
         Var::f64("shear", &sp, vec![0.0; 6]),
     ]
+}
+
+/// Runs `pressridge simulate` with `args` into a fresh scratch directory for test `name`,
+/// asserts success and returns the directory.
+pub fn simulate(name: &str, args: &[&str]) -> PathBuf {
+    let dir = scratch(name);
+    let mut cmd = bin();
+    cmd.arg("simulate").args(args).arg("--out").arg(&dir);
+    succeeds(&cmd.output().unwrap());
+    dir
 }
 
 /// The names of the files in `dir` (sorted).
