@@ -300,6 +300,20 @@ def _bounds_from(ds: xr.Dataset) -> Optional[np.ndarray]:
     return h if h is not None else n
 
 
+def _step_options(ds: xr.Dataset, dt, hin_max, participation, redistribution, /, **rest) -> dict:
+    """The keywords of a ridging step: ``dt`` (s), the category bounds ``hin_max`` (m; from
+    ``ds`` when None, see ``_bounds_from``), the two schemes and ``rest``."""
+    if hin_max is None:
+        hin_max = _bounds_from(ds)
+    return dict(
+        dt=dt,
+        hin_max=None if hin_max is None else np.asarray(hin_max, dtype=np.float64),
+        participation=participation,
+        redistribution=redistribution,
+        **rest,
+    )
+
+
 _PER_SECOND = {"s-1", "1/s", "s^-1", "/s", "s**-1"}
 _PERCENT_PER_DAY = {"%/day", "%/d", "%day-1", "percent/day"}
 
@@ -509,15 +523,7 @@ def ridge_step(
             dict(convergence=convergence, shear=shear), f"convergence: {conv_desc}; shear: {shear_desc}",
             participation, redistribution, tf, ndtd, cleanup, rebin, salt_flux, params,
         )
-    if hin_max is None:
-        hin_max = _bounds_from(ds)
-    options = dict(
-        dt=dt,
-        hin_max=None if hin_max is None else np.asarray(hin_max, dtype=np.float64),
-        participation=participation,
-        redistribution=redistribution,
-        **params,
-    )
+    options = _step_options(ds, dt, hin_max, participation, redistribution, **params)
     names: List[str] = []
     arrays: List[xr.DataArray] = []
     scalars = {}
@@ -636,13 +642,8 @@ def _complete(ds, aicen, vicen, aice0, cat, spatial, use_mask, layout, dt, hin_m
 
     vsnon = cat_var("vsnon") if "vsnon" in ds else xr.zeros_like(ds["aicen"])
     tracers = [cat_var(n) for n in names]
-    if hin_max is None:
-        hin_max = _bounds_from(ds)
-    options = dict(
-        dt=dt,
-        hin_max=None if hin_max is None else np.asarray(hin_max, dtype=np.float64),
-        participation=participation,
-        redistribution=redistribution,
+    options = _step_options(
+        ds, dt, hin_max, participation, redistribution,
         tf=tf if not isinstance(tf, xr.DataArray) else None,
         ndtd=ndtd,
         cleanup=cleanup,

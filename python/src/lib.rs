@@ -782,6 +782,15 @@ fn field_from_py(i: usize, item: &Bound<'_, PyAny>) -> Result<TracerField, BindE
     })
 }
 
+impl PyTracerLayout {
+    /// `f` of the role of every tracer, in tracer order.
+    fn per_tracer(&self, f: impl Fn(&TracerRole) -> &'static str) -> Vec<&'static str> {
+        (0..self.inner.ntrcr())
+            .map(|it| f(&self.inner.field_of(it).expect("index in range").0.role))
+            .collect()
+    }
+}
+
 #[pymethods]
 impl PyTracerLayout {
     /// The CICE/Icepack layout (`TracerLayout::cice`) for `nilyr` ice and `nslyr` snow layers
@@ -955,31 +964,13 @@ impl PyTracerLayout {
     /// Per tracer, its CF units.
     #[getter]
     fn units(&self) -> Vec<&'static str> {
-        (0..self.inner.ntrcr())
-            .map(|it| {
-                self.inner
-                    .field_of(it)
-                    .expect("index in range")
-                    .0
-                    .role
-                    .units()
-            })
-            .collect()
+        self.per_tracer(|r| r.units())
     }
 
     /// Per tracer, its long name.
     #[getter]
     fn long_names(&self) -> Vec<&'static str> {
-        (0..self.inner.ntrcr())
-            .map(|it| {
-                self.inner
-                    .field_of(it)
-                    .expect("index in range")
-                    .0
-                    .role
-                    .long_name()
-            })
-            .collect()
+        self.per_tracer(|r| r.long_name())
     }
 
     /// Icepack's `trcr_depend` per tracer (0 area, 1 ice volume, 2 snow volume, 2 + nt).
@@ -1774,6 +1765,24 @@ fn lookup_err(e: LookupError) -> BindError {
     value_err(e)
 }
 
+/// `lookup(i)` (value, clamped) for every i in 0..n, off the interpreter lock; returns
+/// (values, clamped).
+fn lookup_each<'py>(
+    py: Python<'py>,
+    n: usize,
+    lookup: impl Fn(usize) -> Result<(f64, bool), LookupError> + Send,
+) -> PyResult<Pair<'py, bool>> {
+    let (vals, clamped): (Vec<f64>, Vec<bool>) = detached(py, move || {
+        (0..n)
+            .map(|i| lookup(i).map_err(lookup_err))
+            .collect::<Result<_, _>>()
+    })?;
+    Ok((
+        PyArray1::from_vec(py, vals),
+        PyArray1::from_vec(py, clamped),
+    ))
+}
+
 /// A ridging lookup table (`pressridge::table::lookup::RidgeLookup`) opened from the NetCDF
 /// file that `pressridge tabulate` writes. Wrapped by `pressridge.Table`.
 #[pyclass(frozen, name = "RidgeLookup", module = "pressridge._core")]
@@ -1883,21 +1892,10 @@ impl PyRidgeLookup {
         if h.len() != v.len() {
             return Err(value_err("thickness and volume differ in length").into());
         }
-        let t = self.inner.clone();
-        let (vals, clamped) = detached(py, || {
-            let mut vals = Vec::with_capacity(h.len());
-            let mut clamped = Vec::with_capacity(h.len());
-            for (&x, &y) in h.iter().zip(v.iter()) {
-                let l = t.value(name, set, x, y).map_err(lookup_err)?;
-                vals.push(l.value);
-                clamped.push(l.clamped);
-            }
-            Ok((vals, clamped))
-        })?;
-        Ok((
-            PyArray1::from_vec(py, vals),
-            PyArray1::from_vec(py, clamped),
-        ))
+        let t = &self.inner;
+        lookup_each(py, h.len(), |i| {
+            t.value(name, set, h[i], v[i]).map(|l| (l.value, l.clamped))
+        })
     }
 
     /// C_f of set `set` at every thickness (m) of a 1-D array; returns (values, clamped).
@@ -1908,21 +1906,10 @@ impl PyRidgeLookup {
         thickness: numpy::PyReadonlyArray1<'py, f64>,
     ) -> PyResult<Pair<'py, bool>> {
         let h = thickness.as_array();
-        let t = self.inner.clone();
-        let (vals, clamped) = detached(py, || {
-            let mut vals = Vec::with_capacity(h.len());
-            let mut clamped = Vec::with_capacity(h.len());
-            for &x in h.iter() {
-                let l = t.cf(set, x).map_err(lookup_err)?;
-                vals.push(l.value);
-                clamped.push(l.clamped);
-            }
-            Ok((vals, clamped))
-        })?;
-        Ok((
-            PyArray1::from_vec(py, vals),
-            PyArray1::from_vec(py, clamped),
-        ))
+        let t = &self.inner;
+        lookup_each(py, h.len(), |i| {
+            t.cf(set, h[i]).map(|l| (l.value, l.clamped))
+        })
     }
 
     /// The nodes (thickness in m, C_f) of set `set`'s C_f table for the strength routine.
