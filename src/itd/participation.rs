@@ -65,7 +65,8 @@ impl ExpCache {
             astar,
             astari,
             xtmp,
-            at_one: (-1.0 * astari).exp() * xtmp,
+            // −1·(1/a*) = −1/a* exactly.
+            at_one: (-astari).exp() * xtmp,
         }
     }
 
