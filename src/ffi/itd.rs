@@ -10,6 +10,7 @@ use super::layout::{Layout, Region, check_disjoint, check_ptr};
 use super::tables::PressridgeCfTable;
 use super::{FfiError, FfiResult, PRESSRIDGE_ERR_BAD_VALUE, PressridgeGrid, guard, put};
 use crate::itd::bounds::validate_bounds;
+use crate::itd::strength::{FAST_MAX_NCAT, StrengthConsts, strength_column_constant_cf};
 use crate::itd::{
     CategoryBounds, Cf, CfPreset, ColumnStrength, ItdError, ItdParams, Participation,
     Redistribution, RidgeDiagnostics, RidgeForcing, RidgeOptions, RidgeRatesMut, StrengthFormula,
@@ -489,12 +490,19 @@ pub unsafe extern "C" fn pressridge_strength(
     })
 }
 
+/// The options of a thread's last [`pressridge_strength_cell`] call, what they convert to
+/// and, for Rothrock with a constant C_f, the constants that depend on them only.
+struct CellOptions {
+    raw: PressridgeOptions,
+    opts: StrengthOptions,
+    consts: Option<StrengthConsts>,
+}
+
 thread_local! {
     /// The options of this thread's last [`pressridge_strength_cell`] call with a constant
-    /// C_f, and what they convert to (compared bit for bit: NaN never equals, so a bad value
-    /// is checked again every call).
-    static CELL_OPTIONS: RefCell<Option<(PressridgeOptions, StrengthOptions)>> =
-        const { RefCell::new(None) };
+    /// C_f (compared bit for bit: NaN never equals, so a bad value is checked again every
+    /// call).
+    static CELL_OPTIONS: RefCell<Option<CellOptions>> = const { RefCell::new(None) };
 }
 
 /// Ice strength P (N/m) of one grid cell: the per-cell call of CICE's `icepack_ice_strength`,
@@ -540,19 +548,39 @@ pub unsafe extern "C" fn pressridge_strength_cell(
                 ));
             }
         }
-        let o = PressridgeOptions::from_ptr(options)?;
+        // Read in place (no copy of the options on the usual path).
+        let default;
+        let o: &PressridgeOptions = if options.is_null() {
+            default = PressridgeOptions::default();
+            &default
+        } else {
+            check_ptr(options, "options")?;
+            &*options
+        };
         let r = CELL_OPTIONS.with(|cache| -> FfiResult<ColumnStrength> {
             let mut cache = cache.borrow_mut();
             let constant = o.cf_source == PRESSRIDGE_CF_SOURCE_CONSTANT;
-            let hit = constant && cache.as_ref().is_some_and(|(c, _)| same_options(c, &o));
+            let hit = constant && cache.as_ref().is_some_and(|c| same_options(&c.raw, o));
             if !hit {
                 let so = o.strength_options()?;
                 so.validate()?;
-                *cache = Some((o, so));
+                *cache = Some(CellOptions {
+                    raw: *o,
+                    consts: StrengthConsts::new(&so),
+                    opts: so,
+                });
             }
-            let so = &cache.as_ref().expect("just filled").1;
-            let r = with_scratch(n, |sc| strength_column(a, v, Some(aice0), so, &mut sc.ws))
-                .map_err(|source| ItdError::Column { column: 0, source }.into());
+            let c = cache.as_ref().expect("just filled");
+            let r = match &c.consts {
+                // Rothrock with a constant C_f (CICE's case): on the stack.
+                Some(k) if n <= FAST_MAX_NCAT => {
+                    strength_column_constant_cf(a, v, Some(aice0), &c.opts, k)
+                }
+                _ => with_scratch(n, |sc| {
+                    strength_column(a, v, Some(aice0), &c.opts, &mut sc.ws)
+                }),
+            }
+            .map_err(|source| ItdError::Column { column: 0, source }.into());
             if !constant {
                 // A table handle may be freed and another made at its address: never kept.
                 *cache = None;

@@ -10,6 +10,7 @@
 use std::cmp::Ordering;
 
 use super::params::{ItdParams, Participation, Redistribution};
+use super::participation::ExpCache;
 
 /// Columns per block.
 pub(crate) const L: usize = 8;
@@ -44,7 +45,7 @@ fn kernel<const T: bool, const U: bool>(
     aice0_given: bool,
     p: &ItdParams,
     cf: f64,
-    xtmp: f64,
+    e: &ExpCache,
 ) -> Option<[f64; L]> {
     let puny = p.puny;
     let thick_max = crate::limits::CATEGORY_THICKNESS.max;
@@ -119,11 +120,18 @@ fn kernel<const T: bool, const U: bool>(
             }
         }
         false => {
-            let astari = 1.0 / p.astar;
+            let (astari, xtmp) = (e.astari, e.xtmp);
             let mut prev = [xtmp; L];
             for n in 0..=ncat {
                 for l in 0..L {
-                    let cur = (-g[n + 1][l] * astari).exp() * xtmp;
+                    // G = 1 (the last category, when the normalisation gives exactly 1):
+                    // the same exponential, computed once.
+                    let gn = g[n + 1][l];
+                    let cur = if gn == 1.0 {
+                        e.at_one
+                    } else {
+                        (-gn * astari).exp() * xtmp
+                    };
                     ap[n][l] = prev[l] - cur;
                     prev[l] = cur;
                 }
@@ -185,15 +193,15 @@ fn dispatch(
     redist: Redistribution,
     p: &ItdParams,
     cf: f64,
-    xtmp: f64,
+    e: &ExpCache,
 ) -> Option<[f64; L]> {
     let thorndike = part == Participation::Thorndike;
     let uniform = redist == Redistribution::Uniform;
     match (thorndike, uniform) {
-        (true, true) => kernel::<true, true>(b, ncat, aice0_given, p, cf, xtmp),
-        (true, false) => kernel::<true, false>(b, ncat, aice0_given, p, cf, xtmp),
-        (false, true) => kernel::<false, true>(b, ncat, aice0_given, p, cf, xtmp),
-        (false, false) => kernel::<false, false>(b, ncat, aice0_given, p, cf, xtmp),
+        (true, true) => kernel::<true, true>(b, ncat, aice0_given, p, cf, e),
+        (true, false) => kernel::<true, false>(b, ncat, aice0_given, p, cf, e),
+        (false, true) => kernel::<false, true>(b, ncat, aice0_given, p, cf, e),
+        (false, false) => kernel::<false, false>(b, ncat, aice0_given, p, cf, e),
     }
 }
 
@@ -208,9 +216,9 @@ unsafe fn dispatch_avx2(
     redist: Redistribution,
     p: &ItdParams,
     cf: f64,
-    xtmp: f64,
+    e: &ExpCache,
 ) -> Option<[f64; L]> {
-    dispatch(b, ncat, aice0_given, part, redist, p, cf, xtmp)
+    dispatch(b, ncat, aice0_given, part, redist, p, cf, e)
 }
 
 /// Strength of one block (dispatching to AVX2 where the CPU has it; no FMA, so rounding is
@@ -224,14 +232,14 @@ pub(crate) fn strength_block(
     redist: Redistribution,
     p: &ItdParams,
     cf: f64,
-    xtmp: f64,
+    e: &ExpCache,
 ) -> Option<[f64; L]> {
     #[cfg(target_arch = "x86_64")]
     {
         if std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: the CPU supports AVX2 (checked just above).
-            return unsafe { dispatch_avx2(b, ncat, aice0_given, part, redist, p, cf, xtmp) };
+            return unsafe { dispatch_avx2(b, ncat, aice0_given, part, redist, p, cf, e) };
         }
     }
-    dispatch(b, ncat, aice0_given, part, redist, p, cf, xtmp)
+    dispatch(b, ncat, aice0_given, part, redist, p, cf, e)
 }

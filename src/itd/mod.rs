@@ -231,8 +231,8 @@ pub struct Workspace {
     pub(crate) apartic: Vec<f64>,
     /// Cumulative area G(n), stored shifted: gsum[k + 1] = G(k), k = −1 ..= ncat.
     pub(crate) gsum: Vec<f64>,
-    /// (a*, 1/(1 − e^{−1/a*})) of the exponential participation, computed once.
-    pub(crate) exp_cache: (f64, f64),
+    /// Constants of the exponential participation (1/a*, 1/(1 − e^{−1/a*}), …), computed once.
+    pub(crate) exp_cache: participation::ExpCache,
     pub(crate) hi: Vec<f64>,
     pub(crate) hrmin: Vec<f64>,
     pub(crate) hrmax: Vec<f64>,
@@ -255,7 +255,7 @@ impl Workspace {
             ncat,
             apartic: vec![0.0; ncat + 1],
             gsum: vec![0.0; ncat + 2],
-            exp_cache: (f64::NAN, f64::NAN),
+            exp_cache: participation::ExpCache::EMPTY,
             hi: vec![0.0; ncat],
             hrmin: vec![0.0; ncat],
             hrmax: vec![0.0; ncat],

@@ -28,12 +28,59 @@ pub fn participation(
     gsum: &mut [f64],
     apartic: &mut [f64],
 ) {
-    let mut cache = (f64::NAN, f64::NAN);
+    let mut cache = ExpCache::EMPTY;
     participation_cached(kind, params, aice0, aicen, gsum, apartic, &mut cache);
 }
 
-/// As [`participation`], with `cache` = (a*, 1/(1 − e^{−1/a*})) kept between calls so the
-/// constant is not recomputed for every column (same numbers).
+/// Constants of the exponential participation that depend on a* only, computed once as
+/// Icepack computes them (so with the same bits): 1/a*, x = 1/(1 − e^{−1/a*}) and the
+/// term e^{−G·/a*}·x at G = 1, which the last category of every column reaches when the
+/// normalisation gives exactly 1 (Icepack evaluates `exp(-Gsum(n)*astari) * xtmp` there, and
+/// −1·(1/a*) is −1/a* exactly).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct ExpCache {
+    astar: f64,
+    /// 1/a*.
+    pub astari: f64,
+    /// 1/(1 − e^{−1/a*}).
+    pub xtmp: f64,
+    /// e^{−1/a*}·xtmp.
+    pub at_one: f64,
+}
+
+impl ExpCache {
+    /// Not yet computed (NaN never equals a*).
+    pub(crate) const EMPTY: ExpCache = ExpCache {
+        astar: f64::NAN,
+        astari: f64::NAN,
+        xtmp: f64::NAN,
+        at_one: f64::NAN,
+    };
+
+    /// The constants for `astar`.
+    pub(crate) fn new(astar: f64) -> Self {
+        let astari = 1.0 / astar;
+        let xtmp = 1.0 / (1.0 - (-astari).exp());
+        ExpCache {
+            astar,
+            astari,
+            xtmp,
+            // −1·(1/a*) = −1/a* exactly.
+            at_one: (-astari).exp() * xtmp,
+        }
+    }
+
+    /// Recomputes the constants if `astar` changed.
+    #[inline]
+    pub(crate) fn update(&mut self, astar: f64) {
+        if self.astar != astar {
+            *self = Self::new(astar);
+        }
+    }
+}
+
+/// As [`participation`], with the exponential participation's constants kept in `cache`
+/// between calls so they are not recomputed for every column (same numbers).
 pub(crate) fn participation_cached(
     kind: Participation,
     params: &ItdParams,
@@ -41,19 +88,41 @@ pub(crate) fn participation_cached(
     aicen: &[f64],
     gsum: &mut [f64],
     apartic: &mut [f64],
-    cache: &mut (f64, f64),
+    cache: &mut ExpCache,
+) {
+    if kind == Participation::Exponential {
+        cache.update(params.astar);
+    }
+    participation_with(kind, params, aice0, aicen, gsum, apartic, cache);
+}
+
+/// As [`participation`], with the exponential participation's constants `k` (for
+/// `params.astar`; unused by Thorndike's).
+#[inline]
+pub(crate) fn participation_with(
+    kind: Participation,
+    params: &ItdParams,
+    aice0: f64,
+    aicen: &[f64],
+    gsum: &mut [f64],
+    apartic: &mut [f64],
+    k: &ExpCache,
 ) {
     let ncat = aicen.len();
     debug_assert!(gsum.len() == ncat + 2 && apartic.len() == ncat + 1);
     let puny = params.puny;
     // gsum[k + 1] = G(k), k = -1..=ncat.
     gsum[0] = 0.0;
-    gsum[1] = if aice0 > puny { aice0 } else { 0.0 };
-    for n in 1..=ncat {
-        let a = aicen[n - 1];
-        gsum[n + 1] = if a > puny { gsum[n] + a } else { gsum[n] };
+    // The running sum stays in a register (same additions in the same order).
+    let mut run = if aice0 > puny { aice0 } else { 0.0 };
+    gsum[1] = run;
+    for (g, &a) in gsum[2..ncat + 2].iter_mut().zip(aicen) {
+        if a > puny {
+            run += a;
+        }
+        *g = run;
     }
-    let total = gsum[ncat + 1];
+    let total = run;
     if total > 0.0 {
         let work = 1.0 / total;
         for g in gsum[1..].iter_mut() {
@@ -77,19 +146,19 @@ pub(crate) fn participation_cached(
             }
         }
         Participation::Exponential => {
-            let astari = 1.0 / params.astar;
-            if cache.0 != params.astar {
-                *cache = (params.astar, 1.0 / (1.0 - (-astari).exp()));
-            }
-            let xtmp = cache.1;
+            debug_assert!(k.astar == params.astar);
+            let (astari, xtmp) = (k.astari, k.xtmp);
             // G(-1) = 0 and exp(-0) = 1 exactly.
             let mut prev = xtmp;
             for n in 0..=ncat {
+                let g = gsum[n + 1];
                 // An empty category has G(n) = G(n-1): the same exponential, zero share.
-                let cur = if gsum[n + 1] == gsum[n] {
+                let cur = if g == gsum[n] {
                     prev
+                } else if g == 1.0 {
+                    k.at_one
                 } else {
-                    (-gsum[n + 1] * astari).exp() * xtmp
+                    (-g * astari).exp() * xtmp
                 };
                 apartic[n] = prev - cur;
                 prev = cur;

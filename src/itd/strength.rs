@@ -14,7 +14,7 @@ use ndarray::{ArrayView1, ArrayView2, ArrayViewMut1, Axis};
 use super::cf::{Cf, CfProvider};
 use super::lanes;
 use super::params::{ItdParams, Participation, Redistribution, StrengthFormula};
-use super::participation::participation_cached;
+use super::participation::{ExpCache, participation_cached, participation_with};
 use super::redistribution::{mean_square_ridge_thickness, net_to_gross, ridge_geometry};
 use super::{ColumnError, ItdError, Workspace, check_column, check_len};
 
@@ -73,38 +73,12 @@ pub fn strength_column(
         "column length differs from ncat"
     );
     let p = &opts.params;
-    let sum = check_column(aicen, vicen, aice0)?;
-    // Squares of thicker ice overflow into NaN (the ridging paths take such volumes).
-    for (n, &v) in vicen.iter().enumerate() {
-        super::too_thick("vicen", n, v)?;
-    }
-    let aice0 = match aice0 {
+    let Some((aice0, sum)) = column_prelude(aicen, vicen, aice0, p)? else {
         // Empty column (land, or no data): defined as zero strength (CICE: 0/0).
-        Some(a0) if a0 == 0.0 && sum == 0.0 => {
-            return Ok(ColumnStrength {
-                strength: 0.0,
-                cf_clamped: false,
-            });
-        }
-        Some(a0) => {
-            let total = a0 + sum;
-            if (total - 1.0).abs() > p.area_tolerance {
-                return Err(ColumnError::AreaSum {
-                    total,
-                    tolerance: p.area_tolerance,
-                });
-            }
-            a0
-        }
-        None => {
-            if sum > 1.0 + p.area_tolerance {
-                return Err(ColumnError::IceAreaAboveOne {
-                    total: sum,
-                    tolerance: p.area_tolerance,
-                });
-            }
-            f64::max(1.0 - sum, 0.0)
-        }
+        return Ok(ColumnStrength {
+            strength: 0.0,
+            cf_clamped: false,
+        });
     };
 
     if opts.formula == StrengthFormula::Hibler1979 {
@@ -186,6 +160,222 @@ pub fn strength_column(
     Ok(ColumnStrength {
         strength,
         cf_clamped: clamped,
+    })
+}
+
+/// The checks of a column shared by the strength routines: finite, non-negative values, no
+/// thicker ice than the squares allow, and the area sum. Returns (aice0, Σ aicen), or `None`
+/// for an empty column (`aice0` and every `aicen` exactly 0, e.g. land).
+#[inline]
+fn column_prelude(
+    aicen: &[f64],
+    vicen: &[f64],
+    aice0: Option<f64>,
+    p: &ItdParams,
+) -> Result<Option<(f64, f64)>, ColumnError> {
+    let sum = check_column(aicen, vicen, aice0)?;
+    // Squares of thicker ice overflow into NaN (the ridging paths take such volumes).
+    for (n, &v) in vicen.iter().enumerate() {
+        super::too_thick("vicen", n, v)?;
+    }
+    let aice0 = match aice0 {
+        Some(a0) if a0 == 0.0 && sum == 0.0 => return Ok(None),
+        Some(a0) => {
+            let total = a0 + sum;
+            if (total - 1.0).abs() > p.area_tolerance {
+                return Err(ColumnError::AreaSum {
+                    total,
+                    tolerance: p.area_tolerance,
+                });
+            }
+            a0
+        }
+        None => {
+            if sum > 1.0 + p.area_tolerance {
+                return Err(ColumnError::IceAreaAboveOne {
+                    total: sum,
+                    tolerance: p.area_tolerance,
+                });
+            }
+            f64::max(1.0 - sum, 0.0)
+        }
+    };
+    Ok(Some((aice0, sum)))
+}
+
+/// k_n and −h_n² + ⟨h_r²⟩_n/k_n of every category (k_n = 1 for a category with area ≤ puny,
+/// whose term is not used), with the operations of [`ridge_geometry`] and
+/// [`mean_square_ridge_thickness`] (checked bit for bit by the tests), evaluated branch-free
+/// in groups of 4 categories.
+#[inline]
+fn category_terms(
+    aicen: &[f64],
+    vicen: &[f64],
+    redist: Redistribution,
+    p: &ItdParams,
+) -> ([f64; lanes::MAX_NCAT], [f64; lanes::MAX_NCAT]) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU supports AVX2 (checked just above).
+            return unsafe { category_terms_avx2(aicen, vicen, redist, p) };
+        }
+    }
+    category_terms_generic(aicen, vicen, redist, p)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn category_terms_avx2(
+    aicen: &[f64],
+    vicen: &[f64],
+    redist: Redistribution,
+    p: &ItdParams,
+) -> ([f64; lanes::MAX_NCAT], [f64; lanes::MAX_NCAT]) {
+    category_terms_generic(aicen, vicen, redist, p)
+}
+
+#[inline(always)]
+fn category_terms_generic(
+    aicen: &[f64],
+    vicen: &[f64],
+    redist: Redistribution,
+    p: &ItdParams,
+) -> ([f64; lanes::MAX_NCAT], [f64; lanes::MAX_NCAT]) {
+    const M: usize = lanes::MAX_NCAT;
+    let ncat = aicen.len();
+    let mut a = [0.0; M];
+    let mut v = [0.0; M];
+    a[..ncat].copy_from_slice(aicen);
+    v[..ncat].copy_from_slice(&vicen[..ncat]);
+    let mut krdg = [1.0; M];
+    let mut term = [0.0; M];
+    let groups = ncat.div_ceil(4);
+    let (puny, maxraft) = (p.puny, p.maxraft);
+    match redist {
+        Redistribution::Uniform => {
+            let hstar = p.hstar;
+            for gi in 0..groups {
+                for j in 0..4 {
+                    let n = 4 * gi + j;
+                    let hi = v[n] / a[n];
+                    let hrmin = f64::min(2.0 * hi, hi + maxraft);
+                    let hrmax = f64::max(2.0 * (hstar * hi).sqrt(), hrmin + puny);
+                    let k = 0.5 * (hrmin + hrmax) / hi;
+                    let cube = |x: f64| x * x * x;
+                    let h2 = (1.0 / 3.0) * (cube(hrmax) - cube(hrmin)) / (hrmax - hrmin);
+                    let live = a[n] > puny;
+                    krdg[n] = if live { k } else { 1.0 };
+                    term[n] = -hi * hi + h2 / k;
+                }
+            }
+        }
+        Redistribution::Exponential => {
+            let mu = p.mu_rdg;
+            for gi in 0..groups {
+                for j in 0..4 {
+                    let n = 4 * gi + j;
+                    let hi = v[n] / a[n];
+                    let hc = f64::max(hi, puny);
+                    let hrmin = f64::min(2.0 * hc, hc + maxraft);
+                    let hrexp = mu * hc.sqrt();
+                    let k = (hrmin + hrexp) / hc;
+                    let h2 = hrmin * hrmin + 2.0 * hrmin * hrexp + 2.0 * hrexp * hrexp;
+                    let live = a[n] > puny;
+                    krdg[n] = if live { k } else { 1.0 };
+                    term[n] = -hi * hi + h2 / k;
+                }
+            }
+        }
+    }
+    (krdg, term)
+}
+
+/// Largest number of categories [`strength_column_constant_cf`] handles.
+pub(crate) const FAST_MAX_NCAT: usize = lanes::MAX_NCAT;
+
+/// Constants of the Rothrock strength with a constant C_f that depend on the options only,
+/// computed once as Icepack computes them, so with the same bits: those of the exponential
+/// participation and C_f·C_p (Icepack's `Cf * Cp * strength / aksum` multiplies left to
+/// right).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct StrengthConsts {
+    pub(crate) exp: ExpCache,
+    pub(crate) cfcp: f64,
+}
+
+impl StrengthConsts {
+    /// The constants of `opts`, or `None` unless Rothrock with a constant C_f.
+    pub(crate) fn new(opts: &StrengthOptions) -> Option<Self> {
+        match (opts.formula, &opts.cf) {
+            (StrengthFormula::Rothrock, Cf::Constant(cf)) => Some(StrengthConsts {
+                exp: ExpCache::new(opts.params.astar),
+                cfcp: cf * opts.params.cp(),
+            }),
+            _ => None,
+        }
+    }
+}
+
+/// [`strength_column`] for Rothrock with a constant C_f and `ncat ≤ 16`, the constants
+/// `k = StrengthConsts::new(opts)` computed once by the caller: the same checks, errors and
+/// operations (so the same bits), on the stack, without a workspace.
+///
+/// # Panics
+/// If the slice lengths differ or exceed 16.
+pub(crate) fn strength_column_constant_cf(
+    aicen: &[f64],
+    vicen: &[f64],
+    aice0: Option<f64>,
+    opts: &StrengthOptions,
+    k: &StrengthConsts,
+) -> Result<ColumnStrength, ColumnError> {
+    const ZERO: ColumnStrength = ColumnStrength {
+        strength: 0.0,
+        cf_clamped: false,
+    };
+    let ncat = aicen.len();
+    assert!(
+        vicen.len() == ncat && ncat <= lanes::MAX_NCAT,
+        "column length differs from ncat"
+    );
+    debug_assert!(Some(*k) == StrengthConsts::new(opts));
+    let p = &opts.params;
+    let Some((aice0, _)) = column_prelude(aicen, vicen, aice0, p)? else {
+        return Ok(ZERO);
+    };
+    let mut gsum = [0.0; lanes::MAX_NCAT + 2];
+    let mut apartic = [0.0; lanes::MAX_NCAT + 1];
+    let apartic = &mut apartic[..ncat + 1];
+    participation_with(
+        opts.participation,
+        p,
+        aice0,
+        aicen,
+        &mut gsum[..ncat + 2],
+        apartic,
+        &k.exp,
+    );
+    // Per category k_n and the strength term, as strength_column computes them, in groups
+    // of 4 categories without branches (so SIMD across categories), then net_to_gross and
+    // the strength sum in the same order as strength_column.
+    let (krdg, term) = category_terms(aicen, vicen, opts.redistribution, p);
+    let mut aksum = apartic[0];
+    let mut total = 0.0;
+    for n in 0..ncat {
+        let ap = apartic[n + 1];
+        aksum += ap * (1.0 - 1.0 / krdg[n]);
+        if aicen[n] > p.puny && ap > 0.0 {
+            total += ap * term[n];
+        }
+    }
+    if aksum <= 0.0 {
+        // Nothing participates (no area above puny): defined as zero strength.
+        return Ok(ZERO);
+    }
+    Ok(ColumnStrength {
+        strength: k.cfcp * total / aksum,
+        cf_clamped: false,
     })
 }
 
@@ -288,7 +478,7 @@ pub fn strength_batch_masked(
         && ncat <= lanes::MAX_NCAT
     {
         let p = &opts.params;
-        let xtmp = 1.0 / (1.0 - (-(1.0 / p.astar)).exp());
+        let e = ExpCache::new(p.astar);
         let mut b = lanes::Block::new();
         while c + lanes::L <= ncol {
             let masked = valid
@@ -316,7 +506,7 @@ pub fn strength_batch_masked(
                     opts.redistribution,
                     p,
                     *cf,
-                    xtmp,
+                    &e,
                 )
             };
             match r {
@@ -338,4 +528,70 @@ pub fn strength_batch_masked(
         scalar(k, &mut out)?;
     }
     Ok(summary)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The stack path of the per-cell C entry gives the per-column routine's bits and errors
+    /// for every option pair, with and without aice0, on ordinary and edge columns.
+    #[test]
+    fn constant_cf_path_is_bit_identical_to_the_column_routine() {
+        let mut state: u64 = 987654321;
+        let mut rnd = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for ncat in [1, 5, 16] {
+            let mut ws = Workspace::new(ncat);
+            for part in [Participation::Thorndike, Participation::Exponential] {
+                for redist in [Redistribution::Uniform, Redistribution::Exponential] {
+                    let opts = StrengthOptions {
+                        participation: part,
+                        redistribution: redist,
+                        ..StrengthOptions::default()
+                    };
+                    let k = StrengthConsts::new(&opts).unwrap();
+                    for c in 0..3000 {
+                        let kind = c % 9;
+                        let mut w: Vec<f64> = (0..=ncat).map(|_| rnd()).collect();
+                        match kind {
+                            1 => w[ncat / 2 + 1] = 0.0,
+                            2 => w[0] = 1e-13,
+                            3 => w[1..].iter_mut().for_each(|x| *x = 0.0),
+                            4 => w.iter_mut().for_each(|x| *x = 0.0),
+                            _ => {}
+                        }
+                        let s: f64 = w.iter().sum::<f64>().max(1e-300);
+                        let mut a: Vec<f64> = w[1..].iter().map(|x| x / s).collect();
+                        let mut v: Vec<f64> = a.iter().map(|x| x * (0.01 + 6.0 * rnd())).collect();
+                        let mut a0 = w[0] / s;
+                        match kind {
+                            5 => a[0] = f64::NAN,
+                            6 => v[ncat - 1] = -1.0,
+                            7 => a0 += 0.1,
+                            8 => v[0] = 1e300,
+                            _ => {}
+                        }
+                        for given in [Some(a0), None] {
+                            let want = strength_column(&a, &v, given, &opts, &mut ws);
+                            let got = strength_column_constant_cf(&a, &v, given, &opts, &k);
+                            match (want, got) {
+                                (Ok(x), Ok(y)) => assert_eq!(
+                                    x.strength.to_bits(),
+                                    y.strength.to_bits(),
+                                    "{part:?}/{redist:?} ncat {ncat} column {c}"
+                                ),
+                                (Err(x), Err(y)) => assert_eq!(x.to_string(), y.to_string()),
+                                (x, y) => panic!("column {c}: {x:?} vs {y:?}"),
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
 }
