@@ -8,6 +8,7 @@
 # progress goes to runs/paper/<set>.log. Most of a day on two cores with the binary of
 # 2026-11-23 (docs/tables.md); run it under nohup:
 #   nohup scripts/paper-campaign.sh [THREADS] [OUT_ROOT] > runs/paper.log 2>&1 &
+# PAPER_SETS="friction modulus" runs only those sets (in that order).
 # Then tabulate a set with `pressridge tabulate --campaign runs/paper/<set> ...`
 # (data/README.md gives the commands behind each committed table and report).
 set -euo pipefail
@@ -22,7 +23,8 @@ echo "paper campaign: $("$bin" --version 2>/dev/null || echo pressridge), commit
 # few, heavy blocks), the sheet-length and floe checks of rafting, the friction set (the
 # table's friction coordinates), the other sets, the long slow-speed runs, and last the thin
 # end (many small blocks: the costliest runs).
-for set in thickness thickness-thick sheet-length thickness-thick-floe friction modulus floe speed thickness-thin; do
+sets=${PAPER_SETS:-thickness thickness-thick sheet-length thickness-thick-floe friction modulus floe speed thickness-thin}
+for set in $sets; do
   echo "== $set ($(date -u +%T))"
   "$bin" campaign --spec "data/campaigns/$set.toml" --out "$root/$set" \
     --threads "$threads" --progress-interval 60 2> "$root/$set.log"
