@@ -4,7 +4,8 @@
 # extension to 0.10-1.00 m (thickness-thick, thickness-thin) and the checks of rafting
 # (sheet-length, thickness-thick-floe) — seven seeds each, one after
 # the other on all cores, into runs/paper/<set>/. Resumable: finished runs are kept and
-# re-running continues where it stopped (a run cut off mid-way starts again). Each set's
+# re-running continues where it stopped (a run cut off mid-way starts again), also on another
+# machine from the records committed under data/paper/<set>. Each set's
 # progress goes to runs/paper/<set>.log. Most of a day on two cores with the binary of
 # 2026-11-23 (docs/tables.md); run it under nohup:
 #   nohup scripts/paper-campaign.sh [THREADS] [OUT_ROOT] > runs/paper.log 2>&1 &
@@ -26,7 +27,11 @@ echo "paper campaign: $("$bin" --version 2>/dev/null || echo pressridge), commit
 sets=${PAPER_SETS:-thickness thickness-thick sheet-length thickness-thick-floe friction modulus floe speed thickness-thin}
 for set in $sets; do
   echo "== $set ($(date -u +%T))"
-  "$bin" campaign --spec "data/campaigns/$set.toml" --out "$root/$set" \
+  # Runs committed under data/paper/<set> (a finished or interrupted campaign's records)
+  # are taken, not run again.
+  resume=()
+  [ -d "data/paper/$set" ] && resume=(--resume-from "data/paper/$set")
+  "$bin" campaign --spec "data/campaigns/$set.toml" --out "$root/$set" "${resume[@]}" \
     --threads "$threads" --progress-interval 60 2> "$root/$set.log"
 done
 echo "paper campaign done $(date -u +%FT%TZ)"

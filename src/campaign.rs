@@ -775,6 +775,63 @@ pub fn prepare_campaign(
     })
 }
 
+/// Takes the finished runs of this campaign from `archive` (e.g. a records-only archive of an
+/// interrupted campaign committed under `data/paper/`) into `out`, so that resuming the
+/// campaign in `out` runs only what the archive lacks. A run is taken when the archive holds
+/// a record of the same planned run (same id) that passes [`RunRecord::verify`] there and
+/// has the planned scene and seed; its record is written into `out` (atomically) without its
+/// final state: the record's digest then lists no files, so `out` tabulates like the
+/// archive. Runs `out` already holds are left alone; an archive record of the same id with
+/// another scene or seed is an error. Returns the number of runs taken.
+pub fn adopt_records(
+    spec: &CampaignSpec,
+    base_dir: &Path,
+    out: &Path,
+    archive: &Path,
+) -> Result<usize, CampaignError> {
+    if is_records_only(out) {
+        return Err(CampaignError::Mismatch(format!(
+            "{} is a records-only archive ({RECORDS_ONLY}): resume into a new output directory",
+            out.display()
+        )));
+    }
+    let mut taken = 0;
+    for p in spec.plan(base_dir)? {
+        let have = record_path(out, &p.id);
+        if have.is_file()
+            && read_json::<RunRecord>(&have)
+                .ok()
+                .is_some_and(|r| r.verify(out, &p.id).is_ok())
+        {
+            continue;
+        }
+        let from = record_path(archive, &p.id);
+        if !from.is_file() {
+            continue;
+        }
+        let mut r: RunRecord = read_json(&from)?;
+        if let Err(why) = r.verify(archive, &p.id) {
+            return Err(CampaignError::Mismatch(format!(
+                "{}: {why}",
+                from.display()
+            )));
+        }
+        if r.scene != p.scene || r.seed != p.seed {
+            return Err(CampaignError::Mismatch(format!(
+                "{} was made with another scene or seed than the spec now gives",
+                from.display()
+            )));
+        }
+        r.digest = Some(RunDigest {
+            scene: scene_digest(&r.id, r.seed, &r.scene),
+            files: Vec::new(),
+        });
+        write_json(&have, &r)?;
+        taken += 1;
+    }
+    Ok(taken)
+}
+
 /// Runs one planned run of a campaign prepared by [`prepare_campaign`] and writes it into
 /// `out`: `runs/<id>/state.json` first, then `runs/<id>/run.json`, each atomically, so a
 /// record on disk is always complete and always has its state. `progress` gets the simulated

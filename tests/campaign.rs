@@ -143,6 +143,68 @@ fn tiny_campaign_is_resumable_and_complete() {
         assert!(!res.status.success());
         let err = String::from_utf8_lossy(&res.stderr);
         assert!(err.contains("records-only archive"), "{err}");
+
+        // Resuming from the archive on another machine (a fresh directory): the archive's
+        // runs are taken, not run again; only the run it lacks is made, and the result
+        // reads as the same campaign.
+        let lost = &records[3].id;
+        std::fs::remove_dir_all(archive.join("runs").join(lost)).unwrap();
+        let again = dir.join("again");
+        let res = bin()
+            .args(["campaign", "--threads", "1", "--quiet", "--spec"])
+            .arg(&spec)
+            .arg("--out")
+            .arg(&again)
+            .arg("--resume-from")
+            .arg(&archive)
+            .output()
+            .unwrap();
+        assert!(
+            res.status.success(),
+            "{}",
+            String::from_utf8_lossy(&res.stderr)
+        );
+        let err = String::from_utf8_lossy(&res.stderr);
+        assert!(err.contains("3 finished runs taken from"), "{err}");
+        let msg = String::from_utf8_lossy(&res.stdout);
+        assert!(msg.contains("3 already done, 1 run now"), "{msg}");
+        assert!(again.join("runs").join(lost).join("state.json").is_file());
+        assert!(
+            !again
+                .join("runs")
+                .join(&records[0].id)
+                .join("state.json")
+                .exists()
+        );
+        let (_, back) = read_records(&again).unwrap();
+        assert_eq!(back.len(), 4);
+        for (a, b) in back.iter().zip(&records) {
+            let (mut a, mut b) = (a.clone(), b.clone());
+            (a.digest, b.digest) = (None, None);
+            a.summary.wall_seconds = 0.0;
+            b.summary.wall_seconds = 0.0;
+            assert_eq!(a, b, "{}", a.id);
+        }
+        // An archive record of another scene under the same id is refused.
+        let mut other = records[0].clone();
+        other.seed += 10;
+        std::fs::write(
+            archive.join("runs").join(&other.id).join("run.json"),
+            serde_json::to_string(&other).unwrap(),
+        )
+        .unwrap();
+        let res = bin()
+            .args(["campaign", "--threads", "1", "--quiet", "--spec"])
+            .arg(&spec)
+            .arg("--out")
+            .arg(dir.join("third"))
+            .arg("--resume-from")
+            .arg(&archive)
+            .output()
+            .unwrap();
+        assert!(!res.status.success());
+        let err = String::from_utf8_lossy(&res.stderr);
+        assert!(err.contains(&other.id), "{err}");
     }
     // Ensemble statistics per grid point: two points of two seeds, means over the records.
     let points = pressridge::table::ensemble::summarise(&records);

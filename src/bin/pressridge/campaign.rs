@@ -1,7 +1,7 @@
 //! `pressridge campaign`: a seeded ensemble over a parameter grid, resumable.
 
 use crate::BoxError;
-use pressridge::campaign::{CampaignSpec, run_campaign};
+use pressridge::campaign::{CampaignSpec, adopt_records, run_campaign};
 use std::path::PathBuf;
 use std::sync::atomic::AtomicBool;
 
@@ -19,12 +19,22 @@ pub struct Args {
     /// Worker threads (one run each); all cores by default.
     #[arg(long)]
     threads: Option<usize>,
+    /// Take the finished runs of this campaign from an earlier result directory or a
+    /// records-only archive of it (e.g. `data/paper/<set>` committed from an interrupted
+    /// campaign) instead of running them again: their records are copied into `--out`
+    /// (without final states). Repeatable.
+    #[arg(long, value_name = "DIR")]
+    resume_from: Vec<PathBuf>,
 }
 
 pub fn run(a: Args) -> Result<(), BoxError> {
     let spec = CampaignSpec::read(&a.spec)?;
     let base_dir = a.spec.parent().map(|p| p.to_path_buf()).unwrap_or_default();
     let plan = spec.plan(&base_dir)?;
+    for dir in &a.resume_from {
+        let n = adopt_records(&spec, &base_dir, &a.out, dir)?;
+        eprintln!("{n} finished runs taken from {}", dir.display());
+    }
     let total_sim: f64 = plan.iter().map(|p| p.scene.duration).sum();
     let threads = a
         .threads
