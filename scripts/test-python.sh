@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The Python package's checks: lints the extension crate (python/, kept out of the default
-# workspace members so that plain cargo never needs Python), builds the command line and the
-# extension (release, into .venv with maturin) and runs the pytest suite in python/tests.
-# scripts/test.sh calls this when python/pyproject.toml exists; run it alone the same way.
+# workspace members so that plain cargo never needs Python), builds the command line, the C
+# library and the extension (into .venv with maturin) and runs the pytest suite in
+# python/tests. The Cargo profile is PRESSRIDGE_PROFILE (release by default; scripts/test.sh
+# sets `ci`, whose build it has already made). scripts/test.sh calls this when
+# python/pyproject.toml exists; run it alone the same way.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 [ -x .venv/bin/python ] || scripts/setup.sh --python
@@ -12,13 +14,15 @@ export PYO3_PYTHON="$VIRTUAL_ENV/bin/python"
 
 echo "== cargo clippy -p pressridge-python -- -D warnings"
 cargo clippy -p pressridge-python --all-targets -- -D warnings
-echo "== cargo build --release --bin pressridge --lib (the CLI and the C library the tests compare against)"
-cargo build --release --bin pressridge --lib
-echo "== maturin develop --release (python/ into .venv)"
-(cd python && maturin develop --release --quiet)
+profile=${PRESSRIDGE_PROFILE:-release}
+echo "== cargo build --profile $profile --bin pressridge --lib (the CLI and the C library the tests compare against)"
+cargo build --profile "$profile" --bin pressridge --lib
+echo "== maturin develop --profile $profile (python/ into .venv)"
+(cd python && maturin develop --profile "$profile" --quiet)
 
 echo "== pytest python/tests"
-export PRESSRIDGE_BIN="$PWD/target/release/pressridge"
+export PRESSRIDGE_BIN="$PWD/target/$profile/pressridge"
+export PRESSRIDGE_LIB="$PWD/target/$profile/libpressridge.so"
 set +e
 python -m pytest python/tests -q -p no:cacheprovider "$@"
 rc=$?

@@ -5,19 +5,23 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh $( [ -f python/pyproject.toml ] && echo --python )
 
-echo "== cargo fmt --check"
+echo "== cargo fmt --check ($SECONDS s)"
 cargo fmt --all -- --check
-echo "== cargo clippy --all-targets -- -D warnings"
+echo "== cargo clippy --all-targets -- -D warnings ($SECONDS s)"
 cargo clippy --all-targets -- -D warnings
-echo "== cargo test"
-cargo test --all-targets
-cargo test --doc
+# One build for everything below: the `ci` profile (Cargo.toml) serves the Rust tests, the
+# Fortran/C bridge, the command line and the Python extension.
+export PRESSRIDGE_PROFILE=ci
+echo "== cargo test --profile ci ($SECONDS s)"
+cargo test --profile ci --all-targets
+cargo test --profile ci --doc
 
 if [ -f fortran-bridge/Makefile ]; then
-  echo "== Fortran and C bridge tests"
-  make -C fortran-bridge test
+  echo "== Fortran and C bridge tests ($SECONDS s)"
+  make -C fortran-bridge test PROFILE=ci
 fi
 if [ -f python/pyproject.toml ]; then
-  echo "== Python tests"
+  echo "== Python tests ($SECONDS s)"
   scripts/test-python.sh
 fi
+echo "== all checks passed in $SECONDS s"

@@ -9,6 +9,7 @@ from __future__ import annotations
 import ctypes
 import json
 import math
+import os
 import re
 from pathlib import Path
 
@@ -20,7 +21,9 @@ import pressridge as pr
 ROOT = Path(__file__).resolve().parents[2]
 CASES = ROOT / "tests" / "data" / "icepack" / "ridge_step_cases.jsonl"
 HEADER = ROOT / "include" / "pressridge.h"
-LIB = ROOT / "target" / "release" / "libpressridge.so"
+# The C library the tests compare against: PRESSRIDGE_LIB (scripts/test-python.sh sets it
+# to the build it made), else the release build.
+LIB = Path(os.environ.get("PRESSRIDGE_LIB", ROOT / "target" / "release" / "libpressridge.so"))
 
 
 def _num(x):
@@ -152,7 +155,7 @@ def _structs():
 @pytest.fixture(scope="module")
 def clib():
     if not LIB.is_file():
-        pytest.fail(f"{LIB} is not built: run scripts/test-python.sh (cargo build --release --lib)")
+        pytest.fail(f"{LIB} is not built: run scripts/test-python.sh (cargo build --release --lib), or set PRESSRIDGE_LIB")
     lib = ctypes.CDLL(str(LIB))
     return lib, _structs()
 
