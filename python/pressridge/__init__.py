@@ -90,19 +90,26 @@ class CfClampedWarning(UserWarning):
     the table's end values there."""
 
 
+def _aligned(a: _np.ndarray) -> _np.ndarray:
+    """``a``, or an aligned copy when its data are not aligned for its dtype (numpy allows
+    such views, e.g. arrays dask.distributed unpickles from a byte buffer; the extension
+    refuses them)."""
+    return a if a.flags.aligned else _np.require(a, requirements="A")
+
+
 def _f64(x: Any, name: str) -> _np.ndarray:
     try:
         a = _np.asarray(x, dtype=_np.float64)
     except (TypeError, ValueError) as e:
         raise ValueError(f"{name} must be an array of numbers: {e}") from None
-    return a
+    return _aligned(a)
 
 
 def _bool(x: Any, name: str) -> _np.ndarray:
     a = _np.asarray(x)
     if a.dtype != _np.bool_:
         raise ValueError(f"{name} must be a boolean array, got dtype {a.dtype}")
-    return a
+    return _aligned(a)
 
 
 def _params(params: dict, step: bool = False) -> list:

@@ -11,6 +11,11 @@ import numpy as np
 from . import _core
 
 
+def _flat(x: np.ndarray) -> np.ndarray:
+    """A contiguous, aligned 1-D float64 copy or view of ``x`` for the extension."""
+    return np.require(np.ravel(x), dtype=np.float64, requirements=["C", "A"])
+
+
 class Table:
     """A ridging lookup table.
 
@@ -118,7 +123,7 @@ class Table:
             np.asarray(thickness, dtype=np.float64), np.asarray(volume, dtype=np.float64)
         )
         vals, clamped = self._core.value(
-            name, self._set_index(set), np.ascontiguousarray(h).ravel(), np.ascontiguousarray(v).ravel()
+            name, self._set_index(set), _flat(h), _flat(v)
         )
         vals = vals.reshape(h.shape)
         clamped = clamped.reshape(h.shape)
@@ -131,7 +136,7 @@ class Table:
         at ridging-ice thickness ``thickness`` (m), interpolated and clamped like
         :meth:`value`."""
         h = np.asarray(thickness, dtype=np.float64)
-        vals, clamped = self._core.cf(self._set_index(set), np.ascontiguousarray(h).ravel())
+        vals, clamped = self._core.cf(self._set_index(set), _flat(h))
         vals = vals.reshape(h.shape)
         clamped = clamped.reshape(h.shape)
         if h.ndim == 0:

@@ -303,6 +303,34 @@ fn itd_err(e: ItdError, spatial: &[usize], order: Order) -> BindError {
     }
 }
 
+/// Refuses an array whose data are not aligned for its element type (numpy allows such
+/// views, e.g. arrays unpickled from a byte buffer by dask.distributed): reading it as an
+/// ndarray view would be undefined behaviour. The Python wrappers pass aligned copies.
+fn check_aligned<T: numpy::Element, D: ndarray::Dimension>(
+    var: &str,
+    x: &numpy::PyReadonlyArray<'_, T, D>,
+) -> PyResult<()> {
+    if (x.data() as usize) % std::mem::align_of::<T>() != 0 {
+        return Err(value_err(format!(
+            "{var}: the array's data are not aligned for its dtype; pass an aligned copy \
+             (numpy.require(x, requirements=\"A\"))"
+        ))
+        .into());
+    }
+    Ok(())
+}
+
+/// [`check_aligned`], then [`check_shape`].
+fn check_array<T: numpy::Element>(
+    var: &str,
+    x: &PyReadonlyArrayDyn<'_, T>,
+    expected: &[usize],
+    what: &str,
+) -> PyResult<()> {
+    check_aligned(var, x)?;
+    check_shape(var, x.shape(), expected, what)
+}
+
 fn check_shape(var: &str, found: &[usize], expected: &[usize], what: &str) -> PyResult<()> {
     if found != expected {
         return Err(value_err(format!(
@@ -333,6 +361,7 @@ fn category_shapes(
     aicen: &PyReadonlyArrayDyn<'_, f64>,
     vicen: &PyReadonlyArrayDyn<'_, f64>,
 ) -> PyResult<Vec<usize>> {
+    check_aligned("aicen", aicen)?;
     let shape = aicen.shape().to_vec();
     if shape.is_empty() || shape[0] == 0 {
         return Err(value_err(format!(
@@ -341,7 +370,7 @@ fn category_shapes(
         ))
         .into());
     }
-    check_shape("vicen", vicen.shape(), &shape, "the shape of aicen")?;
+    check_array("vicen", vicen, &shape, "the shape of aicen")?;
     Ok(shape[1..].to_vec())
 }
 
@@ -444,10 +473,10 @@ fn strength<'py>(
 ) -> PyResult<(Bound<'py, PyArrayDyn<f64>>, usize)> {
     let spatial = category_shapes(&aicen, &vicen)?;
     if let Some(a0) = &aice0 {
-        check_shape("aice0", a0.shape(), &spatial, "the spatial shape of aicen")?;
+        check_array("aice0", a0, &spatial, "the spatial shape of aicen")?;
     }
     if let Some(v) = &valid {
-        check_shape("valid", v.shape(), &spatial, "the spatial shape of aicen")?;
+        check_array("valid", v, &spatial, "the spatial shape of aicen")?;
     }
     let opts = StrengthOptions {
         participation: participation(participation_name)?,
@@ -485,7 +514,8 @@ fn strength<'py>(
 /// and the flattening order; for tests of the no-copy promise.
 #[pyfunction]
 #[pyo3(name = "_layout")]
-fn layout(aicen: PyReadonlyArrayDyn<'_, f64>) -> (String, String) {
+fn layout(aicen: PyReadonlyArrayDyn<'_, f64>) -> PyResult<(String, String)> {
+    check_aligned("aicen", &aicen)?;
     let a = aicen.as_array();
     let order = choose_order(&a);
     let kind = if a.ndim() == 0 || columns(a.view(), order).is_view() {
@@ -493,7 +523,7 @@ fn layout(aicen: PyReadonlyArrayDyn<'_, f64>) -> (String, String) {
     } else {
         "copy"
     };
-    (kind.into(), format!("{order:?}"))
+    Ok((kind.into(), format!("{order:?}")))
 }
 
 type RidgeOut<'py> = (
@@ -526,13 +556,13 @@ fn ridge_step<'py>(
     let full = aicen.shape().to_vec();
     let ncat = full[0];
     for (var, x) in [("convergence", &convergence), ("shear", &shear)] {
-        check_shape(var, x.shape(), &spatial, "the spatial shape of aicen")?;
+        check_array(var, x, &spatial, "the spatial shape of aicen")?;
     }
     if let Some(a0) = &aice0 {
-        check_shape("aice0", a0.shape(), &spatial, "the spatial shape of aicen")?;
+        check_array("aice0", a0, &spatial, "the spatial shape of aicen")?;
     }
     if let Some(v) = &valid {
-        check_shape("valid", v.shape(), &spatial, "the spatial shape of aicen")?;
+        check_array("valid", v, &spatial, "the spatial shape of aicen")?;
     }
     let opts = RidgeOptions {
         participation: participation(participation_name)?,
@@ -1154,22 +1184,22 @@ fn ridge_step_full<'py>(
     let spatial = category_shapes(&aicen, &vicen)?;
     let full = aicen.shape().to_vec();
     let ncat = full[0];
-    check_shape("vsnon", vsnon.shape(), &full, "the shape of aicen")?;
+    check_array("vsnon", &vsnon, &full, "the shape of aicen")?;
     let (n1, n2) = if rates {
         ("closing", "opening")
     } else {
         ("convergence", "shear")
     };
     for (var, x) in [(n1, &c1), (n2, &c2), ("tf", &tf)] {
-        check_shape(var, x.shape(), &spatial, "the spatial shape of aicen")?;
+        check_array(var, x, &spatial, "the spatial shape of aicen")?;
     }
     for (var, x) in [("aice0", &aice0), ("aice", &aice)] {
         if let Some(x) = x {
-            check_shape(var, x.shape(), &spatial, "the spatial shape of aicen")?;
+            check_array(var, x, &spatial, "the spatial shape of aicen")?;
         }
     }
     if let Some(v) = &valid {
-        check_shape("valid", v.shape(), &spatial, "the spatial shape of aicen")?;
+        check_array("valid", v, &spatial, "the spatial shape of aicen")?;
     }
     if !(dt > 0.0 && dt.is_finite()) {
         return Err(value_err(format!(
@@ -1194,9 +1224,9 @@ fn ridge_step_full<'py>(
     let mut tshape = vec![ncat, nt];
     tshape.extend_from_slice(&spatial);
     if let Some(t) = &trcrn {
-        check_shape(
+        check_array(
             "trcrn",
-            t.shape(),
+            t,
             &tshape,
             "(ncat, layout.ntrcr, spatial...) =",
         )?;
@@ -1887,6 +1917,8 @@ impl PyRidgeLookup {
         thickness: numpy::PyReadonlyArray1<'py, f64>,
         volume: numpy::PyReadonlyArray1<'py, f64>,
     ) -> PyResult<Pair<'py, bool>> {
+        check_aligned("thickness", &thickness)?;
+        check_aligned("volume", &volume)?;
         let h = thickness.as_array();
         let v = volume.as_array();
         if h.len() != v.len() {
@@ -1905,6 +1937,7 @@ impl PyRidgeLookup {
         set: usize,
         thickness: numpy::PyReadonlyArray1<'py, f64>,
     ) -> PyResult<Pair<'py, bool>> {
+        check_aligned("thickness", &thickness)?;
         let h = thickness.as_array();
         let t = &self.inner;
         lookup_each(py, h.len(), |i| {

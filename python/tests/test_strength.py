@@ -193,3 +193,26 @@ def test_releases_the_gil():
 def test_a_rust_panic_becomes_runtime_error(detach):
     with pytest.raises(RuntimeError, match="internal error .*deliberate test panic"):
         pr._core._panic_for_test(detach)
+
+
+def _unaligned(a):
+    """A copy of ``a`` whose data start one byte past an 8-byte boundary (numpy's
+    ``flags.aligned`` False), as dask.distributed can unpickle arrays from a byte buffer."""
+    a = np.ascontiguousarray(a, dtype=np.float64)
+    buf = np.zeros(a.nbytes + 8, dtype=np.uint8)
+    start = 1 if buf.ctypes.data % 8 == 0 else 8 - buf.ctypes.data % 8 + 1
+    u = buf[start : start + a.nbytes].view(np.float64).reshape(a.shape)
+    u[...] = a
+    assert not u.flags.aligned
+    return u
+
+
+def test_unaligned_arrays_are_copied_or_refused(itd):
+    # The public call copies unaligned input and gives the same bits; the extension itself
+    # refuses it with a ValueError naming the argument (a panic must not reach Python).
+    a, v, a0 = itd.aicen.values, itd.vicen.values, itd.aice0.values
+    want = pr.strength(a, v, a0)
+    got = pr.strength(_unaligned(a), _unaligned(v), _unaligned(a0))
+    np.testing.assert_array_equal(got, want)
+    with pytest.raises(ValueError, match="aicen: the array's data are not aligned"):
+        pr._core._layout(_unaligned(a))
