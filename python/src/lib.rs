@@ -1224,12 +1224,7 @@ fn ridge_step_full<'py>(
     let mut tshape = vec![ncat, nt];
     tshape.extend_from_slice(&spatial);
     if let Some(t) = &trcrn {
-        check_array(
-            "trcrn",
-            t,
-            &tshape,
-            "(ncat, layout.ntrcr, spatial...) =",
-        )?;
+        check_array("trcrn", t, &tshape, "(ncat, layout.ntrcr, spatial...) =")?;
     }
     let ro = RidgeOptions {
         participation: participation(participation_name)?,
