@@ -814,9 +814,15 @@ def campaign(
     *,
     threads: Optional[int] = None,
     progress: Any = True,
+    resume_from: Union[None, PathLike, Sequence[PathLike]] = None,
 ) -> CampaignResult:
     """Runs a seeded campaign (a spec TOML, as ``pressridge campaign``) into the result
     directory ``out``, skipping runs already there.
+
+    ``resume_from``: one or more earlier result directories or records-only archives of
+    the same campaign (e.g. ``data/paper/<set>``) whose finished runs are taken into
+    ``out`` (their records, without final states) instead of being run again, as the
+    command line's ``--resume-from``.
 
     With ``client=None`` the runs go to ``threads`` threads of this process (all cores by
     default). With a :class:`dask.distributed.Client` every run still to do becomes one
@@ -836,6 +842,10 @@ def campaign(
     """
     spec_p = _os.path.abspath(_os.fspath(spec))
     out_p = _os.path.abspath(_os.fspath(out))
+    if resume_from is not None:
+        dirs = [resume_from] if isinstance(resume_from, (str, bytes, _os.PathLike)) else resume_from
+        for d in dirs:
+            _core.campaign_adopt(spec_p, out_p, _os.path.abspath(_os.fspath(d)))
     bar = None
     if progress is True:
         show, bar = _progress.callback(True, "campaign", "runs")

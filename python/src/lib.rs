@@ -23,8 +23,8 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use pressridge::campaign::{
-    self, CampaignError, CampaignSpec, PlannedRun, Progress, prepare_campaign, run_campaign,
-    run_planned,
+    self, CampaignError, CampaignSpec, PlannedRun, Progress, adopt_records, prepare_campaign,
+    run_campaign, run_planned,
 };
 use pressridge::io::IoError;
 use pressridge::io::itd_netcdf::{NetcdfError, read_cf_table};
@@ -1675,6 +1675,21 @@ fn campaign_local(
     Ok(result?)
 }
 
+/// Takes the finished runs of a campaign from an earlier result directory or records-only
+/// archive into `out` (`campaign::adopt_records`); returns the number taken.
+#[pyfunction]
+fn campaign_adopt(
+    py: Python<'_>,
+    spec: PathBuf,
+    out: PathBuf,
+    archive: PathBuf,
+) -> PyResult<usize> {
+    detached(py, || {
+        let (s, base) = read_spec(&spec)?;
+        Ok(adopt_records(&s, &base, &out, &archive)?)
+    })
+}
+
 /// Prepares a campaign directory (`prepare_campaign`); returns (spec JSON, [planned run
 /// JSON] still to do, skipped, total).
 #[pyfunction]
@@ -1989,6 +2004,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(series_units, m)?)?;
     m.add_function(wrap_pyfunction!(campaign_local, m)?)?;
     m.add_function(wrap_pyfunction!(campaign_prepare, m)?)?;
+    m.add_function(wrap_pyfunction!(campaign_adopt, m)?)?;
     m.add_function(wrap_pyfunction!(campaign_run_planned, m)?)?;
     m.add_function(wrap_pyfunction!(tabulate, m)?)?;
     m.add_class::<PyRidgeLookup>()?;

@@ -155,3 +155,30 @@ def test_tabulate_refuses_an_incomplete_campaign_unless_partial_is_allowed(cli_c
     attrs = xr.load_dataset(tmp_path / "t.nc").attrs
     assert (attrs["runs_planned"], attrs["runs_tabulated"]) == (4, 3)
     assert attrs["partial"].startswith("yes") and ids[1] in attrs["partial"]
+
+
+def test_resume_from_an_archive_runs_only_what_it_lacks(cli_campaign, tiny_spec, tmp_path):
+    # A records-only archive of the command line's campaign with one run missing: the
+    # Python campaign takes the others and makes only that one, as --resume-from does.
+    src, _ = cli_campaign
+    arch = tmp_path / "archive"
+    for f in ("campaign.json", "plan.json"):
+        (arch / f).parent.mkdir(parents=True, exist_ok=True)
+        shutil.copy(src / f, arch / f)
+    ids = json.loads((src / "plan.json").read_text())
+    for i in ids[1:]:
+        (arch / "runs" / i).mkdir(parents=True)
+        shutil.copy(src / "runs" / i / "run.json", arch / "runs" / i / "run.json")
+    (arch / "RECORDS-ONLY").write_text("records only\n")
+    out = tmp_path / "out"
+    r = pr.campaign(tiny_spec, out, threads=1, progress=False, resume_from=arch)
+    assert (r.skipped, r.done) == (len(ids) - 1, 1)
+    assert (out / "runs" / ids[0] / "state.json").is_file()
+    assert not (out / "runs" / ids[1] / "state.json").exists()
+    for i in ids:
+        a = json.loads((src / "runs" / i / "run.json").read_text())
+        b = json.loads((out / "runs" / i / "run.json").read_text())
+        for d in (a, b):
+            d["summary"]["wall_seconds"] = 0
+            d["digest"] = None
+        assert a == b, i
