@@ -105,3 +105,15 @@ def ticks_during(call):
         done.wait(0.001)
     t.join()
     return state["result"], state["during"]
+
+
+@pytest.fixture()
+def sigint_handled():
+    """Python's own SIGINT handler for the test: a process started in the background by a
+    non-interactive shell inherits SIGINT ignored, and `_thread.interrupt_main` then does
+    nothing, so the Ctrl-C tests would test the launcher instead of the extension."""
+    import signal
+
+    old = signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
+    signal.signal(signal.SIGINT, old)

@@ -125,7 +125,7 @@ def test_errors(cluster, tiny_spec, tmp_path):
         pr.tabulate(out, tmp_path / "t.nc", points=1)
 
 
-def test_ctrl_c_stops_a_threaded_campaign_after_the_runs_in_flight(tiny_spec, tmp_path):
+def test_ctrl_c_stops_a_threaded_campaign_after_the_runs_in_flight(tiny_spec, tmp_path, sigint_handled):
     import _thread
     import threading
 

@@ -59,7 +59,7 @@ def test_releases_the_gil():
     assert during >= MIN_TICKS, during
 
 
-def test_ctrl_c_stops_a_run():
+def test_ctrl_c_stops_a_run(sigint_handled):
     import _thread
 
     timer = threading.Timer(0.3, _thread.interrupt_main)
