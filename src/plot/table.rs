@@ -553,13 +553,32 @@ where
 }
 
 /// A set's label as a legend or title shows it: `mu=1, mu_w=0.6` becomes
-/// `μ = 1, μ_w = 0.6`; other scene settings keep their key, with spaces around `=`.
+/// `μ = 1, μ_w = 0.6`; the scene settings of the paper's sets read as quantities in the
+/// paper's units (`sheet.e_top=400000000.0` as `E top = 0.4 GPa`, `floe.thickness=3.0` as
+/// `floe 3 m`, `sheet.speed=0.0625` as `U = 6.25 cm/s`, `duration=1600.0` as `1600 s`);
+/// other settings keep their key, with spaces around `=`.
 pub fn set_display(set: &str) -> String {
+    // (key, text before the value, scale from SI, unit)
+    const NAMED: [(&str, &str, f64, &str); 7] = [
+        ("sheet.e_top", "E top = ", 1e-9, " GPa"),
+        ("sheet.e_bottom", "E bottom = ", 1e-9, " GPa"),
+        ("floe.thickness", "floe ", 1.0, " m"),
+        ("sheet.speed", "U = ", 100.0, " cm/s"),
+        ("sheet.length", "sheet ", 1.0, " m"),
+        ("sheet.thickness", "h = ", 1.0, " m"),
+        ("duration", "", 1.0, " s"),
+    ];
     set.split(", ")
         .map(|part| match part.split_once('=') {
             Some(("mu", v)) => format!("μ = {v}"),
             Some(("mu_w", v)) => format!("μ_w = {v}"),
-            Some((k, v)) => format!("{k} = {v}"),
+            Some((k, v)) => match (NAMED.iter().find(|n| n.0 == k), v.parse::<f64>()) {
+                // Four decimals of the scaled value: 2.67e8 Pa shows as 0.267 GPa.
+                (Some((_, name, scale, unit)), Ok(x)) => {
+                    format!("{name}{}{unit}", (x * scale * 1e4).round() / 1e4)
+                }
+                _ => format!("{k} = {v}"),
+            },
             None => part.to_string(),
         })
         .collect::<Vec<_>>()
@@ -578,5 +597,14 @@ mod tests {
             "μ = 0.4, μ_w = 0.3, sheet.youngs_modulus = 1e8"
         );
         assert_eq!(set_display(""), "");
+        assert_eq!(
+            set_display("mu=1, mu_w=0.6, sheet.e_top=400000000.0, sheet.e_bottom=267000000.0"),
+            "μ = 1, μ_w = 0.6, E top = 0.4 GPa, E bottom = 0.267 GPa"
+        );
+        assert_eq!(
+            set_display("mu=1, mu_w=0.6, sheet.speed=0.0625, duration=1600.0, floe.thickness=3.0"),
+            "μ = 1, μ_w = 0.6, U = 6.25 cm/s, 1600 s, floe 3 m"
+        );
+        assert_eq!(set_display("sheet.speed=fast"), "sheet.speed = fast");
     }
 }
