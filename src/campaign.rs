@@ -727,20 +727,8 @@ pub fn prepare_campaign(
             out.display()
         )));
     }
-    let spec_path = out.join("campaign.json");
-    if spec_path.is_file() {
-        let old: CampaignSpec = read_json(&spec_path)?;
-        if old.axis != spec.axis
-            || old.set != spec.set
-            || old.sample_interval != spec.sample_interval
-        {
-            return Err(CampaignError::Mismatch(format!(
-                "{} holds a campaign with another grid; use a new output directory",
-                out.display()
-            )));
-        }
-    }
-    write_json(&spec_path, spec)?;
+    check_same_grid(spec, out)?;
+    write_json(&out.join("campaign.json"), spec)?;
     write_json(
         &out.join("plan.json"),
         &plan.iter().map(|p| p.id.clone()).collect::<Vec<_>>(),
@@ -751,12 +739,7 @@ pub fn prepare_campaign(
         let path = record_path(out, &p.id);
         // A record that is unreadable, copied from another run, or lacks its files is not a
         // finished run: the run is done again (its files are replaced atomically).
-        let finished = path
-            .is_file()
-            .then(|| read_json::<RunRecord>(&path).ok())
-            .flatten()
-            .filter(|r| r.verify(out, &p.id).is_ok());
-        if let Some(r) = finished {
+        if let Some(r) = finished_record(out, &p.id) {
             if r.scene != p.scene {
                 return Err(CampaignError::Mismatch(format!(
                     "{} was made with another scene than the spec now gives; use a new output directory",
@@ -773,6 +756,34 @@ pub fn prepare_campaign(
         todo,
         skipped,
     })
+}
+
+/// Refuses a result directory whose `campaign.json` holds another grid than `spec`.
+fn check_same_grid(spec: &CampaignSpec, out: &Path) -> Result<(), CampaignError> {
+    let spec_path = out.join("campaign.json");
+    if spec_path.is_file() {
+        let old: CampaignSpec = read_json(&spec_path)?;
+        if old.axis != spec.axis
+            || old.set != spec.set
+            || old.sample_interval != spec.sample_interval
+        {
+            return Err(CampaignError::Mismatch(format!(
+                "{} holds a campaign with another grid; use a new output directory",
+                out.display()
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// The record of planned run `id` in `out` when it is a finished run: readable, and
+/// consistent with its id, scene and files ([`RunRecord::verify`]).
+fn finished_record(out: &Path, id: &str) -> Option<RunRecord> {
+    let path = record_path(out, id);
+    path.is_file()
+        .then(|| read_json::<RunRecord>(&path).ok())
+        .flatten()
+        .filter(|r| r.verify(out, id).is_ok())
 }
 
 /// Takes the finished runs of this campaign from `archive` (e.g. a records-only archive of an
@@ -795,14 +806,10 @@ pub fn adopt_records(
             out.display()
         )));
     }
+    check_same_grid(spec, out)?;
     let mut taken = 0;
     for p in spec.plan(base_dir)? {
-        let have = record_path(out, &p.id);
-        if have.is_file()
-            && read_json::<RunRecord>(&have)
-                .ok()
-                .is_some_and(|r| r.verify(out, &p.id).is_ok())
-        {
+        if finished_record(out, &p.id).is_some() {
             continue;
         }
         let from = record_path(archive, &p.id);
@@ -826,7 +833,7 @@ pub fn adopt_records(
             scene: scene_digest(&r.id, r.seed, &r.scene),
             files: Vec::new(),
         });
-        write_json(&have, &r)?;
+        write_json(&record_path(out, &p.id), &r)?;
         taken += 1;
     }
     Ok(taken)
