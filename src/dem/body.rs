@@ -234,10 +234,6 @@ impl Drive {
     pub fn is_kinematic(&self) -> bool {
         self.u.is_some() && self.v.is_some() && self.omega.is_some()
     }
-    /// True when no degree of freedom is prescribed.
-    pub fn is_free(&self) -> bool {
-        self.u.is_none() && self.v.is_none() && self.omega.is_none()
-    }
 }
 
 /// What a body is in a ridging scene: it decides which boundary conditions act on it and

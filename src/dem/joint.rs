@@ -238,18 +238,6 @@ impl Joint {
         self.frame_with(b, V2::new(ca, sa), V2::new(cb, sb))
     }
 
-    /// Elastic normal stress at the ends of the intact span (Pa).
-    pub fn surface_stress(&self, b: &Bodies) -> SurfaceStress {
-        let (n, _, ua, ub, oa, ob) = self.frame(b);
-        let d0 = ob - oa;
-        let d1 = ub - ua;
-        let sig = |s: f64| self.modulus(s) * (d0 + d1 * s).dot(n) / self.gauge;
-        SurfaceStress {
-            top: sig(self.s_hi),
-            bottom: sig(self.s_lo),
-        }
-    }
-
     /// Elastic energy held by the intact span (J/m): ∫(E·δ_n² + G·δ_t²)/(2W) ds.
     pub fn stored_energy(&self, b: &Bodies) -> f64 {
         if !self.is_intact() {

@@ -368,11 +368,25 @@ where
     let top = finite_max(groups.iter().flat_map(up)).max(1.0);
     let bottom = finite_max(groups.iter().flat_map(down)).max(1.0);
     let title = "ensemble-averaged final profiles (1-m strips, mean ± 1 s.d. over seeds)";
+    // The legend goes in the upper left, above the level sheet: the axis rises until the
+    // legend (about 18 px per line of a 440-px plot, a fraction `f` of the height) clears
+    // the highest sail in the left half, (T − 1.15·top_left) ≥ f·(T + 1.1·bottom).
+    let f = (18.0 * (groups.len() as f64 + 0.5) / 440.0).min(0.6);
+    let half = first.x0 + 0.5 * (x1 - first.x0);
+    let top_left = finite_max(groups.iter().flat_map(|g| {
+        up(g)
+            .into_iter()
+            .enumerate()
+            .filter(|&(i, _)| g.mean.x0 + i as f64 * g.mean.dx < half)
+            .map(|(_, v)| v)
+            .collect::<Vec<_>>()
+    }))
+    .max(0.0);
     let (x, y) = (
         Axis::new(first.x0, x1, "x (m), floe nose at 0"),
         Axis::new(
             -(bottom * 1.1),
-            top * 1.8,
+            ((1.15 * top_left + f * 1.1 * bottom) / (1.0 - f)).max(top * 1.3),
             "sail height up, keel depth down (m)",
         ),
     );
@@ -433,7 +447,7 @@ where
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
         .label_font(("sans-serif", layout.fonts.legend))
-        .position(SeriesLabelPosition::LowerRight)
+        .position(SeriesLabelPosition::UpperLeft)
         .draw()
         .map_err(draw_err)?;
     root.present().map_err(draw_err)?;
