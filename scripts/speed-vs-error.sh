@@ -1,22 +1,36 @@
 #!/usr/bin/env bash
-# Regenerates the speed-against-error table (docs/speed-vs-error.md): runs the ensembles of
-# data/campaigns/speed-vs-error/ (resumable: finished runs are kept, re-running continues)
-# into runs/speed-vs-error/, then compares every configuration with the reference.
-#   scripts/speed-vs-error.sh [THREADS]      (several CPU-hours: run it under nohup)
-# The reference (and implicit-0.8) specs fix their step through the stable-limit estimate
-# of commit 0278a19: their published records were made with that commit's binary (see the
-# specs). The current binary runs them with another step; to remake the reference exactly,
-# build 0278a19 and run its campaign into runs/speed-vs-error/reference first (finished
-# runs are kept).
+# The speed-against-error table (docs/speed-vs-error.md).
+#
+#   scripts/speed-vs-error.sh            prints the table from the committed records
+#                                        (data/speed-vs-error/<config>, records-only
+#                                        archives): seconds
+#   scripts/speed-vs-error.sh --run [N]  first runs the ensembles of the configurations the
+#                                        current code makes (default, step-1.0) into
+#                                        runs/speed-vs-error/<config> on N threads, taking
+#                                        every committed run (--resume-from), then prints
+#                                        the table from those directories: CPU-hours, run
+#                                        it under nohup
+#
+# The reference (and implicit-0.8) rows were made by older binaries (commits 0278a19 and
+# b4f38ab, named in their specs): the stable-limit estimate changed after them, so the
+# current code would run their specs with another step. To add reference runs, build
+# 0278a19 and run its campaign with a spec of the missing seeds (`first_seed`), then copy
+# the run directories' run.json into data/speed-vs-error/reference/runs/ (docs/speed-vs-error.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-threads=${1:-$(nproc)}
 cargo build --release --bin pressridge --example speed_vs_error
-configs=(reference default)
-for c in "${configs[@]}"; do
-  ./target/release/pressridge campaign --spec "data/campaigns/speed-vs-error/$c.toml" \
-    --out "runs/speed-vs-error/$c" --threads "$threads"
-done
-args=()
-for c in "${configs[@]}"; do args+=("$c=runs/speed-vs-error/$c"); done
-./target/release/examples/speed_vs_error "${args[@]}"
+table=./target/release/examples/speed_vs_error
+if [ "${1:-}" = "--run" ]; then
+  threads=${2:-$(nproc)}
+  for c in default step-1.0; do
+    resume=()
+    [ -d "data/speed-vs-error/$c" ] && resume=(--resume-from "data/speed-vs-error/$c")
+    ./target/release/pressridge campaign --spec "data/campaigns/speed-vs-error/$c.toml" \
+      --out "runs/speed-vs-error/$c" "${resume[@]}" --threads "$threads"
+  done
+  "$table" reference=data/speed-vs-error/reference default=runs/speed-vs-error/default \
+    step-1.0=runs/speed-vs-error/step-1.0 implicit-2.32e-4=data/speed-vs-error/implicit-0.8
+else
+  "$table" reference=data/speed-vs-error/reference default=data/speed-vs-error/default \
+    step-1.0=data/speed-vs-error/step-1.0 implicit-2.32e-4=data/speed-vs-error/implicit-0.8
+fi
