@@ -358,7 +358,24 @@ fn tiny_campaign_is_resumable_and_complete() {
     }
     let nc = netcdf::open(&table).unwrap();
     let dim = |n: &str| nc.dimension(n).unwrap().len();
-    assert_eq!((dim("set"), dim("thickness"), dim("volume")), (1, 2, 11));
+    // One set told apart by its friction alone: the friction-grid layout.
+    assert!(nc.dimension("set").is_none());
+    assert_eq!(
+        (dim("thickness"), dim("mu"), dim("mu_w"), dim("volume")),
+        (2, 1, 1, 11)
+    );
+    let dims = |v: &str| -> Vec<String> {
+        nc.variable(v)
+            .unwrap()
+            .dimensions()
+            .iter()
+            .map(|d| d.name())
+            .collect()
+    };
+    assert_eq!(dims("work_mean"), ["thickness", "mu", "mu_w", "volume"]);
+    assert_eq!(dims("cf_by_set"), ["thickness", "mu", "mu_w"]);
+    assert_eq!(dims("work_fit"), ["mu", "mu_w", "volume"]);
+    assert_eq!(dims("mu"), ["mu"]);
     let units = |v: &str| match nc
         .variable(v)
         .unwrap()
@@ -751,20 +768,21 @@ values = [0.6, 1.0]
 
     let nc = netcdf::open(&table).unwrap();
     let get = |v: &str| -> Vec<f64> { nc.variable(v).unwrap().get_values(..).unwrap() };
-    assert_eq!(get("mu"), vec![1.0, 0.6]);
-    assert_eq!(get("mu_w"), vec![0.6, 0.6]);
+    // Sets told apart by friction alone: a (thickness, mu, mu_w) grid, axes ascending.
+    assert_eq!(get("mu"), vec![0.6, 1.0]);
+    assert_eq!(get("mu_w"), vec![0.6]);
     assert_eq!(get("thickness"), vec![0.25, 0.35]);
-    // Runs behind C_f: set 0 has both thicknesses (the shared 0.25 m run once), set 1 only
-    // 0.25 m; its C_f at 0.35 m is missing, not copied from the other set.
-    assert_eq!(get("cf_runs"), vec![1.0, 1.0, 1.0, 0.0]);
+    // Runs behind C_f: μ = 1.0 has both thicknesses (the shared 0.25 m run once), μ = 0.6
+    // only 0.25 m; its C_f at 0.35 m is missing, not copied from the other set.
+    assert_eq!(get("cf_runs"), vec![1.0, 1.0, 0.0, 1.0]);
     let cf_by_set = get("cf_by_set");
-    assert!(cf_by_set[3].is_nan());
-    assert_eq!(get("cf"), cf_by_set[..2].to_vec());
+    assert!(cf_by_set[2].is_nan());
+    assert_eq!(get("cf"), vec![cf_by_set[1], cf_by_set[3]]);
     let attr = |v: &str, a: &str| nc.variable(v).unwrap().attribute_value(a).unwrap().unwrap();
     assert_eq!(attr("cf", "mu"), netcdf::AttributeValue::Double(1.0));
     assert_eq!(
-        attr("cf_by_set", "coordinates"),
-        netcdf::AttributeValue::Str("mu mu_w".into())
+        nc.attribute("set_mu").unwrap().value().unwrap(),
+        netcdf::AttributeValue::Doubles(vec![1.0, 0.6])
     );
     drop(nc);
 
@@ -773,7 +791,7 @@ values = [0.6, 1.0]
     let low = lut.cf_table_at_friction(0.6, 0.6).unwrap();
     assert_eq!(
         (low.thickness(), low.values()),
-        (&[0.25][..], &cf_by_set[2..3])
+        (&[0.25][..], &cf_by_set[0..1])
     );
     assert_eq!(low.friction(), Some((0.6, 0.6)));
     let e = lut.friction_set(0.4, 0.3).unwrap_err().to_string();

@@ -164,7 +164,7 @@ def _cf_table_nodes(cf: CfLike, friction: Any) -> Tuple[Optional[tuple], Optiona
         if pairs is None:
             if f is not None:
                 raise ValueError(
-                    f"{cf.path}: the table has no friction coordinates mu(set), mu_w(set) (made "
+                    f"{cf.path}: the table has no friction coordinates mu, mu_w (made "
                     "by an older pressridge); re-tabulate its campaign to choose C_f by friction"
                 )
             return cf.cf_nodes(0), None

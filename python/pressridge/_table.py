@@ -146,7 +146,7 @@ class Table:
     @property
     def friction(self) -> Optional[List[Tuple[float, float]]]:
         """The friction pair (mu, mu_w) of each set (dimensionless, between blocks above
-        and below the water line), from the table's ``mu(set)`` and ``mu_w(set)``; None for a
+        and below the water line), from the table's ``mu`` and ``mu_w`` coordinates; None for a
         table made before they were written."""
         f = self._core.friction()
         return None if f is None else [(float(a), float(b)) for a, b in f]

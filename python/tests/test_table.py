@@ -26,7 +26,9 @@ def test_axes_and_fields(table, cli_campaign):
     assert {"work_mean", "cf", "cf_by_set", "force_fit"} <= set(table.variables)
     f = table.field("work_mean")
     assert f["dims"] == ("set", "thickness", "volume") and f["units"] == "J m-1"
-    np.testing.assert_array_equal(f["data"], ds.work_mean.values)
+    # The file holds the one set as the (mu, mu_w) cell of a friction grid.
+    on_grid = ds.work_mean.transpose("mu", "mu_w", "thickness", "volume").values
+    np.testing.assert_array_equal(f["data"], on_grid.reshape(f["data"].shape))
     assert "tiny" in table.attribute("campaign_spec")
     assert table.attribute("no such attribute") is None
     xr.testing.assert_identical(table.to_xarray(), ds)
@@ -37,10 +39,14 @@ def test_table_opens_in_xarray_with_its_dimensions_and_units(cli_campaign):
     """Issue 5: the tiny campaign's table (2 thicknesses, one set, 11 volumes) is a CF file
     that xarray opens, with units on every variable."""
     with xr.open_dataset(cli_campaign[1]) as ds:
-        assert dict(ds.sizes) == {"set": 1, "thickness": 2, "volume": 11}
+        assert dict(ds.sizes) == {"thickness": 2, "mu": 1, "mu_w": 1, "volume": 11}
         assert ds.attrs["Conventions"] == "CF-1.8"
-        assert ds.work_mean.dims == ("set", "thickness", "volume")
-        assert ds.work_fit.dims == ("set", "volume")
+        assert ds.work_mean.dims == ("thickness", "mu", "mu_w", "volume")
+        assert ds.work_fit.dims == ("mu", "mu_w", "volume")
+        assert ds.cf_by_set.dims == ("thickness", "mu", "mu_w")
+        # Friction is chosen by value, as a modeller would with xarray.
+        at = ds.cf_by_set.sel(mu=1.0, mu_w=0.6)
+        np.testing.assert_array_equal(at.values, ds.cf.values)
         assert ds.cf.dims == ("thickness",)
         for name, var in ds.variables.items():
             assert var.attrs.get("units"), f"{name} has no units"

@@ -1022,7 +1022,7 @@ fn check_volume_range(path: &Path, g: &ItdGrid) -> Result<(), NetcdfError> {
 }
 
 /// Reads the C_f at a friction pair (μ, μ_w; dimensionless) from `path`: from a ridging
-/// table of `pressridge tabulate` (with coordinates `mu(set)`, `mu_w(set)`), the set at
+/// table of `pressridge tabulate` (with friction coordinates `mu` and `mu_w`), the set at
 /// `friction`, by default [`crate::table::tabulate::DEFAULT_FRICTION`] (μ = 1.0, μ_w = 0.6,
 /// Hopkins 1994's thickness set); from a plain C_f table (1-D `thickness`, `cf`), its one
 /// curve, labelled with the friction of the `cf` attributes `mu`, `mu_w` when present. A

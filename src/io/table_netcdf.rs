@@ -1,15 +1,26 @@
 //! The ridging lookup table as NetCDF (CF-1.8 conventions, 64-bit-offset format, NaN marks
 //! cells that no run reached).
 //!
-//! Dimensions `set`, `thickness` (m), `volume` (m³/m). Each set's friction pair is in the
-//! coordinate variables `mu(set)` and `mu_w(set)` (units "1"), named in the `coordinates`
-//! attribute of every variable on `set`: a host model chooses C_f by friction, not by index
-//! (the sets need not form a full μ × μ_w × thickness grid — the paper ran its friction set
-//! at one thickness — so they stay a list). The 1-D variables `thickness` and `cf` (the C_f
-//! of the set at μ = 1.0, μ_w = 0.6, else of the first set; its attributes `mu` and `mu_w`
-//! say which) make the file usable directly as a plain C_f table; `cf_by_set(set,
-//! thickness)` holds every set's, with `cf_std`, `cf_conf_lo`, `cf_conf_hi` (95 % confidence
-//! interval of the mean) and `cf_runs`.
+//! Two layouts, chosen by what tells the table's sets apart:
+//! - **Friction grid** (the shipped table): when the sets differ only in their friction pair
+//!   (every set label is `mu=…, mu_w=…`, every pair finite and distinct), the dimensions are
+//!   `thickness` (m), `mu`, `mu_w` (units "1", coordinate variables) and `volume` (m³/m):
+//!   `work_mean(thickness, mu, mu_w, volume)`, `cf_by_set(thickness, mu, mu_w)`,
+//!   `work_fit(mu, mu_w, volume)`, `pooled_work_a(mu, mu_w)`, … A (μ, μ_w) cell that no set
+//!   fills is NaN, with `runs` and `cf_runs` 0: the paper ran its friction set at one
+//!   thickness only, and nothing is borrowed across cells. The global attributes `sets`,
+//!   `set_mu` and `set_mu_w` list the sets in their tabulated order (the default pair
+//!   first), which the reader restores.
+//! - **Set list** (any other table, e.g. sets that differ in modulus or speed): dimensions
+//!   `set`, `thickness`, `volume`; each set's friction pair in `mu(set)` and `mu_w(set)`,
+//!   named in the `coordinates` attribute of every variable on `set`.
+//!
+//! In both, the 1-D variables `thickness` and `cf` (the C_f of the set at μ = 1.0, μ_w = 0.6,
+//! else of the first set; its attributes `mu` and `mu_w` say which) make the file usable
+//! directly as a plain C_f table; `cf_by_set` holds every set's, with `cf_std`, `cf_conf_lo`,
+//! `cf_conf_hi` (95 % confidence interval of the mean) and `cf_runs`. The variable names
+//! are the same in both layouts, and [`RidgeLookup::open`](crate::table::lookup::RidgeLookup)
+//! reads both into the same sets.
 
 use super::itd_netcdf::NetcdfError;
 use crate::table::tabulate::RidgeTable;
@@ -59,9 +70,19 @@ fn write_ridge_table_at(
 ) -> Result<(), NetcdfError> {
     let e = nc_err(path);
     let (ns, nh, nv) = (t.sets.len(), t.thickness.len(), t.volume.len());
+    let grid = FrictionGrid::of(t);
     let mut f = netcdf::create_with(tmp, netcdf::Options::_64BIT_OFFSET).map_err(&e)?;
-    f.add_dimension("set", ns).map_err(&e)?;
-    f.add_dimension("thickness", nh).map_err(&e)?;
+    match &grid {
+        Some(g) => {
+            f.add_dimension("thickness", nh).map_err(&e)?;
+            f.add_dimension("mu", g.mu.len()).map_err(&e)?;
+            f.add_dimension("mu_w", g.mu_w.len()).map_err(&e)?;
+        }
+        None => {
+            f.add_dimension("set", ns).map_err(&e)?;
+            f.add_dimension("thickness", nh).map_err(&e)?;
+        }
+    }
     f.add_dimension("volume", nv).map_err(&e)?;
     type Var<'a> = (&'a str, &'a [&'a str], &'a str, &'a str, Vec<f64>);
     let flat3 =
@@ -353,12 +374,37 @@ fn write_ridge_table_at(
             flat2(&t.ratio_fit),
         ),
     ];
+    // The friction grid: every variable on `set` moves to (μ, μ_w) cells.
+    type OnDims<'a> = (&'a str, Vec<&'a str>, &'a str, &'a str, Vec<f64>);
+    let vars: Vec<OnDims> = match &grid {
+        None => vars
+            .into_iter()
+            .map(|(n, d, u, l, x)| (n, d.to_vec(), u, l, x))
+            .collect(),
+        Some(g) => vars
+            .into_iter()
+            .map(|(n, d, u, l, x)| match n {
+                "mu" => (n, vec!["mu"], u, l, g.mu.clone()),
+                "mu_w" => (n, vec!["mu_w"], u, l, g.mu_w.clone()),
+                _ if d.first() == Some(&"set") => {
+                    let count = matches!(n, "runs" | "cf_runs");
+                    let fill = if count { 0.0 } else { f64::NAN };
+                    let (dims, data) = g.spread(&d[1..], &x, fill, (nh, nv));
+                    (n, dims, u, l, data)
+                }
+                _ => (n, d.to_vec(), u, l, x),
+            })
+            .collect(),
+    };
     for (name, dims, units, long, _) in &vars {
         let mut v = f.add_variable::<f64>(name, dims).map_err(&e)?;
         v.put_attribute("units", *units).map_err(&e)?;
         v.put_attribute("long_name", *long).map_err(&e)?;
-        v.put_attribute("_FillValue", f64::NAN).map_err(&e)?;
-        if dims.first() == Some(&"set") && !matches!(*name, "mu" | "mu_w") {
+        // CF: a coordinate variable (named as its one dimension) has no missing values.
+        if dims.as_slice() != [*name] {
+            v.put_attribute("_FillValue", f64::NAN).map_err(&e)?;
+        }
+        if grid.is_none() && dims.first() == Some(&"set") && !matches!(*name, "mu" | "mu_w") {
             v.put_attribute("coordinates", "mu mu_w").map_err(&e)?;
         }
         if *name == "cf" {
@@ -376,6 +422,10 @@ fn write_ridge_table_at(
         .map_err(&e)?;
     f.add_attribute("sets", t.sets.join("; ").as_str())
         .map_err(&e)?;
+    if grid.is_some() {
+        f.add_attribute("set_mu", t.mu.clone()).map_err(&e)?;
+        f.add_attribute("set_mu_w", t.mu_w.clone()).map_err(&e)?;
+    }
     let seeds: Vec<String> = t.seeds.iter().map(u64::to_string).collect();
     f.add_attribute("seeds", seeds.join(" ").as_str())
         .map_err(&e)?;
@@ -416,8 +466,102 @@ fn write_ridge_table_at(
         v.put_values(data, ..).map_err(&e)?;
     }
     f.close().map_err(&e)?;
-    let _ = (ns, nh);
     Ok(())
+}
+
+/// The (μ, μ_w) grid of a table whose sets differ only in their friction pair.
+struct FrictionGrid {
+    /// Distinct μ, ascending.
+    mu: Vec<f64>,
+    /// Distinct μ_w, ascending.
+    mu_w: Vec<f64>,
+    /// Each set's cell (index into `mu`, index into `mu_w`).
+    cell: Vec<(usize, usize)>,
+}
+
+impl FrictionGrid {
+    /// The grid of `t`, or `None` when a set differs from another in more than friction
+    /// (its label says so), a pair is not finite, or two sets share a pair.
+    fn of(t: &RidgeTable) -> Option<Self> {
+        let pairs: Vec<(f64, f64)> = t.mu.iter().copied().zip(t.mu_w.iter().copied()).collect();
+        if pairs.is_empty() || pairs.len() != t.sets.len() {
+            return None;
+        }
+        for (label, &(m, w)) in t.sets.iter().zip(&pairs) {
+            if !(m.is_finite() && w.is_finite()) || *label != format!("mu={m}, mu_w={w}") {
+                return None;
+            }
+        }
+        Self::from_pairs(&pairs)
+    }
+
+    /// The grid spanned by `pairs`, `None` when two are equal.
+    fn from_pairs(pairs: &[(f64, f64)]) -> Option<Self> {
+        let axis = |k: fn(&(f64, f64)) -> f64| {
+            let mut v: Vec<f64> = pairs.iter().map(k).collect();
+            v.sort_by(f64::total_cmp);
+            v.dedup();
+            v
+        };
+        let (mu, mu_w) = (axis(|p| p.0), axis(|p| p.1));
+        let at = |v: &[f64], x: f64| v.iter().position(|&y| y == x);
+        let cell: Vec<(usize, usize)> = pairs
+            .iter()
+            .map(|&(m, w)| Some((at(&mu, m)?, at(&mu_w, w)?)))
+            .collect::<Option<_>>()?;
+        let mut seen = cell.clone();
+        seen.sort_unstable();
+        seen.dedup();
+        (seen.len() == cell.len()).then_some(Self { mu, mu_w, cell })
+    }
+
+    /// Spreads `data`, laid out (set, `rest`…) with `rest` ⊆ (thickness, volume) of `nh`
+    /// thicknesses and `nv` volumes, onto the grid: dimensions (thickness?, mu, mu_w,
+    /// volume?), cells without a set `fill`.
+    fn spread<'a>(
+        &self,
+        rest: &[&'a str],
+        data: &[f64],
+        fill: f64,
+        (nh, nv): (usize, usize),
+    ) -> (Vec<&'a str>, Vec<f64>) {
+        let (nm, nw) = (self.mu.len(), self.mu_w.len());
+        let has = |d: &str| rest.contains(&d);
+        let outer = if has("thickness") { nh } else { 1 };
+        let vol = if has("volume") { nv } else { 1 };
+        let mut out = vec![fill; outer * nm * nw * vol];
+        for (s, &(i, j)) in self.cell.iter().enumerate() {
+            for o in 0..outer {
+                for v in 0..vol {
+                    out[((o * nm + i) * nw + j) * vol + v] = data[(s * outer + o) * vol + v];
+                }
+            }
+        }
+        let mut dims = Vec::new();
+        if has("thickness") {
+            dims.push("thickness");
+        }
+        dims.extend(["mu", "mu_w"]);
+        if has("volume") {
+            dims.push("volume");
+        }
+        (dims, out)
+    }
+
+    /// Gathers a grid field back into set order: the inverse of [`FrictionGrid::spread`]
+    /// for `outer` thickness rows (1 without) and `vol` volumes (1 without).
+    fn gather(&self, data: &[f64], outer: usize, vol: usize) -> Vec<f64> {
+        let (nm, nw) = (self.mu.len(), self.mu_w.len());
+        let mut out = Vec::with_capacity(self.cell.len() * outer * vol);
+        for &(i, j) in &self.cell {
+            for o in 0..outer {
+                for v in 0..vol {
+                    out.push(data[((o * nm + i) * nw + j) * vol + v]);
+                }
+            }
+        }
+        out
+    }
 }
 
 impl crate::table::lookup::RidgeLookup {
@@ -448,40 +592,120 @@ impl crate::table::lookup::RidgeLookup {
         };
         let thickness = axis("thickness")?;
         let volume = axis("volume")?;
-        let nsets = file.dimension("set").ok_or_else(|| missing("set"))?.len();
         let mut attributes = std::collections::BTreeMap::new();
         for a in file.attributes() {
             if let Ok(netcdf::AttributeValue::Str(s)) = a.value() {
                 attributes.insert(a.name().to_string(), s);
             }
         }
-        let mut sets: Vec<String> = attributes
+        let labels: Vec<String> = attributes
             .get("sets")
             .map(|s| s.split("; ").map(str::to_string).collect())
             .unwrap_or_default();
-        if sets.len() != nsets {
-            sets = (0..nsets).map(|k| format!("set {k}")).collect();
-        }
+        // The friction-grid layout: the sets are (μ, μ_w) cells, listed in the attributes
+        // `set_mu`, `set_mu_w` (every cell, row by row, when a file lacks them).
+        let grid = if file.dimension("set").is_none() && file.dimension("mu").is_some() {
+            let (mu, mu_w) = (axis("mu")?, axis("mu_w")?);
+            let doubles = |a: &str| match file.attribute(a).map(|x| x.value()) {
+                Some(Ok(netcdf::AttributeValue::Doubles(v))) => Some(v),
+                Some(Ok(netcdf::AttributeValue::Double(v))) => Some(vec![v]),
+                _ => None,
+            };
+            let pairs: Vec<(f64, f64)> = match (doubles("set_mu"), doubles("set_mu_w")) {
+                (Some(m), Some(w)) if m.len() == w.len() => m.into_iter().zip(w).collect(),
+                _ => mu
+                    .iter()
+                    .flat_map(|&m| mu_w.iter().map(move |&w| (m, w)))
+                    .collect(),
+            };
+            let g = FrictionGrid::from_pairs(&pairs)
+                .filter(|g| g.mu == mu && g.mu_w == mu_w)
+                .ok_or_else(|| NetcdfError::Shape {
+                    path: path.to_path_buf(),
+                    var: "set_mu, set_mu_w".into(),
+                    expected: "distinct (mu, mu_w) pairs spanning the mu and mu_w axes".into(),
+                    found: format!("{pairs:?}"),
+                })?;
+            Some((g, pairs))
+        } else {
+            None
+        };
+        let nsets = match &grid {
+            Some((g, _)) => g.cell.len(),
+            None => file.dimension("set").ok_or_else(|| missing("set"))?.len(),
+        };
+        let sets: Vec<String> = match &grid {
+            _ if labels.len() == nsets => labels,
+            Some((_, pairs)) => pairs
+                .iter()
+                .map(|(m, w)| format!("mu={m}, mu_w={w}"))
+                .collect(),
+            None => (0..nsets).map(|k| format!("set {k}")).collect(),
+        };
         let mut fields = Vec::new();
+        if let Some((_, pairs)) = &grid {
+            for (name, long, k) in [
+                (
+                    "mu",
+                    "friction coefficient between ice blocks above the water line",
+                    0,
+                ),
+                (
+                    "mu_w",
+                    "friction coefficient between ice blocks below the water line",
+                    1,
+                ),
+            ] {
+                let data = pairs
+                    .iter()
+                    .map(|p| if k == 0 { p.0 } else { p.1 })
+                    .collect();
+                fields.push((name.to_string(), Field::new(Axes::SET, "1", long, data)));
+            }
+        }
         for v in file.variables() {
             let name = v.name();
-            if name == "thickness" || name == "volume" {
+            if matches!(name.as_str(), "thickness" | "volume")
+                || (grid.is_some() && matches!(name.as_str(), "mu" | "mu_w"))
+            {
                 continue;
             }
             let d: Vec<String> = v.dimensions().iter().map(|d| d.name()).collect();
+            let on = |x: &str| d.iter().any(|y| y == x);
             let axes = Axes {
-                set: d.iter().any(|x| x == "set"),
-                thickness: d.iter().any(|x| x == "thickness"),
-                volume: d.iter().any(|x| x == "volume"),
+                set: on("set") || (grid.is_some() && on("mu")),
+                thickness: on("thickness"),
+                volume: on("volume"),
             };
-            if d.is_empty() || axes.names() != d {
+            let expected: Vec<String> = match &grid {
+                Some(_) if axes.set => {
+                    let mut x = Vec::new();
+                    if axes.thickness {
+                        x.push("thickness".to_string());
+                    }
+                    x.extend(["mu".to_string(), "mu_w".to_string()]);
+                    if axes.volume {
+                        x.push("volume".to_string());
+                    }
+                    x
+                }
+                _ => axes.names().iter().map(|x| x.to_string()).collect(),
+            };
+            if d.is_empty() || expected != d {
                 continue; // not a lookup field (another layout)
             }
             let text = |a: &str| match v.attribute_value(a) {
                 Some(Ok(netcdf::AttributeValue::Str(s))) => s,
                 _ => String::new(),
             };
-            let data = v.get_values::<f64, _>(..).map_err(&e)?;
+            let mut data = v.get_values::<f64, _>(..).map_err(&e)?;
+            if let Some((g, _)) = &grid
+                && axes.set
+            {
+                let outer = if axes.thickness { thickness.len() } else { 1 };
+                let vol = if axes.volume { volume.len() } else { 1 };
+                data = g.gather(&data, outer, vol);
+            }
             fields.push((
                 name,
                 Field::new(axes, &text("units"), &text("long_name"), data),

@@ -172,7 +172,7 @@ pub enum LookupError {
     },
     /// The table has no friction coordinates (it was made before they were written).
     #[error(
-        "the table has no friction coordinates mu(set), mu_w(set): it was made by an older pressridge; re-run `pressridge tabulate` on its campaign to choose C_f by friction"
+        "the table has no friction coordinates mu, mu_w: it was made by an older pressridge; re-run `pressridge tabulate` on its campaign to choose C_f by friction"
     )]
     NoFriction,
 }
@@ -264,7 +264,8 @@ impl RidgeLookup {
     }
 
     /// The friction pair (μ, μ_w) of each set (dimensionless), from the coordinate variables
-    /// `mu(set)` and `mu_w(set)`; `None` for a table made before they were written.
+    /// `mu` and `mu_w` (a friction grid or `mu(set)`, `mu_w(set)`); `None` for a table made
+    /// before they were written.
     pub fn friction(&self) -> Option<Vec<(f64, f64)>> {
         let (mu, mu_w) = (self.fields.get("mu")?, self.fields.get("mu_w")?);
         if mu.axes != Axes::SET || mu_w.axes != Axes::SET {
