@@ -1,0 +1,157 @@
+//! Saving and restoring a [`World`]: [`Snapshot`], a complete serialisable copy of the
+//! state from which stepping continues bit for bit.
+
+use super::*;
+
+impl World {
+    /// A complete, serialisable copy of the state: restoring it and stepping gives the
+    /// same results bit for bit as stepping this world.
+    pub fn snapshot(&self) -> Snapshot {
+        let b = &self.bodies;
+        Snapshot {
+            format: SNAPSHOT_FORMAT,
+            time: self.time,
+            steps: self.steps,
+            dt: self.dt,
+            params: self.params.clone(),
+            bodies: (0..b.len())
+                .map(|i| BodyState {
+                    shape: b.shape[i],
+                    pos: b.pos[i],
+                    theta: b.theta[i],
+                    vel: b.vel[i],
+                    omega: b.omega[i],
+                    drive: b.drive[i],
+                    role: b.role[i],
+                    block: b.block[i],
+                })
+                .collect(),
+            contacts: self.contacts.contacts().to_vec(),
+            joints: self.joints.joints().to_vec(),
+            boundary: self.boundary.clone(),
+            loads: self.loads.clone(),
+            blocks_broken: self.blocks_broken,
+            handovers: self.handovers,
+            ledger: self.acc,
+        }
+    }
+
+    /// Rebuilds a world from a [`Snapshot`].
+    pub fn from_snapshot(s: &Snapshot) -> Result<World, WorldError> {
+        if s.format != SNAPSHOT_FORMAT {
+            return Err(WorldError::State(format!(
+                "format {} is not the supported {SNAPSHOT_FORMAT}",
+                s.format
+            )));
+        }
+        let mut w = World::new(s.params.clone())?;
+        for bs in &s.bodies {
+            let i = w
+                .bodies
+                .push(bs.shape, w.params.ice_density, bs.pos, bs.theta, bs.drive);
+            w.bodies.vel[i as usize] = bs.vel;
+            w.bodies.omega[i as usize] = bs.omega;
+            w.bodies.role[i as usize] = bs.role;
+            w.bodies.block[i as usize] = bs.block;
+        }
+        if s.joints
+            .iter()
+            .any(|j| j.a as u64 >= nb_of(s) || j.b as u64 >= nb_of(s))
+        {
+            return Err(WorldError::State("a joint names a missing body".into()));
+        }
+        w.joints.restore(s.joints.clone());
+        w.boundary = s.boundary.clone();
+        w.loads = s.loads.clone();
+        w.blocks_broken = s.blocks_broken;
+        w.handovers = s.handovers;
+        let nb = w.bodies.len() as u64;
+        if s.contacts
+            .iter()
+            .any(|c| (c.key >> 32) >= nb || (c.key & 0xffff_ffff) >= nb)
+        {
+            return Err(WorldError::State("a contact names a missing body".into()));
+        }
+        w.contacts.restore(s.contacts.clone());
+        w.acc = s.ledger;
+        w.time = s.time;
+        w.steps = s.steps;
+        w.dt = s.dt;
+        Ok(w)
+    }
+}
+
+/// Version of the [`Snapshot`] layout.
+pub const SNAPSHOT_FORMAT: u32 = 2;
+
+fn nb_of(s: &Snapshot) -> u64 {
+    s.bodies.len() as u64
+}
+
+/// One body in a [`Snapshot`].
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BodyState {
+    /// Outline relative to the centroid.
+    pub shape: Shape,
+    /// Centroid (m).
+    pub pos: V2,
+    /// Orientation (rad).
+    pub theta: f64,
+    /// Velocity at the last half step (m/s).
+    pub vel: V2,
+    /// Angular velocity at the last half step (rad/s).
+    pub omega: f64,
+    /// Prescribed degrees of freedom.
+    pub drive: Drive,
+    /// Role in the scene.
+    #[serde(default)]
+    pub role: Role,
+    /// Nominal rectangle and bevels, for rectangular blocks.
+    #[serde(default)]
+    pub block: Option<Block>,
+}
+
+impl BodyState {
+    /// The body's outline in world coordinates (m).
+    pub fn world_outline(&self) -> crate::dem::geometry::Outline {
+        let (s, c) = self.theta.sin_cos();
+        let mut o = crate::dem::geometry::Outline::default();
+        o.set_transformed(self.shape.outline(), c, s, self.pos);
+        o
+    }
+}
+
+/// The complete state of a [`World`], serialisable (JSON via [`crate::io`]).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Snapshot {
+    /// Layout version, [`SNAPSHOT_FORMAT`].
+    pub format: u32,
+    /// Simulated time (s).
+    pub time: f64,
+    /// Steps taken.
+    pub steps: u64,
+    /// Time step (s).
+    pub dt: f64,
+    /// Parameters.
+    pub params: WorldParams,
+    /// Bodies.
+    pub bodies: Vec<BodyState>,
+    /// Active contacts with their history.
+    pub contacts: Vec<Contact>,
+    /// Joints with their cracks.
+    pub joints: Vec<Joint>,
+    /// Boundary conditions.
+    pub boundary: Boundary,
+    /// External loads.
+    pub loads: Vec<(BodyId, V2)>,
+    /// Joints severed so far.
+    pub blocks_broken: u64,
+    /// Contacts born overlapping so far (absent in older snapshots, which predate the
+    /// hand-over).
+    #[serde(default)]
+    pub handovers: Handovers,
+    /// Ledger integrals.
+    pub ledger: Accumulators,
+}
