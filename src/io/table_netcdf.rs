@@ -721,3 +721,45 @@ impl crate::table::lookup::RidgeLookup {
         })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::FrictionGrid;
+
+    #[test]
+    fn friction_grid_spreads_and_gathers_in_set_order() {
+        // Three sets on a 2 × 2 grid, the default pair first; (0.6, 0.3) has no set.
+        let pairs = [(1.0, 0.6), (0.6, 0.6), (1.0, 0.3)];
+        let g = FrictionGrid::from_pairs(&pairs).unwrap();
+        assert_eq!(
+            (g.mu.as_slice(), g.mu_w.as_slice()),
+            (&[0.6, 1.0][..], &[0.3, 0.6][..])
+        );
+        assert_eq!(g.cell, vec![(1, 1), (0, 1), (1, 0)]);
+        // (set, thickness = 2, volume = 3), value = 100·set + 10·h + v.
+        let data: Vec<f64> = (0..3)
+            .flat_map(|s| {
+                (0..2).flat_map(move |h| (0..3).map(move |v| (100 * s + 10 * h + v) as f64))
+            })
+            .collect();
+        let (dims, grid) = g.spread(&["thickness", "volume"], &data, f64::NAN, (2, 3));
+        assert_eq!(dims, ["thickness", "mu", "mu_w", "volume"]);
+        assert_eq!(grid.len(), 2 * 2 * 2 * 3);
+        // (h = 1, μ = 0.6, μ_w = 0.6) is set 1; (h = 0, μ = 0.6, μ_w = 0.3) has no set.
+        let at = |h: usize, i: usize, j: usize, v: usize| grid[((h * 2 + i) * 2 + j) * 3 + v];
+        assert_eq!(at(1, 0, 1, 2), 112.0);
+        assert!(grid[..3].iter().all(|x| x.is_nan()));
+        assert_eq!(g.gather(&grid, 2, 3), data);
+        // (set) alone → (mu, mu_w), counts filled with 0.
+        let (dims, grid) = g.spread(&[], &[7.0, 8.0, 9.0], 0.0, (2, 3));
+        assert_eq!(dims, ["mu", "mu_w"]);
+        assert_eq!(grid, vec![0.0, 8.0, 9.0, 7.0]);
+        assert_eq!(g.gather(&grid, 1, 1), vec![7.0, 8.0, 9.0]);
+    }
+
+    #[test]
+    fn sets_sharing_a_friction_pair_have_no_grid() {
+        assert!(FrictionGrid::from_pairs(&[(1.0, 0.6), (1.0, 0.6)]).is_none());
+        assert!(FrictionGrid::from_pairs(&[]).is_some_and(|g| g.cell.is_empty()));
+    }
+}
