@@ -7,6 +7,7 @@
 //! - [`tabulate`] — campaign records to a lookup table (ensemble statistics on a volume
 //!   grid, fits per thickness and pooled, C_f per thickness);
 //! - [`rafting`] — which runs rafted over the floe instead of ridging against it;
+//! - [`student_t`] — Student's t CDF and quantile for the confidence intervals;
 //! - [`lookup`] — interpolation in a tabulated campaign (clamped and flagged outside its
 //!   range, NaN where no run reached), read back from NetCDF by `RidgeLookup::open`.
 
@@ -14,4 +15,5 @@ pub mod ensemble;
 pub mod fit;
 pub mod lookup;
 pub mod rafting;
+pub mod student_t;
 pub mod tabulate;
