@@ -158,6 +158,12 @@ pub fn refuse_output_over_input(
     Ok(())
 }
 
+/// The current UTC time as `YYYY-MM-DDTHH:MM:SSZ` (RFC 3339, whole seconds), from the
+/// system clock: for the `history` of output files and the dates of tables.
+pub fn utc_now() -> String {
+    humantime::format_rfc3339_seconds(std::time::SystemTime::now()).to_string()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
