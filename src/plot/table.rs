@@ -492,7 +492,8 @@ where
             }))
             .chain([17.0]),
     );
-    let title = "C_f = W/ΔPE at the end of the runs against sheet thickness";
+    let title =
+        "C_f = W/ΔPE at the end of the runs against sheet thickness (× dashed: pooled fits)";
     let (x, y) = (
         Axis::new((hmin - pad).max(0.0), hmax + pad, "sheet thickness h (m)"),
         Axis::new(0.0, cmax * 1.15, "C_f = W/ΔPE"),
@@ -553,6 +554,42 @@ where
                     .map(move |v| Circle::new((*h + 2.0 * whisker, *v), dot, c.mix(0.6).filled()))
             }))
             .map_err(draw_err)?;
+        // The fit: W/ΔPE of the set's pooled fits, eqs (13)–(14), at each thickness's final
+        // volume (the largest one its runs reached), dashed; a cross where the set has one
+        // thickness.
+        if let Some(f) = &t.pooled[si] {
+            let fitted: Vec<(f64, f64)> = t
+                .thickness
+                .iter()
+                .enumerate()
+                .filter_map(|(hi, &h)| {
+                    let v_end = t.runs[si][hi]
+                        .iter()
+                        .rposition(|&n| n > 0)
+                        .map(|k| t.volume[k])?;
+                    let r = f.work.eval(v_end) / f.potential_energy.eval(v_end);
+                    (v_end > 0.0 && r.is_finite()).then_some((h, r))
+                })
+                .collect();
+            let dash = c.stroke_width(layout.fonts.px(1.5));
+            chart
+                .draw_series(DashedLineSeries::new(
+                    fitted.clone(),
+                    layout.fonts.px(6.0),
+                    layout.fonts.px(4.0),
+                    dash,
+                ))
+                .map_err(draw_err)?;
+            chart
+                .draw_series(fitted.iter().map(|&(h, r)| {
+                    Cross::new(
+                        (h - 2.0 * whisker, r),
+                        dot + 1,
+                        c.stroke_width(layout.fonts.px(1.5)),
+                    )
+                }))
+                .map_err(draw_err)?;
+        }
     }
     chart
         .configure_series_labels()
