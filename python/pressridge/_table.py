@@ -163,7 +163,10 @@ class Table:
 
     def to_xarray(self) -> Any:
         """The whole table file as an :class:`xarray.Dataset` (loaded into memory; the file
-        is closed again)."""
+        is closed again). A table whose sets differ only in friction is a friction grid:
+        dimensions ``thickness``, ``mu``, ``mu_w``, ``volume`` (select with
+        ``ds.cf_by_set.sel(mu=1.0, mu_w=0.6)``); any other keeps a ``set`` dimension
+        (docs/tables.md)."""
         import xarray as xr
 
         return xr.load_dataset(self._path)
