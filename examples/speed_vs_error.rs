@@ -18,6 +18,9 @@
 //! cargo run --release --example speed_vs_error -- \
 //!     reference=runs/sve-reference implicit-0.8=runs/sve-implicit-0.8 > table.md
 //! ```
+//!
+//! `NAME=DIR1+DIR2` pools the runs of several campaign directories into one configuration
+//! (e.g. seeds 13–26 run later under a spec of their own).
 
 use pressridge::campaign::{RunRecord, read_campaign};
 use pressridge::table::ensemble::{Stat, quantity};
@@ -78,12 +81,32 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .map(|a| {
             let (name, dir) = a
                 .split_once('=')
-                .ok_or("arguments are NAME=CAMPAIGN_DIR, the reference first")?;
-            Ok((name.to_string(), groups(Path::new(dir))?))
+                .ok_or("arguments are NAME=CAMPAIGN_DIR[+DIR...], the reference first")?;
+            // One configuration may be spread over several archives (extra seeds run
+            // later under their own spec): `NAME=DIR1+DIR2` pools their runs per point.
+            let mut pooled = Groups::new();
+            for d in dir.split('+') {
+                for (point, runs) in groups(Path::new(d))? {
+                    let all = pooled.entry(point.clone()).or_default();
+                    for r in runs {
+                        if all.iter().any(|o| o.seed == r.seed) {
+                            return Err(format!(
+                                "{name}: seed {} of {point} is in more than one of {dir}",
+                                r.seed
+                            )
+                            .into());
+                        }
+                        all.push(r);
+                    }
+                }
+            }
+            Ok((name.to_string(), pooled))
         })
         .collect::<Result<_, Box<dyn std::error::Error>>>()?;
     let Some((ref_name, reference)) = configs.first() else {
-        return Err("usage: speed_vs_error NAME=CAMPAIGN_DIR ... (the reference first)".into());
+        return Err(
+            "usage: speed_vs_error NAME=CAMPAIGN_DIR[+DIR...] ... (the reference first)".into(),
+        );
     };
     for (point, ref_runs) in reference {
         println!("\n### {point}\n");

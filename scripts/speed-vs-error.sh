@@ -14,23 +14,35 @@
 # The reference (and implicit-0.8) rows were made by older binaries (commits 0278a19 and
 # b4f38ab, named in their specs): the stable-limit estimate changed after them, so the
 # current code would run their specs with another step. To add reference runs, build
-# 0278a19 and run its campaign with a spec of the missing seeds (`first_seed`), then copy
-# the run directories' run.json into data/speed-vs-error/reference/runs/ (docs/speed-vs-error.md).
+# 0278a19 and run its campaign with a spec of the missing seeds (`first_seed`, as
+# data/campaigns/speed-vs-error/reference-more.toml), then keep the result as a
+# records-only archive data/speed-vs-error/<config>-more (docs/speed-vs-error.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --release --bin pressridge --example speed_vs_error
 table=./target/release/examples/speed_vs_error
+# A configuration's runs: its archive, plus the archive of its extra seeds (<config>-more,
+# seeds 13-26 at h = 0.30 m) where there is one, pooled by the table (`NAME=DIR1+DIR2`).
+runs_of() {
+  local root=$1 c=$2 d="$1/$2"
+  [ -d "$root/$c-more" ] && d="$d+$root/$c-more"
+  echo "$d"
+}
 if [ "${1:-}" = "--run" ]; then
   threads=${2:-$(nproc)}
-  for c in default step-1.0; do
+  for c in default default-more step-1.0 step-1.0-more; do
     resume=()
     [ -d "data/speed-vs-error/$c" ] && resume=(--resume-from "data/speed-vs-error/$c")
     ./target/release/pressridge campaign --spec "data/campaigns/speed-vs-error/$c.toml" \
       --out "runs/speed-vs-error/$c" "${resume[@]}" --threads "$threads"
   done
-  "$table" reference=data/speed-vs-error/reference default=runs/speed-vs-error/default \
-    step-1.0=runs/speed-vs-error/step-1.0 implicit-2.32e-4=data/speed-vs-error/implicit-0.8
+  "$table" reference="$(runs_of data/speed-vs-error reference)" \
+    default="$(runs_of runs/speed-vs-error default)" \
+    step-1.0="$(runs_of runs/speed-vs-error step-1.0)" \
+    implicit-2.32e-4=data/speed-vs-error/implicit-0.8
 else
-  "$table" reference=data/speed-vs-error/reference default=data/speed-vs-error/default \
-    step-1.0=data/speed-vs-error/step-1.0 implicit-2.32e-4=data/speed-vs-error/implicit-0.8
+  "$table" reference="$(runs_of data/speed-vs-error reference)" \
+    default="$(runs_of data/speed-vs-error default)" \
+    step-1.0="$(runs_of data/speed-vs-error step-1.0)" \
+    implicit-2.32e-4=data/speed-vs-error/implicit-0.8
 fi
