@@ -35,6 +35,7 @@ pub mod itd;
 pub mod limits;
 pub mod observe;
 pub mod plot;
+pub mod record;
 pub mod scene;
 pub mod simulation;
 pub mod table;

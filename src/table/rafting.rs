@@ -14,7 +14,7 @@
 //! when that distance exceeds [`RAFTING_REACH`]; runs recorded before the diagnostic existed
 //! are **unknown**, never counted as ridged.
 
-use crate::campaign::RunRecord;
+use crate::record::RunRecord;
 use crate::table::ensemble::{Stat, group_by_point};
 
 /// The overrun beyond which a run counts as rafted (m). 2 m is several block widths

@@ -23,7 +23,7 @@
 
 use super::ensemble::{Stat, dissipation_violation};
 use super::fit::{Band, FitError, QuadFit, fit_through_origin, force, ratio, student_t_quantile};
-use crate::campaign::RunRecord;
+use crate::record::RunRecord;
 
 /// The fits of one group of samples (J/m against m³/m).
 #[derive(Clone, Debug, PartialEq)]
@@ -363,7 +363,7 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
                 let (mut w, mut p, mut q, mut f) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
                 for r in &group {
                     let xs: Vec<f64> = r.samples.iter().map(|s| s.volume).collect();
-                    let get = |g: fn(&crate::campaign::RunSample) -> f64| {
+                    let get = |g: fn(&crate::record::RunSample) -> f64| {
                         let ys: Vec<f64> = r.samples.iter().map(g).collect();
                         interp(&xs, &ys, v)
                     };
