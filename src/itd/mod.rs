@@ -274,6 +274,40 @@ impl Workspace {
         self.ncat
     }
 
+    /// Icepack `ridge_itd` without the rafting mask: the participation a_Pn of every
+    /// category and of open water, each category's ridge geometry (h_i, H_min, H_max, λ,
+    /// k_n) into this workspace, and the net-to-gross ratio `aksum` = Σ a_Pn·(1 − 1/k_n)
+    /// (dimensionless), returned. The one kernel behind the strength, the area-and-volume
+    /// step and the complete step.
+    pub(crate) fn prepare_ridging(
+        &mut self,
+        participation: params::Participation,
+        redistribution: params::Redistribution,
+        p: &params::ItdParams,
+        aice0: f64,
+        aicen: &[f64],
+        vicen: &[f64],
+    ) -> f64 {
+        participation::participation_cached(
+            participation,
+            p,
+            aice0,
+            aicen,
+            &mut self.gsum,
+            &mut self.apartic,
+            &mut self.exp_cache,
+        );
+        for n in 0..aicen.len() {
+            let g = redistribution::ridge_geometry(redistribution, p, aicen[n], vicen[n]);
+            self.hi[n] = g.hi;
+            self.hrmin[n] = g.hrmin;
+            self.hrmax[n] = g.hrmax;
+            self.hrexp[n] = g.hrexp;
+            self.krdg[n] = g.krdg;
+        }
+        redistribution::net_to_gross(&self.apartic, &self.krdg)
+    }
+
     /// Participation function a_Pn of the last call (index 0 is open water), dimensionless.
     pub fn apartic(&self) -> &[f64] {
         &self.apartic

@@ -27,8 +27,8 @@
 
 use super::cleanup::cleanup_itd;
 use super::params::{ItdParams, Participation, Redistribution};
-use super::participation::participation_cached;
-use super::redistribution::{RidgeGeometry, category_fractions_all, net_to_gross, ridge_geometry};
+use super::redistribution::{RidgeGeometry, category_fractions_all};
+use super::ridging::close_and_open;
 use super::tracers::TracerLayout;
 use super::{ColumnError, Workspace};
 
@@ -853,33 +853,26 @@ pub(crate) fn asum_ridging(aicen: &[f64], aice0: f64) -> f64 {
 fn ridge_itd(col: &ColumnMut<'_>, opts: &RidgeStepOptions, ws: &mut StepWorkspace) -> f64 {
     let p = &opts.params;
     let w = &mut ws.core;
-    participation_cached(
+    let aksum = w.prepare_ridging(
         opts.participation,
+        opts.redistribution,
         p,
         *col.aice0,
         col.aicen,
-        &mut w.gsum,
-        &mut w.apartic,
-        &mut w.exp_cache,
+        col.vicen,
     );
     for n in 0..w.ncat() {
-        let g = ridge_geometry(opts.redistribution, p, col.aicen[n], col.vicen[n]);
-        w.hi[n] = g.hi;
-        w.hrmin[n] = g.hrmin;
-        w.hrmax[n] = g.hrmax;
-        w.hrexp[n] = g.hrexp;
-        w.krdg[n] = g.krdg;
         if opts.redistribution == Redistribution::Exponential && col.aicen[n] > p.puny {
             // Rafting mask: 1 where h_min = 2h (the ice rafts), as Icepack's `mraft`.
-            let hi = f64::max(g.hi, p.puny);
-            let m = f64::max(0.0, 1.0f64.copysign(hi + p.maxraft - g.hrmin));
-            let x = m * ((2.0 * hi + g.hrexp) / hi - g.krdg);
+            let hi = f64::max(w.hi[n], p.puny);
+            let m = f64::max(0.0, 1.0f64.copysign(hi + p.maxraft - w.hrmin[n]));
+            let x = m * ((2.0 * hi + w.hrexp[n]) / hi - w.krdg[n]);
             ws.mraft[n] = f64::max(0.0, 1.0f64.copysign(p.puny - x.abs()));
         }
         ws.aparticn[n] = w.apartic[n + 1];
         ws.krdgn[n] = w.krdg[n];
     }
-    net_to_gross(&w.apartic, &w.krdg)
+    aksum
 }
 
 /// Icepack `ridge_shift`: one ridging pass with area, volume, snow and tracers.
@@ -914,39 +907,18 @@ fn ridge_shift(
                 layout.amount(it, trc, col.aicen[n], col.vicen[n], col.vsnon[n]);
         }
     }
-    let w = &ws.core;
     // pressridge: with no area above puny nothing can ridge (Icepack divides by aksum = 0);
     // the missing area opens.
-    let mut closing_gross = if aksum > 0.0 {
-        closing_net / aksum
-    } else {
-        *opning = f64::max(0.0, (1.0 - asum_ridging(col.aicen, *col.aice0)) / dt);
-        0.0
-    };
-    if w.apartic[0] > 0.0 {
-        let wk1 = w.apartic[0] * closing_gross * dt;
-        if wk1 > *col.aice0 {
-            let tmpfac = *col.aice0 / wk1;
-            closing_gross *= tmpfac;
-            *opning *= tmpfac;
-        }
-    }
-    for n in 0..ncat {
-        if col.aicen[n] > puny && w.apartic[n + 1] > 0.0 {
-            let wk1 = w.apartic[n + 1] * closing_gross * dt;
-            if wk1 > col.aicen[n] {
-                let tmpfac = col.aicen[n] / wk1;
-                closing_gross *= tmpfac;
-                *opning *= tmpfac;
-            }
-        }
-    }
-    *col.aice0 = *col.aice0 - w.apartic[0] * closing_gross * dt + *opning * dt;
-    if *col.aice0 < -puny {
-        return Err(ColumnError::OpenWaterExhausted { aice0: *col.aice0 });
-    } else if *col.aice0 < 0.0 {
-        *col.aice0 = 0.0;
-    }
+    let closing_gross = close_and_open(
+        &ws.core.apartic,
+        aksum,
+        closing_net,
+        col.aicen,
+        col.aice0,
+        puny,
+        dt,
+        opning,
+    )?;
     s.aopen = *opning * dt;
 
     let one_minus_f = 1.0 - c.fsnowrdg;

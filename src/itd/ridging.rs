@@ -17,8 +17,7 @@ use ndarray::{ArrayView1, ArrayViewMut1, ArrayViewMut2, Axis};
 
 use super::bounds::validate_bounds;
 use super::params::{ItdParams, Participation, Redistribution};
-use super::participation::participation_cached;
-use super::redistribution::{RidgeGeometry, category_fractions, net_to_gross, ridge_geometry};
+use super::redistribution::{RidgeGeometry, category_fractions};
 use super::ridge_step::asum_ridging;
 use super::{ColumnError, ItdError, Workspace, check_column, check_len};
 
@@ -119,62 +118,28 @@ pub fn ridge_column(
     loop {
         niter += 1;
         // ridge_itd
-        participation_cached(
+        let aksum = ws.prepare_ridging(
             opts.participation,
+            opts.redistribution,
             p,
             *aice0,
             aicen,
-            &mut ws.gsum,
-            &mut ws.apartic,
-            &mut ws.exp_cache,
+            vicen,
         );
-        for n in 0..ncat {
-            let g = ridge_geometry(opts.redistribution, p, aicen[n], vicen[n]);
-            ws.hi[n] = g.hi;
-            ws.hrmin[n] = g.hrmin;
-            ws.hrmax[n] = g.hrmax;
-            ws.hrexp[n] = g.hrexp;
-            ws.krdg[n] = g.krdg;
-        }
-        let aksum = net_to_gross(&ws.apartic, &ws.krdg);
 
         // ridge_shift
         ws.aicen_init.copy_from_slice(aicen);
         ws.vicen_init.copy_from_slice(vicen);
-        let mut closing_gross = if aksum > 0.0 {
-            closing_net / aksum
-        } else {
-            0.0
-        };
-        if aksum <= 0.0 {
-            // Nothing can ridge: only open the missing area.
-            opning = f64::max(0.0, (1.0 - asum) / dt);
-        }
-        if ws.apartic[0] > 0.0 {
-            let wk1 = ws.apartic[0] * closing_gross * dt;
-            if wk1 > *aice0 {
-                let tmpfac = *aice0 / wk1;
-                closing_gross *= tmpfac;
-                opning *= tmpfac;
-            }
-        }
-        for n in 0..ncat {
-            let ap = ws.apartic[n + 1];
-            if aicen[n] > p.puny && ap > 0.0 {
-                let wk1 = ap * closing_gross * dt;
-                if wk1 > aicen[n] {
-                    let tmpfac = aicen[n] / wk1;
-                    closing_gross *= tmpfac;
-                    opning *= tmpfac;
-                }
-            }
-        }
-        *aice0 = *aice0 - ws.apartic[0] * closing_gross * dt + opning * dt;
-        if *aice0 < -p.puny {
-            return Err(ColumnError::OpenWaterExhausted { aice0: *aice0 });
-        } else if *aice0 < 0.0 {
-            *aice0 = 0.0; // round-off
-        }
+        let closing_gross = close_and_open(
+            &ws.apartic,
+            aksum,
+            closing_net,
+            aicen,
+            aice0,
+            p.puny,
+            dt,
+            &mut opning,
+        )?;
         aopen += opning * dt;
 
         for n in 0..ncat {
@@ -233,6 +198,59 @@ pub fn ridge_column(
     d.dvirdgdt = virdg * dti;
     d.niter = niter;
     Ok(d)
+}
+
+/// Icepack `ridge_shift`'s rates for one pass: the gross closing rate closing_net/aksum
+/// (1/s; zero, with the missing area opened instead, when nothing can ridge), cut together
+/// with the opening rate `opning` (1/s) so that neither open water nor any category above
+/// `puny` loses more area than it has in `dt` (s), and the open water `aice0` updated.
+/// Returns the gross closing rate; an open water that would still become negative beyond
+/// `puny` is an error (round-off below it is set to 0). Shared by the area-and-volume step
+/// and the complete step ([`super::ridge_step`]).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn close_and_open(
+    apartic: &[f64],
+    aksum: f64,
+    closing_net: f64,
+    aicen: &[f64],
+    aice0: &mut f64,
+    puny: f64,
+    dt: f64,
+    opning: &mut f64,
+) -> Result<f64, ColumnError> {
+    let mut closing_gross = if aksum > 0.0 {
+        closing_net / aksum
+    } else {
+        // Nothing can ridge (Icepack divides by aksum = 0): only open the missing area.
+        *opning = f64::max(0.0, (1.0 - asum_ridging(aicen, *aice0)) / dt);
+        0.0
+    };
+    if apartic[0] > 0.0 {
+        let wk1 = apartic[0] * closing_gross * dt;
+        if wk1 > *aice0 {
+            let tmpfac = *aice0 / wk1;
+            closing_gross *= tmpfac;
+            *opning *= tmpfac;
+        }
+    }
+    for n in 0..aicen.len() {
+        let ap = apartic[n + 1];
+        if aicen[n] > puny && ap > 0.0 {
+            let wk1 = ap * closing_gross * dt;
+            if wk1 > aicen[n] {
+                let tmpfac = aicen[n] / wk1;
+                closing_gross *= tmpfac;
+                *opning *= tmpfac;
+            }
+        }
+    }
+    *aice0 = *aice0 - apartic[0] * closing_gross * dt + *opning * dt;
+    if *aice0 < -puny {
+        return Err(ColumnError::OpenWaterExhausted { aice0: *aice0 });
+    } else if *aice0 < 0.0 {
+        *aice0 = 0.0; // round-off
+    }
+    Ok(closing_gross)
 }
 
 fn check_forcing(f: &RidgeForcing) -> Result<(), ColumnError> {

@@ -14,8 +14,8 @@ use ndarray::{ArrayView1, ArrayView2, ArrayViewMut1, Axis};
 use super::cf::{Cf, CfProvider};
 use super::lanes;
 use super::params::{ItdParams, Participation, Redistribution, StrengthFormula};
-use super::participation::{ExpCache, participation_cached, participation_with};
-use super::redistribution::{mean_square_ridge_thickness, net_to_gross, ridge_geometry};
+use super::participation::{ExpCache, participation_with};
+use super::redistribution::mean_square_ridge_thickness;
 use super::{ColumnError, ItdError, Workspace, check_column, check_len};
 
 /// Options of the strength routine. `StrengthOptions::default()` is CICE's default
@@ -90,24 +90,14 @@ pub fn strength_column(
         });
     }
 
-    participation_cached(
+    let aksum = ws.prepare_ridging(
         opts.participation,
+        opts.redistribution,
         p,
         aice0,
         aicen,
-        &mut ws.gsum,
-        &mut ws.apartic,
-        &mut ws.exp_cache,
+        vicen,
     );
-    for n in 0..ncat {
-        let g = ridge_geometry(opts.redistribution, p, aicen[n], vicen[n]);
-        ws.hi[n] = g.hi;
-        ws.hrmin[n] = g.hrmin;
-        ws.hrmax[n] = g.hrmax;
-        ws.hrexp[n] = g.hrexp;
-        ws.krdg[n] = g.krdg;
-    }
-    let aksum = net_to_gross(&ws.apartic, &ws.krdg);
     if aksum <= 0.0 {
         // Nothing participates (no area above puny): defined as zero strength.
         return Ok(ColumnStrength {
