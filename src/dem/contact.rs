@@ -122,12 +122,6 @@ pub struct Contact {
 }
 
 impl Contact {
-    /// Elastic work this contact holds (J/m), normal and tangential: released to
-    /// [`ContactWork::released`] when it separates.
-    fn held(&self) -> f64 {
-        self.stored + self.stored_t
-    }
-
     /// Sets the viscous normal force from `fv` (N/m) so that the normal force never pulls,
     /// caps the tangential trial force `slip` (N/m) at `mu` times the normal force, and
     /// books the slip that cap dissipates ([`ContactWork::slip`]).
@@ -161,10 +155,6 @@ pub struct ContactWork {
     /// frictional dissipation Φ_f of eq (11).
     #[serde(default)]
     pub slip: f64,
-    /// Elastic work left in contacts when they separated (J/m), normal and tangential:
-    /// zero for a conservative law; what remains measures the non-conservative part of the
-    /// area law and the tangential spring energy lost at separation.
-    pub released: f64,
 }
 
 /// All active contacts, sorted by pair key, with a swap buffer for the next step.
@@ -245,8 +235,9 @@ impl ContactSet {
         let k_te = p.tangential_stiffness();
         let mut j = 0;
         for &key in pairs {
+            // Contacts of the last step whose pair is no longer a candidate have separated;
+            // the elastic work they held stays booked and shows as `contact_hysteresis`.
             while j < self.prev.len() && self.prev[j].key < key {
-                work.released += self.prev[j].held();
                 j += 1;
             }
             let old = if j < self.prev.len() && self.prev[j].key == key {
@@ -264,9 +255,6 @@ impl ContactSet {
                 bodies.pos[b],
                 &mut self.scratch,
             ) else {
-                if let Some(o) = old {
-                    work.released += o.held();
-                }
                 continue;
             };
             let (area0, ft0, stored, stored_t, forgiven) = old
@@ -351,10 +339,6 @@ impl ContactSet {
                 bodies.apply(b as usize, f, c.point);
                 bodies.apply(a as usize, -f, c.point);
             }
-        }
-        while j < self.prev.len() {
-            work.released += self.prev[j].held();
-            j += 1;
         }
     }
 
