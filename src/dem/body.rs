@@ -377,7 +377,7 @@ impl Bodies {
 
     /// Recomputes the world outline and bounding box of body `i` from its pose.
     #[inline]
-    pub fn update_world(&mut self, i: usize) {
+    pub(crate) fn update_world(&mut self, i: usize) {
         let (s, c) = self.theta[i].sin_cos();
         self.axis[i] = V2::new(c, s);
         let p = self.pos[i];

@@ -159,7 +159,7 @@ pub struct ContactWork {
 
 /// All active contacts, sorted by pair key, with a swap buffer for the next step.
 #[derive(Clone, Debug, Default)]
-pub struct ContactSet {
+pub(crate) struct ContactSet {
     cur: Vec<Contact>,
     prev: Vec<Contact>,
     /// Per contact of `cur`, what the implicit dashpot's second pass needs.

@@ -20,7 +20,7 @@ use serde::{Deserialize, Serialize};
 
 /// All joints of a world, with the index of intact pairs for the contact exclusion.
 #[derive(Clone, Debug, Default)]
-pub struct JointSet {
+pub(crate) struct JointSet {
     joints: Vec<Joint>,
     /// Per body, up to two partners held by an intact joint (`NONE` for an empty slot):
     /// the broad phase asks for every candidate pair, so this answers in O(1). A block of
@@ -141,10 +141,6 @@ impl JointSet {
     /// Joints severed during the last call to [`JointSet::advance`].
     pub fn severed(&self) -> &[usize] {
         &self.severed
-    }
-    /// Number of joints.
-    pub fn len(&self) -> usize {
-        self.joints.len()
     }
     /// True when there is no joint.
     pub fn is_empty(&self) -> bool {

@@ -191,7 +191,7 @@ impl<const N: usize> Poly<N> {
 /// A body outline in world or body coordinates.
 pub type Outline = Poly<MAX_VERTS>;
 /// A clipping result (intersection polygon, submerged part).
-pub type ClipPoly = Poly<CLIP_VERTS>;
+pub(crate) type ClipPoly = Poly<CLIP_VERTS>;
 
 /// Area (m², positive for counter-clockwise order) and centroid (m) of a simple polygon, by
 /// the shoelace formula. Degenerate polygons (area below 1e-18 m²) report their area as
@@ -229,7 +229,7 @@ pub fn area_centroid(v: &[V2]) -> (f64, V2) {
 /// Second moment of area about the centroid (polar, m⁴) of a counter-clockwise polygon
 /// whose vertices are given relative to its centroid. Multiply by density (kg/m³) for the
 /// moment of inertia per metre of depth (kg·m²/m).
-pub fn polar_moment(v: &[V2]) -> f64 {
+pub(crate) fn polar_moment(v: &[V2]) -> f64 {
     let n = v.len();
     let mut s = 0.0;
     for i in 0..n {
@@ -356,14 +356,14 @@ fn intersect_in<'s>(a: &Outline, b: &Outline, bufs: &'s mut [ClipPoly; 2]) -> Op
 }
 
 /// The part of a polygon below the horizontal line `y = level` (m), as a polygon.
-pub fn clip_below(poly: &Outline, level: f64) -> ClipPoly {
+pub(crate) fn clip_below(poly: &Outline, level: f64) -> ClipPoly {
     let mut out = ClipPoly::default();
     clip_below_into(poly, level, &mut out);
     out
 }
 
 /// [`clip_below`] into a buffer the caller keeps.
-pub fn clip_below_into(poly: &Outline, level: f64, out: &mut ClipPoly) {
+pub(crate) fn clip_below_into(poly: &Outline, level: f64, out: &mut ClipPoly) {
     // Left of the directed line from (1, level) to (0, level) is the half-plane below it.
     clip_left(
         poly,
@@ -459,13 +459,13 @@ pub fn overlap(a: &Outline, b: &Outline, ca: V2, cb: V2) -> Option<Overlap> {
 /// Working space of [`overlap_with`], kept by the caller so that no buffer is cleared per
 /// pair.
 #[derive(Clone, Copy, Debug, Default)]
-pub struct OverlapScratch {
+pub(crate) struct OverlapScratch {
     bufs: [ClipPoly; 2],
     pts: [V2; CLIP_VERTS],
 }
 
 /// [`overlap`] in the caller's working space.
-pub fn overlap_with(
+pub(crate) fn overlap_with(
     a: &Outline,
     b: &Outline,
     ca: V2,

@@ -14,7 +14,7 @@
 
 pub mod body;
 pub mod boundary;
-pub mod broadphase;
+pub(crate) mod broadphase;
 pub mod contact;
 pub mod fracture;
 pub mod geometry;

@@ -49,7 +49,7 @@ impl Default for WaterParams {
 
 /// Per-body water forces of the current step, kept for the energy ledger.
 #[derive(Clone, Debug, Default)]
-pub struct WaterForces {
+pub(crate) struct WaterForces {
     /// Buoyant force (N/m, upward) and the submerged centroid (m).
     pub buoyancy: Vec<(f64, V2)>,
     /// Drag force (N/m), its point (m) and drag moment (N·m/m).
