@@ -30,6 +30,7 @@ pub mod campaign;
 pub mod dem;
 pub mod eta;
 pub mod ffi;
+pub(crate) mod interp;
 pub mod io;
 pub mod itd;
 pub mod limits;

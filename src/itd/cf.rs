@@ -8,23 +8,7 @@
 use std::sync::Arc;
 
 use super::ItdError;
-
-/// Checks that a table axis `name` is finite and strictly increasing; the message names the
-/// first offending index. Shared by [`CfTable`] and the ridging lookup table.
-pub(crate) fn check_axis(name: &str, xs: &[f64]) -> Result<(), String> {
-    for (i, &x) in xs.iter().enumerate() {
-        if !x.is_finite() {
-            return Err(format!("{name}[{i}] = {x} is not finite"));
-        }
-        if i > 0 && x <= xs[i - 1] {
-            return Err(format!(
-                "{name} is not strictly increasing at index {i} ({} then {x})",
-                xs[i - 1]
-            ));
-        }
-    }
-    Ok(())
-}
+use crate::interp::{bracket, check_axis, lerp};
 
 /// Named constant values of C_f (dimensionless).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -111,6 +95,32 @@ impl CfTable {
         })
     }
 
+    /// A table from nodes some of which may have no data, the one rule of every reader of
+    /// C_f (a `thickness`/`cf` file, a ridging table's `cf_by_set`): a NaN C_f marks a
+    /// thickness no run reached and that node is left out; every other value must be finite
+    /// and positive, as in [`CfTable::new`], and at least one node must remain.
+    pub fn from_nodes(thickness: &[f64], cf: &[f64]) -> Result<Self, ItdError> {
+        if thickness.len() != cf.len() {
+            return Err(ItdError::CfTable(format!(
+                "thickness has {} values but cf has {}",
+                thickness.len(),
+                cf.len()
+            )));
+        }
+        let (h, c): (Vec<f64>, Vec<f64>) = thickness
+            .iter()
+            .zip(cf)
+            .filter(|(_, c)| !c.is_nan())
+            .map(|(&h, &c)| (h, c))
+            .unzip();
+        if h.is_empty() && !thickness.is_empty() {
+            return Err(ItdError::CfTable(
+                "every cf is NaN (no node has data)".into(),
+            ));
+        }
+        Self::new(h, c)
+    }
+
     /// The same table labelled with the friction pair of the simulations behind it: μ above
     /// and μ_w below the water line (dimensionless). Shown by [`Cf::describe`], so every
     /// output that records its C_f says which friction it assumed.
@@ -151,11 +161,9 @@ impl CfProvider for CfTable {
                 clamped: h > t[last],
             };
         }
-        // t[0] < h < t[last]: find i with t[i] <= h < t[i+1].
-        let i = t.partition_point(|&x| x <= h) - 1;
-        let w = (h - t[i]) / (t[i + 1] - t[i]);
+        let (i, w, _) = bracket(t, h);
         CfLookup {
-            value: self.cf[i] + w * (self.cf[i + 1] - self.cf[i]),
+            value: lerp(self.cf[i], || self.cf[i + 1], w),
             clamped: false,
         }
     }

@@ -32,6 +32,8 @@
 
 use std::collections::BTreeMap;
 
+use crate::interp::{bracket, lerp};
+
 use crate::itd::{CfLookup, CfTable};
 
 /// Which axes a field lies on, in the order `set`, `thickness`, `volume` (C order, volume
@@ -191,27 +193,7 @@ fn check_axis(name: &str, xs: &[f64]) -> Result<(), LookupError> {
     if xs.is_empty() {
         return Err(LookupError::Invalid(format!("the {name} axis is empty")));
     }
-    crate::itd::cf::check_axis(name, xs).map_err(LookupError::Invalid)
-}
-
-/// Where `x` falls on the axis `xs`: value = y[i]·(1 − w) + y[i + 1]·w (w = 0 uses y[i]
-/// alone), and whether `x` was clamped.
-fn bracket(xs: &[f64], x: f64) -> (usize, f64, bool) {
-    let last = xs.len() - 1;
-    if x <= xs[0] {
-        return (0, 0.0, x < xs[0]);
-    }
-    if x >= xs[last] {
-        return (last, 0.0, x > xs[last]);
-    }
-    let i = xs.partition_point(|&v| v <= x) - 1;
-    (i, (x - xs[i]) / (xs[i + 1] - xs[i]), false)
-}
-
-/// `a·(1 − w) + b·w`, reading `b` only when its weight is non-zero (so a NaN beyond the
-/// bracket does not leak in at a node).
-fn lerp(a: f64, b: impl FnOnce() -> f64, w: f64) -> f64 {
-    if w == 0.0 { a } else { a + w * (b() - a) }
+    crate::interp::check_axis(name, xs).map_err(LookupError::Invalid)
 }
 
 impl RidgeLookup {
@@ -396,8 +378,10 @@ impl RidgeLookup {
         self.cf_table(self.friction_set(mu, mu_w)?)
     }
 
-    /// The C_f of set `set` as a [`CfTable`] for the strength routine (the thicknesses where
-    /// C_f is finite and positive), labelled with the set's friction when the table has it.
+    /// The C_f of set `set` as a [`CfTable`] for the strength routine: the thicknesses whose
+    /// C_f is not NaN (a cell no run reached), by the one rule of [`CfTable::from_nodes`]
+    /// (any other value not finite and positive is an error), labelled with the set's
+    /// friction when the table has it.
     pub fn cf_table(&self, set: usize) -> Result<CfTable, LookupError> {
         let f = self
             .fields
@@ -414,14 +398,8 @@ impl RidgeLookup {
         }
         let nh = self.thickness.len();
         let row = &f.data[set * nh..(set + 1) * nh];
-        let (h, c): (Vec<f64>, Vec<f64>) = self
-            .thickness
-            .iter()
-            .zip(row)
-            .filter(|(_, c)| c.is_finite() && **c > 0.0)
-            .map(|(&h, &c)| (h, c))
-            .unzip();
-        let t = CfTable::new(h, c).map_err(|e| LookupError::Invalid(e.to_string()))?;
+        let t = CfTable::from_nodes(&self.thickness, row)
+            .map_err(|e| LookupError::Invalid(format!("cf_by_set of set {set}: {e}")))?;
         Ok(match self.friction() {
             Some(pairs) => t.with_friction(pairs[set].0, pairs[set].1),
             None => t,

@@ -203,7 +203,11 @@ pub fn fit_warnings(t: &RidgeTable) -> Vec<String> {
     out
 }
 
-/// Linear interpolation of `ys(xs)` at `x` within [xs[0], xs[last]], else NaN.
+/// Linear interpolation of `ys(xs)` at `x` within [xs[0], xs[last]], else NaN: one run's
+/// samples resampled onto the table's volume grid. Not [`crate::interp`]'s rule on purpose:
+/// a run's samples may repeat a volume (a sheet at rest) and a volume beyond them is missing,
+/// not clamped; and its operation order, (y₁ − y₀)·(x − x₀)/(x₁ − x₀), is kept so that
+/// tables made before stay bit-identical.
 fn interp(xs: &[f64], ys: &[f64], x: f64) -> f64 {
     if xs.is_empty() || x < xs[0] || x > xs[xs.len() - 1] {
         return f64::NAN;

@@ -62,7 +62,8 @@ pub fn read_cf_table_at_friction(
 }
 
 /// Reads a C_f table: 1-D variables `thickness` (m) and `cf` (dimensionless) of equal
-/// length, thickness strictly increasing. See [`CfTable`] for interpolation and clamping.
+/// length, thickness strictly increasing; a NaN C_f is a node without data and is left out
+/// ([`CfTable::from_nodes`]). See [`CfTable`] for interpolation and clamping.
 pub fn read_cf_table(path: &Path) -> Result<CfTable, NetcdfError> {
     let file = netcdf::open(path).map_err(nc_err(path))?;
     let mut cols = Vec::new();
@@ -85,7 +86,7 @@ pub fn read_cf_table(path: &Path) -> Result<CfTable, NetcdfError> {
     }
     let cf = cols.pop().unwrap_or_default();
     let thickness = cols.pop().unwrap_or_default();
-    CfTable::new(thickness, cf).map_err(|source| NetcdfError::Itd {
+    CfTable::from_nodes(&thickness, &cf).map_err(|source| NetcdfError::Itd {
         path: path.to_path_buf(),
         source,
     })
