@@ -1462,37 +1462,20 @@ fn read_cf_table_at_friction<'py>(
     ))
 }
 
-/// Names of the parameters that `strength` and `ridge_step` accept as keywords.
+/// Names of the parameters that `strength` and `ridge_step` accept as keywords
+/// (`ItdParams::NAMES`, the names of `ItdParams::FIELDS`).
 #[pyfunction]
 fn param_names() -> Vec<&'static str> {
     ItdParams::NAMES.to_vec()
 }
 
-/// CICE's default value of every parameter, as a dict.
+/// CICE's default value of every parameter (`ItdParams::FIELDS`, in order), as a dict.
 #[pyfunction]
 fn default_params<'py>(py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
     let p = ItdParams::default();
     let d = PyDict::new(py);
-    for (k, v) in [
-        ("rhoi", p.rhoi),
-        ("rhow", p.rhow),
-        ("gravit", p.gravit),
-        ("gstar", p.gstar),
-        ("astar", p.astar),
-        ("hstar", p.hstar),
-        ("maxraft", p.maxraft),
-        ("mu_rdg", p.mu_rdg),
-        ("cs", p.cs),
-        ("pstar", p.pstar),
-        ("cstar", p.cstar),
-        ("puny", p.puny),
-        ("exp_argmax", p.exp_argmax),
-        ("big", p.big),
-        ("nitermax", p.nitermax as f64),
-        ("area_tolerance", p.area_tolerance),
-        ("max_area_before_ridging", p.max_area_before_ridging),
-    ] {
-        d.set_item(k, v)?;
+    for f in ItdParams::FIELDS {
+        d.set_item(f.name, p.get(f.name).expect("a listed parameter"))?;
     }
     Ok(d)
 }

@@ -185,26 +185,49 @@ pub struct PressridgeOptions {
     pub params: PressridgeParams,
 }
 
+// The two conversions name every field of both structs once, without `..`: a field added
+// to either struct does not compile until both are updated, and `name: name` shorthand
+// cannot pair two different fields. `tests/params_faces.rs` checks the C and Fortran
+// field lists against `ItdParams::FIELDS`.
 impl From<&ItdParams> for PressridgeParams {
     fn from(p: &ItdParams) -> Self {
+        let &ItdParams {
+            rhoi,
+            rhow,
+            gravit,
+            gstar,
+            astar,
+            hstar,
+            maxraft,
+            mu_rdg,
+            cs,
+            pstar,
+            cstar,
+            puny,
+            exp_argmax,
+            big,
+            nitermax,
+            area_tolerance,
+            max_area_before_ridging,
+        } = p;
         Self {
-            rhoi: p.rhoi,
-            rhow: p.rhow,
-            gravit: p.gravit,
-            gstar: p.gstar,
-            astar: p.astar,
-            hstar: p.hstar,
-            maxraft: p.maxraft,
-            mu_rdg: p.mu_rdg,
-            cs: p.cs,
-            pstar: p.pstar,
-            cstar: p.cstar,
-            puny: p.puny,
-            exp_argmax: p.exp_argmax,
-            big: p.big,
-            area_tolerance: p.area_tolerance,
-            max_area_before_ridging: p.max_area_before_ridging,
-            nitermax: p.nitermax as i64,
+            rhoi,
+            rhow,
+            gravit,
+            gstar,
+            astar,
+            hstar,
+            maxraft,
+            mu_rdg,
+            cs,
+            pstar,
+            cstar,
+            puny,
+            exp_argmax,
+            big,
+            area_tolerance,
+            max_area_before_ridging,
+            nitermax: nitermax as i64,
         }
     }
 }
@@ -212,33 +235,49 @@ impl From<&ItdParams> for PressridgeParams {
 impl PressridgeParams {
     /// The library's parameters, every field checked by `ItdParams::set`.
     fn to_itd(self) -> FfiResult<ItdParams> {
-        if self.nitermax < 1 {
+        let Self {
+            rhoi,
+            rhow,
+            gravit,
+            gstar,
+            astar,
+            hstar,
+            maxraft,
+            mu_rdg,
+            cs,
+            pstar,
+            cstar,
+            puny,
+            exp_argmax,
+            big,
+            area_tolerance,
+            max_area_before_ridging,
+            nitermax,
+        } = self;
+        if nitermax < 1 {
             return Err(FfiError::new(
                 PRESSRIDGE_ERR_BAD_VALUE,
-                format!(
-                    "invalid parameter nitermax = {}: must be >= 1",
-                    self.nitermax
-                ),
+                format!("invalid parameter nitermax = {nitermax}: must be >= 1"),
             ));
         }
         let p = ItdParams {
-            rhoi: self.rhoi,
-            rhow: self.rhow,
-            gravit: self.gravit,
-            gstar: self.gstar,
-            astar: self.astar,
-            hstar: self.hstar,
-            maxraft: self.maxraft,
-            mu_rdg: self.mu_rdg,
-            cs: self.cs,
-            pstar: self.pstar,
-            cstar: self.cstar,
-            puny: self.puny,
-            exp_argmax: self.exp_argmax,
-            big: self.big,
-            nitermax: self.nitermax as usize,
-            area_tolerance: self.area_tolerance,
-            max_area_before_ridging: self.max_area_before_ridging,
+            rhoi,
+            rhow,
+            gravit,
+            gstar,
+            astar,
+            hstar,
+            maxraft,
+            mu_rdg,
+            cs,
+            pstar,
+            cstar,
+            puny,
+            exp_argmax,
+            big,
+            nitermax: nitermax as usize,
+            area_tolerance,
+            max_area_before_ridging,
         };
         // Hosts pass the same parameters on every call: skip the checks for the parameters
         // this thread validated last time.
@@ -248,27 +287,8 @@ impl PressridgeParams {
         // `set` validates one field against the others, which already hold their final
         // values, so the order of the checks does not matter.
         let mut checked = p;
-        let values = [
-            p.rhoi,
-            p.rhow,
-            p.gravit,
-            p.gstar,
-            p.astar,
-            p.hstar,
-            p.maxraft,
-            p.mu_rdg,
-            p.cs,
-            p.pstar,
-            p.cstar,
-            p.puny,
-            p.exp_argmax,
-            p.big,
-            p.nitermax as f64,
-            p.area_tolerance,
-            p.max_area_before_ridging,
-        ];
-        for (name, v) in ItdParams::NAMES.iter().zip(values) {
-            checked.set(name, v)?;
+        for f in ItdParams::FIELDS {
+            checked.set(f.name, p.get(f.name).expect("a listed parameter"))?;
         }
         debug_assert_eq!(checked, p);
         LAST_VALID_PARAMS.with(|c| c.set(Some(self)));

@@ -78,29 +78,157 @@ impl Default for ItdParams {
     }
 }
 
-impl ItdParams {
-    /// Names accepted by [`ItdParams::set`] (the field names).
-    pub const NAMES: &'static [&'static str] = &[
-        "rhoi",
-        "rhow",
-        "gravit",
-        "gstar",
-        "astar",
-        "hstar",
-        "maxraft",
-        "mu_rdg",
-        "cs",
-        "pstar",
-        "cstar",
-        "puny",
-        "exp_argmax",
-        "big",
-        "nitermax",
-        "area_tolerance",
-        "max_area_before_ridging",
-    ];
+/// Name, units and meaning of one settable parameter (an [`ItdParams`] field or a
+/// [`RidgeStepParams`](super::RidgeStepParams) constant).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ParamMeta {
+    /// Field name, accepted by `set` (e.g. `mu_rdg`).
+    pub name: &'static str,
+    /// SI units (CF notation, e.g. `kg m-3`; `1` dimensionless).
+    pub units: &'static str,
+    /// What it is, with CICE/Icepack's name.
+    pub description: &'static str,
+}
 
-    /// Overrides one parameter by its field name (e.g. `"mu_rdg"`, units as the field).
+impl ParamMeta {
+    /// The entry `name`, `units`, `description`.
+    pub const fn new(name: &'static str, units: &'static str, description: &'static str) -> Self {
+        Self {
+            name,
+            units,
+            description,
+        }
+    }
+}
+
+/// The [`ItdParams`] fields, in field order (a fixed-size array so that
+/// [`ItdParams::NAMES`] can be computed from it at compile time).
+const ITD_FIELDS: [ParamMeta; 17] = [
+    ParamMeta::new("rhoi", "kg m-3", "density of sea ice (CICE rhoi)"),
+    ParamMeta::new("rhow", "kg m-3", "density of sea water (CICE rhow)"),
+    ParamMeta::new(
+        "gravit",
+        "m s-2",
+        "gravitational acceleration (CICE gravit)",
+    ),
+    ParamMeta::new(
+        "gstar",
+        "1",
+        "participation cut-off G* of Thorndike et al. 1975 (CICE Gstar)",
+    ),
+    ParamMeta::new(
+        "astar",
+        "1",
+        "exponential participation scale a* of Lipscomb et al. 2007 (CICE astar)",
+    ),
+    ParamMeta::new(
+        "hstar",
+        "m",
+        "ridge thickness scale H* of the uniform redistribution, Hibler 1980 (CICE Hstar)",
+    ),
+    ParamMeta::new(
+        "maxraft",
+        "m",
+        "largest thickness of ice that rafts rather than ridges (CICE maxraft)",
+    ),
+    ParamMeta::new(
+        "mu_rdg",
+        "m^0.5",
+        "e-folding parameter mu of the exponential redistribution, Lipscomb et al. 2007 (CICE mu_rdg)",
+    ),
+    ParamMeta::new(
+        "cs",
+        "1",
+        "fraction C_s of the shear deformation energy that goes into ridging (CICE Cs)",
+    ),
+    ParamMeta::new(
+        "pstar",
+        "N m-2",
+        "strength parameter P* of Hibler 1979 (CICE Pstar)",
+    ),
+    ParamMeta::new(
+        "cstar",
+        "1",
+        "concentration parameter C* of Hibler 1979 (CICE Cstar)",
+    ),
+    ParamMeta::new("puny", "1", "smallest area treated as non-zero (CICE puny)"),
+    ParamMeta::new(
+        "exp_argmax",
+        "1",
+        "largest argument of the exponentials of the redistribution (CICE exp_argmax)",
+    ),
+    ParamMeta::new(
+        "big",
+        "m",
+        "upper bound given to the thickest category in the ridging step (CICE big, ridge_prep)",
+    ),
+    ParamMeta::new(
+        "nitermax",
+        "1",
+        "maximum number of ridging iterations, a whole number (CICE nitermax)",
+    ),
+    ParamMeta::new(
+        "area_tolerance",
+        "1",
+        "tolerance on |aice0 + sum(aicen) - 1| of the strength input (pressridge)",
+    ),
+    ParamMeta::new(
+        "max_area_before_ridging",
+        "1",
+        "largest total area aice0 + sum(aicen) accepted by the ridging step (pressridge)",
+    ),
+];
+
+/// The names of `fields`, in order.
+const fn names_of<const N: usize>(fields: &[ParamMeta; N]) -> [&'static str; N] {
+    let mut out = [""; N];
+    let mut i = 0;
+    while i < N {
+        out[i] = fields[i].name;
+        i += 1;
+    }
+    out
+}
+
+const ITD_NAMES: [&str; ITD_FIELDS.len()] = names_of(&ITD_FIELDS);
+
+impl ItdParams {
+    /// The parameters, in field order: the one list the faces take their names from
+    /// (`NAMES`, `set`/`get`, the command line's `--param`, Python's `PARAMETERS` and
+    /// `DEFAULT_PARAMETERS`). The C struct `PressridgeParams` and the Fortran type
+    /// `pressridge_params` are checked against it by `tests/params_faces.rs`.
+    pub const FIELDS: &'static [ParamMeta] = &ITD_FIELDS;
+
+    /// Names accepted by [`ItdParams::set`] (the field names, those of [`ItdParams::FIELDS`]).
+    pub const NAMES: &'static [&'static str] = &ITD_NAMES;
+
+    /// The value of the parameter `name` (an [`ItdParams::FIELDS`] name), in its units;
+    /// `nitermax` as a float.
+    pub fn get(&self, name: &str) -> Option<f64> {
+        Some(match name {
+            "rhoi" => self.rhoi,
+            "rhow" => self.rhow,
+            "gravit" => self.gravit,
+            "gstar" => self.gstar,
+            "astar" => self.astar,
+            "hstar" => self.hstar,
+            "maxraft" => self.maxraft,
+            "mu_rdg" => self.mu_rdg,
+            "cs" => self.cs,
+            "pstar" => self.pstar,
+            "cstar" => self.cstar,
+            "puny" => self.puny,
+            "exp_argmax" => self.exp_argmax,
+            "big" => self.big,
+            "nitermax" => self.nitermax as f64,
+            "area_tolerance" => self.area_tolerance,
+            "max_area_before_ridging" => self.max_area_before_ridging,
+            _ => return None,
+        })
+    }
+
+    /// Overrides one parameter by its field name (an [`ItdParams::FIELDS`] name, e.g.
+    /// `"mu_rdg"`, units as listed there).
     /// Rejects unknown names and values that are not finite and positive (`cs` and
     /// `maxraft` may be 0; `nitermax` must be a whole number ≥ 1; `rhow` must exceed `rhoi`).
     pub fn set(&mut self, name: &str, value: f64) -> Result<(), super::ItdError> {
@@ -221,5 +349,75 @@ impl StrengthFormula {
             StrengthFormula::Rothrock => "rothrock",
             StrengthFormula::Hibler1979 => "hibler",
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The field list, `get` and `set` agree with each other and with the struct's own
+    /// fields (read, names and values, from its `Debug` form).
+    #[test]
+    fn fields_list_get_set_and_struct_agree() {
+        let d = ItdParams::default();
+        assert_eq!(
+            ItdParams::NAMES,
+            ItdParams::FIELDS.iter().map(|f| f.name).collect::<Vec<_>>()
+        );
+        // A distinct, valid value in every field.
+        let mut p = d;
+        for (i, f) in ItdParams::FIELDS.iter().enumerate() {
+            let v = d.get(f.name).unwrap();
+            let new = if f.name == "nitermax" {
+                v + 1.0
+            } else {
+                v * (1.0 + 0.01 * (i + 1) as f64)
+            };
+            let before = p;
+            p.set(f.name, new).unwrap();
+            assert_eq!(p.get(f.name), Some(new), "{}", f.name);
+            for g in ItdParams::FIELDS.iter().filter(|g| g.name != f.name) {
+                assert_eq!(
+                    p.get(g.name),
+                    before.get(g.name),
+                    "{} moved {}",
+                    f.name,
+                    g.name
+                );
+            }
+        }
+        // The struct's fields, in order, with the values `get` gives.
+        let debug = format!("{p:?}");
+        let body = debug
+            .strip_prefix("ItdParams { ")
+            .and_then(|b| b.strip_suffix(" }"))
+            .unwrap_or_else(|| panic!("unexpected Debug form {debug}"));
+        let fields: Vec<(&str, f64)> = body
+            .split(", ")
+            .map(|kv| {
+                let (k, v) = kv.split_once(": ").unwrap();
+                (k, v.parse().unwrap())
+            })
+            .collect();
+        assert_eq!(
+            fields.iter().map(|(k, _)| *k).collect::<Vec<_>>(),
+            ItdParams::NAMES,
+            "ItdParams::FIELDS must list every field, in field order"
+        );
+        for (k, v) in fields {
+            assert_eq!(p.get(k), Some(v), "{k}");
+        }
+        for f in ItdParams::FIELDS {
+            assert!(
+                !f.units.is_empty() && !f.description.is_empty(),
+                "{}",
+                f.name
+            );
+        }
+        assert_eq!(d.get("nope"), None);
+        let mut q = d;
+        assert!(q.set("nope", 1.0).is_err());
+        assert_eq!(q, d);
     }
 }

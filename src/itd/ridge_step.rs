@@ -108,16 +108,9 @@ impl Default for RidgeStepParams {
     }
 }
 
-/// Name, units and meaning of one settable constant of [`RidgeStepParams`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct StepParamMeta {
-    /// Field name, accepted by [`RidgeStepParams::set`] (e.g. `rhos`).
-    pub name: &'static str,
-    /// SI units (CF notation, e.g. `kg m-3`; `1` dimensionless).
-    pub units: &'static str,
-    /// What it is, with Icepack's name.
-    pub description: &'static str,
-}
+/// Name, units and meaning of one settable constant of [`RidgeStepParams`] (the type the
+/// [`ItdParams`](super::ItdParams) fields are listed with too).
+pub type StepParamMeta = super::params::ParamMeta;
 
 const fn step_param(
     name: &'static str,
