@@ -140,8 +140,8 @@ pub const SERIES_LEN: usize = LEDGER_TERMS.len() + 3;
 /// [`LEDGER_TERMS`], the ridging force and the mean force.
 pub fn series_columns() -> [(&'static str, &'static str); SERIES_LEN] {
     let mut out = [("time", "s"); SERIES_LEN];
-    for (k, (name, unit, _)) in LEDGER_TERMS.iter().enumerate() {
-        out[k + 1] = (name, unit);
+    for (k, t) in LEDGER_TERMS.iter().enumerate() {
+        out[k + 1] = (t.name, t.unit);
     }
     out[SERIES_LEN - 2] = ("ridging_force", "N/m");
     out[SERIES_LEN - 1] = ("mean_force", "N/m");
@@ -329,5 +329,28 @@ fn relative_residual(e: &EnergyBudget) -> f64 {
         e.residual.abs() / scale
     } else {
         0.0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The run summary keeps every ledger term under the table's name: a `summary.json`
+    /// whose term k holds k + 1 gives back the budget 1, 2, … in the table's order.
+    #[test]
+    fn the_summary_keeps_every_ledger_term_by_its_table_name() {
+        let mut json = serde_json::json!({
+            "scene": "x", "seed": 1, "version": "v", "time": 1.0, "steps": 1, "dt": 1.0,
+            "wall_seconds": 0.0, "bodies": 0, "work_eq9": 0.0, "max_relative_residual": 0.0,
+            "ratio_work_to_pe": 0.0, "ridged_volume": 0.0, "blocks_broken": 0,
+            "rubble_block_lengths": []
+        });
+        for (k, t) in LEDGER_TERMS.iter().enumerate() {
+            json[t.name] = (k as f64 + 1.0).into();
+        }
+        let s: Summary = serde_json::from_value(json).unwrap();
+        let want: Vec<f64> = (1..=LEDGER_TERMS.len()).map(|k| k as f64).collect();
+        assert_eq!(s.energy().values().to_vec(), want);
     }
 }

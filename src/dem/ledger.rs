@@ -107,26 +107,150 @@ pub struct EnergyBudget {
     pub residual: f64,
 }
 
-/// Every term of an [`EnergyBudget`] but its time, in the order of
-/// [`EnergyBudget::values`]: name, unit and whether it is a dissipation (a term that can
-/// only grow from zero). The time series, the summaries and the Python face derive their
-/// columns from this list.
-pub const LEDGER_TERMS: [(&str, &str, bool); 15] = [
-    ("work", "J/m", false),
-    ("frame_work", "J/m", false),
-    ("potential_energy", "J/m", false),
-    ("kinetic_energy_change", "J/m", false),
-    ("friction_dissipation", "J/m", true),
-    ("viscous_dissipation", "J/m", true),
-    ("drag_dissipation", "J/m", true),
-    ("joint_dissipation", "J/m", true),
-    ("boundary_dissipation", "J/m", true),
-    ("fracture_dissipation", "J/m", true),
-    ("contact_hysteresis", "J/m", false),
-    ("cut_away", "J/m", false),
-    ("elastic_energy", "J/m", false),
-    ("other_dissipation", "J/m", false),
-    ("residual", "J/m", false),
+/// The sign convention of a ledger term: what it must satisfy at every sample of a run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Sign {
+    /// Supplied to the system: the input side of the budget.
+    Input,
+    /// A dissipation: grows from zero and is never negative (the tables' gate and the
+    /// tests check it at every sample).
+    Dissipation,
+    /// Energy held (stored, returnable): never negative.
+    Held,
+    /// A sink of either sign (a change of state, or a discrete-model term).
+    Any,
+    /// Work minus all sinks: zero to round-off when the books close.
+    Closure,
+}
+
+/// One term of the energy ledger ([`LEDGER_TERMS`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LedgerTerm {
+    /// Name: the CSV column, the summary key, the Python series name.
+    pub name: &'static str,
+    /// Unit.
+    pub unit: &'static str,
+    /// What the term must satisfy.
+    pub sign: Sign,
+    /// One line: what it is, with the paper's equation.
+    pub description: &'static str,
+    /// Whether its magnitude counts towards [`EnergyBudget::largest_term`], the scale of
+    /// relative residuals (the terms that together make up the budget, without double
+    /// counting the parts of `other_dissipation` or of `work`).
+    pub scale: bool,
+}
+
+impl LedgerTerm {
+    /// True for a dissipation (a term that can only grow from zero).
+    pub const fn is_dissipation(&self) -> bool {
+        matches!(self.sign, Sign::Dissipation)
+    }
+}
+
+const fn term(
+    name: &'static str,
+    sign: Sign,
+    scale: bool,
+    description: &'static str,
+) -> LedgerTerm {
+    LedgerTerm {
+        name,
+        unit: "J/m",
+        sign,
+        description,
+        scale,
+    }
+}
+
+/// Every term of an [`EnergyBudget`] but its time, in the order of [`EnergyBudget::values`]:
+/// the one list behind the time series' columns, the summaries, the dissipation gate of the
+/// tables, the residual scale and the Python face (docs/model.md, "Energy budget").
+pub const LEDGER_TERMS: [LedgerTerm; 15] = [
+    term(
+        "work",
+        Sign::Input,
+        true,
+        "work done by the push, eq (9) as a power balance",
+    ),
+    term(
+        "frame_work",
+        Sign::Input,
+        false,
+        "the part of work done by the frame of eqs (7)-(8) moving at U",
+    ),
+    term(
+        "potential_energy",
+        Sign::Any,
+        true,
+        "potential energy change (gravity and buoyancy), eq (10)",
+    ),
+    term(
+        "kinetic_energy_change",
+        Sign::Any,
+        true,
+        "kinetic energy change since the start",
+    ),
+    term(
+        "friction_dissipation",
+        Sign::Dissipation,
+        true,
+        "frictional dissipation, eq (11)",
+    ),
+    term(
+        "viscous_dissipation",
+        Sign::Dissipation,
+        true,
+        "viscous contact dissipation, eq (12)",
+    ),
+    term(
+        "drag_dissipation",
+        Sign::Dissipation,
+        true,
+        "water drag dissipation",
+    ),
+    term(
+        "joint_dissipation",
+        Sign::Dissipation,
+        false,
+        "joint viscous dissipation, eq (1)",
+    ),
+    term(
+        "boundary_dissipation",
+        Sign::Dissipation,
+        false,
+        "dissipation of the dashpots of eqs (7)-(8) relative to their frame and of the floe dashpots",
+    ),
+    term(
+        "fracture_dissipation",
+        Sign::Dissipation,
+        false,
+        "elastic energy joints held when severed",
+    ),
+    term(
+        "contact_hysteresis",
+        Sign::Any,
+        false,
+        "elastic contact work not returned at separation",
+    ),
+    term(
+        "cut_away",
+        Sign::Any,
+        false,
+        "kinetic energy change of blocks re-cut by bevels",
+    ),
+    term(
+        "elastic_energy",
+        Sign::Held,
+        true,
+        "elastic energy held by contacts, joints and floe springs",
+    ),
+    term(
+        "other_dissipation",
+        Sign::Any,
+        true,
+        "joint, boundary and fracture dissipation, contact hysteresis and cut-away",
+    ),
+    term("residual", Sign::Closure, false, "work minus all sinks"),
 ];
 
 impl EnergyBudget {
@@ -202,23 +326,73 @@ impl EnergyBudget {
         LEDGER_TERMS
             .into_iter()
             .zip(self.values())
-            .filter(|((_, _, d), _)| *d)
-            .map(|((name, _, _), v)| (name, v))
+            .filter(|(t, _)| t.is_dissipation())
+            .map(|(t, v)| (t.name, v))
     }
 
     /// The largest magnitude among the terms (J/m), the scale for relative residuals.
     pub fn largest_term(&self) -> f64 {
-        [
-            self.work,
-            self.potential_energy,
-            self.kinetic_energy,
-            self.friction_dissipation,
-            self.viscous_dissipation,
-            self.drag_dissipation,
-            self.elastic_energy,
-            self.other_dissipation,
-        ]
-        .iter()
-        .fold(0.0f64, |m, x| m.max(x.abs()))
+        LEDGER_TERMS
+            .iter()
+            .zip(self.values())
+            .filter(|(t, _)| t.scale)
+            .fold(0.0f64, |m, (_, x)| m.max(x.abs()))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A budget whose term k holds k + 1, by the struct's own field names.
+    fn numbered() -> EnergyBudget {
+        let mut map = serde_json::Map::new();
+        for (k, t) in LEDGER_TERMS.iter().enumerate() {
+            // The one field whose name differs from its term (kept for old files).
+            let field = if t.name == "kinetic_energy_change" {
+                "kinetic_energy"
+            } else {
+                t.name
+            };
+            map.insert(field.into(), (k as f64 + 1.0).into());
+        }
+        serde_json::from_value(serde_json::Value::Object(map)).unwrap()
+    }
+
+    /// `values()` lays the fields out in the table's order, and the table names every field
+    /// of the budget but its time once.
+    #[test]
+    fn values_follow_the_table_and_cover_every_field() {
+        let b = numbered();
+        let want: Vec<f64> = (1..=LEDGER_TERMS.len()).map(|k| k as f64).collect();
+        assert_eq!(b.values().to_vec(), want);
+        let fields = serde_json::to_value(b).unwrap();
+        let n = fields.as_object().unwrap().len();
+        assert_eq!(
+            n,
+            LEDGER_TERMS.len() + 1,
+            "every field but `time` is a term"
+        );
+    }
+
+    /// The dissipations and the residual scale come from the table's columns.
+    #[test]
+    fn dissipations_and_scale_come_from_the_table() {
+        let b = numbered();
+        let names: Vec<&str> = b.dissipations().map(|(n, _)| n).collect();
+        assert_eq!(
+            names,
+            [
+                "friction_dissipation",
+                "viscous_dissipation",
+                "drag_dissipation",
+                "joint_dissipation",
+                "boundary_dissipation",
+                "fracture_dissipation"
+            ]
+        );
+        // Of the numbered terms, other_dissipation (14) is the largest that counts.
+        assert_eq!(b.largest_term(), 14.0);
+        assert!(LEDGER_TERMS.iter().all(|t| !t.description.is_empty()));
     }
 }
