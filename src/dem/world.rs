@@ -442,11 +442,29 @@ impl World {
     /// bound and does not move: set a time step with [`World::set_time_step`] to step it.
     /// A step that produces a non-finite velocity records a [`World::fault`] and leaves
     /// the positions; later calls do nothing.
+    ///
+    /// The phases, in order: every force at the poses and half-step velocities
+    /// ([`World::gather_forces`]), the leapfrog velocities (eq 5, [`World::integrate`]), the
+    /// ledger with the mid-step velocities (eqs 9–12, [`World::book_ledger`]), the
+    /// positions (eq 6) and fracture ([`World::advance_positions`]).
     pub fn step(&mut self) {
         let dt = self.dt;
         if dt.is_nan() || dt <= 0.0 || dt.is_infinite() || self.fault.is_some() {
             return;
         }
+        self.gather_forces(dt);
+        let driver = self.integrate(dt);
+        if self.fault.is_some() {
+            return;
+        }
+        self.book_ledger(dt, driver);
+        self.advance_positions(dt);
+    }
+
+    /// Outlines at the present poses, then every force of the step into `bodies.force` and
+    /// `bodies.torque`: gravity, buoyancy and drag, joints (eq 1), boundary conditions
+    /// (eqs 7–8, floe supports), external loads, numerical damping, contacts (eqs 2–4).
+    fn gather_forces(&mut self, dt: f64) {
         let n = self.bodies.len();
         let g = self.params.gravity;
         let b = &mut self.bodies;
@@ -495,8 +513,15 @@ impl World {
             self.params.contact_dashpot,
             &mut self.acc.contact,
         );
-        // Leapfrog velocities, eq (5); prescribed degrees of freedom take their value and
-        // the driver supplies whatever force that takes.
+    }
+
+    /// Leapfrog velocities, eq (5); prescribed degrees of freedom take their value and the
+    /// driver supplies whatever force that takes. Keeps the velocities before the step and
+    /// the mid-step velocities for the ledger; returns the driver's work (J/m). A
+    /// non-finite velocity records the fault.
+    fn integrate(&mut self, dt: f64) -> f64 {
+        let n = self.bodies.len();
+        let b = &mut self.bodies;
         self.vel_old.clear();
         self.vel_old.extend_from_slice(&b.vel);
         self.omega_old.clear();
@@ -541,10 +566,16 @@ impl World {
                 });
             }
         }
-        if self.fault.is_some() {
-            return;
-        }
-        // Ledger, eqs (9)–(12), with the mid-step velocities.
+        driver
+    }
+
+    /// The ledger, eqs (9)–(12): every force's work over the step with the mid-step
+    /// velocities, so that it agrees with the kinetic energy exactly.
+    fn book_ledger(&mut self, dt: f64, driver: f64) {
+        let n = self.bodies.len();
+        let g = self.params.gravity;
+        let gamma = self.params.global_damping;
+        let b = &self.bodies;
         self.acc.work += driver;
         let mut grav = 0.0;
         for i in 0..n {
@@ -574,14 +605,18 @@ impl World {
                 self.acc.global_damping += (f.dot(self.vbar[i]) + m * self.wbar[i]) * dt;
             }
         }
-        // Positions, eq (6).
-        for i in 0..n {
+    }
+
+    /// Positions, eq (6), the clock, then fracture: new cracks at the new poses, running
+    /// cracks advance, and what they sever is handled ([`World::after_fracture`]).
+    fn advance_positions(&mut self, dt: f64) {
+        let b = &mut self.bodies;
+        for i in 0..b.len() {
             b.pos[i] = b.pos[i] + b.vel[i] * dt;
             b.theta[i] += b.omega[i] * dt;
         }
         self.time += dt;
         self.steps += 1;
-        // Fracture: new cracks at the new poses, running cracks advance.
         if !self.joints.is_empty() {
             self.joints
                 .advance(self.params.crack_speed, self.time, dt, &mut self.acc.joints);
