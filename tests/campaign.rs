@@ -290,6 +290,28 @@ fn tiny_campaign_is_resumable_and_complete() {
     {
         use pressridge::table::tabulate::tabulate;
         let t = tabulate(&records, 11).unwrap();
+        // The table in memory is the table its file reads back as (friction-grid layout
+        // here): the same sets, axes and fields, to the bit.
+        let mem = t.lookup().unwrap();
+        let disk = pressridge::table::lookup::RidgeLookup::open(&table).unwrap();
+        assert_eq!(
+            (mem.sets(), mem.thickness(), mem.volume()),
+            (disk.sets(), disk.thickness(), disk.volume())
+        );
+        assert_eq!(mem.friction(), disk.friction());
+        let names: Vec<&str> = disk.variables().collect();
+        assert_eq!(mem.variables().collect::<Vec<_>>(), names);
+        for n in names {
+            let (a, b) = (mem.field(n).unwrap(), disk.field(n).unwrap());
+            assert_eq!(
+                (a.axes, &a.units, &a.long_name),
+                (b.axes, &b.units, &b.long_name)
+            );
+            let bits = |f: &pressridge::table::lookup::Field| -> Vec<u64> {
+                f.data.iter().map(|x| x.to_bits()).collect()
+            };
+            assert_eq!(bits(a), bits(b), "{n}");
+        }
         for (h, runs) in t.cf_finals[0].iter().enumerate() {
             assert_eq!(runs.len(), 2);
             let mean = runs.iter().sum::<f64>() / 2.0;

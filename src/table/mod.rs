@@ -12,6 +12,7 @@
 //!   range, NaN where no run reached), read back from NetCDF by `RidgeLookup::open`.
 
 pub mod ensemble;
+pub mod fields;
 pub mod fit;
 pub mod lookup;
 pub mod rafting;

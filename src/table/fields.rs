@@ -1,0 +1,383 @@
+//! The variables of a ridging table, each with its dimensions, units and description: one
+//! list behind the NetCDF file (`crate::io::table_netcdf`) and the in-memory lookup
+//! ([`RidgeTable::lookup`]), so that a table need not pass through a file to be queried.
+
+use super::fit::Band;
+use super::lookup::{Axes, Field, LookupError, RidgeLookup};
+use super::tabulate::{RidgeTable, SetFits};
+
+/// One variable of a ridging table in the set layout: values in C order over `dims`
+/// (a subset of `set`, `thickness`, `volume` in that order), NaN where no run reached.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TableVariable {
+    /// Name, as in the NetCDF file.
+    pub name: &'static str,
+    /// Dimensions, outermost first.
+    pub dims: &'static [&'static str],
+    /// UDUNITS string.
+    pub units: &'static str,
+    /// Description.
+    pub long_name: &'static str,
+    /// Values.
+    pub data: Vec<f64>,
+}
+
+/// (name, dims, units, long_name, values), as [`TableVariable`].
+type Var = (
+    &'static str,
+    &'static [&'static str],
+    &'static str,
+    &'static str,
+    Vec<f64>,
+);
+
+impl RidgeTable {
+    /// Every variable of the table, in file order (the set layout; the NetCDF writer spreads
+    /// the `set` axis onto a (μ, μ_w) grid where the sets differ only in friction).
+    pub fn variables(&self) -> Vec<TableVariable> {
+        let t = self;
+        let nv = t.volume.len();
+        let flat3 =
+            |x: &Vec<Vec<Vec<f64>>>| x.iter().flatten().flatten().copied().collect::<Vec<f64>>();
+        let flat2 = |x: &Vec<Vec<f64>>| x.iter().flatten().copied().collect::<Vec<f64>>();
+        let coef = |g: &dyn Fn(&SetFits) -> f64| -> Vec<f64> {
+            t.fits
+                .iter()
+                .flatten()
+                .map(|x| x.as_ref().map_or(f64::NAN, g))
+                .collect()
+        };
+        let pooled = |g: &dyn Fn(&SetFits) -> f64| -> Vec<f64> {
+            t.pooled
+                .iter()
+                .map(|x| x.as_ref().map_or(f64::NAN, g))
+                .collect()
+        };
+        let band = |g: &dyn Fn(&Band) -> &Vec<f64>| -> Vec<f64> {
+            t.work_band
+                .iter()
+                .flat_map(|b| match b {
+                    Some(b) => g(b).clone(),
+                    None => vec![f64::NAN; nv],
+                })
+                .collect()
+        };
+        const S3: &[&str] = &["set", "thickness", "volume"];
+        const S2: &[&str] = &["set", "thickness"];
+        const SV: &[&str] = &["set", "volume"];
+        const S1: &[&str] = &["set"];
+        let ds = t.default_set();
+        let vars: Vec<Var> = vec![
+            (
+                "mu",
+                S1,
+                "1",
+                "friction coefficient between ice blocks above the water line",
+                t.mu.clone(),
+            ),
+            (
+                "mu_w",
+                S1,
+                "1",
+                "friction coefficient between ice blocks below the water line",
+                t.mu_w.clone(),
+            ),
+            (
+                "thickness",
+                &["thickness"],
+                "m",
+                "lead-ice sheet thickness",
+                t.thickness.clone(),
+            ),
+            (
+                "volume",
+                &["volume"],
+                "m3 m-1",
+                "ridged-ice volume per metre of ridge V = U h t",
+                t.volume.clone(),
+            ),
+            (
+                "work_mean",
+                S3,
+                "J m-1",
+                "ensemble mean ridging work, eq (9)",
+                flat3(&t.work_mean),
+            ),
+            (
+                "work_std",
+                S3,
+                "J m-1",
+                "ensemble standard deviation of the ridging work",
+                flat3(&t.work_std),
+            ),
+            (
+                "potential_energy_mean",
+                S3,
+                "J m-1",
+                "ensemble mean potential energy change, eq (10)",
+                flat3(&t.pe_mean),
+            ),
+            (
+                "potential_energy_std",
+                S3,
+                "J m-1",
+                "ensemble standard deviation of the potential energy change",
+                flat3(&t.pe_std),
+            ),
+            (
+                "ratio_mean",
+                S3,
+                "1",
+                "ensemble mean of work over potential energy change",
+                flat3(&t.ratio_mean),
+            ),
+            (
+                "force_mean",
+                S3,
+                "N m-1",
+                "ensemble mean ridging force over the sampling interval",
+                flat3(&t.force_mean),
+            ),
+            (
+                "runs",
+                S3,
+                "1",
+                "number of runs behind each ensemble value",
+                t.runs
+                    .iter()
+                    .flatten()
+                    .flatten()
+                    .map(|&n| n as f64)
+                    .collect(),
+            ),
+            (
+                "force_fit",
+                S3,
+                "N m-1",
+                "ridging force from the pooled work fit, eq (15), within the volumes the runs of each thickness reached",
+                flat3(&t.force_fit),
+            ),
+            (
+                "work_a",
+                S2,
+                "J m-5",
+                "work fit W = V(a V + b), coefficient a, eq (13)",
+                coef(&|x| x.work.a),
+            ),
+            (
+                "work_b",
+                S2,
+                "J m-3",
+                "work fit coefficient b, eq (13)",
+                coef(&|x| x.work.b),
+            ),
+            (
+                "work_a_se",
+                S2,
+                "J m-5",
+                "standard error of work_a",
+                coef(&|x| x.work.standard_errors()[0]),
+            ),
+            (
+                "work_b_se",
+                S2,
+                "J m-3",
+                "standard error of work_b",
+                coef(&|x| x.work.standard_errors()[1]),
+            ),
+            (
+                "potential_energy_a",
+                S2,
+                "J m-5",
+                "potential energy fit PE = V(a V + b), coefficient a, eq (14)",
+                coef(&|x| x.potential_energy.a),
+            ),
+            (
+                "potential_energy_b",
+                S2,
+                "J m-3",
+                "potential energy fit coefficient b, eq (14)",
+                coef(&|x| x.potential_energy.b),
+            ),
+            (
+                "cf_by_set",
+                S2,
+                "1",
+                "C_f: ensemble mean of final work over potential energy change",
+                flat2(&t.cf),
+            ),
+            (
+                "cf_std",
+                S2,
+                "1",
+                "sample standard deviation of the runs' final work over potential energy change",
+                flat2(&t.cf_std),
+            ),
+            (
+                "cf_conf_lo",
+                S2,
+                "1",
+                "lower end of the 95 % confidence interval of cf_by_set (Student t)",
+                t.cf_conf.iter().flatten().map(|c| c.0).collect(),
+            ),
+            (
+                "cf_conf_hi",
+                S2,
+                "1",
+                "upper end of the 95 % confidence interval of cf_by_set (Student t)",
+                t.cf_conf.iter().flatten().map(|c| c.1).collect(),
+            ),
+            (
+                "cf_runs",
+                S2,
+                "1",
+                "number of runs behind cf_by_set",
+                t.cf_runs.iter().flatten().map(|&n| f64::from(n)).collect(),
+            ),
+            (
+                "cf",
+                &["thickness"],
+                "1",
+                "C_f at the friction of the attributes mu and mu_w: ratio of ridging work to potential energy change",
+                t.cf[ds].clone(),
+            ),
+            (
+                "pooled_work_a",
+                S1,
+                "J m-5",
+                "work fit pooled over thicknesses, coefficient a, eq (13)",
+                pooled(&|x| x.work.a),
+            ),
+            (
+                "pooled_work_b",
+                S1,
+                "J m-3",
+                "work fit pooled over thicknesses, coefficient b, eq (13)",
+                pooled(&|x| x.work.b),
+            ),
+            (
+                "pooled_work_a_se",
+                S1,
+                "J m-5",
+                "standard error of pooled_work_a",
+                pooled(&|x| x.work.standard_errors()[0]),
+            ),
+            (
+                "pooled_work_b_se",
+                S1,
+                "J m-3",
+                "standard error of pooled_work_b",
+                pooled(&|x| x.work.standard_errors()[1]),
+            ),
+            (
+                "pooled_potential_energy_a",
+                S1,
+                "J m-5",
+                "pooled potential energy fit, coefficient a, eq (14)",
+                pooled(&|x| x.potential_energy.a),
+            ),
+            (
+                "pooled_potential_energy_b",
+                S1,
+                "J m-3",
+                "pooled potential energy fit, coefficient b, eq (14)",
+                pooled(&|x| x.potential_energy.b),
+            ),
+            (
+                "work_fit",
+                SV,
+                "J m-1",
+                "pooled work fit, eq (13)",
+                band(&|b| &b.fit),
+            ),
+            (
+                "work_conf_lo",
+                SV,
+                "J m-1",
+                "lower edge of the 95 % confidence band of the pooled work fit",
+                band(&|b| &b.conf_lo),
+            ),
+            (
+                "work_conf_hi",
+                SV,
+                "J m-1",
+                "upper edge of the 95 % confidence band of the pooled work fit",
+                band(&|b| &b.conf_hi),
+            ),
+            (
+                "work_pred_lo",
+                SV,
+                "J m-1",
+                "lower edge of the 95 % prediction band of the pooled work fit",
+                band(&|b| &b.pred_lo),
+            ),
+            (
+                "work_pred_hi",
+                SV,
+                "J m-1",
+                "upper edge of the 95 % prediction band of the pooled work fit",
+                band(&|b| &b.pred_hi),
+            ),
+            (
+                "ratio_fit",
+                SV,
+                "1",
+                "dWork/dPE from the pooled fits, eq (16)",
+                flat2(&t.ratio_fit),
+            ),
+        ];
+        vars.into_iter()
+            .map(|(name, dims, units, long_name, data)| TableVariable {
+                name,
+                dims,
+                units,
+                long_name,
+                data,
+            })
+            .collect()
+    }
+
+    /// The table as a [`RidgeLookup`] without a file: the same fields, axes and set labels
+    /// as [`RidgeLookup::open`] gives for the file [`crate::io::table_netcdf::write_ridge_table`]
+    /// writes (in either layout); of the attributes only those the table itself holds
+    /// (`sets`, `seeds`, `excluded_runs`), not the provenance the file adds.
+    pub fn lookup(&self) -> Result<RidgeLookup, LookupError> {
+        let mut fields = Vec::new();
+        for v in self.variables() {
+            if matches!(v.name, "thickness" | "volume") {
+                continue;
+            }
+            let on = |x: &str| v.dims.contains(&x);
+            let axes = Axes {
+                set: on("set"),
+                thickness: on("thickness"),
+                volume: on("volume"),
+            };
+            fields.push((
+                v.name.to_string(),
+                Field::new(axes, v.units, v.long_name, v.data),
+            ));
+        }
+        let seeds: Vec<String> = self.seeds.iter().map(u64::to_string).collect();
+        let excluded: Vec<String> = self
+            .excluded
+            .iter()
+            .map(|(id, why)| format!("{id}: {why}"))
+            .collect();
+        let attributes = [
+            ("sets", self.sets.join("; ")),
+            ("seeds", seeds.join(" ")),
+            ("excluded_runs", excluded.join("; ")),
+        ]
+        .into_iter()
+        .map(|(k, v)| (k.to_string(), v))
+        .collect();
+        RidgeLookup::new(
+            self.sets.clone(),
+            self.thickness.clone(),
+            self.volume.clone(),
+            fields,
+            attributes,
+        )
+    }
+}
