@@ -868,28 +868,22 @@ contains
     if (present(valid)) then
        if (.not. sized(size(valid), ncol, 'valid', where, ierr)) return
     end if
-    if (present(closing)) then
-       if (.not. sized(size(closing), ncol, 'closing', where, ierr)) return
-       r%closing = ptr1(closing)
-    end if
-    if (present(opening)) then
-       if (.not. sized(size(opening), ncol, 'opening', where, ierr)) return
-       r%opening = ptr1(opening)
-    end if
-    if (present(dardg1dt)) then
-       if (.not. sized(size(dardg1dt), ncol, 'dardg1dt', where, ierr)) return
-       r%dardg1dt = ptr1(dardg1dt)
-    end if
-    if (present(dardg2dt)) then
-       if (.not. sized(size(dardg2dt), ncol, 'dardg2dt', where, ierr)) return
-       r%dardg2dt = ptr1(dardg2dt)
-    end if
-    if (present(dvirdgdt)) then
-       if (.not. sized(size(dvirdgdt), ncol, 'dvirdgdt', where, ierr)) return
-       r%dvirdgdt = ptr1(dvirdgdt)
-    end if
+    if (.not. ok1('closing', closing)) return
+    if (.not. ok1('opening', opening)) return
+    if (.not. ok1('dardg1dt', dardg1dt)) return
+    if (.not. ok1('dardg2dt', dardg2dt)) return
+    if (.not. ok1('dvirdgdt', dvirdgdt)) return
+    r = rate_ptrs(ncol, closing, opening, dardg1dt, dardg2dt, dvirdgdt)
     call ridge_common(grid_2d(ncat, ncol), ptr2(aicen), ptr2(vicen), ptr1(aice0), &
          ptr1(convergence), ptr1(shear), dt, hin_max, options, valid, r, where, ierr)
+  contains
+    !> An absent rate, or one of ncol values.
+    logical function ok1(name, x)
+      character(len=*), intent(in) :: name
+      real(c_double), intent(in), optional :: x(:)
+      ok1 = .true.
+      if (present(x)) ok1 = sized(size(x), ncol, name, where, ierr)
+    end function ok1
   end subroutine ridge_step_2d
 
   !> As ridge_step_2d in CICE's block layout: aicen(nx, ny, ncat), vicen(nx, ny, ncat), and
@@ -926,26 +920,12 @@ contains
           return
        end if
     end if
-    if (present(closing)) then
-       if (.not. same2(closing, 'closing')) return
-       r%closing = ptr2(closing)
-    end if
-    if (present(opening)) then
-       if (.not. same2(opening, 'opening')) return
-       r%opening = ptr2(opening)
-    end if
-    if (present(dardg1dt)) then
-       if (.not. same2(dardg1dt, 'dardg1dt')) return
-       r%dardg1dt = ptr2(dardg1dt)
-    end if
-    if (present(dardg2dt)) then
-       if (.not. same2(dardg2dt, 'dardg2dt')) return
-       r%dardg2dt = ptr2(dardg2dt)
-    end if
-    if (present(dvirdgdt)) then
-       if (.not. same2(dvirdgdt, 'dvirdgdt')) return
-       r%dvirdgdt = ptr2(dvirdgdt)
-    end if
+    if (.not. ok2('closing', closing)) return
+    if (.not. ok2('opening', opening)) return
+    if (.not. ok2('dardg1dt', dardg1dt)) return
+    if (.not. ok2('dardg2dt', dardg2dt)) return
+    if (.not. ok2('dvirdgdt', dvirdgdt)) return
+    r = rate_ptrs(ncol, closing, opening, dardg1dt, dardg2dt, dvirdgdt)
     if (present(valid)) then
        call ridge_common(grid_3d(ncat, ncol), ptr3(aicen), ptr3(vicen), ptr2(aice0), &
             ptr2(convergence), ptr2(shear), dt, hin_max, options, reshape(valid, [ncol]), r, &
@@ -962,7 +942,30 @@ contains
       if (.not. same2) call fail(PRESSRIDGE_ERR_BAD_SIZE, name// &
            ' must have the shape (nx, ny) of aicen', where, ierr)
     end function same2
+    !> An absent rate, or one of the shape (nx, ny) of aicen.
+    logical function ok2(name, x)
+      character(len=*), intent(in) :: name
+      real(c_double), intent(in), optional :: x(:, :)
+      ok2 = .true.
+      if (present(x)) ok2 = same2(x, name)
+    end function ok2
   end subroutine ridge_step_3d
+
+  !> C pointers to the optional rates of a ridging call, null where absent; each present
+  !> array is contiguous and holds ncol values (its caller checked the shape). Assumed
+  !> size, so one routine serves the (ncol) and the (nx, ny) layouts.
+  type(c_rates) function rate_ptrs(ncol, closing, opening, dardg1dt, dardg2dt, dvirdgdt) &
+       result(r)
+    integer, intent(in) :: ncol
+    real(c_double), intent(in), optional, target :: closing(*), opening(*), dardg1dt(*), &
+         dardg2dt(*), dvirdgdt(*)
+    if (ncol == 0) return
+    if (present(closing)) r%closing = c_loc(closing(1))
+    if (present(opening)) r%opening = c_loc(opening(1))
+    if (present(dardg1dt)) r%dardg1dt = c_loc(dardg1dt(1))
+    if (present(dardg2dt)) r%dardg2dt = c_loc(dardg2dt(1))
+    if (present(dvirdgdt)) r%dvirdgdt = c_loc(dvirdgdt(1))
+  end function rate_ptrs
 
   ! ------------------------------------------------------------------ layouts
 
