@@ -36,7 +36,7 @@ use pressridge::itd::{
     StrengthOptions, TracerBase, TracerField, TracerLayout, TracerRole, category_bounds,
     ridge_batch_masked, ridge_step_batch, strength_batch_masked,
 };
-use pressridge::scene::{Scene, SceneError};
+use pressridge::scene::{Scene, SceneError, SceneLoadError};
 use pressridge::simulation;
 use pressridge::simulation::series_columns;
 use pressridge::table::lookup::{LookupError, RidgeLookup};
@@ -98,6 +98,15 @@ impl From<CampaignError> for BindError {
     fn from(e: CampaignError) -> Self {
         match e {
             CampaignError::Io(io) => io.into(),
+            other => BindError::Value(other.to_string()),
+        }
+    }
+}
+
+impl From<SceneLoadError> for BindError {
+    fn from(e: SceneLoadError) -> Self {
+        match e {
+            SceneLoadError::Read(io) => io.into(),
             other => BindError::Value(other.to_string()),
         }
     }
@@ -1483,19 +1492,10 @@ fn default_params<'py>(py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
 // ---------------------------------------------------------------------------------------
 // The simulator
 
-/// The resolved scene: a TOML file (or the built-in default) with `key=value` overrides.
+/// The resolved scene: a TOML file (or the built-in default) with `key=value` overrides
+/// ([`Scene::load`]).
 fn load_scene(path: Option<&Path>, sets: &[String]) -> Result<Scene, BindError> {
-    let base = match path {
-        Some(p) => {
-            let text = std::fs::read_to_string(p).map_err(|e| IoError::Os {
-                path: p.to_path_buf(),
-                source: e,
-            })?;
-            Scene::from_toml(&text).map_err(|e| value_err(format!("{}: {e}", p.display())))?
-        }
-        None => Scene::default(),
-    };
-    Ok(base.with_overrides(sets)?)
+    Ok(Scene::load(path, sets)?)
 }
 
 /// The resolved scene as TOML text.
