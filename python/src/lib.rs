@@ -386,52 +386,48 @@ fn category_shapes(
 // ---------------------------------------------------------------------------------------
 // Options
 
+/// `names` as `"a" or "b"` for messages.
+fn quoted_names<T: Copy>(all: &[T], name: fn(T) -> &'static str) -> String {
+    all.iter()
+        .map(|&x| format!("\"{}\"", name(x)))
+        .collect::<Vec<_>>()
+        .join(" or ")
+}
+
 fn participation(name: &str) -> PyResult<Participation> {
-    match name {
-        "exponential" => Ok(Participation::Exponential),
-        "thorndike" => Ok(Participation::Thorndike),
-        _ => Err(value_err(format!(
-            "unknown participation `{name}`; use \"exponential\" (Lipscomb et al. 2007, CICE default) or \"thorndike\" (Thorndike et al. 1975)"
+    Participation::from_name(name).ok_or_else(|| {
+        value_err(format!(
+            "unknown participation `{name}`; use {} (exponential: Lipscomb et al. 2007, CICE default; thorndike: Thorndike et al. 1975)",
+            quoted_names(&Participation::ALL, Participation::name)
         ))
-        .into()),
-    }
+        .into()
+    })
 }
 
 fn redistribution(name: &str) -> PyResult<Redistribution> {
-    match name {
-        "exponential" => Ok(Redistribution::Exponential),
-        "uniform" => Ok(Redistribution::Uniform),
-        _ => Err(value_err(format!(
-            "unknown redistribution `{name}`; use \"exponential\" (Lipscomb et al. 2007, CICE default) or \"uniform\" (Hibler 1980)"
+    Redistribution::from_name(name).ok_or_else(|| {
+        value_err(format!(
+            "unknown redistribution `{name}`; use {} (exponential: Lipscomb et al. 2007, CICE default; uniform: Hibler 1980)",
+            quoted_names(&Redistribution::ALL, Redistribution::name)
         ))
-        .into()),
-    }
+        .into()
+    })
 }
 
 fn law(name: &str) -> PyResult<StrengthFormula> {
-    match name {
-        "rothrock" => Ok(StrengthFormula::Rothrock),
-        "hibler" => Ok(StrengthFormula::Hibler1979),
-        _ => Err(value_err(format!(
-            "unknown strength law `{name}`; use \"rothrock\" (Rothrock 1975, CICE default) or \"hibler\" (Hibler 1979)"
+    StrengthFormula::from_name(name).ok_or_else(|| {
+        value_err(format!(
+            "unknown strength law `{name}`; use {} (rothrock: Rothrock 1975, CICE default; hibler: Hibler 1979)",
+            quoted_names(&StrengthFormula::ALL, StrengthFormula::name)
         ))
-        .into()),
-    }
+        .into()
+    })
 }
 
+/// CICE's defaults with the `(name, value)` overrides ([`ItdParams::from_pairs`]; an
+/// unknown name is answered with the closest valid one).
 fn itd_params(params: Vec<(String, f64)>) -> PyResult<ItdParams> {
-    let mut p = ItdParams::default();
-    for (name, value) in params {
-        if !ItdParams::NAMES.contains(&name.as_str()) {
-            return Err(value_err(format!(
-                "unknown parameter `{name}`; known parameters: {}",
-                ItdParams::NAMES.join(", ")
-            ))
-            .into());
-        }
-        p.set(&name, value).map_err(value_err)?;
-    }
-    Ok(p)
+    Ok(ItdParams::from_pairs(params).map_err(value_err)?)
 }
 
 /// The frictional factor from the normalised Python argument: a number, node arrays, a
