@@ -337,7 +337,11 @@ impl CampaignSpec {
                 source,
             },
             SceneLoadError::Scene(source) => CampaignError::Scene {
-                run: path.as_deref().unwrap_or(Path::new("")).display().to_string(),
+                run: path
+                    .as_deref()
+                    .unwrap_or(Path::new(""))
+                    .display()
+                    .to_string(),
                 source,
             },
         })?;

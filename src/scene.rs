@@ -498,11 +498,10 @@ impl Scene {
     ) -> Result<Scene, SceneLoadError> {
         let base = match path {
             Some(p) => {
-                let text =
-                    std::fs::read_to_string(p).map_err(|e| crate::io::IoError::Os {
-                        path: p.to_path_buf(),
-                        source: e,
-                    })?;
+                let text = std::fs::read_to_string(p).map_err(|e| crate::io::IoError::Os {
+                    path: p.to_path_buf(),
+                    source: e,
+                })?;
                 Scene::from_toml(&text).map_err(|source| SceneLoadError::File {
                     path: p.to_path_buf(),
                     source,
