@@ -23,12 +23,12 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use pressridge::campaign::{
-    self, CampaignError, CampaignSpec, PlannedRun, Progress, adopt_records, prepare_campaign,
+    CampaignError, CampaignSpec, PlannedRun, Progress, adopt_records, prepare_campaign,
     run_campaign, run_planned,
 };
 use pressridge::io::IoError;
 use pressridge::io::itd_netcdf::{NetcdfError, read_cf_table};
-use pressridge::io::table_netcdf::{Provenance, write_ridge_table};
+use pressridge::io::table_netcdf::write_ridge_table;
 use pressridge::itd::{
     BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, CategoryBounds, Cf, CfPreset,
     CfTable, CiceTracerFlags, ItdError, ItdParams, Participation, Redistribution, RidgeOptions,
@@ -39,8 +39,9 @@ use pressridge::itd::{
 use pressridge::scene::{Scene, SceneError, SceneLoadError};
 use pressridge::simulation;
 use pressridge::simulation::series_columns;
+use pressridge::table::campaigns::{TabulateCampaignsError, TabulateOptions, tabulate_campaigns};
 use pressridge::table::lookup::{LookupError, RidgeLookup};
-use pressridge::table::tabulate::tabulate as tabulate_records;
+use pressridge::table::tabulate::fit_warnings;
 
 // ---------------------------------------------------------------------------------------
 // Errors
@@ -1713,55 +1714,66 @@ fn campaign_run_planned(
     })
 }
 
-/// Tabulates a campaign directory into a NetCDF lookup table (as `pressridge tabulate`);
-/// returns one line per set and thickness with its C_f.
+/// What a Python tabulation returns besides the table file: ([(set, thickness, C_f)],
+/// [warning]).
+type TabulateOut = (Vec<(String, f64, f64)>, Vec<String>);
+
+/// Tabulates campaign directories into a NetCDF lookup table, as `pressridge tabulate`
+/// (`table::campaigns::tabulate_campaigns`); returns one line per set and thickness with
+/// its C_f, and the warnings and notes the command line prints.
 #[pyfunction]
-#[pyo3(signature = (campaign_dir, out, points, command, date, allow_partial=false))]
+#[pyo3(signature = (campaign_dirs, out, points, command, date, allow_partial=false, rafting_reach=pressridge::table::rafting::RAFTING_REACH, exclude_rafted=false))]
+#[allow(clippy::too_many_arguments)]
 fn tabulate(
     py: Python<'_>,
-    campaign_dir: PathBuf,
+    campaign_dirs: Vec<PathBuf>,
     out: PathBuf,
     points: usize,
     command: String,
     date: String,
     allow_partial: bool,
-) -> PyResult<Vec<(String, f64, f64)>> {
+    rafting_reach: f64,
+    exclude_rafted: bool,
+) -> PyResult<TabulateOut> {
     detached(py, || {
-        file_missing(&campaign_dir)?;
-        let c = campaign::read_campaign(&campaign_dir, allow_partial)?;
-        let gaps = if c.is_complete() {
-            String::new()
-        } else {
-            c.describe_gaps()
+        for d in &campaign_dirs {
+            file_missing(d)?;
+        }
+        let opts = TabulateOptions {
+            points,
+            allow_partial,
+            rafting_reach,
+            exclude_rafted,
         };
-        let (planned, spec, records) = (c.planned, c.spec, c.records);
-        let table = tabulate_records(&records, points).map_err(value_err)?;
-        let prov = Provenance {
-            campaign_spec: toml_text(&spec)?,
-            scene: records
-                .first()
-                .map(|r| r.scene.to_toml())
-                .unwrap_or_default(),
-            command,
-            date,
-            runs_planned: planned,
-            runs_tabulated: records.len(),
-            gaps,
-        };
-        write_ridge_table(&out, &table, &prov)?;
+        let t =
+            tabulate_campaigns(&campaign_dirs, &opts, &command, &date).map_err(|e| match e {
+                TabulateCampaignsError::Campaign(c) => c.into(),
+                other => value_err(other),
+            })?;
+        write_ridge_table(&out, &t.table, &t.provenance)?;
+        let mut warnings: Vec<String> = t
+            .partial
+            .iter()
+            .map(|(d, g)| format!("partial campaign {} (allow_partial): {g}", d.display()))
+            .collect();
+        warnings.extend(fit_warnings(&t.table));
+        for (id, why) in &t.gate_excluded {
+            warnings.push(format!(
+                "run {id} left out: its {why}; a dissipation cannot be negative, so the run went numerically unstable"
+            ));
+        }
+        for (id, why) in &t.rafted_out {
+            warnings.push(format!("run {id} left out: its {why}"));
+        }
+        let table = t.table;
         let mut lines = Vec::new();
         for (si, set) in table.sets.iter().enumerate() {
             for (hi, &h) in table.thickness.iter().enumerate() {
                 lines.push((set.clone(), h, table.cf[si][hi]));
             }
         }
-        Ok(lines)
+        Ok((lines, warnings))
     })
-}
-
-/// The spec as `pressridge tabulate` stores it in the table's provenance.
-fn toml_text(spec: &CampaignSpec) -> Result<String, BindError> {
-    toml::to_string(spec).map_err(value_err)
 }
 
 /// Test hook: panics inside the library-call guard, with (`detach = true`) or without the
@@ -1977,6 +1989,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
         "DEFAULT_FRICTION",
         pressridge::table::tabulate::DEFAULT_FRICTION,
     )?;
+    m.add("RAFTING_REACH", pressridge::table::rafting::RAFTING_REACH)?;
     m.add_function(wrap_pyfunction!(default_params, m)?)?;
     m.add_function(wrap_pyfunction!(scene_toml, m)?)?;
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
