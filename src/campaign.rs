@@ -32,7 +32,7 @@ use crate::io::IoError;
 use crate::io::state::{read_json, save_state, write_json};
 use crate::observe;
 pub use crate::record::{RunDigest, RunRecord, RunSample};
-use crate::scene::{Scene, SceneError};
+use crate::scene::{Scene, SceneError, SceneLoadError};
 use crate::simulation;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
@@ -329,20 +329,22 @@ impl CampaignSpec {
     /// The planned runs: the grid points in axis order (the first axis slowest), each with
     /// its seeds. `base_dir` resolves a relative `scene` path.
     pub fn plan(&self, base_dir: &Path) -> Result<Vec<PlannedRun>, CampaignError> {
-        let base = match &self.scene {
-            Some(p) => {
-                let path = base_dir.join(p);
-                let text = std::fs::read_to_string(&path).map_err(|e| IoError::Os {
-                    path: path.clone(),
-                    source: e,
-                })?;
-                Scene::from_toml(&text).map_err(|e| CampaignError::Scene {
-                    run: path.display().to_string(),
-                    source: e,
-                })?
-            }
-            None => Scene::default(),
-        };
+        let path = self.scene.as_ref().map(|p| base_dir.join(p));
+        let base = Scene::load::<&str>(path.as_deref(), &[]).map_err(|e| match e {
+            SceneLoadError::Read(io) => CampaignError::Io(io),
+            SceneLoadError::File { path, source } => CampaignError::Scene {
+                run: path.display().to_string(),
+                source,
+            },
+            SceneLoadError::Scene(source) => CampaignError::Scene {
+                run: path
+                    .as_deref()
+                    .unwrap_or(Path::new(""))
+                    .display()
+                    .to_string(),
+                source,
+            },
+        })?;
         let axes = self.settings()?;
         let mut points: Vec<Vec<String>> = vec![Vec::new()];
         for axis in &axes {

@@ -39,6 +39,25 @@ pub enum SceneError {
     World(#[from] WorldError),
 }
 
+/// An error loading a scene file with overrides ([`Scene::load`]).
+#[derive(Debug, thiserror::Error)]
+pub enum SceneLoadError {
+    /// The file could not be read.
+    #[error(transparent)]
+    Read(#[from] crate::io::IoError),
+    /// The scene in the file is invalid; the message starts with the file's path.
+    #[error("{}: {source}", path.display())]
+    File {
+        /// The file.
+        path: std::path::PathBuf,
+        /// The cause.
+        source: SceneError,
+    },
+    /// An override was malformed, or the scene with the overrides is invalid.
+    #[error(transparent)]
+    Scene(#[from] SceneError),
+}
+
 pub use crate::limits;
 use crate::limits::Range;
 
@@ -468,6 +487,32 @@ impl Scene {
         let s: Scene = toml::from_str(text).map_err(|e| SceneError::Parse(e.to_string()))?;
         s.validate()?;
         Ok(s)
+    }
+
+    /// The scene of a run: the TOML file at `path` (the built-in default when `None`) with
+    /// the `key=value` overrides `sets` applied ([`Scene::with_overrides`]) and validated.
+    /// The one loader of the command line, Python and campaigns.
+    pub fn load<S: AsRef<str>>(
+        path: Option<&std::path::Path>,
+        sets: &[S],
+    ) -> Result<Scene, SceneLoadError> {
+        let base = match path {
+            Some(p) => {
+                let text = std::fs::read_to_string(p).map_err(|e| crate::io::IoError::Os {
+                    path: p.to_path_buf(),
+                    source: e,
+                })?;
+                Scene::from_toml(&text).map_err(|source| SceneLoadError::File {
+                    path: p.to_path_buf(),
+                    source,
+                })?
+            }
+            None => Scene::default(),
+        };
+        if sets.is_empty() {
+            return Ok(base);
+        }
+        Ok(base.with_overrides(sets)?)
     }
 
     /// The scene as TOML text.

@@ -55,6 +55,7 @@ __all__ = [
     "DEFAULT_STEP_PARAMETERS",
     "CF_PRESETS",
     "DEFAULT_FRICTION",
+    "RAFTING_REACH",
     "Run",
     "State",
     "load_run",
@@ -139,6 +140,9 @@ def _params(params: dict, step: bool = False) -> list:
 #: The friction pair (mu, mu_w) whose C_f a ridging table gives by default: Hopkins
 #: (1994)'s thickness set, 1.0 between blocks above and 0.6 below the water line.
 DEFAULT_FRICTION: Tuple[float, float] = tuple(_core.DEFAULT_FRICTION)  # type: ignore[assignment]
+#: A run counts as rafted when its intact lead sheet passed the floe's nose by more than
+#: this (m): the default ``rafting_reach`` of :func:`tabulate` (``--rafting-reach``).
+RAFTING_REACH: float = float(_core.RAFTING_REACH)
 
 
 def _friction_arg(friction: Any) -> Optional[Tuple[float, float]]:
@@ -898,22 +902,63 @@ def _campaign(spec_p: str, out_p: str, client: Any, threads: Optional[int], prog
 
 
 def tabulate(
-    campaign_dir: PathLike, out: PathLike, *, points: int = 41, allow_partial: bool = False
+    campaign_dir: Union[PathLike, Sequence[PathLike]],
+    out: PathLike,
+    *,
+    points: int = 41,
+    allow_partial: bool = False,
+    rafting_reach: float = RAFTING_REACH,
+    exclude_rafted: bool = False,
 ) -> Table:
-    """Tabulates a campaign directory into a NetCDF lookup table, as ``pressridge
-    tabulate``: ensemble statistics of work (J/m), potential energy (J/m), their ratio and
-    the ridging force (N/m) on a grid of ``points`` ridged volumes (m³/m), fits (eqs
-    13-16) and C_f per thickness. Returns the table, opened.
+    """Tabulates campaign directories into a NetCDF lookup table, as ``pressridge
+    tabulate`` (the same library pipeline, ``table::campaigns::tabulate_campaigns``):
+    ensemble statistics of work (J/m), potential energy (J/m), their ratio and the ridging
+    force (N/m) on a grid of ``points`` ridged volumes (m³/m), fits (eqs 13-16) and C_f per
+    thickness. Returns the table, opened.
+
+    ``campaign_dir`` is one result directory or a list of them (``--campaign`` repeated):
+    runs are grouped into sets by their scenes, and a run two campaigns share is counted
+    once.
 
     An incomplete campaign (missing runs, or records that do not match their digests)
-    raises ``ValueError`` naming the runs, unless ``allow_partial``: then the complete runs
-    are tabulated and the table's attributes ``runs_planned``, ``runs_tabulated`` and
-    ``partial`` say what was left out (docs/failure.md)."""
+    raises ``ValueError`` naming the runs, unless ``allow_partial`` (``--allow-partial``):
+    then the complete runs are tabulated and the table's attributes ``runs_planned``,
+    ``runs_tabulated`` and ``partial`` say what was left out (docs/failure.md).
+
+    A run counts as rafted when its intact lead sheet passed the floe's nose by more than
+    ``rafting_reach`` (m, ``--rafting-reach``; default :data:`RAFTING_REACH`, 2 m). ``exclude_rafted``
+    (``--exclude-rafted``) leaves rafted runs out of the table (listed in its
+    ``excluded_runs`` attribute). Runs left out, partial campaigns and missing fits are
+    reported as ``UserWarning``, as the command line prints them."""
     if int(points) < 2:
         raise ValueError(f"points must be at least 2, got {points}")
-    cdir = _os.fspath(campaign_dir)
+    if isinstance(campaign_dir, (str, bytes, _os.PathLike)):
+        dirs = [_os.fspath(campaign_dir)]
+    else:
+        dirs = [_os.fspath(d) for d in campaign_dir]
+    if not dirs:
+        raise ValueError("tabulate needs at least one campaign directory")
     outp = _os.fspath(out)
-    command = f"pressridge.tabulate({cdir!r}, {outp!r}, points={int(points)}) (Python)"
+    shown = dirs[0] if len(dirs) == 1 else dirs
+    extra = "".join(
+        [
+            ", allow_partial=True" if allow_partial else "",
+            f", rafting_reach={float(rafting_reach)!r}" if float(rafting_reach) != RAFTING_REACH else "",
+            ", exclude_rafted=True" if exclude_rafted else "",
+        ]
+    )
+    command = f"pressridge.tabulate({shown!r}, {outp!r}, points={int(points)}{extra}) (Python)"
     date = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d")
-    _core.tabulate(cdir, outp, int(points), command, date, bool(allow_partial))
+    _, warnings = _core.tabulate(
+        dirs,
+        outp,
+        int(points),
+        command,
+        date,
+        bool(allow_partial),
+        float(rafting_reach),
+        bool(exclude_rafted),
+    )
+    for w in warnings:
+        _warnings.warn(w, UserWarning, stacklevel=2)
     return Table.open(outp)

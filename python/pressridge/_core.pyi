@@ -146,6 +146,7 @@ def read_cf_table_at_friction(
 ) -> Tuple[_F64, _F64, Optional[Tuple[float, float]]]: ...
 
 DEFAULT_FRICTION: Tuple[float, float]
+RAFTING_REACH: float
 def default_params() -> dict[str, float]: ...
 def scene_toml(scene: Optional[_Path], sets: Sequence[str]) -> str: ...
 def simulate(
@@ -168,14 +169,16 @@ def campaign_run_planned(spec_json: str, run_json: str, out: _Path) -> str:
     """Runs one planned run, writes it; returns its id."""
 
 def tabulate(
-    campaign_dir: _Path,
+    campaign_dirs: List[_Path],
     out: _Path,
     points: int,
     command: str,
     date: str,
     allow_partial: bool = False,
-) -> List[Tuple[str, float, float]]:
-    """[(set, thickness (m), C_f)]."""
+    rafting_reach: float = 2.0,
+    exclude_rafted: bool = False,
+) -> Tuple[List[Tuple[str, float, float]], List[str]]:
+    """([(set, thickness (m), C_f)], [warning]) (``table::campaigns::tabulate_campaigns``)."""
 
 class RidgeLookup:
     @staticmethod

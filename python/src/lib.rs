@@ -23,12 +23,12 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use pressridge::campaign::{
-    self, CampaignError, CampaignSpec, PlannedRun, Progress, adopt_records, prepare_campaign,
+    CampaignError, CampaignSpec, PlannedRun, Progress, adopt_records, prepare_campaign,
     run_campaign, run_planned,
 };
 use pressridge::io::IoError;
 use pressridge::io::itd_netcdf::{NetcdfError, read_cf_table};
-use pressridge::io::table_netcdf::{Provenance, write_ridge_table};
+use pressridge::io::table_netcdf::write_ridge_table;
 use pressridge::itd::{
     BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, CategoryBounds, Cf, CfPreset,
     CfTable, CiceTracerFlags, ItdError, ItdParams, Participation, Redistribution, RidgeOptions,
@@ -36,11 +36,12 @@ use pressridge::itd::{
     StrengthOptions, TracerBase, TracerField, TracerLayout, TracerRole, category_bounds,
     ridge_batch_masked, ridge_step_batch, strength_batch_masked,
 };
-use pressridge::scene::{Scene, SceneError};
+use pressridge::scene::{Scene, SceneError, SceneLoadError};
 use pressridge::simulation;
 use pressridge::simulation::series_columns;
+use pressridge::table::campaigns::{TabulateCampaignsError, TabulateOptions, tabulate_campaigns};
 use pressridge::table::lookup::{LookupError, RidgeLookup};
-use pressridge::table::tabulate::tabulate as tabulate_records;
+use pressridge::table::tabulate::fit_warnings;
 
 // ---------------------------------------------------------------------------------------
 // Errors
@@ -98,6 +99,15 @@ impl From<CampaignError> for BindError {
     fn from(e: CampaignError) -> Self {
         match e {
             CampaignError::Io(io) => io.into(),
+            other => BindError::Value(other.to_string()),
+        }
+    }
+}
+
+impl From<SceneLoadError> for BindError {
+    fn from(e: SceneLoadError) -> Self {
+        match e {
+            SceneLoadError::Read(io) => io.into(),
             other => BindError::Value(other.to_string()),
         }
     }
@@ -377,52 +387,48 @@ fn category_shapes(
 // ---------------------------------------------------------------------------------------
 // Options
 
+/// `names` as `"a" or "b"` for messages.
+fn quoted_names<T: Copy>(all: &[T], name: fn(T) -> &'static str) -> String {
+    all.iter()
+        .map(|&x| format!("\"{}\"", name(x)))
+        .collect::<Vec<_>>()
+        .join(" or ")
+}
+
 fn participation(name: &str) -> PyResult<Participation> {
-    match name {
-        "exponential" => Ok(Participation::Exponential),
-        "thorndike" => Ok(Participation::Thorndike),
-        _ => Err(value_err(format!(
-            "unknown participation `{name}`; use \"exponential\" (Lipscomb et al. 2007, CICE default) or \"thorndike\" (Thorndike et al. 1975)"
+    Participation::from_name(name).ok_or_else(|| {
+        value_err(format!(
+            "unknown participation `{name}`; use {} (exponential: Lipscomb et al. 2007, CICE default; thorndike: Thorndike et al. 1975)",
+            quoted_names(&Participation::ALL, Participation::name)
         ))
-        .into()),
-    }
+        .into()
+    })
 }
 
 fn redistribution(name: &str) -> PyResult<Redistribution> {
-    match name {
-        "exponential" => Ok(Redistribution::Exponential),
-        "uniform" => Ok(Redistribution::Uniform),
-        _ => Err(value_err(format!(
-            "unknown redistribution `{name}`; use \"exponential\" (Lipscomb et al. 2007, CICE default) or \"uniform\" (Hibler 1980)"
+    Redistribution::from_name(name).ok_or_else(|| {
+        value_err(format!(
+            "unknown redistribution `{name}`; use {} (exponential: Lipscomb et al. 2007, CICE default; uniform: Hibler 1980)",
+            quoted_names(&Redistribution::ALL, Redistribution::name)
         ))
-        .into()),
-    }
+        .into()
+    })
 }
 
 fn law(name: &str) -> PyResult<StrengthFormula> {
-    match name {
-        "rothrock" => Ok(StrengthFormula::Rothrock),
-        "hibler" => Ok(StrengthFormula::Hibler1979),
-        _ => Err(value_err(format!(
-            "unknown strength law `{name}`; use \"rothrock\" (Rothrock 1975, CICE default) or \"hibler\" (Hibler 1979)"
+    StrengthFormula::from_name(name).ok_or_else(|| {
+        value_err(format!(
+            "unknown strength law `{name}`; use {} (rothrock: Rothrock 1975, CICE default; hibler: Hibler 1979)",
+            quoted_names(&StrengthFormula::ALL, StrengthFormula::name)
         ))
-        .into()),
-    }
+        .into()
+    })
 }
 
+/// CICE's defaults with the `(name, value)` overrides ([`ItdParams::from_pairs`]; an
+/// unknown name is answered with the closest valid one).
 fn itd_params(params: Vec<(String, f64)>) -> PyResult<ItdParams> {
-    let mut p = ItdParams::default();
-    for (name, value) in params {
-        if !ItdParams::NAMES.contains(&name.as_str()) {
-            return Err(value_err(format!(
-                "unknown parameter `{name}`; known parameters: {}",
-                ItdParams::NAMES.join(", ")
-            ))
-            .into());
-        }
-        p.set(&name, value).map_err(value_err)?;
-    }
-    Ok(p)
+    Ok(ItdParams::from_pairs(params).map_err(value_err)?)
 }
 
 /// The frictional factor from the normalised Python argument: a number, node arrays, a
@@ -1483,19 +1489,10 @@ fn default_params<'py>(py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
 // ---------------------------------------------------------------------------------------
 // The simulator
 
-/// The resolved scene: a TOML file (or the built-in default) with `key=value` overrides.
+/// The resolved scene: a TOML file (or the built-in default) with `key=value` overrides
+/// ([`Scene::load`]).
 fn load_scene(path: Option<&Path>, sets: &[String]) -> Result<Scene, BindError> {
-    let base = match path {
-        Some(p) => {
-            let text = std::fs::read_to_string(p).map_err(|e| IoError::Os {
-                path: p.to_path_buf(),
-                source: e,
-            })?;
-            Scene::from_toml(&text).map_err(|e| value_err(format!("{}: {e}", p.display())))?
-        }
-        None => Scene::default(),
-    };
-    Ok(base.with_overrides(sets)?)
+    Ok(Scene::load(path, sets)?)
 }
 
 /// The resolved scene as TOML text.
@@ -1717,55 +1714,66 @@ fn campaign_run_planned(
     })
 }
 
-/// Tabulates a campaign directory into a NetCDF lookup table (as `pressridge tabulate`);
-/// returns one line per set and thickness with its C_f.
+/// What a Python tabulation returns besides the table file: ([(set, thickness, C_f)],
+/// [warning]).
+type TabulateOut = (Vec<(String, f64, f64)>, Vec<String>);
+
+/// Tabulates campaign directories into a NetCDF lookup table, as `pressridge tabulate`
+/// (`table::campaigns::tabulate_campaigns`); returns one line per set and thickness with
+/// its C_f, and the warnings and notes the command line prints.
 #[pyfunction]
-#[pyo3(signature = (campaign_dir, out, points, command, date, allow_partial=false))]
+#[pyo3(signature = (campaign_dirs, out, points, command, date, allow_partial=false, rafting_reach=pressridge::table::rafting::RAFTING_REACH, exclude_rafted=false))]
+#[allow(clippy::too_many_arguments)]
 fn tabulate(
     py: Python<'_>,
-    campaign_dir: PathBuf,
+    campaign_dirs: Vec<PathBuf>,
     out: PathBuf,
     points: usize,
     command: String,
     date: String,
     allow_partial: bool,
-) -> PyResult<Vec<(String, f64, f64)>> {
+    rafting_reach: f64,
+    exclude_rafted: bool,
+) -> PyResult<TabulateOut> {
     detached(py, || {
-        file_missing(&campaign_dir)?;
-        let c = campaign::read_campaign(&campaign_dir, allow_partial)?;
-        let gaps = if c.is_complete() {
-            String::new()
-        } else {
-            c.describe_gaps()
+        for d in &campaign_dirs {
+            file_missing(d)?;
+        }
+        let opts = TabulateOptions {
+            points,
+            allow_partial,
+            rafting_reach,
+            exclude_rafted,
         };
-        let (planned, spec, records) = (c.planned, c.spec, c.records);
-        let table = tabulate_records(&records, points).map_err(value_err)?;
-        let prov = Provenance {
-            campaign_spec: toml_text(&spec)?,
-            scene: records
-                .first()
-                .map(|r| r.scene.to_toml())
-                .unwrap_or_default(),
-            command,
-            date,
-            runs_planned: planned,
-            runs_tabulated: records.len(),
-            gaps,
-        };
-        write_ridge_table(&out, &table, &prov)?;
+        let t =
+            tabulate_campaigns(&campaign_dirs, &opts, &command, &date).map_err(|e| match e {
+                TabulateCampaignsError::Campaign(c) => c.into(),
+                other => value_err(other),
+            })?;
+        write_ridge_table(&out, &t.table, &t.provenance)?;
+        let mut warnings: Vec<String> = t
+            .partial
+            .iter()
+            .map(|(d, g)| format!("partial campaign {} (allow_partial): {g}", d.display()))
+            .collect();
+        warnings.extend(fit_warnings(&t.table));
+        for (id, why) in &t.gate_excluded {
+            warnings.push(format!(
+                "run {id} left out: its {why}; a dissipation cannot be negative, so the run went numerically unstable"
+            ));
+        }
+        for (id, why) in &t.rafted_out {
+            warnings.push(format!("run {id} left out: its {why}"));
+        }
+        let table = t.table;
         let mut lines = Vec::new();
         for (si, set) in table.sets.iter().enumerate() {
             for (hi, &h) in table.thickness.iter().enumerate() {
                 lines.push((set.clone(), h, table.cf[si][hi]));
             }
         }
-        Ok(lines)
+        Ok((lines, warnings))
     })
-}
-
-/// The spec as `pressridge tabulate` stores it in the table's provenance.
-fn toml_text(spec: &CampaignSpec) -> Result<String, BindError> {
-    toml::to_string(spec).map_err(value_err)
 }
 
 /// Test hook: panics inside the library-call guard, with (`detach = true`) or without the
@@ -1981,6 +1989,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
         "DEFAULT_FRICTION",
         pressridge::table::tabulate::DEFAULT_FRICTION,
     )?;
+    m.add("RAFTING_REACH", pressridge::table::rafting::RAFTING_REACH)?;
     m.add_function(wrap_pyfunction!(default_params, m)?)?;
     m.add_function(wrap_pyfunction!(scene_toml, m)?)?;
     m.add_function(wrap_pyfunction!(simulate, m)?)?;

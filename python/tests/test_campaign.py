@@ -157,6 +157,48 @@ def test_tabulate_refuses_an_incomplete_campaign_unless_partial_is_allowed(cli_c
     assert attrs["partial"].startswith("yes") and ids[1] in attrs["partial"]
 
 
+def test_tabulate_takes_several_campaigns_and_the_rafting_options_of_the_command_line(
+    cli, cli_campaign, tmp_path
+):
+    """A list of campaigns, ``rafting_reach`` and ``exclude_rafted`` are ``--campaign``
+    repeated, ``--rafting-reach`` and ``--exclude-rafted``: the same table, attributes
+    included (both faces run the library's ``tabulate_campaigns``)."""
+    src, _ = cli_campaign
+    other = tmp_path / "other"
+    shutil.copytree(src, other)  # the same runs again: each is counted once
+    # A reach between the two largest overruns: the run that slid farthest is rafted.
+    over = sorted(
+        ((rec["summary"]["sheet_overrun_max"], i) for i, (rec, _) in records(src).items()),
+        reverse=True,
+    )
+    reach = 0.5 * (over[0][0] + over[1][0])
+    cli_nc, py_nc = tmp_path / "cli.nc", tmp_path / "py.nc"
+    cli(
+        "tabulate", "--campaign", src, "--campaign", other, "--out", cli_nc, "--points", "11",
+        "--rafting-reach", repr(reach), "--exclude-rafted",
+    )
+    with pytest.warns(UserWarning, match="rafted") as seen:
+        table = pr.tabulate(
+            [src, other], py_nc, points=11, rafting_reach=reach, exclude_rafted=True
+        )
+    assert isinstance(table, pr.Table)
+    assert any(over[0][1] in str(w.message) for w in seen)
+    assert_same_table(cli_nc, py_nc)
+    attrs = xr.load_dataset(py_nc).attrs
+    assert (attrs["runs_planned"], attrs["runs_tabulated"]) == (8, 3)
+    assert over[0][1] in attrs["excluded_runs"]
+    assert "pressridge.tabulate" in attrs["history"] and "exclude_rafted=True" in attrs["history"]
+
+    # Defaults are the command line's: one path or a list of one, nothing left out.
+    pr.tabulate([src], tmp_path / "one.nc", points=11)
+    _, cli_table = cli_campaign
+    assert_same_table(cli_table, tmp_path / "one.nc")
+    with pytest.raises(ValueError, match="rafting reach"):
+        pr.tabulate(src, tmp_path / "bad.nc", points=11, rafting_reach=-1.0)
+    with pytest.raises(ValueError, match="at least one campaign"):
+        pr.tabulate([], tmp_path / "none.nc")
+
+
 def test_resume_from_an_archive_runs_only_what_it_lacks(cli_campaign, tiny_spec, tmp_path):
     # A records-only archive of the command line's campaign with one run missing: the
     # Python campaign takes the others and makes only that one, as --resume-from does.

@@ -28,7 +28,9 @@ pub mod tracers;
 
 pub use bounds::{CategoryBounds, category_bounds};
 pub use cf::{Cf, CfLookup, CfPreset, CfProvider, CfTable};
-pub use params::{ItdParams, ParamMeta, Participation, Redistribution, StrengthFormula};
+pub use params::{
+    ItdParams, ParamError, ParamMeta, Participation, Redistribution, StrengthFormula,
+};
 pub use ridge_step::{
     Closing, ColumnMut, OceanFluxes, RidgeStepOptions, RidgeStepParams, SaltFlux, StepDiagnostics,
     StepForcing, StepParamMeta, StepWorkspace, deformation_terms, percent_per_day_to_per_second,

@@ -282,11 +282,117 @@ impl ItdParams {
         Ok(())
     }
 
+    /// The parameter name closest to `name` when it is close (a likely misspelling), for
+    /// "did you mean" hints: edit distance at most 2 + len/4.
+    pub fn closest_name(name: &str) -> Option<&'static str> {
+        Self::NAMES
+            .iter()
+            .map(|n| (edit_distance(name, n), *n))
+            .min()
+            .filter(|(d, _)| *d <= 2 + name.len() / 4)
+            .map(|(_, n)| n)
+    }
+
+    /// Sets the parameter `name` (surrounding blanks ignored) as [`ItdParams::set`] does,
+    /// but an unknown name is [`ParamError::Unknown`], with the closest valid name.
+    pub fn set_named(&mut self, name: &str, value: f64) -> Result<(), ParamError> {
+        let name = name.trim();
+        if !Self::NAMES.contains(&name) {
+            return Err(ParamError::Unknown { name: name.into() });
+        }
+        Ok(self.set(name, value)?)
+    }
+
+    /// CICE's defaults with `(name, value)` overrides applied in order
+    /// ([`ItdParams::set_named`]): Python's `params=`.
+    pub fn from_pairs<N: AsRef<str>>(
+        pairs: impl IntoIterator<Item = (N, f64)>,
+    ) -> Result<ItdParams, ParamError> {
+        let mut p = ItdParams::default();
+        for (name, value) in pairs {
+            p.set_named(name.as_ref(), value)?;
+        }
+        Ok(p)
+    }
+
+    /// CICE's defaults with `NAME=VALUE` overrides applied in order (blanks around the name
+    /// and the value ignored): the command line's `--param`.
+    pub fn from_settings<S: AsRef<str>>(settings: &[S]) -> Result<ItdParams, ParamError> {
+        let mut p = ItdParams::default();
+        for item in settings {
+            let item = item.as_ref();
+            let (name, value) = item
+                .split_once('=')
+                .ok_or_else(|| ParamError::Malformed { item: item.into() })?;
+            // An unknown name is reported before a bad value.
+            if !Self::NAMES.contains(&name.trim()) {
+                return Err(ParamError::Unknown {
+                    name: name.trim().into(),
+                });
+            }
+            let v: f64 = value.trim().parse().map_err(|_| ParamError::NotANumber {
+                item: item.into(),
+                value: value.into(),
+            })?;
+            p.set_named(name, v)?;
+        }
+        Ok(p)
+    }
+
     /// Rothrock (1975) potential-energy coefficient C_p = g·ρ_i·(ρ_w − ρ_i)/(2ρ_w) (kg m⁻² s⁻²,
     /// i.e. N/m³), evaluated in the same order as Icepack's `Cp` so results match to the bit.
     pub fn cp(&self) -> f64 {
         0.5 * self.gravit * (self.rhow - self.rhoi) * self.rhoi / self.rhow
     }
+}
+
+/// An error in a parameter override given by name ([`ItdParams::set_named`],
+/// [`ItdParams::from_pairs`], [`ItdParams::from_settings`]).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ParamError {
+    /// A setting without `=`.
+    #[error("{item}: expected NAME=VALUE")]
+    Malformed {
+        /// The setting as given.
+        item: String,
+    },
+    /// A setting whose value is not a number.
+    #[error("{item}: `{value}` is not a number")]
+    NotANumber {
+        /// The setting as given.
+        item: String,
+        /// Its value part.
+        value: String,
+    },
+    /// No parameter has this name; the message names the closest one, if close, and all.
+    #[error(
+        "unknown parameter `{name}`{}; valid names: {}",
+        ItdParams::closest_name(name).map_or(String::new(), |n| format!(" (did you mean `{n}`?)")),
+        ItdParams::NAMES.join(", ")
+    )]
+    Unknown {
+        /// The name as given.
+        name: String,
+    },
+    /// The value is out of range ([`ItdParams::set`]).
+    #[error(transparent)]
+    Invalid(#[from] super::ItdError),
+}
+
+/// Levenshtein distance between two short names.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut prev = row[0];
+        row[0] = i + 1;
+        for (j, &cb) in b.iter().enumerate() {
+            let cur = row[j + 1];
+            row[j + 1] = (prev + usize::from(ca != cb)).min(row[j] + 1).min(cur + 1);
+            prev = cur;
+        }
+    }
+    row[b.len()]
 }
 
 /// Participation function b(h) (Thorndike et al. 1975; Lipscomb et al. 2007).
@@ -323,6 +429,19 @@ pub enum StrengthFormula {
 }
 
 impl Participation {
+    /// Every option, in the order the faces list them.
+    pub const ALL: [Participation; 2] = [Participation::Thorndike, Participation::Exponential];
+
+    /// The option called `name` (its [`Participation::name`]; the command line's and Python's
+    /// spelling).
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "thorndike" => Some(Participation::Thorndike),
+            "exponential" => Some(Participation::Exponential),
+            _ => None,
+        }
+    }
+
     /// Short lower-case name used in the CLI and in NetCDF attributes.
     pub fn name(self) -> &'static str {
         match self {
@@ -333,6 +452,19 @@ impl Participation {
 }
 
 impl Redistribution {
+    /// Every option, in the order the faces list them.
+    pub const ALL: [Redistribution; 2] = [Redistribution::Uniform, Redistribution::Exponential];
+
+    /// The option called `name` (its [`Redistribution::name`]; the command line's and Python's
+    /// spelling).
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "uniform" => Some(Redistribution::Uniform),
+            "exponential" => Some(Redistribution::Exponential),
+            _ => None,
+        }
+    }
+
     /// Short lower-case name used in the CLI and in NetCDF attributes.
     pub fn name(self) -> &'static str {
         match self {
@@ -343,6 +475,19 @@ impl Redistribution {
 }
 
 impl StrengthFormula {
+    /// Every option, in the order the faces list them.
+    pub const ALL: [StrengthFormula; 2] = [StrengthFormula::Rothrock, StrengthFormula::Hibler1979];
+
+    /// The option called `name` (its [`StrengthFormula::name`]; the command line's and Python's
+    /// spelling).
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "rothrock" => Some(StrengthFormula::Rothrock),
+            "hibler" => Some(StrengthFormula::Hibler1979),
+            _ => None,
+        }
+    }
+
     /// Short lower-case name used in the CLI and in NetCDF attributes.
     pub fn name(self) -> &'static str {
         match self {
@@ -419,5 +564,53 @@ mod tests {
         let mut q = d;
         assert!(q.set("nope", 1.0).is_err());
         assert_eq!(q, d);
+    }
+
+    /// The option names round-trip, and the named overrides parse as the faces need.
+    #[test]
+    fn names_and_settings_parse() {
+        for p in Participation::ALL {
+            assert_eq!(Participation::from_name(p.name()), Some(p));
+        }
+        for r in Redistribution::ALL {
+            assert_eq!(Redistribution::from_name(r.name()), Some(r));
+        }
+        for f in StrengthFormula::ALL {
+            assert_eq!(StrengthFormula::from_name(f.name()), Some(f));
+        }
+        assert_eq!(Participation::from_name("linear"), None);
+        let p = ItdParams::from_settings(&[" mu_rdg = 4", "cs=0.5"]).unwrap();
+        assert_eq!((p.mu_rdg, p.cs), (4.0, 0.5));
+        assert_eq!(
+            ItdParams::from_pairs([("mu_rdg", 4.0), ("cs", 0.5)]).unwrap(),
+            p
+        );
+        let e = ItdParams::from_settings(&["mu_rgd=4"])
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.starts_with(
+                "unknown parameter `mu_rgd` (did you mean `mu_rdg`?); valid names: rhoi, "
+            ),
+            "{e}"
+        );
+        let e = ItdParams::from_pairs([("zzzzzzzz", 1.0)])
+            .unwrap_err()
+            .to_string();
+        assert!(!e.contains("did you mean"), "{e}");
+        assert_eq!(
+            ItdParams::from_settings(&["mu_rdg"]).unwrap_err(),
+            ParamError::Malformed {
+                item: "mu_rdg".into()
+            }
+        );
+        assert!(matches!(
+            ItdParams::from_settings(&["mu_rdg=x"]),
+            Err(ParamError::NotANumber { .. })
+        ));
+        assert!(matches!(
+            ItdParams::from_settings(&["mu_rdg=-1"]),
+            Err(ParamError::Invalid(_))
+        ));
     }
 }

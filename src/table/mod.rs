@@ -6,11 +6,14 @@
 //!   (Hopkins 1994, eqs 13–16), with confidence and prediction bands;
 //! - [`tabulate`] — campaign records to a lookup table (ensemble statistics on a volume
 //!   grid, fits per thickness and pooled, C_f per thickness);
+//! - [`campaigns`] — campaign directories to a table: the pipeline of `pressridge tabulate`
+//!   and Python's `tabulate` (reading, pooling, rafting exclusion, provenance);
 //! - [`rafting`] — which runs rafted over the floe instead of ridging against it;
 //! - [`student_t`] — Student's t CDF and quantile for the confidence intervals;
 //! - [`lookup`] — interpolation in a tabulated campaign (clamped and flagged outside its
 //!   range, NaN where no run reached), read back from NetCDF by `RidgeLookup::open`.
 
+pub mod campaigns;
 pub mod ensemble;
 pub mod fields;
 pub mod fit;

@@ -121,16 +121,9 @@ fn ridge_window(frame: render::Window, s: &pressridge::dem::Snapshot) -> render:
     }
 }
 
-/// Loads a scene file (or the default) and applies the overrides.
+/// Loads a scene file (or the default) and applies the overrides ([`Scene::load`]).
 pub fn load_scene(path: Option<&Path>, sets: &[String]) -> Result<Scene, BoxError> {
-    let base = match path {
-        Some(p) => Scene::from_toml(
-            &std::fs::read_to_string(p).map_err(|e| format!("{}: {e}", p.display()))?,
-        )
-        .map_err(|e| format!("{}: {e}", p.display()))?,
-        None => Scene::default(),
-    };
-    Ok(base.with_overrides(sets)?)
+    Ok(Scene::load(path, sets)?)
 }
 
 pub fn run(a: Args) -> Result<(), BoxError> {

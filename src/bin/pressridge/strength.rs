@@ -55,20 +55,26 @@ pub enum PresetArg {
     Cice,
 }
 
+/// The library option named as the clap value `a` (the clap names are the library's
+/// `from_name` spellings; `clap_names_are_the_library_names` checks every one).
+fn by_name<T>(a: impl ValueEnum, from_name: fn(&str) -> Option<T>) -> T {
+    let v = a.to_possible_value().expect("no value is hidden");
+    from_name(v.get_name()).expect("every clap name is a library name")
+}
+
 impl From<PartArg> for Participation {
     fn from(a: PartArg) -> Self {
-        match a {
-            PartArg::Thorndike => Participation::Thorndike,
-            PartArg::Exponential => Participation::Exponential,
-        }
+        by_name(a, Participation::from_name)
     }
 }
 impl From<RedistArg> for Redistribution {
     fn from(a: RedistArg) -> Self {
-        match a {
-            RedistArg::Uniform => Redistribution::Uniform,
-            RedistArg::Exponential => Redistribution::Exponential,
-        }
+        by_name(a, Redistribution::from_name)
+    }
+}
+impl From<FormulaArg> for StrengthFormula {
+    fn from(a: FormulaArg) -> Self {
+        by_name(a, StrengthFormula::from_name)
     }
 }
 
@@ -116,54 +122,17 @@ pub struct Args {
     pub params: Vec<String>,
 }
 
-/// Levenshtein distance between two short names.
-fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut prev = row[0];
-        row[0] = i + 1;
-        for (j, &cb) in b.iter().enumerate() {
-            let cur = row[j + 1];
-            row[j + 1] = (prev + usize::from(ca != cb)).min(row[j] + 1).min(cur + 1);
-            prev = cur;
-        }
-    }
-    row[b.len()]
-}
-
-/// The message for an unknown parameter name: the name, the closest valid one (if close)
-/// and every valid one.
-fn unknown_param(name: &str) -> String {
-    let closest = ItdParams::NAMES
-        .iter()
-        .map(|n| (edit_distance(name, n), *n))
-        .min()
-        .filter(|(d, _)| *d <= 2 + name.len() / 4);
-    let hint = closest.map_or(String::new(), |(_, n)| format!(" (did you mean `{n}`?)"));
-    format!(
-        "--param: unknown parameter `{name}`{hint}; valid names: {}",
-        ItdParams::NAMES.join(", ")
-    )
-}
-
-/// Applies `NAME=VALUE` overrides to CICE's default parameters.
+/// Applies `NAME=VALUE` overrides to CICE's default parameters
+/// ([`ItdParams::from_settings`], which names the closest valid name of a misspelt one).
 pub fn parse_params(list: &[String]) -> Result<ItdParams, BoxError> {
-    let mut p = ItdParams::default();
-    for item in list {
-        let (name, value) = item
-            .split_once('=')
-            .ok_or_else(|| format!("--param {item}: expected NAME=VALUE"))?;
-        if !ItdParams::NAMES.contains(&name.trim()) {
-            return Err(unknown_param(name.trim()).into());
+    use pressridge::itd::ParamError;
+    ItdParams::from_settings(list).map_err(|e| match e {
+        ParamError::Malformed { .. } | ParamError::NotANumber { .. } => {
+            format!("--param {e}").into()
         }
-        let value: f64 = value
-            .trim()
-            .parse()
-            .map_err(|_| format!("--param {item}: `{value}` is not a number"))?;
-        p.set(name.trim(), value)?;
-    }
-    Ok(p)
+        ParamError::Unknown { .. } => format!("--param: {e}").into(),
+        ParamError::Invalid(e) => e.into(),
+    })
 }
 
 /// Global attributes listing the parameters that differ from CICE's defaults.
@@ -220,10 +189,7 @@ pub fn options(
     Ok(StrengthOptions {
         participation: participation.into(),
         redistribution: redistribution.into(),
-        formula: match formula {
-            FormulaArg::Rothrock => StrengthFormula::Rothrock,
-            FormulaArg::Hibler => StrengthFormula::Hibler1979,
-        },
+        formula: formula.into(),
         cf,
         ..Default::default()
     })
@@ -330,4 +296,30 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         },
     )?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every clap value of the option enums is a library name, and every library option
+    /// has a clap value.
+    #[test]
+    fn clap_names_are_the_library_names() {
+        for a in PartArg::value_variants() {
+            let _: Participation = (*a).into();
+        }
+        for a in RedistArg::value_variants() {
+            let _: Redistribution = (*a).into();
+        }
+        for a in FormulaArg::value_variants() {
+            let _: StrengthFormula = (*a).into();
+        }
+        assert_eq!(PartArg::value_variants().len(), Participation::ALL.len());
+        assert_eq!(RedistArg::value_variants().len(), Redistribution::ALL.len());
+        assert_eq!(
+            FormulaArg::value_variants().len(),
+            StrengthFormula::ALL.len()
+        );
+    }
 }

@@ -1,12 +1,13 @@
 //! `pressridge tabulate`: a campaign directory to a NetCDF lookup table.
 
 use crate::BoxError;
-use pressridge::campaign::read_campaign;
-use pressridge::io::table_netcdf::{Provenance, write_ridge_table};
+use pressridge::io::table_netcdf::write_ridge_table;
 use pressridge::observe::{Profile, mean_profile, profile_spread};
 use pressridge::plot;
 use pressridge::plot::table::ProfileGroup;
-use pressridge::table::tabulate::tabulate;
+use pressridge::table::campaigns::{
+    TabulateCampaignsError, TabulateOptions, Tabulated, tabulate_campaigns,
+};
 use std::path::PathBuf;
 
 #[derive(clap::Args)]
@@ -58,70 +59,40 @@ fn today() -> String {
 }
 
 pub fn run(a: Args) -> Result<(), BoxError> {
-    let (mut planned, mut specs, mut records, mut gaps) = (0, Vec::new(), Vec::new(), Vec::new());
-    for dir in &a.campaign {
-        let campaign = read_campaign(dir, a.allow_partial)?;
-        if !campaign.is_complete() {
-            let g = campaign.describe_gaps();
-            eprintln!(
-                "pressridge: warning: partial campaign {} (--allow-partial): {g}",
-                dir.display()
-            );
-            gaps.push(format!("{}: {g}", dir.display()));
-        }
-        planned += campaign.planned;
-        specs.push(campaign.spec);
-        records.extend(campaign.records);
-    }
-    let spec = specs.first().cloned().ok_or("no --campaign given")?;
-    if !(a.rafting_reach.is_finite() && a.rafting_reach >= 0.0) {
-        return Err(format!(
-            "--rafting-reach must be a finite length >= 0 m, not {}",
-            a.rafting_reach
-        )
-        .into());
-    }
-    // Every run read, before --exclude-rafted: the rafting statistics count them all.
-    let all_records = records.clone();
-    let mut rafted_out: Vec<(String, String)> = Vec::new();
-    if a.exclude_rafted {
-        use pressridge::table::rafting::{Outcome, outcome};
-        records.retain(|r| match outcome(r, a.rafting_reach) {
-            Outcome::Rafted(over) => {
-                rafted_out.push((
-                    r.id.clone(),
-                    format!(
-                        "sheet rafted {over:.1} m past the floe's nose (--exclude-rafted, reach {} m)",
-                        a.rafting_reach
-                    ),
-                ));
-                false
-            }
-            Outcome::Ridged | Outcome::Unknown => true,
-        });
-    }
-    let mut table = tabulate(&records, a.points)?;
-    let gate_excluded = table.excluded.clone();
-    table.excluded.extend(rafted_out.iter().cloned());
-    let mut spec_text = String::new();
-    for s in &specs {
-        if !spec_text.is_empty() {
-            spec_text.push_str("\n# --- next campaign ---\n");
-        }
-        spec_text.push_str(&toml::to_string(s)?);
-    }
-    let prov = Provenance {
-        campaign_spec: spec_text,
-        scene: records
-            .first()
-            .map(|r| r.scene.to_toml())
-            .unwrap_or_default(),
-        command: std::env::args().collect::<Vec<_>>().join(" "),
-        date: today(),
-        runs_planned: planned,
-        runs_tabulated: records.len() - table.duplicates.len(),
-        gaps: gaps.join("; "),
+    let opts = TabulateOptions {
+        points: a.points,
+        allow_partial: a.allow_partial,
+        rafting_reach: a.rafting_reach,
+        exclude_rafted: a.exclude_rafted,
     };
+    let command = std::env::args().collect::<Vec<_>>().join(" ");
+    let t =
+        tabulate_campaigns(&a.campaign, &opts, &command, &today()).map_err(|e| -> BoxError {
+            match e {
+                TabulateCampaignsError::NoCampaign => "no --campaign given".into(),
+                TabulateCampaignsError::RaftingReach(r) => {
+                    format!("--rafting-reach must be a finite length >= 0 m, not {r}").into()
+                }
+                other => other.into(),
+            }
+        })?;
+    for (dir, g) in &t.partial {
+        eprintln!(
+            "pressridge: warning: partial campaign {} (--allow-partial): {g}",
+            dir.display()
+        );
+    }
+    let Tabulated {
+        table,
+        provenance: prov,
+        specs,
+        records,
+        all_records,
+        gate_excluded,
+        rafted_out,
+        ..
+    } = t;
+    let spec = &specs[0];
     write_ridge_table(&a.out, &table, &prov)?;
     if let Some(dir) = &a.figures {
         std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
