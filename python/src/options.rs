@@ -1,0 +1,187 @@
+//! The library's options and parameters from Python values, and the queries about them.
+//!
+//! Owns the parsing of the participation, redistribution and strength-law names, of the
+//! `ItdParams` overrides and of the C_f argument (number, nodes or table file); and the
+//! module functions that list them: category bounds, C_f presets, C_f table files, parameter
+//! names and CICE defaults.
+
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use numpy::PyArray1;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use pressridge::io::itd_netcdf::read_cf_table;
+use pressridge::itd::{
+    CategoryBounds, Cf, CfPreset, CfTable, ItdParams, Participation, Redistribution,
+    StrengthFormula, category_bounds,
+};
+
+use crate::arrays::Pair;
+use crate::errors::{BindError, detached, file_missing, value_err};
+
+/// `names` as `"a" or "b"` for messages.
+fn quoted_names<T: Copy>(all: &[T], name: fn(T) -> &'static str) -> String {
+    all.iter()
+        .map(|&x| format!("\"{}\"", name(x)))
+        .collect::<Vec<_>>()
+        .join(" or ")
+}
+
+pub(crate) fn participation(name: &str) -> PyResult<Participation> {
+    Participation::from_name(name).ok_or_else(|| {
+        value_err(format!(
+            "unknown participation `{name}`; use {} (exponential: Lipscomb et al. 2007, CICE default; thorndike: Thorndike et al. 1975)",
+            quoted_names(&Participation::ALL, Participation::name)
+        ))
+        .into()
+    })
+}
+
+pub(crate) fn redistribution(name: &str) -> PyResult<Redistribution> {
+    Redistribution::from_name(name).ok_or_else(|| {
+        value_err(format!(
+            "unknown redistribution `{name}`; use {} (exponential: Lipscomb et al. 2007, CICE default; uniform: Hibler 1980)",
+            quoted_names(&Redistribution::ALL, Redistribution::name)
+        ))
+        .into()
+    })
+}
+
+pub(crate) fn law(name: &str) -> PyResult<StrengthFormula> {
+    StrengthFormula::from_name(name).ok_or_else(|| {
+        value_err(format!(
+            "unknown strength law `{name}`; use {} (rothrock: Rothrock 1975, CICE default; hibler: Hibler 1979)",
+            quoted_names(&StrengthFormula::ALL, StrengthFormula::name)
+        ))
+        .into()
+    })
+}
+
+/// CICE's defaults with the `(name, value)` overrides ([`ItdParams::from_pairs`]; an
+/// unknown name is answered with the closest valid one).
+pub(crate) fn itd_params(params: Vec<(String, f64)>) -> PyResult<ItdParams> {
+    Ok(ItdParams::from_pairs(params).map_err(value_err)?)
+}
+
+/// The frictional factor from the normalised Python argument: a number, node arrays, a
+/// C_f-table file, or a lookup table object's set.
+pub(crate) fn cf_from(
+    py: Python<'_>,
+    cf_value: Option<f64>,
+    cf_nodes: Option<(Vec<f64>, Vec<f64>)>,
+    cf_file: Option<PathBuf>,
+) -> PyResult<Cf> {
+    match (cf_value, cf_nodes, cf_file) {
+        (Some(v), None, None) => Ok(Cf::Constant(v)),
+        (None, Some((h, c)), None) => {
+            Ok(Cf::Table(Arc::new(CfTable::new(h, c).map_err(value_err)?)))
+        }
+        (None, None, Some(path)) => {
+            let t = detached(py, || {
+                file_missing(&path)?;
+                read_cf_table(&path).map_err(BindError::from)
+            })?;
+            Ok(Cf::Table(Arc::new(t)))
+        }
+        (None, None, None) => Ok(Cf::default()),
+        _ => Err(value_err("give C_f one way only").into()),
+    }
+}
+
+/// The `ncat + 1` category bounds hin_max (m) of a CICE `kcatbound` option.
+#[pyfunction]
+#[pyo3(name = "category_bounds", signature = (ncat, scheme = "round_numbers"))]
+pub(crate) fn category_bounds_py<'py>(
+    py: Python<'py>,
+    ncat: usize,
+    scheme: &str,
+) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    let b = match scheme {
+        "original" => CategoryBounds::Original,
+        "round_numbers" => CategoryBounds::RoundNumbers,
+        "wmo" => CategoryBounds::Wmo,
+        "asymptotic" => CategoryBounds::Asymptotic,
+        "single" => CategoryBounds::SingleCategory,
+        _ => {
+            return Err(value_err(format!(
+                "unknown category-bounds scheme `{scheme}`; use \"round_numbers\" (CICE kcatbound = 1, default), \"original\" (0), \"wmo\" (2), \"asymptotic\" (3) or \"single\" (-1)"
+            ))
+            .into());
+        }
+    };
+    let h = category_bounds(&b, ncat).map_err(value_err)?;
+    Ok(PyArray1::from_vec(py, h))
+}
+
+/// The named constant values of C_f (dimensionless): (name, value) pairs.
+#[pyfunction]
+pub(crate) fn cf_presets() -> Vec<(&'static str, f64)> {
+    vec![
+        ("hibler1980", CfPreset::Hibler1980.value()),
+        ("flato1991", CfPreset::Flato1991.value()),
+        ("cice", CfPreset::Cice.value()),
+    ]
+}
+
+/// Reads a C_f table file (1-D `thickness` in m and `cf`, as `--cf-table` of the command
+/// line); returns its nodes (thickness, cf), validated.
+#[pyfunction]
+#[pyo3(name = "read_cf_table")]
+pub(crate) fn read_cf_table_py<'py>(py: Python<'py>, path: PathBuf) -> PyResult<Pair<'py, f64>> {
+    let t = detached(py, || {
+        file_missing(&path)?;
+        read_cf_table(&path).map_err(BindError::from)
+    })?;
+    Ok((
+        PyArray1::from_slice(py, t.thickness()),
+        PyArray1::from_slice(py, t.values()),
+    ))
+}
+
+/// The C_f of a table file at friction `friction` = (μ, μ_w) (dimensionless; None: the
+/// default 1.0, 0.6 for a ridging table, the one curve of a plain table), as
+/// `--cf-table FILE --friction MU,MU_W`: returns (thickness, cf, friction of the curve or
+/// None when the file does not say).
+#[pyfunction]
+#[pyo3(signature = (path, friction=None))]
+#[allow(clippy::type_complexity)]
+pub(crate) fn read_cf_table_at_friction<'py>(
+    py: Python<'py>,
+    path: PathBuf,
+    friction: Option<(f64, f64)>,
+) -> PyResult<(
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<f64>>,
+    Option<(f64, f64)>,
+)> {
+    let t = detached(py, || {
+        file_missing(&path)?;
+        pressridge::io::itd_netcdf::read_cf_table_at_friction(&path, friction)
+            .map_err(BindError::from)
+    })?;
+    Ok((
+        PyArray1::from_slice(py, t.thickness()),
+        PyArray1::from_slice(py, t.values()),
+        t.friction(),
+    ))
+}
+
+/// Names of the parameters that `strength` and `ridge_step` accept as keywords
+/// (`ItdParams::NAMES`, the names of `ItdParams::FIELDS`).
+#[pyfunction]
+pub(crate) fn param_names() -> Vec<&'static str> {
+    ItdParams::NAMES.to_vec()
+}
+
+/// CICE's default value of every parameter (`ItdParams::FIELDS`, in order), as a dict.
+#[pyfunction]
+pub(crate) fn default_params<'py>(py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+    let p = ItdParams::default();
+    let d = PyDict::new(py);
+    for f in ItdParams::FIELDS {
+        d.set_item(f.name, p.get(f.name).expect("a listed parameter"))?;
+    }
+    Ok(d)
+}

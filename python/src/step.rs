@@ -1,0 +1,328 @@
+//! The complete ridging step (snow, tracers, ocean fluxes).
+//!
+//! Owns `ridge_step_full` (`itd::ridge_step_batch` over numpy arrays), the parsing of its
+//! thermodynamic constants and salt-flux option, and the lists of its constants
+//! (`step_parameters`) and outputs (`step_outputs`).
+
+use std::sync::Arc;
+
+use ndarray::{ArrayViewMut1, ArrayViewMut2, ArrayViewMut3, CowArray, Ix3};
+use numpy::{PyArray1, PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn, PyUntypedArrayMethods};
+use pyo3::prelude::*;
+
+use pressridge::itd::{
+    BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, CategoryBounds, CiceTracerFlags,
+    RidgeOptions, RidgeStepOptions, RidgeStepParams, SaltFlux, StepBatchMut, TracerLayout,
+    category_bounds, ridge_step_batch,
+};
+
+use crate::arrays::{
+    category_shapes, check_array, choose_order, columns, columns_mut, flat, flat_bool, flat_mut,
+    flatten, flatten_mut, itd_err, new_array,
+};
+use crate::errors::{BindError, detached, value_err};
+use crate::options::{itd_params, participation, redistribution};
+use crate::tracers::PyTracerLayout;
+
+/// The thermodynamic constants of the complete step from (name, value) pairs of
+/// `RidgeStepParams::FIELDS` names, and the salt-flux option by name.
+fn step_params_from(list: Vec<(String, f64)>, salt_flux: &str) -> PyResult<RidgeStepParams> {
+    let mut p = RidgeStepParams::default();
+    for (name, value) in list {
+        if !RidgeStepParams::FIELDS.iter().any(|f| f.name == name) {
+            let all: Vec<&str> = RidgeStepParams::FIELDS.iter().map(|f| f.name).collect();
+            return Err(value_err(format!(
+                "unknown constant `{name}`; the complete step's constants: {}",
+                all.join(", ")
+            ))
+            .into());
+        }
+        p.set(&name, value).map_err(value_err)?;
+    }
+    p.salt_flux = SaltFlux::from_name(salt_flux).ok_or_else(|| {
+        value_err(format!(
+            "salt_flux = {salt_flux:?}: must be \"constant\" or \"prognostic\""
+        ))
+    })?;
+    Ok(p)
+}
+
+/// The complete step's thermodynamic constants (`RidgeStepParams::FIELDS`): (name, units,
+/// description, Icepack default).
+#[pyfunction]
+pub(crate) fn step_parameters() -> Vec<(&'static str, &'static str, &'static str, f64)> {
+    let d = RidgeStepParams::default();
+    RidgeStepParams::FIELDS
+        .iter()
+        .map(|f| {
+            (
+                f.name,
+                f.units,
+                f.description,
+                d.get(f.name).expect("a listed constant"),
+            )
+        })
+        .collect()
+}
+
+/// Names, units and long names of the per-cell and per-category outputs of the complete step
+/// (`pressridge::itd::CELL_OUTPUTS`, `CATEGORY_OUTPUTS`).
+#[pyfunction]
+#[allow(clippy::type_complexity)]
+pub(crate) fn step_outputs() -> (
+    Vec<(&'static str, &'static str, &'static str)>,
+    Vec<(&'static str, &'static str, &'static str)>,
+) {
+    let f = |m: &pressridge::itd::OutputMeta| (m.name, m.units, m.long_name);
+    (
+        CELL_OUTPUTS.iter().map(f).collect(),
+        CATEGORY_OUTPUTS.iter().map(f).collect(),
+    )
+}
+
+/// Arrays returned by `ridge_step_full`.
+type FullOut<'py> = (
+    [Bound<'py, PyArrayDyn<f64>>; 3],
+    Option<Bound<'py, PyArrayDyn<f64>>>,
+    [Bound<'py, PyArrayDyn<f64>>; 2],
+    Bound<'py, PyArray1<f64>>,
+    Vec<(&'static str, Bound<'py, PyArrayDyn<f64>>)>,
+    Vec<(&'static str, Bound<'py, PyArrayDyn<f64>>)>,
+);
+
+/// The complete ridging step (`itd::ridge_step_batch`); see `pressridge.ridge_step`. Every
+/// spatial argument already has the spatial shape of `aicen` (the Python side broadcasts).
+/// `rates`: `c1`, `c2` are the host's closing and opening rates, else Icepack's convergence
+/// and shear terms. Without `trcrn` the column carries no tracers (zeros of a minimal layout,
+/// not returned). Returns ([aicen, vicen, vsnon], trcrn, [aice0, aice], hin_max used,
+/// [(cell output, array)], [(category output, array)]); the inputs are not modified.
+#[pyfunction]
+#[pyo3(signature = (aicen, vicen, vsnon, trcrn, layout, aice0, aice, hin_max, c1, c2, rates, tf, dt, ndtd, valid, participation_name, redistribution_name, params, cleanup, rebin, step_params, salt_flux))]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn ridge_step_full<'py>(
+    py: Python<'py>,
+    aicen: PyReadonlyArrayDyn<'py, f64>,
+    vicen: PyReadonlyArrayDyn<'py, f64>,
+    vsnon: PyReadonlyArrayDyn<'py, f64>,
+    trcrn: Option<PyReadonlyArrayDyn<'py, f64>>,
+    layout: Option<PyRef<'py, PyTracerLayout>>,
+    aice0: Option<PyReadonlyArrayDyn<'py, f64>>,
+    aice: Option<PyReadonlyArrayDyn<'py, f64>>,
+    hin_max: Option<Vec<f64>>,
+    c1: PyReadonlyArrayDyn<'py, f64>,
+    c2: PyReadonlyArrayDyn<'py, f64>,
+    rates: bool,
+    tf: PyReadonlyArrayDyn<'py, f64>,
+    dt: f64,
+    ndtd: i64,
+    valid: Option<PyReadonlyArrayDyn<'py, bool>>,
+    participation_name: &str,
+    redistribution_name: &str,
+    params: Vec<(String, f64)>,
+    cleanup: bool,
+    rebin: bool,
+    step_params: Vec<(String, f64)>,
+    salt_flux: &str,
+) -> PyResult<FullOut<'py>> {
+    let spatial = category_shapes(&aicen, &vicen)?;
+    let full = aicen.shape().to_vec();
+    let ncat = full[0];
+    check_array("vsnon", &vsnon, &full, "the shape of aicen")?;
+    let (n1, n2) = if rates {
+        ("closing", "opening")
+    } else {
+        ("convergence", "shear")
+    };
+    for (var, x) in [(n1, &c1), (n2, &c2), ("tf", &tf)] {
+        check_array(var, x, &spatial, "the spatial shape of aicen")?;
+    }
+    for (var, x) in [("aice0", &aice0), ("aice", &aice)] {
+        if let Some(x) = x {
+            check_array(var, x, &spatial, "the spatial shape of aicen")?;
+        }
+    }
+    if let Some(v) = &valid {
+        check_array("valid", v, &spatial, "the spatial shape of aicen")?;
+    }
+    if !(dt > 0.0 && dt.is_finite()) {
+        return Err(value_err(format!(
+            "dt = {dt}: must be a positive, finite number of seconds"
+        ))
+        .into());
+    }
+    if !(1..=i64::from(u32::MAX)).contains(&ndtd) {
+        return Err(value_err(format!("ndtd = {ndtd}: must be at least 1")).into());
+    }
+    let layout: Arc<TracerLayout> = match (&trcrn, &layout) {
+        (Some(_), Some(l)) => l.inner.clone(),
+        (Some(_), None) => return Err(value_err("trcrn needs its layout: pass layout=").into()),
+        (None, Some(_)) => {
+            return Err(value_err("layout is given but trcrn is not: pass both or neither").into());
+        }
+        (None, None) => {
+            Arc::new(TracerLayout::cice(1, 1, CiceTracerFlags::default()).map_err(value_err)?)
+        }
+    };
+    let nt = layout.ntrcr();
+    let mut tshape = vec![ncat, nt];
+    tshape.extend_from_slice(&spatial);
+    if let Some(t) = &trcrn {
+        check_array("trcrn", t, &tshape, "(ncat, layout.ntrcr, spatial...) =")?;
+    }
+    let ro = RidgeOptions {
+        participation: participation(participation_name)?,
+        redistribution: redistribution(redistribution_name)?,
+        params: itd_params(params)?,
+    };
+    let opts = RidgeStepOptions {
+        participation: ro.participation,
+        redistribution: ro.redistribution,
+        params: ro.params,
+        step: step_params_from(step_params, salt_flux)?,
+        cleanup,
+        rebin,
+    };
+    let hin_max = match hin_max {
+        Some(h) => h,
+        None => category_bounds(&CategoryBounds::RoundNumbers, ncat).map_err(value_err)?,
+    };
+    if hin_max.len() != ncat + 1 {
+        return Err(value_err(format!(
+            "hin_max has {} values, expected ncat + 1 = {}",
+            hin_max.len(),
+            ncat + 1
+        ))
+        .into());
+    }
+    let a = aicen.as_array();
+    let order = choose_order(&a);
+    let state: [Bound<'py, PyArrayDyn<f64>>; 3] =
+        std::array::from_fn(|_| new_array(py, &full, order));
+    let t_out = new_array(py, &tshape, order);
+    let scal: [Bound<'py, PyArrayDyn<f64>>; 2] =
+        std::array::from_fn(|_| new_array(py, &spatial, order));
+    let cell: Vec<Bound<'py, PyArrayDyn<f64>>> = CELL_OUTPUTS
+        .iter()
+        .map(|_| new_array(py, &spatial, order))
+        .collect();
+    let cats: Vec<Bound<'py, PyArrayDyn<f64>>> = CATEGORY_OUTPUTS
+        .iter()
+        .map(|_| new_array(py, &full, order))
+        .collect();
+    {
+        let mut s_rw: Vec<_> = state.iter().map(|x| x.readwrite()).collect();
+        let mut s_cols: Vec<ArrayViewMut2<'_, f64>> = s_rw
+            .iter_mut()
+            .map(|x| columns_mut(x.as_array_mut(), order))
+            .collect();
+        let mut t_rw = t_out.readwrite();
+        let mut t_cols: ArrayViewMut3<'_, f64> = flatten_mut(t_rw.as_array_mut(), 2, order);
+        let mut sc_rw: Vec<_> = scal.iter().map(|x| x.readwrite()).collect();
+        let mut sc_flat: Vec<ArrayViewMut1<'_, f64>> = sc_rw
+            .iter_mut()
+            .map(|x| flat_mut(x.as_array_mut(), order))
+            .collect();
+        s_cols[0].assign(&columns(a, order));
+        s_cols[1].assign(&columns(vicen.as_array(), order));
+        s_cols[2].assign(&columns(vsnon.as_array(), order));
+        if let Some(t) = &trcrn {
+            let tv: CowArray<'_, f64, Ix3> = flatten(t.as_array(), 2, order);
+            t_cols.assign(&tv);
+        }
+        match &aice0 {
+            Some(x) => sc_flat[0].assign(&flat(x.as_array(), order)),
+            None => {
+                for (c, x) in sc_flat[0].iter_mut().enumerate() {
+                    *x = f64::max(1.0 - s_cols[0].column(c).sum(), 0.0);
+                }
+            }
+        }
+        match &aice {
+            Some(x) => sc_flat[1].assign(&flat(x.as_array(), order)),
+            None => {
+                for (c, x) in sc_flat[1].iter_mut().enumerate() {
+                    *x = s_cols[0].column(c).sum();
+                }
+            }
+        }
+        let c1f = flat(c1.as_array(), order);
+        let c2f = flat(c2.as_array(), order);
+        let tff = flat(tf.as_array(), order);
+        let ok = valid.as_ref().map(|x| flat_bool(x.as_array(), order));
+        let mut cell_rw: Vec<_> = cell.iter().map(|x| x.readwrite()).collect();
+        let mut cell_views: Vec<ArrayViewMut1<'_, f64>> = cell_rw
+            .iter_mut()
+            .map(|x| flat_mut(x.as_array_mut(), order))
+            .collect();
+        let mut cat_rw: Vec<_> = cats.iter().map(|x| x.readwrite()).collect();
+        let mut cat_views: Vec<ArrayViewMut2<'_, f64>> = cat_rw
+            .iter_mut()
+            .map(|x| columns_mut(x.as_array_mut(), order))
+            .collect();
+        let layout_ref = &*layout;
+        detached(py, || {
+            let closing = if rates {
+                BatchClosing::Rates {
+                    closing: c1f.view(),
+                    opening: c2f.view(),
+                }
+            } else {
+                BatchClosing::Deformation {
+                    convergence: c1f.view(),
+                    shear: c2f.view(),
+                }
+            };
+            let [sa, sv, ss] = <[ArrayViewMut2<'_, f64>; 3]>::try_from(s_cols)
+                .map_err(|_| BindError::Internal("three state arrays".into()))?;
+            let [s0, s1] = <[ArrayViewMut1<'_, f64>; 2]>::try_from(sc_flat)
+                .map_err(|_| BindError::Internal("two cell state arrays".into()))?;
+            let mut a0_keep = s0;
+            ridge_step_batch(
+                StepBatchMut {
+                    aicen: sa,
+                    vicen: sv,
+                    vsnon: ss,
+                    trcrn: t_cols,
+                    aice0: a0_keep.view_mut(),
+                    aice: s1,
+                },
+                &hin_max,
+                BatchForcing {
+                    closing,
+                    tf: tff.view(),
+                    dt,
+                    ndtd: ndtd as u32,
+                },
+                ok.as_ref().map(|x| x.view()),
+                f64::NAN,
+                &opts,
+                layout_ref,
+                &mut cell_views,
+                Some(&mut cat_views),
+            )
+            .map_err(|e| itd_err(e, &spatial, order))?;
+            // Masked columns: their open water is missing, like their outputs.
+            if let Some(ok) = &ok {
+                for (x, &good) in a0_keep.iter_mut().zip(ok.iter()) {
+                    if !good {
+                        *x = f64::NAN;
+                    }
+                }
+            }
+            Ok(())
+        })?;
+    }
+    let mut h_used = hin_max.clone();
+    if !rates {
+        h_used[ncat] = opts.params.big;
+    }
+    let [aicen_o, vicen_o, vsnon_o] = state;
+    Ok((
+        [aicen_o, vicen_o, vsnon_o],
+        trcrn.is_some().then_some(t_out),
+        scal,
+        PyArray1::from_vec(py, h_used),
+        CELL_OUTPUTS.iter().map(|m| m.name).zip(cell).collect(),
+        CATEGORY_OUTPUTS.iter().map(|m| m.name).zip(cats).collect(),
+    ))
+}
