@@ -345,7 +345,7 @@ def strength(
 
 
 TracerLayout = _core.TracerLayout
-# Its documentation is the Rust doc comment of `PyTracerLayout` (python/src/lib.rs).
+# Its documentation is the Rust doc comment of `PyTracerLayout` (python/src/tracers.rs).
 
 
 #: Names, units and meanings of the per-cell outputs of the complete step (from the Rust

@@ -1,4 +1,5 @@
-"""Type stubs of the compiled module ``pressridge._core`` (python/src/lib.rs).
+"""Type stubs of the compiled module ``pressridge._core`` (python/src/: one Rust module
+per face, listed in lib.rs).
 
 These functions take already-normalised arguments; the documented API is in
 ``pressridge/__init__.py``, ``pressridge/_table.py`` and ``pressridge/xr.py``.
