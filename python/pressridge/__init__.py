@@ -30,6 +30,8 @@ from . import _core
 from ._table import Table
 from . import _progress
 from ._run import Run, State, load_run, load_state, plot_state
+from ._options import Participation, Redistribution, StrengthLaw, StrengthOptions
+from . import _options
 
 __version__: str = _core.__version__
 
@@ -43,6 +45,7 @@ __all__ = [
     "CampaignResult",
     "Table",
     "strength",
+    "StrengthOptions",
     "ridge_step",
     "category_bounds",
     "simulate",
@@ -241,9 +244,10 @@ def strength(
     vicen: Any,
     aice0: Any = None,
     *,
-    participation: str = "exponential",
-    redistribution: str = "exponential",
-    law: str = "rothrock",
+    options: Optional[StrengthOptions] = None,
+    participation: Optional[Participation] = None,
+    redistribution: Optional[Redistribution] = None,
+    law: Optional[StrengthLaw] = None,
     cf: CfLike = None,
     friction: Optional[Tuple[float, float]] = None,
     valid: Any = None,
@@ -268,6 +272,10 @@ def strength(
         not exceed 1). When given, aice0 + sum(aicen) must be 1 within
         ``area_tolerance`` (1e-6). A column with aice0 and every aicen exactly 0 (land)
         has strength 0.
+    options : StrengthOptions, optional
+        The options below as one typed value (:class:`StrengthOptions`; default: CICE's,
+        as ``StrengthOptions()``). A keyword option given explicitly (not None) overrides
+        the same field of ``options``; parameter keywords are laid over ``options.params``.
     participation : {"exponential", "thorndike"}
         Participation function: Lipscomb et al. (2007) (CICE ``krdg_partic = 1``, default)
         or Thorndike et al. (1975) (0).
@@ -315,19 +323,24 @@ def strength(
     v = _f64(vicen, "vicen")
     a0 = None if aice0 is None else _f64(aice0, "aice0")
     ok = None if valid is None else _bool(valid, "valid")
+    participation, redistribution, law, cf, friction, params = _options.merge(
+        options, participation, redistribution, law, cf, friction, params
+    )
     value, nodes, path = _cf_args(cf, friction)
     out, clamped = _core.strength(
         a,
         v,
         a0,
         ok,
-        participation,
-        redistribution,
-        law,
-        value,
-        nodes,
-        path,
-        _params(params),
+        dict(
+            participation=participation,
+            redistribution=redistribution,
+            law=law,
+            cf_value=value,
+            cf_nodes=nodes,
+            cf_file=path,
+            params=_params(params),
+        ),
     )
     if clamped:
         ncol = int(_np.prod(a.shape[1:], dtype=_np.int64))

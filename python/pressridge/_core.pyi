@@ -6,7 +6,7 @@ These functions take already-normalised arguments; the documented API is in
 """
 
 from os import PathLike
-from typing import Any, Callable, List, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, List, Optional, Sequence, Tuple, TypedDict, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -19,18 +19,23 @@ __version__: str
 CATEGORY_DIMS: List[str]
 STRENGTH_META: Tuple[str, str, str]
 
+class _StrengthArgs(TypedDict):
+    """The options of ``strength`` (the normalised ``pressridge.StrengthOptions``)."""
+
+    participation: str
+    redistribution: str
+    law: str
+    cf_value: Optional[float]
+    cf_nodes: Optional[Tuple[Sequence[float], Sequence[float]]]
+    cf_file: Optional[_Path]
+    params: Sequence[Tuple[str, float]]
+
 def strength(
     aicen: _F64,
     vicen: _F64,
     aice0: Optional[_F64],
     valid: Optional[_Bool],
-    participation_name: str,
-    redistribution_name: str,
-    law_name: str,
-    cf_value: Optional[float],
-    cf_nodes: Optional[Tuple[Sequence[float], Sequence[float]]],
-    cf_file: Optional[_Path],
-    params: Sequence[Tuple[str, float]],
+    options: _StrengthArgs,
 ) -> Tuple[_F64, int]:
     """Strength P (N/m) of shape ``aicen.shape[1:]`` and the number of columns where a
     C_f table was clamped."""
@@ -149,6 +154,8 @@ def read_cf_table_at_friction(
 DEFAULT_FRICTION: Tuple[float, float]
 RAFTING_REACH: float
 def default_params() -> dict[str, float]: ...
+def param_meta() -> List[Tuple[str, str, str, float]]:
+    """Every ITD parameter: (name, units, description, CICE default)."""
 def scene_toml(scene: Optional[_Path], sets: Sequence[str]) -> str: ...
 def simulate(
     scene: Optional[_Path],

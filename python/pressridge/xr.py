@@ -151,9 +151,10 @@ _calls = itertools.count(1)
 def strength(
     ds: xr.Dataset,
     *,
-    participation: str = "exponential",
-    redistribution: str = "exponential",
-    law: str = "rothrock",
+    options: Optional[_pr.StrengthOptions] = None,
+    participation: Optional[_pr.Participation] = None,
+    redistribution: Optional[_pr.Redistribution] = None,
+    law: Optional[_pr.StrengthLaw] = None,
     cf: Any = None,
     friction: Optional[Tuple[float, float]] = None,
     category_dim: Optional[Hashable] = None,
@@ -165,7 +166,9 @@ def strength(
     Options and parameters as :func:`pressridge.strength` (``cf`` may be a number, a preset
     name, a :class:`pressridge.Table`, a C_f table file or (thickness, cf) nodes; with a
     table, ``friction`` = (mu, mu_w) chooses its set, default (1.0, 0.6), and the output's
-    ``cf_friction`` attribute records the pair).
+    ``cf_friction`` attribute records the pair). ``options`` is a
+    :class:`pressridge.StrengthOptions`; keywords given explicitly override its fields and
+    parameter keywords are laid over its ``params``, as in :func:`pressridge.strength`.
     ``category_dim`` names the category dimension (default: the one dimension of ``aicen``
     named as in :data:`CATEGORY_DIMS`; a dataset with none or several is refused with the
     dimensions listed); every other dimension (``time``, ``nj``, ``ni``, ensemble...) is a
@@ -178,8 +181,11 @@ def strength(
     aicen, vicen, aice0, cat, spatial = _category_vars(ds, category_dim)
     use_mask = _mask_flag(mask, ds["aicen"], ds["vicen"], aice0)
     aicen, use_mask = _apply_tmask(ds, aicen, use_mask, mask)
+    participation, redistribution, law, cf, friction, params = _pr._options.merge(
+        options, participation, redistribution, law, cf, friction, params
+    )
     # Read a C_f file once here, so that the tasks carry only small arrays.
-    options = dict(
+    block_options = dict(
         participation=participation,
         redistribution=redistribution,
         law=law,
@@ -188,7 +194,7 @@ def strength(
     )
     # A table (or its file) is read once: its nodes at the friction asked for, and the pair.
     nodes, cf_friction = _pr._cf_table_nodes(cf, friction)
-    options["cf"] = (
+    block_options["cf"] = (
         _pr._resolve_cf(cf) if nodes is None else (np.asarray(nodes[0]), np.asarray(nodes[1]))
     )
     _pr._params(params)  # unknown names fail now, not at compute time
@@ -205,7 +211,7 @@ def strength(
         kwargs=dict(
             has_aice0=aice0 is not None,
             mask=use_mask,
-            options=options,
+            options=block_options,
             # Lazy data: every chunk warns with the same text (this call's number), which
             # the warnings filter shows once; eager data is one block: the exact count.
             clamp_note=(
@@ -218,7 +224,7 @@ def strength(
     )
     out = out.transpose(*spatial)
     out.name = "strength"
-    cf_desc = options["cf"]
+    cf_desc = block_options["cf"]
     units, long_name, standard_name = _pr._core.STRENGTH_META
     out.attrs = {
         "units": units,

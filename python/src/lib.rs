@@ -69,6 +69,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     )?;
     m.add("RAFTING_REACH", pressridge::table::rafting::RAFTING_REACH)?;
     m.add_function(wrap_pyfunction!(options::default_params, m)?)?;
+    m.add_function(wrap_pyfunction!(options::param_meta, m)?)?;
     m.add_function(wrap_pyfunction!(simulator::scene_toml, m)?)?;
     m.add_function(wrap_pyfunction!(simulator::simulate, m)?)?;
     m.add_function(wrap_pyfunction!(simulator::series_units, m)?)?;

@@ -1,9 +1,9 @@
 //! The library's options and parameters from Python values, and the queries about them.
 //!
 //! Owns the parsing of the participation, redistribution and strength-law names, of the
-//! `ItdParams` overrides and of the C_f argument (number, nodes or table file); and the
-//! module functions that list them: category bounds, C_f presets, C_f table files, parameter
-//! names and CICE defaults.
+//! `ItdParams` overrides and of the C_f argument (number, nodes or table file), gathered for
+//! `strength` in [`StrengthArgs`]; and the module functions that list them: category bounds,
+//! C_f presets, C_f table files, parameter names, units and CICE defaults.
 
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -15,7 +15,7 @@ use pyo3::types::PyDict;
 use pressridge::io::itd_netcdf::read_cf_table;
 use pressridge::itd::{
     CategoryBounds, Cf, CfPreset, CfTable, ItdParams, Participation, Redistribution,
-    StrengthFormula, category_bounds,
+    StrengthFormula, StrengthOptions, category_bounds,
 };
 
 use crate::arrays::Pair;
@@ -87,6 +87,40 @@ pub(crate) fn cf_from(
         }
         (None, None, None) => Ok(Cf::default()),
         _ => Err(value_err("give C_f one way only").into()),
+    }
+}
+
+/// The options of `strength` as `pressridge.strength` passes them: one dict with these
+/// keys (the normalised `pressridge.StrengthOptions`), instead of seven positional
+/// arguments.
+#[derive(FromPyObject)]
+#[pyo3(from_item_all)]
+pub(crate) struct StrengthArgs {
+    /// Participation function by name.
+    participation: String,
+    /// Redistribution by name.
+    redistribution: String,
+    /// Strength law by name.
+    law: String,
+    /// C_f, at most one of: a constant (dimensionless), (thickness m, C_f) nodes, a C_f
+    /// table file; none: the default.
+    cf_value: Option<f64>,
+    cf_nodes: Option<(Vec<f64>, Vec<f64>)>,
+    cf_file: Option<PathBuf>,
+    /// `ItdParams` overrides as (name, value) pairs.
+    params: Vec<(String, f64)>,
+}
+
+impl StrengthArgs {
+    /// The library's options (reads a C_f table file, without the GIL).
+    pub(crate) fn resolve(self, py: Python<'_>) -> PyResult<StrengthOptions> {
+        Ok(StrengthOptions {
+            participation: participation(&self.participation)?,
+            redistribution: redistribution(&self.redistribution)?,
+            formula: law(&self.law)?,
+            cf: cf_from(py, self.cf_value, self.cf_nodes, self.cf_file)?,
+            params: itd_params(self.params)?,
+        })
     }
 }
 
@@ -173,6 +207,24 @@ pub(crate) fn read_cf_table_at_friction<'py>(
 #[pyfunction]
 pub(crate) fn param_names() -> Vec<&'static str> {
     ItdParams::NAMES.to_vec()
+}
+
+/// Every parameter (`ItdParams::FIELDS`, in order): (name, units, description, CICE
+/// default).
+#[pyfunction]
+pub(crate) fn param_meta() -> Vec<(&'static str, &'static str, &'static str, f64)> {
+    let d = ItdParams::default();
+    ItdParams::FIELDS
+        .iter()
+        .map(|f| {
+            (
+                f.name,
+                f.units,
+                f.description,
+                d.get(f.name).expect("a listed parameter"),
+            )
+        })
+        .collect()
 }
 
 /// CICE's default value of every parameter (`ItdParams::FIELDS`, in order), as a dict.

@@ -4,15 +4,13 @@
 //! volumes and ridging rates, no snow or tracers) and the `_layout` probe of the no-copy
 //! promise. The complete step with snow, tracers and ocean fluxes is in `step.rs`.
 
-use std::path::PathBuf;
-
 use ndarray::ArrayViewMut1;
 use numpy::{PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
 use pressridge::itd::{
-    CategoryBounds, RidgeOptions, RidgeRatesMut, StrengthOptions, category_bounds,
-    ridge_batch_masked, strength_batch_masked,
+    CategoryBounds, RidgeOptions, RidgeRatesMut, category_bounds, ridge_batch_masked,
+    strength_batch_masked,
 };
 
 use crate::arrays::{
@@ -20,25 +18,19 @@ use crate::arrays::{
     flat_bool, flat_mut, itd_err, new_array,
 };
 use crate::errors::{detached, value_err};
-use crate::options::{cf_from, itd_params, law, participation, redistribution};
+use crate::options::{StrengthArgs, itd_params, participation, redistribution};
 
-/// Ice strength P (N/m); see `pressridge.strength`. Returns (P, columns with a clamped C_f).
+/// Ice strength P (N/m); see `pressridge.strength`. `options` is a dict (`StrengthArgs`).
+/// Returns (P, columns with a clamped C_f).
 #[pyfunction]
-#[pyo3(signature = (aicen, vicen, aice0, valid, participation_name, redistribution_name, law_name, cf_value, cf_nodes, cf_file, params))]
-#[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (aicen, vicen, aice0, valid, options))]
 pub(crate) fn strength<'py>(
     py: Python<'py>,
     aicen: PyReadonlyArrayDyn<'py, f64>,
     vicen: PyReadonlyArrayDyn<'py, f64>,
     aice0: Option<PyReadonlyArrayDyn<'py, f64>>,
     valid: Option<PyReadonlyArrayDyn<'py, bool>>,
-    participation_name: &str,
-    redistribution_name: &str,
-    law_name: &str,
-    cf_value: Option<f64>,
-    cf_nodes: Option<(Vec<f64>, Vec<f64>)>,
-    cf_file: Option<PathBuf>,
-    params: Vec<(String, f64)>,
+    options: StrengthArgs,
 ) -> PyResult<(Bound<'py, PyArrayDyn<f64>>, usize)> {
     let spatial = category_shapes(&aicen, &vicen)?;
     if let Some(a0) = &aice0 {
@@ -47,13 +39,7 @@ pub(crate) fn strength<'py>(
     if let Some(v) = &valid {
         check_array("valid", v, &spatial, "the spatial shape of aicen")?;
     }
-    let opts = StrengthOptions {
-        participation: participation(participation_name)?,
-        redistribution: redistribution(redistribution_name)?,
-        formula: law(law_name)?,
-        cf: cf_from(py, cf_value, cf_nodes, cf_file)?,
-        params: itd_params(params)?,
-    };
+    let opts = options.resolve(py)?;
     let a = aicen.as_array();
     let order = choose_order(&a);
     let out = new_array(py, &spatial, order);
