@@ -321,6 +321,29 @@ impl Layout {
         Ok(chart)
     }
 
+    /// Finishes a figure made by [`Layout::chart`]: the legend of its labelled series in the
+    /// figures' one style (white box at 85 %, black border, the legend font) at `position`,
+    /// then the drawing flushed to its file.
+    pub fn finish<'a, DB: DrawingBackend + 'a>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        chart: &mut ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>,
+        position: SeriesLabelPosition,
+    ) -> Result<(), PlotError>
+    where
+        DB::ErrorType: 'static,
+    {
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .label_font(("sans-serif", self.fonts.legend))
+            .position(position)
+            .draw()
+            .map_err(draw_err)?;
+        root.present().map_err(draw_err)
+    }
+
     /// Draws the title (centred over the canvas, `pad` from the top), the x-axis
     /// description (centred under the plot area, `pad` from the bottom) and the y-axis
     /// description (rotated, centred beside the plot area, `pad` from the left edge).

@@ -101,16 +101,7 @@ where
                 PathElement::new([(x, y), (x + key, y)], color.stroke_width(line))
             });
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", layout.fonts.legend))
-        .position(SeriesLabelPosition::UpperLeft)
-        .draw()
-        .map_err(draw_err)?;
-    root.present().map_err(draw_err)?;
-    Ok(())
+    layout.finish(&root, &mut chart, SeriesLabelPosition::UpperLeft)
 }
 
 /// Draws the ridging force of eq (9) against time (cf. Hopkins 1994, Figure 6) in kN per

@@ -137,16 +137,7 @@ where
             .label(format!("h = {th:.2} m, ensemble mean"))
             .legend(move |(x, y)| PathElement::new([(x, y), (x + key, y)], c.stroke_width(line)));
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", layout.fonts.legend))
-        .position(SeriesLabelPosition::UpperLeft)
-        .draw()
-        .map_err(draw_err)?;
-    root.present().map_err(draw_err)?;
-    Ok(())
+    layout.finish(&root, &mut chart, SeriesLabelPosition::UpperLeft)
 }
 
 /// Work against ridged volume at thickness index `hi` for every set that has runs there
@@ -206,16 +197,7 @@ where
             .label(format!("{} {}", set_display(&t.sets[s]), seeds(n)))
             .legend(move |(x, y)| PathElement::new([(x, y), (x + key, y)], c.stroke_width(line)));
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", layout.fonts.legend))
-        .position(SeriesLabelPosition::UpperLeft)
-        .draw()
-        .map_err(draw_err)?;
-    root.present().map_err(draw_err)?;
-    Ok(())
+    layout.finish(&root, &mut chart, SeriesLabelPosition::UpperLeft)
 }
 
 /// Ridging force against volume for set `s`: eq (15) from the pooled fit per thickness
@@ -288,16 +270,7 @@ where
             )
             .map_err(draw_err)?;
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", layout.fonts.legend))
-        .position(SeriesLabelPosition::UpperLeft)
-        .draw()
-        .map_err(draw_err)?;
-    root.present().map_err(draw_err)?;
-    Ok(())
+    layout.finish(&root, &mut chart, SeriesLabelPosition::UpperLeft)
 }
 
 /// One ensemble of final profiles: the strip-by-strip mean and sample standard deviation
@@ -442,16 +415,7 @@ where
             RGBColor(30, 90, 160).stroke_width(thin),
         ))
         .map_err(draw_err)?;
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", layout.fonts.legend))
-        .position(SeriesLabelPosition::UpperLeft)
-        .draw()
-        .map_err(draw_err)?;
-    root.present().map_err(draw_err)?;
-    Ok(())
+    layout.finish(&root, &mut chart, SeriesLabelPosition::UpperLeft)
 }
 
 /// C_f (the final W/ΔPE) against sheet thickness: per set,
@@ -591,16 +555,7 @@ where
                 .map_err(draw_err)?;
         }
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", layout.fonts.legend))
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()
-        .map_err(draw_err)?;
-    root.present().map_err(draw_err)?;
-    Ok(())
+    layout.finish(&root, &mut chart, SeriesLabelPosition::UpperRight)
 }
 
 /// A set's label as a legend or title shows it: `mu=1, mu_w=0.6` becomes
