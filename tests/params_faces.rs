@@ -179,11 +179,23 @@ fn fortran_overrides_by_icepack_name_set_the_field_of_that_name() {
 }
 
 /// The Python extension's `param_names` and `default_params` are built from
-/// `ItdParams::NAMES` and `ItdParams::FIELDS` and list no parameter by hand.
+/// `ItdParams::NAMES` and `ItdParams::FIELDS` and list no parameter by hand (in any of its
+/// source files).
 #[test]
 fn python_extension_takes_the_parameters_from_the_rust_list() {
-    let file = "python/src/lib.rs";
-    let text = read(file);
+    let file = "python/src/*.rs";
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("python/src");
+    let mut names: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "rs"))
+        .collect();
+    names.sort();
+    assert!(names.len() > 1, "{file}: {names:?}");
+    let text: String = names
+        .iter()
+        .map(|p| std::fs::read_to_string(p).unwrap())
+        .collect();
     assert!(
         text.contains("ItdParams::NAMES.to_vec()"),
         "{file}: param_names"
