@@ -32,6 +32,8 @@ use crate::io::IoError;
 use crate::io::state::{read_json, save_state, write_json};
 use crate::observe;
 pub use crate::record::{RunDigest, RunRecord, RunSample};
+
+pub mod tabulation;
 use crate::scene::{Scene, SceneError, SceneLoadError};
 use crate::simulation;
 use serde::{Deserialize, Serialize};
@@ -331,7 +333,7 @@ impl CampaignSpec {
     pub fn plan(&self, base_dir: &Path) -> Result<Vec<PlannedRun>, CampaignError> {
         let path = self.scene.as_ref().map(|p| base_dir.join(p));
         let base = Scene::load::<&str>(path.as_deref(), &[]).map_err(|e| match e {
-            SceneLoadError::Read(io) => CampaignError::Io(io),
+            SceneLoadError::Read { path, source } => CampaignError::Io(IoError::os(&path, source)),
             SceneLoadError::File { path, source } => CampaignError::Scene {
                 run: path.display().to_string(),
                 source,

@@ -42,9 +42,15 @@ pub enum SceneError {
 /// An error loading a scene file with overrides ([`Scene::load`]).
 #[derive(Debug, thiserror::Error)]
 pub enum SceneLoadError {
-    /// The file could not be read.
-    #[error(transparent)]
-    Read(#[from] crate::io::IoError),
+    /// The file could not be read (the same message as [`crate::io::IoError::Os`]; the
+    /// scene layer sits below `io`, so it keeps the path and the cause itself).
+    #[error("{}: {source}", path.display())]
+    Read {
+        /// The file.
+        path: std::path::PathBuf,
+        /// The cause.
+        source: std::io::Error,
+    },
     /// The scene in the file is invalid; the message starts with the file's path.
     #[error("{}: {source}", path.display())]
     File {
@@ -498,9 +504,9 @@ impl Scene {
     ) -> Result<Scene, SceneLoadError> {
         let base = match path {
             Some(p) => {
-                let text = std::fs::read_to_string(p).map_err(|e| crate::io::IoError::Os {
+                let text = std::fs::read_to_string(p).map_err(|source| SceneLoadError::Read {
                     path: p.to_path_buf(),
-                    source: e,
+                    source,
                 })?;
                 Scene::from_toml(&text).map_err(|source| SceneLoadError::File {
                     path: p.to_path_buf(),

@@ -11,11 +11,13 @@ use std::time::Duration;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
+use pressridge::campaign::tabulation::{
+    TabulateCampaignsError, TabulateOptions, tabulate_campaigns,
+};
 use pressridge::campaign::{
     CampaignSpec, PlannedRun, Progress, adopt_records, prepare_campaign, run_campaign, run_planned,
 };
 use pressridge::io::table_netcdf::write_ridge_table;
-use pressridge::table::campaigns::{TabulateCampaignsError, TabulateOptions, tabulate_campaigns};
 use pressridge::table::tabulate::fit_warnings;
 
 use crate::errors::{BindError, detached, file_missing, guarded, value_err};
@@ -167,7 +169,7 @@ pub(crate) fn campaign_run_planned(
 type TabulateOut = (Vec<(String, f64, f64)>, Vec<String>);
 
 /// Tabulates campaign directories into a NetCDF lookup table, as `pressridge tabulate`
-/// (`table::campaigns::tabulate_campaigns`); returns one line per set and thickness with
+/// (`campaign::tabulation::tabulate_campaigns`); returns one line per set and thickness with
 /// its C_f, and the warnings and notes the command line prints.
 #[pyfunction]
 #[pyo3(signature = (campaign_dirs, out, points, command, date, allow_partial=false, rafting_reach=pressridge::table::rafting::RAFTING_REACH, exclude_rafted=false))]

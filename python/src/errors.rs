@@ -77,7 +77,7 @@ impl From<CampaignError> for BindError {
 impl From<SceneLoadError> for BindError {
     fn from(e: SceneLoadError) -> Self {
         match e {
-            SceneLoadError::Read(io) => io.into(),
+            SceneLoadError::Read { path, source } => IoError::Os { path, source }.into(),
             other => BindError::Value(other.to_string()),
         }
     }

@@ -13,7 +13,6 @@
 //! - [`lookup`] — interpolation in a tabulated campaign (clamped and flagged outside its
 //!   range, NaN where no run reached), read back from NetCDF by `RidgeLookup::open`.
 
-pub mod campaigns;
 pub mod ensemble;
 pub mod fields;
 pub mod fit;

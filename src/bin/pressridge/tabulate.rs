@@ -1,13 +1,13 @@
 //! `pressridge tabulate`: a campaign directory to a NetCDF lookup table.
 
 use crate::BoxError;
+use pressridge::campaign::tabulation::{
+    TabulateCampaignsError, TabulateOptions, Tabulated, tabulate_campaigns,
+};
 use pressridge::io::table_netcdf::write_ridge_table;
 use pressridge::observe::{Profile, mean_profile, profile_spread};
 use pressridge::plot;
 use pressridge::plot::table::ProfileGroup;
-use pressridge::table::campaigns::{
-    TabulateCampaignsError, TabulateOptions, Tabulated, tabulate_campaigns,
-};
 use std::path::PathBuf;
 
 #[derive(clap::Args)]

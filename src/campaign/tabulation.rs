@@ -2,14 +2,15 @@
 //! Python's `pressridge.tabulate`, written once. It reads each campaign's records
 //! ([`read_campaign`], refusing an incomplete one unless partial campaigns are allowed),
 //! pools them (a run two campaigns share is counted once, by [`tabulate`]), leaves rafted
-//! runs out on request ([`super::rafting`]), tabulates them (the dissipation gate leaves
+//! runs out on request ([`crate::table::rafting`]), tabulates them (the dissipation gate leaves
 //! numerically unstable runs out) and gathers the table's provenance. Writing the table,
-//! figures and the report, and telling the user, are the faces' business.
+//! figures and the report, and telling the user, are the faces' business. It sits in the
+//! campaign layer, above `table` and `io`, whose pieces it joins.
 
-use super::tabulate::{RidgeTable, TabulateError, tabulate};
 use crate::campaign::{CampaignError, CampaignSpec, read_campaign};
 use crate::io::table_netcdf::Provenance;
 use crate::record::RunRecord;
+use crate::table::tabulate::{RidgeTable, TabulateError, tabulate};
 use std::path::PathBuf;
 
 /// The choices of a tabulation; `Default` is the command line's.
@@ -21,7 +22,7 @@ pub struct TabulateOptions {
     /// Default false.
     pub allow_partial: bool,
     /// A run counts as rafted when its intact lead sheet passed the floe's nose by more than
-    /// this (m). Default [`super::rafting::RAFTING_REACH`].
+    /// this (m). Default [`crate::table::rafting::RAFTING_REACH`].
     pub rafting_reach: f64,
     /// Leave rafted runs out of the table. Default false.
     pub exclude_rafted: bool,
@@ -32,7 +33,7 @@ impl Default for TabulateOptions {
         TabulateOptions {
             points: 41,
             allow_partial: false,
-            rafting_reach: super::rafting::RAFTING_REACH,
+            rafting_reach: crate::table::rafting::RAFTING_REACH,
             exclude_rafted: false,
         }
     }
@@ -91,6 +92,9 @@ pub fn tabulate_campaigns(
     if dirs.is_empty() {
         return Err(TabulateCampaignsError::NoCampaign);
     }
+    if !(opts.rafting_reach.is_finite() && opts.rafting_reach >= 0.0) {
+        return Err(TabulateCampaignsError::RaftingReach(opts.rafting_reach));
+    }
     let (mut planned, mut specs, mut records, mut partial) =
         (0, Vec::new(), Vec::new(), Vec::new());
     for dir in dirs {
@@ -102,13 +106,10 @@ pub fn tabulate_campaigns(
         specs.push(campaign.spec);
         records.extend(campaign.records);
     }
-    if !(opts.rafting_reach.is_finite() && opts.rafting_reach >= 0.0) {
-        return Err(TabulateCampaignsError::RaftingReach(opts.rafting_reach));
-    }
     let all_records = records.clone();
     let mut rafted_out: Vec<(String, String)> = Vec::new();
     if opts.exclude_rafted {
-        use super::rafting::{Outcome, outcome};
+        use crate::table::rafting::{Outcome, outcome};
         records.retain(|r| match outcome(r, opts.rafting_reach) {
             Outcome::Rafted(over) => {
                 rafted_out.push((
@@ -174,7 +175,7 @@ mod tests {
             (o.points, o.allow_partial, o.exclude_rafted),
             (41, false, false)
         );
-        assert_eq!(o.rafting_reach, super::super::rafting::RAFTING_REACH);
+        assert_eq!(o.rafting_reach, crate::table::rafting::RAFTING_REACH);
         assert!(matches!(
             tabulate_campaigns(&[], &o, "", ""),
             Err(TabulateCampaignsError::NoCampaign)
