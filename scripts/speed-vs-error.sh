@@ -21,16 +21,19 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --release --bin pressridge --example speed_vs_error
 table=./target/release/examples/speed_vs_error
-# A configuration's runs: its archive, plus the archive of its extra seeds (<config>-more,
-# seeds 13-26 at h = 0.30 m) where there is one, pooled by the table (`NAME=DIR1+DIR2`).
+# A configuration's runs: its archive, plus the archives of its extra seeds where there are
+# any (<config>-more: seeds 13-26 at h = 0.30 m; <config>-more-045: the same at 0.45 m),
+# pooled by the table (`NAME=DIR1+DIR2+...`).
 runs_of() {
-  local root=$1 c=$2 d="$1/$2"
-  [ -d "$root/$c-more" ] && d="$d+$root/$c-more"
+  local root=$1 c=$2 d="$1/$2" x
+  for x in "$root/$c-more" "$root/$c-more-045"; do
+    [ -d "$x" ] && d="$d+$x"
+  done
   echo "$d"
 }
 if [ "${1:-}" = "--run" ]; then
   threads=${2:-$(nproc)}
-  for c in default default-more step-1.0 step-1.0-more; do
+  for c in default default-more default-more-045 step-1.0 step-1.0-more step-1.0-more-045; do
     resume=()
     [ -d "data/speed-vs-error/$c" ] && resume=(--resume-from "data/speed-vs-error/$c")
     ./target/release/pressridge campaign --spec "data/campaigns/speed-vs-error/$c.toml" \

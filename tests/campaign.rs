@@ -663,6 +663,7 @@ fn shipped_specs_plan_the_papers_sets() {
     assert_eq!(count("thickness-thin.toml"), 2 * 7);
     assert_eq!(count("sheet-length.toml"), 7);
     assert_eq!(count("thickness-thick-floe.toml"), 3 * 7);
+    assert_eq!(count("friction-thickness.toml"), 7 * 2 * 7);
     let plan = |f: &str| {
         CampaignSpec::read(&dir.join(f))
             .unwrap()
