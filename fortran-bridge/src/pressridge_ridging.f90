@@ -1,0 +1,454 @@
+!> pressridge_ridging_mod: the ridging step, as CICE/Icepack's ridge_ice and
+!> icepack_step_ridge.
+!>
+!> Owns the area and volume step (no snow, tracers or fluxes): pressridge_ridge_ice (one
+!> cell, Icepack-style, the options of pressridge_init_parameters) and the batched generic
+!> pressridge_ridge_step, ridge_step_2d (aicen(ncat, ncol), x(ncol)) and ridge_step_3d
+!> (CICE's block layout aicen(nx, ny, ncat), x(nx, ny)).
+!> And the complete step with snow, tracers and ocean fluxes: the set-up pressridge_ridger
+!> (pressridge_ridger_init, pressridge_ridger_free), one cell (pressridge_step_ridge,
+!> Icepack's argument names and units) and ncol cells in one call
+!> (pressridge_step_ridge_cells). Hosts `use pressridge`.
+module pressridge_ridging_mod
+  use, intrinsic :: iso_c_binding
+  use pressridge_cabi_mod
+  use pressridge_base_mod
+  implicit none
+  private
+
+  public :: pressridge_ridge_step, pressridge_ridge_ice
+  public :: pressridge_ridger_init, pressridge_ridger_free, pressridge_step_ridge
+  public :: pressridge_step_ridge_cells
+
+  !> One ridging step of many columns in one call, in place; layouts as pressridge_strength.
+  interface pressridge_ridge_step
+     module procedure ridge_step_2d, ridge_step_3d
+  end interface pressridge_ridge_step
+
+contains
+
+  ! ---------------------------------------------------------- area and volume step
+
+  !> Icepack-style ridging step of one cell (ridge_ice without snow, tracers and fluxes):
+  !> dt (s), hin_max(0:ncat) (m), rdg_conv, rdg_shear (1/s), aicen(ncat) (1), vicen(ncat) (m)
+  !> and aice0 (1) updated in place; optional rates dardg1dt, dardg2dt (1/s), dvirdgdt (m/s),
+  !> opening, closing (1/s). Options from pressridge_init_parameters.
+  subroutine pressridge_ridge_ice(dt, hin_max, rdg_conv, rdg_shear, aicen, vicen, aice0, &
+       dardg1dt, dardg2dt, dvirdgdt, opening, closing, ierr)
+    real(c_double), intent(in) :: dt
+    real(c_double), intent(in), contiguous, target :: hin_max(0:)
+    real(c_double), intent(in), target :: rdg_conv, rdg_shear
+    real(c_double), intent(inout), contiguous, target :: aicen(:), vicen(:)
+    real(c_double), intent(inout), target :: aice0
+    real(c_double), intent(out), optional, target :: dardg1dt, dardg2dt, dvirdgdt, opening, closing
+    integer, intent(out), optional :: ierr
+    character(len=*), parameter :: where = 'pressridge_ridge_ice'
+    type(c_grid) :: g
+    type(c_rates) :: r
+    integer(c_int64_t) :: n
+    n = size(aicen, kind=c_int64_t)
+    if (size(vicen) /= n .or. n == 0) then
+       call fail(PRESSRIDGE_ERR_BAD_SIZE, 'vicen and aicen must have the same size ncat > 0', &
+            where, ierr)
+       return
+    end if
+    g = c_grid(n, 1_c_int64_t, 1_c_int64_t, n, n, 1_c_int64_t, 1_c_int64_t)
+    if (present(dardg1dt)) r%dardg1dt = c_loc(dardg1dt)
+    if (present(dardg2dt)) r%dardg2dt = c_loc(dardg2dt)
+    if (present(dvirdgdt)) r%dvirdgdt = c_loc(dvirdgdt)
+    if (present(opening)) r%opening = c_loc(opening)
+    if (present(closing)) r%closing = c_loc(closing)
+    call finish(c_ridge_step(g, c_loc(aicen), c_loc(vicen), c_loc(aice0), c_loc(hin_max), &
+         size(hin_max, kind=c_int64_t), c_loc(rdg_conv), c_loc(rdg_shear), dt, c_null_ptr, &
+         c_loc(icepack_options), r), where, ierr)
+  end subroutine pressridge_ridge_ice
+
+  subroutine ridge_common(g, aicen, vicen, aice0, convergence, shear, dt, hin_max, options, &
+       valid, r, where, ierr)
+    type(c_grid), intent(in) :: g
+    type(c_ptr), intent(in) :: aicen, vicen, aice0, convergence, shear
+    real(c_double), intent(in) :: dt
+    real(c_double), intent(in), optional, contiguous, target :: hin_max(:)
+    type(pressridge_options), intent(in), optional, target :: options
+    logical, intent(in), optional :: valid(:)
+    type(c_rates), intent(in) :: r
+    character(len=*), intent(in) :: where
+    integer, intent(out), optional :: ierr
+    integer(c_int32_t), allocatable, target :: v(:)
+    type(c_ptr) :: pv, po, ph
+    integer(c_int64_t) :: nb
+    pv = c_null_ptr
+    if (present(valid)) then
+       allocate(v(size(valid)))
+       v = merge(1_c_int32_t, 0_c_int32_t, valid)
+       if (size(v) > 0) pv = c_loc(v)
+    end if
+    po = c_loc(icepack_options)
+    if (present(options)) po = c_loc(options)
+    ph = c_null_ptr
+    nb = 0
+    if (present(hin_max)) then
+       nb = size(hin_max, kind=c_int64_t)
+       if (nb > 0) ph = c_loc(hin_max)
+       if (nb == 0) then
+          call fail(PRESSRIDGE_ERR_BAD_SIZE, 'hin_max is empty', where, ierr)
+          return
+       end if
+    end if
+    call finish(c_ridge_step(g, aicen, vicen, aice0, ph, nb, convergence, shear, dt, pv, po, r), &
+         where, ierr)
+  end subroutine ridge_common
+
+  !> One ridging step of dt (s) over ncol columns, in place: aicen(ncat, ncol) (1),
+  !> vicen(ncat, ncol) (m), aice0(ncol) (1); convergence(ncol), shear(ncol) (1/s, >= 0);
+  !> optional hin_max(0:ncat) (m; else CICE's default bounds), options, valid(ncol), and the
+  !> rates closing, opening, dardg1dt, dardg2dt (1/s), dvirdgdt (m/s), each (ncol).
+  subroutine ridge_step_2d(aicen, vicen, aice0, convergence, shear, dt, hin_max, options, &
+       valid, closing, opening, dardg1dt, dardg2dt, dvirdgdt, ierr)
+    real(c_double), intent(inout), contiguous, target :: aicen(:, :), vicen(:, :), aice0(:)
+    real(c_double), intent(in), contiguous, target :: convergence(:), shear(:)
+    real(c_double), intent(in) :: dt
+    real(c_double), intent(in), optional, contiguous, target :: hin_max(:)
+    type(pressridge_options), intent(in), optional, target :: options
+    logical, intent(in), optional :: valid(:)
+    real(c_double), intent(out), optional, contiguous, target :: closing(:), opening(:), &
+         dardg1dt(:), dardg2dt(:), dvirdgdt(:)
+    integer, intent(out), optional :: ierr
+    character(len=*), parameter :: where = 'pressridge_ridge_step'
+    type(c_rates) :: r
+    integer :: ncat, ncol
+    ncat = size(aicen, 1)
+    ncol = size(aicen, 2)
+    if (any(shape(vicen) /= shape(aicen))) then
+       call fail(PRESSRIDGE_ERR_BAD_SIZE, 'vicen and aicen differ in shape', where, ierr)
+       return
+    end if
+    if (.not. sized(size(aice0), ncol, 'aice0', where, ierr)) return
+    if (.not. sized(size(convergence), ncol, 'convergence', where, ierr)) return
+    if (.not. sized(size(shear), ncol, 'shear', where, ierr)) return
+    if (present(valid)) then
+       if (.not. sized(size(valid), ncol, 'valid', where, ierr)) return
+    end if
+    if (.not. ok1('closing', closing)) return
+    if (.not. ok1('opening', opening)) return
+    if (.not. ok1('dardg1dt', dardg1dt)) return
+    if (.not. ok1('dardg2dt', dardg2dt)) return
+    if (.not. ok1('dvirdgdt', dvirdgdt)) return
+    r = rate_ptrs(ncol, closing, opening, dardg1dt, dardg2dt, dvirdgdt)
+    call ridge_common(grid_2d(ncat, ncol), ptr2(aicen), ptr2(vicen), ptr1(aice0), &
+         ptr1(convergence), ptr1(shear), dt, hin_max, options, valid, r, where, ierr)
+  contains
+    !> An absent rate, or one of ncol values.
+    logical function ok1(name, x)
+      character(len=*), intent(in) :: name
+      real(c_double), intent(in), optional :: x(:)
+      ok1 = .true.
+      if (present(x)) ok1 = sized(size(x), ncol, name, where, ierr)
+    end function ok1
+  end subroutine ridge_step_2d
+
+  !> As ridge_step_2d in CICE's block layout: aicen(nx, ny, ncat), vicen(nx, ny, ncat), and
+  !> aice0, convergence, shear, valid and the rates of shape (nx, ny).
+  subroutine ridge_step_3d(aicen, vicen, aice0, convergence, shear, dt, hin_max, options, &
+       valid, closing, opening, dardg1dt, dardg2dt, dvirdgdt, ierr)
+    real(c_double), intent(inout), contiguous, target :: aicen(:, :, :), vicen(:, :, :), &
+         aice0(:, :)
+    real(c_double), intent(in), contiguous, target :: convergence(:, :), shear(:, :)
+    real(c_double), intent(in) :: dt
+    real(c_double), intent(in), optional, contiguous, target :: hin_max(:)
+    type(pressridge_options), intent(in), optional, target :: options
+    logical, intent(in), optional :: valid(:, :)
+    real(c_double), intent(out), optional, contiguous, target :: closing(:, :), opening(:, :), &
+         dardg1dt(:, :), dardg2dt(:, :), dvirdgdt(:, :)
+    integer, intent(out), optional :: ierr
+    character(len=*), parameter :: where = 'pressridge_ridge_step'
+    type(c_rates) :: r
+    integer :: ncat, ncol, s(2)
+    s = [size(aicen, 1), size(aicen, 2)]
+    ncol = s(1) * s(2)
+    ncat = size(aicen, 3)
+    if (any(shape(vicen) /= shape(aicen))) then
+       call fail(PRESSRIDGE_ERR_BAD_SIZE, 'vicen and aicen differ in shape', where, ierr)
+       return
+    end if
+    if (.not. same2(aice0, 'aice0')) return
+    if (.not. same2(convergence, 'convergence')) return
+    if (.not. same2(shear, 'shear')) return
+    if (present(valid)) then
+       if (any(shape(valid) /= s)) then
+          call fail(PRESSRIDGE_ERR_BAD_SIZE, 'valid must have the shape (nx, ny) of aicen', &
+               where, ierr)
+          return
+       end if
+    end if
+    if (.not. ok2('closing', closing)) return
+    if (.not. ok2('opening', opening)) return
+    if (.not. ok2('dardg1dt', dardg1dt)) return
+    if (.not. ok2('dardg2dt', dardg2dt)) return
+    if (.not. ok2('dvirdgdt', dvirdgdt)) return
+    r = rate_ptrs(ncol, closing, opening, dardg1dt, dardg2dt, dvirdgdt)
+    if (present(valid)) then
+       call ridge_common(grid_3d(ncat, ncol), ptr3(aicen), ptr3(vicen), ptr2(aice0), &
+            ptr2(convergence), ptr2(shear), dt, hin_max, options, reshape(valid, [ncol]), r, &
+            where, ierr)
+    else
+       call ridge_common(grid_3d(ncat, ncol), ptr3(aicen), ptr3(vicen), ptr2(aice0), &
+            ptr2(convergence), ptr2(shear), dt, hin_max, options, r=r, where=where, ierr=ierr)
+    end if
+  contains
+    logical function same2(x, name)
+      real(c_double), intent(in) :: x(:, :)
+      character(len=*), intent(in) :: name
+      same2 = all(shape(x) == s)
+      if (.not. same2) call fail(PRESSRIDGE_ERR_BAD_SIZE, name// &
+           ' must have the shape (nx, ny) of aicen', where, ierr)
+    end function same2
+    !> An absent rate, or one of the shape (nx, ny) of aicen.
+    logical function ok2(name, x)
+      character(len=*), intent(in) :: name
+      real(c_double), intent(in), optional :: x(:, :)
+      ok2 = .true.
+      if (present(x)) ok2 = same2(x, name)
+    end function ok2
+  end subroutine ridge_step_3d
+
+  !> C pointers to the optional rates of a ridging call, null where absent; each present
+  !> array is contiguous and holds ncol values (its caller checked the shape). Assumed
+  !> size, so one routine serves the (ncol) and the (nx, ny) layouts.
+  type(c_rates) function rate_ptrs(ncol, closing, opening, dardg1dt, dardg2dt, dvirdgdt) &
+       result(r)
+    integer, intent(in) :: ncol
+    real(c_double), intent(in), optional, target :: closing(*), opening(*), dardg1dt(*), &
+         dardg2dt(*), dvirdgdt(*)
+    if (ncol == 0) return
+    if (present(closing)) r%closing = c_loc(closing(1))
+    if (present(opening)) r%opening = c_loc(opening(1))
+    if (present(dardg1dt)) r%dardg1dt = c_loc(dardg1dt(1))
+    if (present(dardg2dt)) r%dardg2dt = c_loc(dardg2dt(1))
+    if (present(dvirdgdt)) r%dvirdgdt = c_loc(dvirdgdt(1))
+  end function rate_ptrs
+
+  ! ---------------------------------------------------------- the complete step (issue 15)
+
+  !> Initialises a ridging set-up once: ncat categories, the CICE tracer layout with nilyr ice
+  !> and nslyr snow layers and the optional tracers (Icepack's flags), the options (default:
+  !> CICE's; participation, redistribution and params are used) and Icepack's docleanup and
+  !> dorebin (default .true.). Optionally returns the layout as Icepack's arrays (ntrcr and,
+  !> sized ntrcr or more, trcr_depend, trcr_base(:, 3), n_trcr_strata, nt_strata(:, 2)).
+  subroutine pressridge_ridger_init(ridger, ncat, nilyr, nslyr, tr_iage, tr_FY, tr_lvl, &
+       tr_pond_lvl, options, docleanup, dorebin, ntrcr, trcr_depend, trcr_base, &
+       n_trcr_strata, nt_strata, ierr)
+    type(pressridge_ridger), intent(out) :: ridger
+    integer, intent(in) :: ncat, nilyr, nslyr
+    logical, intent(in) :: tr_iage, tr_FY, tr_lvl, tr_pond_lvl
+    type(pressridge_options), intent(in), optional, target :: options
+    logical, intent(in), optional :: docleanup, dorebin
+    integer, intent(out), optional :: ntrcr
+    integer(c_int32_t), intent(out), optional, contiguous, target :: trcr_depend(:), &
+         n_trcr_strata(:), nt_strata(:, :)
+    real(c_double), intent(out), optional, contiguous, target :: trcr_base(:, :)
+    integer, intent(out), optional :: ierr
+    character(len=*), parameter :: where = 'pressridge_ridger_init'
+    integer(c_int32_t) :: flags, clean, rebin, rc
+    integer(c_int64_t) :: nt, len
+    type(c_ptr) :: o, pd, pb, pn, ps
+    flags = 0
+    if (tr_iage) flags = flags + PRESSRIDGE_TRACER_AGE
+    if (tr_FY) flags = flags + PRESSRIDGE_TRACER_FIRST_YEAR
+    if (tr_lvl) flags = flags + PRESSRIDGE_TRACER_LEVEL_ICE
+    if (tr_pond_lvl) flags = flags + PRESSRIDGE_TRACER_PONDS
+    clean = 1
+    rebin = 1
+    if (present(docleanup)) then
+       if (.not. docleanup) clean = 0
+    end if
+    if (present(dorebin)) then
+       if (.not. dorebin) rebin = 0
+    end if
+    o = c_null_ptr
+    if (present(options)) o = c_loc(options)
+    rc = c_ridger_new(int(ncat, c_int64_t), int(nilyr, c_int64_t), int(nslyr, c_int64_t), &
+         flags, o, c_null_ptr, clean, rebin, ridger%ptr)
+    if (rc /= PRESSRIDGE_OK) then
+       call finish(rc, where, ierr)
+       return
+    end if
+    rc = c_ridger_tracers(ridger%ptr, nt, 0_c_int64_t, c_null_ptr, c_null_ptr, c_null_ptr, &
+         c_null_ptr)
+    ridger%ncat = ncat
+    ridger%ntrcr = int(nt)
+    if (present(ntrcr)) ntrcr = int(nt)
+    len = nt
+    pd = c_null_ptr
+    pb = c_null_ptr
+    pn = c_null_ptr
+    ps = c_null_ptr
+    if (present(trcr_depend)) then
+       pd = c_loc(trcr_depend)
+       len = size(trcr_depend, kind=c_int64_t)
+    end if
+    if (present(trcr_base)) then
+       pb = c_loc(trcr_base)
+       len = size(trcr_base, 1, kind=c_int64_t)
+    end if
+    if (present(n_trcr_strata)) then
+       pn = c_loc(n_trcr_strata)
+       len = size(n_trcr_strata, kind=c_int64_t)
+    end if
+    if (present(nt_strata)) then
+       ps = c_loc(nt_strata)
+       len = size(nt_strata, 1, kind=c_int64_t)
+    end if
+    if (present(trcr_depend)) then
+       if (present(trcr_base)) then
+          if (size(trcr_base, 1) /= size(trcr_depend)) len = -1
+       end if
+    end if
+    if (present(nt_strata) .and. present(n_trcr_strata)) then
+       if (size(nt_strata, 1) /= size(n_trcr_strata)) len = -1
+    end if
+    rc = PRESSRIDGE_OK
+    if (len < 0) then
+       call fail(PRESSRIDGE_ERR_BAD_SIZE, 'the tracer arrays must have the same first size', &
+            where, ierr)
+       return
+    end if
+    if (c_associated(pd) .or. c_associated(pb) .or. c_associated(pn) .or. c_associated(ps)) &
+         rc = c_ridger_tracers(ridger%ptr, nt, len, pd, pb, pn, ps)
+    call finish(rc, where, ierr)
+  end subroutine pressridge_ridger_init
+
+  !> Releases a ridging set-up.
+  subroutine pressridge_ridger_free(ridger)
+    type(pressridge_ridger), intent(inout) :: ridger
+    integer(c_int32_t) :: rc
+    rc = c_ridger_free(ridger%ptr)
+    ridger%ptr = c_null_ptr
+  end subroutine pressridge_ridger_free
+
+  !> One ridging step of one cell, Icepack's icepack_step_ridge (snow, tracers, fluxes, the
+  !> clean-up), with its argument names and units; the tracer layout comes from `ridger`.
+  !> closing absent: closing and opening from rdg_conv and rdg_shear (CICE), hin_max(ncat)
+  !> set to params%big; closing present: the host's rates closing and opening (SIS2).
+  !> fresh, fsalt, fhocn, fpond are added to; the other diagnostics are overwritten;
+  !> first_ice is set .true. for categories emptied by the clean-up.
+  subroutine pressridge_step_ridge(ridger, dt, ndtd, hin_max, rdg_conv, rdg_shear, aicen, &
+       trcrn, vicen, vsnon, aice0, dardg1dt, dardg2dt, dvirdgdt, opening, fpond, fresh, &
+       fhocn, aparticn, krdgn, aredistn, vredistn, dardg1ndt, dardg2ndt, dvirdgndt, araftn, &
+       vraftn, aice, fsalt, first_ice, closing, Tf, dpnd_ridge, ierr)
+    type(pressridge_ridger), intent(in) :: ridger
+    real(c_double), intent(in) :: dt                     !< dynamics time step (s)
+    integer, intent(in) :: ndtd                          !< dynamics subcycles
+    real(c_double), intent(inout), contiguous, target :: hin_max(0:) !< bounds (m)
+    real(c_double), intent(in) :: rdg_conv, rdg_shear    !< 1/s
+    real(c_double), intent(inout), contiguous, target :: aicen(:), vicen(:), vsnon(:)
+    real(c_double), intent(inout), contiguous, target :: trcrn(:, :) !< (ntrcr, ncat)
+    real(c_double), intent(inout), target :: aice0, aice
+    real(c_double), intent(out), optional :: dardg1dt, dardg2dt, dvirdgdt
+    real(c_double), intent(inout), target :: opening     !< 1/s
+    real(c_double), intent(inout) :: fpond, fresh, fhocn, fsalt
+    real(c_double), intent(out), optional, contiguous, target :: aparticn(:), krdgn(:), &
+         aredistn(:), vredistn(:), dardg1ndt(:), dardg2ndt(:), dvirdgndt(:), araftn(:), vraftn(:)
+    logical, intent(inout), optional :: first_ice(:)
+    real(c_double), intent(in), optional, target :: closing
+    real(c_double), intent(in) :: Tf                     !< freezing temperature (degC)
+    real(c_double), intent(out), optional :: dpnd_ridge  !< m
+    integer, intent(out), optional :: ierr
+    character(len=*), parameter :: where = 'pressridge_step_ridge'
+    type(c_fluxes) :: fl
+    type(c_step_diag) :: d
+    type(c_cat_diag) :: cd
+    integer(c_int32_t), target :: zapped(size(aicen))
+    type(c_ptr) :: pc
+    integer(c_int32_t) :: rc
+    integer :: n
+    n = ridger%ncat
+    if (size(aicen) /= n .or. size(vicen) /= n .or. size(vsnon) /= n .or. &
+         size(hin_max) /= n + 1 .or. size(trcrn, 1) /= ridger%ntrcr .or. size(trcrn, 2) /= n) then
+       call fail(PRESSRIDGE_ERR_BAD_SIZE, 'need aicen, vicen, vsnon(ncat), hin_max(0:ncat), &
+            &trcrn(ntrcr, ncat) of the ridger''s sizes', where, ierr)
+       return
+    end if
+    fl = c_fluxes(fresh, fsalt, fhocn, fpond, 0.0_c_double)
+    zapped = 0
+    if (present(aparticn)) cd%aparticn = c_loc(aparticn)
+    if (present(krdgn)) cd%krdgn = c_loc(krdgn)
+    if (present(aredistn)) cd%aredistn = c_loc(aredistn)
+    if (present(vredistn)) cd%vredistn = c_loc(vredistn)
+    if (present(dardg1ndt)) cd%dardg1ndt = c_loc(dardg1ndt)
+    if (present(dardg2ndt)) cd%dardg2ndt = c_loc(dardg2ndt)
+    if (present(dvirdgndt)) cd%dvirdgndt = c_loc(dvirdgndt)
+    if (present(araftn)) cd%araftn = c_loc(araftn)
+    if (present(vraftn)) cd%vraftn = c_loc(vraftn)
+    cd%first_ice = c_loc(zapped)
+    pc = c_null_ptr
+    if (present(closing)) pc = c_loc(closing)
+    rc = c_ridge_cell(ridger%ptr, dt, int(ndtd, c_int32_t), c_loc(hin_max), rdg_conv, &
+         rdg_shear, pc, c_loc(opening), c_loc(aicen), c_loc(trcrn), c_loc(vicen), &
+         c_loc(vsnon), c_loc(aice0), c_loc(aice), Tf, fl, d, cd)
+    if (rc == PRESSRIDGE_OK) then
+       fresh = fl%fresh
+       fsalt = fl%fsalt
+       fhocn = fl%fhocn
+       fpond = fl%fpond
+       if (present(dpnd_ridge)) dpnd_ridge = fl%dpnd_ridge
+       if (present(dardg1dt)) dardg1dt = d%dardg1dt
+       if (present(dardg2dt)) dardg2dt = d%dardg2dt
+       if (present(dvirdgdt)) dvirdgdt = d%dvirdgdt
+       if (present(first_ice)) first_ice = first_ice .or. zapped /= 0
+    end if
+    call finish(rc, where, ierr)
+  end subroutine pressridge_step_ridge
+
+  !> The ridging step of ncol cells in one call: aicen, vicen, vsnon(ncat, ncol),
+  !> trcrn(ntrcr, ncat, ncol), aice0, aice(ncol), rdg_conv, rdg_shear(ncol); optional Tf(ncol)
+  !> (default -1.8), fluxes fresh, fsalt, fhocn, fpond(ncol) (added to), rates dardg1dt,
+  !> dardg2dt, dvirdgdt(ncol), and closing with opening (ncol, SIS2 convention; opening is
+  !> also returned in the CICE convention). hin_max(0:ncat) is not modified.
+  subroutine pressridge_step_ridge_cells(ridger, dt, ndtd, hin_max, rdg_conv, rdg_shear, &
+       aicen, trcrn, vicen, vsnon, aice0, aice, Tf, fresh, fsalt, fhocn, fpond, dardg1dt, &
+       dardg2dt, dvirdgdt, closing, opening, ierr)
+    type(pressridge_ridger), intent(in) :: ridger
+    real(c_double), intent(in) :: dt
+    integer, intent(in) :: ndtd
+    real(c_double), intent(in), contiguous, target :: hin_max(0:), rdg_conv(:), rdg_shear(:)
+    real(c_double), intent(inout), contiguous, target :: aicen(:, :), vicen(:, :), &
+         vsnon(:, :), trcrn(:, :, :), aice0(:), aice(:)
+    real(c_double), intent(in), optional, contiguous, target :: Tf(:), closing(:)
+    real(c_double), intent(inout), optional, contiguous, target :: fresh(:), fsalt(:), &
+         fhocn(:), fpond(:), opening(:)
+    real(c_double), intent(out), optional, contiguous, target :: dardg1dt(:), dardg2dt(:), &
+         dvirdgdt(:)
+    integer, intent(out), optional :: ierr
+    character(len=*), parameter :: where = 'pressridge_step_ridge_cells'
+    type(c_cell_arrays) :: c
+    integer :: n, ncol
+    n = ridger%ncat
+    ncol = size(aicen, 2)
+    if (size(aicen, 1) /= n .or. any(shape(vicen) /= [n, ncol]) .or. &
+         any(shape(vsnon) /= [n, ncol]) .or. any(shape(trcrn) /= [ridger%ntrcr, n, ncol]) .or. &
+         size(aice0) /= ncol .or. size(aice) /= ncol .or. size(rdg_conv) /= ncol .or. &
+         size(rdg_shear) /= ncol .or. size(hin_max) /= n + 1) then
+       call fail(PRESSRIDGE_ERR_BAD_SIZE, 'shapes: aicen, vicen, vsnon(ncat, ncol), &
+            &trcrn(ntrcr, ncat, ncol), aice0, aice, rdg_conv, rdg_shear(ncol), hin_max(0:ncat)', &
+            where, ierr)
+       return
+    end if
+    c%rdg_conv = c_loc(rdg_conv)
+    c%rdg_shear = c_loc(rdg_shear)
+    if (present(closing)) c%closing = c_loc(closing)
+    if (present(opening)) c%opening = c_loc(opening)
+    if (present(Tf)) c%tf = c_loc(Tf)
+    if (present(fresh)) c%fresh = c_loc(fresh)
+    if (present(fsalt)) c%fsalt = c_loc(fsalt)
+    if (present(fhocn)) c%fhocn = c_loc(fhocn)
+    if (present(fpond)) c%fpond = c_loc(fpond)
+    if (present(dardg1dt)) c%dardg1dt = c_loc(dardg1dt)
+    if (present(dardg2dt)) c%dardg2dt = c_loc(dardg2dt)
+    if (present(dvirdgdt)) c%dvirdgdt = c_loc(dvirdgdt)
+    call finish(c_ridge_cells(ridger%ptr, int(ncol, c_int64_t), dt, int(ndtd, c_int32_t), &
+         c_loc(hin_max), c_loc(aicen), c_loc(trcrn), c_loc(vicen), c_loc(vsnon), c_loc(aice0), &
+         c_loc(aice), c), where, ierr)
+  end subroutine pressridge_step_ridge_cells
+
+end module pressridge_ridging_mod
