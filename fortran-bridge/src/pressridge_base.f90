@@ -6,9 +6,9 @@
 !> versions, the options (pressridge_default_options, pressridge_options_set_cf_table) and
 !> the options of the Icepack-style calls (pressridge_init_parameters, which
 !> tests/params_faces.rs checks against the Rust ItdParams::FIELDS, and
-!> pressridge_get_parameters), and the two column layouts of the batched calls (the C grid
-!> and C pointers of aicen(ncat, ncol) with x(ncol), and of CICE's block layout
-!> aicen(nx, ny, ncat) with x(nx, ny)). Hosts `use pressridge`.
+!> pressridge_get_parameters), and the two column layouts of the batched calls (the C
+!> grid, shape checks and C pointers for aicen(ncat, ncol) with x(ncol), and for CICE's
+!> block layout aicen(nx, ny, ncat) with x(nx, ny)). Hosts `use pressridge`.
 module pressridge_base_mod
   use, intrinsic :: iso_c_binding
   use, intrinsic :: iso_fortran_env, only: error_unit
@@ -21,11 +21,27 @@ module pressridge_base_mod
   public :: pressridge_default_options, pressridge_options_set_cf_table
   public :: pressridge_init_parameters, pressridge_get_parameters
   ! For the other modules of the bridge.
-  public :: icepack_options, finish, fail, get_string, sized, grid_2d, grid_3d, ptr1, ptr2, ptr3
+  public :: finish, fail, get_string, options_ptr
+  public :: STRING_SET_NAME, STRING_VARIABLE_NAME, STRING_SUMMARY_JSON
+  public :: columns, columns_of, fits, cptr, mask_ptr
+
+  ! What get_string reads.
+  integer, parameter :: STRING_LAST_ERROR = 0, STRING_VERSION = 1, STRING_SET_NAME = 2, &
+       STRING_VARIABLE_NAME = 3, STRING_SUMMARY_JSON = 4
 
   !> Options used by pressridge_ice_strength and pressridge_ridge_ice (the Icepack-style
   !> calls); set with pressridge_init_parameters.
   type(pressridge_options), save, target :: icepack_options
+
+  !> The layout of a batched call, from the rank of aicen: aicen(ncat, ncol) with per-column
+  !> arrays x(ncol), or CICE's block layout aicen(nx, ny, ncat) with x(nx, ny) and
+  !> ncol = nx*ny; both contiguous.
+  type :: columns
+     type(c_grid) :: grid   !< the layout as the C ABI takes it
+     integer :: ncol = 0    !< number of columns
+     integer :: rank = 1    !< rank of a per-column array: 1 (ncol) or 2 (nx, ny)
+     integer :: cols(2) = 0 !< shape of a per-column array, cols(1:rank)
+  end type columns
 
 contains
 
@@ -34,14 +50,8 @@ contains
   !> The message of the last failed pressridge call on this thread ('' after a success).
   function pressridge_last_error_message() result(msg)
     character(len=:), allocatable :: msg
-    character(kind=c_char, len=:), allocatable, target :: buf
-    integer(c_int64_t) :: need
     integer(c_int32_t) :: rc
-    need = 1
-    rc = c_last_error(c_null_ptr, 0_c_int64_t, need)
-    allocate(character(kind=c_char, len=need) :: buf)
-    rc = c_last_error(c_loc(buf), need, need)
-    msg = buf(1:need - 1)
+    call get_string(STRING_LAST_ERROR, c_null_ptr, 0_c_int64_t, msg, rc)
   end function pressridge_last_error_message
 
   !> The column (counting from 1) where the last failed call on this thread found bad input,
@@ -77,8 +87,9 @@ contains
     call finish(int(code, c_int32_t), where, ierr)
   end subroutine fail
 
-  !> Reads a string by the required-length protocol. `kind`: 1 version, 2 set name,
-  !> 3 variable name, 4 summary JSON.
+  !> Reads a string by the required-length protocol: `what` is one of STRING_* (the last
+  !> error, the version, a ridging table's set or variable name, a run's summary JSON);
+  !> handle and index (from 0) say whose.
   subroutine get_string(what, handle, index, out, rc)
     integer, intent(in) :: what
     type(c_ptr), intent(in) :: handle
@@ -104,11 +115,13 @@ contains
     integer(c_int64_t), intent(in) :: index, len
     integer(c_int64_t), intent(inout) :: need
     select case (what)
-    case (1)
+    case (STRING_LAST_ERROR)
+       rc = c_last_error(buf, len, need)
+    case (STRING_VERSION)
        rc = c_version(buf, len, need)
-    case (2)
+    case (STRING_SET_NAME)
        rc = c_ridge_table_set_name(handle, index, buf, len, need)
-    case (3)
+    case (STRING_VARIABLE_NAME)
        rc = c_ridge_table_variable_name(handle, index, buf, len, need)
     case default
        rc = c_run_summary_json(handle, buf, len, need)
@@ -119,7 +132,7 @@ contains
   function pressridge_version() result(v)
     character(len=:), allocatable :: v
     integer(c_int32_t) :: rc
-    call get_string(1, c_null_ptr, 0_c_int64_t, v, rc)
+    call get_string(STRING_VERSION, c_null_ptr, 0_c_int64_t, v, rc)
   end function pressridge_version
 
   !> The C ABI version of the linked library (must equal PRESSRIDGE_ABI_VERSION).
@@ -187,56 +200,89 @@ contains
     options = icepack_options
   end subroutine pressridge_get_parameters
 
-  !> Per-column arrays (aice0, valid, outputs) must have `ncol` elements.
-  logical function sized(n, ncol, name, where, ierr)
-    integer, intent(in) :: n, ncol
+  !> The C pointer to `options`, or to the options of pressridge_init_parameters when absent.
+  type(c_ptr) function options_ptr(options) result(p)
+    type(pressridge_options), intent(in), optional, target :: options
+    p = c_loc(icepack_options)
+    if (present(options)) p = c_loc(options)
+  end function options_ptr
+
+  ! ------------------------------------------------------------------ column layouts
+
+  !> The layout of a batched call from its aicen: rank 2 is aicen(ncat, ncol), rank 3 CICE's
+  !> aicen(nx, ny, ncat). Zero sizes are passed on for the library to reject with a message.
+  type(columns) function columns_of(aicen) result(c)
+    real(c_double), intent(in) :: aicen(..)
+    integer(c_int64_t) :: ncat, ncol
+    if (rank(aicen) == 2) then
+       c%rank = 1
+       c%cols(1) = size(aicen, 2)
+       ncat = size(aicen, 1, kind=c_int64_t)
+    else
+       c%rank = 2
+       c%cols = [size(aicen, 1), size(aicen, 2)]
+       ncat = size(aicen, 3, kind=c_int64_t)
+    end if
+    c%ncol = product(c%cols(1:c%rank))
+    ncol = int(c%ncol, c_int64_t)
+    if (c%rank == 1) then
+       ! Categories contiguous within a column.
+       c%grid = c_grid(ncat, ncol, 1_c_int64_t, max(ncat, 1_c_int64_t), ncat * ncol, &
+            1_c_int64_t, ncol)
+    else
+       ! Columns contiguous within a category.
+       c%grid = c_grid(ncat, ncol, max(ncol, 1_c_int64_t), 1_c_int64_t, ncat * ncol, &
+            1_c_int64_t, ncol)
+    end if
+  end function columns_of
+
+  !> Whether the per-column array `name` is absent or has the shape of a per-column array of
+  !> layout c; if not, records PRESSRIDGE_ERR_BAD_SIZE naming it.
+  logical function fits(c, x, name, where, ierr)
+    type(columns), intent(in) :: c
+    type(*), intent(in), optional :: x(..)
     character(len=*), intent(in) :: name, where
     integer, intent(out), optional :: ierr
     character(len=24) :: a, b
-    sized = n == ncol
-    if (.not. sized) then
-       write (a, '(i0)') n
-       write (b, '(i0)') ncol
-       call fail(PRESSRIDGE_ERR_BAD_SIZE, name//' has '//trim(a)//' elements, expected ncol = ' &
-            //trim(b), where, ierr)
+    fits = .true.
+    if (.not. present(x)) return
+    fits = rank(x) == c%rank
+    if (fits) fits = all(shape(x) == c%cols(1:c%rank))
+    if (fits) return
+    if (c%rank == 1) then
+       write (a, '(i0)') size(x)
+       write (b, '(i0)') c%ncol
+       call fail(PRESSRIDGE_ERR_BAD_SIZE, name//' has '//trim(a)// &
+            ' elements, expected ncol = '//trim(b), where, ierr)
+    else
+       call fail(PRESSRIDGE_ERR_BAD_SIZE, name//' must have the shape (nx, ny) of aicen', &
+            where, ierr)
     end if
-  end function sized
+  end function fits
 
-  ! ------------------------------------------------------------------ layouts
+  !> The C pointer to a contiguous array, or null when it is absent or empty.
+  type(c_ptr) function cptr(x)
+    real(c_double), intent(in), optional, contiguous, target :: x(..)
+    cptr = c_null_ptr
+    if (.not. present(x)) return
+    if (size(x) > 0) cptr = c_loc(x)
+  end function cptr
 
-  !> aicen(ncat, ncol), x(ncol), contiguous. Zero sizes are passed on for the library to
-  !> reject with a message.
-  type(c_grid) function grid_2d(ncat, ncol) result(g)
-    integer, intent(in) :: ncat, ncol
-    g = c_grid(int(ncat, c_int64_t), int(ncol, c_int64_t), 1_c_int64_t, &
-         int(max(ncat, 1), c_int64_t), int(ncat, c_int64_t) * int(ncol, c_int64_t), &
-         1_c_int64_t, int(ncol, c_int64_t))
-  end function grid_2d
-
-  !> aicen(nx, ny, ncat) with ncol = nx*ny, x(nx, ny), contiguous.
-  type(c_grid) function grid_3d(ncat, ncol) result(g)
-    integer, intent(in) :: ncat, ncol
-    g = c_grid(int(ncat, c_int64_t), int(ncol, c_int64_t), int(max(ncol, 1), c_int64_t), &
-         1_c_int64_t, int(ncat, c_int64_t) * int(ncol, c_int64_t), 1_c_int64_t, &
-         int(ncol, c_int64_t))
-  end function grid_3d
-
-  type(c_ptr) function ptr1(x)
-    real(c_double), intent(in), contiguous, target :: x(:)
-    ptr1 = c_null_ptr
-    if (size(x) > 0) ptr1 = c_loc(x)
-  end function ptr1
-
-  type(c_ptr) function ptr2(x)
-    real(c_double), intent(in), contiguous, target :: x(:, :)
-    ptr2 = c_null_ptr
-    if (size(x) > 0) ptr2 = c_loc(x)
-  end function ptr2
-
-  type(c_ptr) function ptr3(x)
-    real(c_double), intent(in), contiguous, target :: x(:, :, :)
-    ptr3 = c_null_ptr
-    if (size(x) > 0) ptr3 = c_loc(x)
-  end function ptr3
+  !> The mask `valid` (of either layout) as the C ABI's flags (1 valid, 0 not) in `flags`,
+  !> and the C pointer to them: null when valid is absent or empty.
+  type(c_ptr) function mask_ptr(valid, flags) result(p)
+    logical, intent(in), optional :: valid(..)
+    integer(c_int32_t), allocatable, target, intent(out) :: flags(:)
+    p = c_null_ptr
+    if (.not. present(valid)) return
+    allocate(flags(size(valid)))
+    select rank (valid)
+    rank (1)
+       flags = merge(1_c_int32_t, 0_c_int32_t, valid)
+    rank (2)
+       flags = reshape(merge(1_c_int32_t, 0_c_int32_t, valid), [size(valid)])
+    end select
+    if (size(flags) > 0) p = c_loc(flags)
+  end function mask_ptr
 
 end module pressridge_base_mod

@@ -3,8 +3,10 @@
 !>
 !> Owns the area and volume step (no snow, tracers or fluxes): pressridge_ridge_ice (one
 !> cell, Icepack-style, the options of pressridge_init_parameters) and the batched generic
-!> pressridge_ridge_step, ridge_step_2d (aicen(ncat, ncol), x(ncol)) and ridge_step_3d
-!> (CICE's block layout aicen(nx, ny, ncat), x(nx, ny)).
+!> pressridge_ridge_step, two thin rank-specific entry points, ridge_step_2d
+!> (aicen(ncat, ncol), x(ncol)) and ridge_step_3d (CICE's block layout aicen(nx, ny, ncat),
+!> x(nx, ny)), over one implementation, ridge_columns, which takes the arrays as they are
+!> (assumed rank, contiguous, in place, no copies) and reads the layout from the rank of aicen.
 !> And the complete step with snow, tracers and ocean fluxes: the set-up pressridge_ridger
 !> (pressridge_ridger_init, pressridge_ridger_free), one cell (pressridge_step_ridge,
 !> Icepack's argument names and units) and ncol cells in one call
@@ -60,44 +62,8 @@ contains
     if (present(closing)) r%closing = c_loc(closing)
     call finish(c_ridge_step(g, c_loc(aicen), c_loc(vicen), c_loc(aice0), c_loc(hin_max), &
          size(hin_max, kind=c_int64_t), c_loc(rdg_conv), c_loc(rdg_shear), dt, c_null_ptr, &
-         c_loc(icepack_options), r), where, ierr)
+         options_ptr(), r), where, ierr)
   end subroutine pressridge_ridge_ice
-
-  subroutine ridge_common(g, aicen, vicen, aice0, convergence, shear, dt, hin_max, options, &
-       valid, r, where, ierr)
-    type(c_grid), intent(in) :: g
-    type(c_ptr), intent(in) :: aicen, vicen, aice0, convergence, shear
-    real(c_double), intent(in) :: dt
-    real(c_double), intent(in), optional, contiguous, target :: hin_max(:)
-    type(pressridge_options), intent(in), optional, target :: options
-    logical, intent(in), optional :: valid(:)
-    type(c_rates), intent(in) :: r
-    character(len=*), intent(in) :: where
-    integer, intent(out), optional :: ierr
-    integer(c_int32_t), allocatable, target :: v(:)
-    type(c_ptr) :: pv, po, ph
-    integer(c_int64_t) :: nb
-    pv = c_null_ptr
-    if (present(valid)) then
-       allocate(v(size(valid)))
-       v = merge(1_c_int32_t, 0_c_int32_t, valid)
-       if (size(v) > 0) pv = c_loc(v)
-    end if
-    po = c_loc(icepack_options)
-    if (present(options)) po = c_loc(options)
-    ph = c_null_ptr
-    nb = 0
-    if (present(hin_max)) then
-       nb = size(hin_max, kind=c_int64_t)
-       if (nb > 0) ph = c_loc(hin_max)
-       if (nb == 0) then
-          call fail(PRESSRIDGE_ERR_BAD_SIZE, 'hin_max is empty', where, ierr)
-          return
-       end if
-    end if
-    call finish(c_ridge_step(g, aicen, vicen, aice0, ph, nb, convergence, shear, dt, pv, po, r), &
-         where, ierr)
-  end subroutine ridge_common
 
   !> One ridging step of dt (s) over ncol columns, in place: aicen(ncat, ncol) (1),
   !> vicen(ncat, ncol) (m), aice0(ncol) (1); convergence(ncol), shear(ncol) (1/s, >= 0);
@@ -114,37 +80,8 @@ contains
     real(c_double), intent(out), optional, contiguous, target :: closing(:), opening(:), &
          dardg1dt(:), dardg2dt(:), dvirdgdt(:)
     integer, intent(out), optional :: ierr
-    character(len=*), parameter :: where = 'pressridge_ridge_step'
-    type(c_rates) :: r
-    integer :: ncat, ncol
-    ncat = size(aicen, 1)
-    ncol = size(aicen, 2)
-    if (any(shape(vicen) /= shape(aicen))) then
-       call fail(PRESSRIDGE_ERR_BAD_SIZE, 'vicen and aicen differ in shape', where, ierr)
-       return
-    end if
-    if (.not. sized(size(aice0), ncol, 'aice0', where, ierr)) return
-    if (.not. sized(size(convergence), ncol, 'convergence', where, ierr)) return
-    if (.not. sized(size(shear), ncol, 'shear', where, ierr)) return
-    if (present(valid)) then
-       if (.not. sized(size(valid), ncol, 'valid', where, ierr)) return
-    end if
-    if (.not. ok1('closing', closing)) return
-    if (.not. ok1('opening', opening)) return
-    if (.not. ok1('dardg1dt', dardg1dt)) return
-    if (.not. ok1('dardg2dt', dardg2dt)) return
-    if (.not. ok1('dvirdgdt', dvirdgdt)) return
-    r = rate_ptrs(ncol, closing, opening, dardg1dt, dardg2dt, dvirdgdt)
-    call ridge_common(grid_2d(ncat, ncol), ptr2(aicen), ptr2(vicen), ptr1(aice0), &
-         ptr1(convergence), ptr1(shear), dt, hin_max, options, valid, r, where, ierr)
-  contains
-    !> An absent rate, or one of ncol values.
-    logical function ok1(name, x)
-      character(len=*), intent(in) :: name
-      real(c_double), intent(in), optional :: x(:)
-      ok1 = .true.
-      if (present(x)) ok1 = sized(size(x), ncol, name, where, ierr)
-    end function ok1
+    call ridge_columns(aicen, vicen, aice0, convergence, shear, dt, hin_max, options, valid, &
+         closing, opening, dardg1dt, dardg2dt, dvirdgdt, ierr)
   end subroutine ridge_step_2d
 
   !> As ridge_step_2d in CICE's block layout: aicen(nx, ny, ncat), vicen(nx, ny, ncat), and
@@ -161,72 +98,57 @@ contains
     real(c_double), intent(out), optional, contiguous, target :: closing(:, :), opening(:, :), &
          dardg1dt(:, :), dardg2dt(:, :), dvirdgdt(:, :)
     integer, intent(out), optional :: ierr
+    call ridge_columns(aicen, vicen, aice0, convergence, shear, dt, hin_max, options, valid, &
+         closing, opening, dardg1dt, dardg2dt, dvirdgdt, ierr)
+  end subroutine ridge_step_3d
+
+  !> The batched ridging step in either layout (columns_of): shapes checked, then one call
+  !> of the C ABI on the caller's memory; absent rates are not computed.
+  subroutine ridge_columns(aicen, vicen, aice0, convergence, shear, dt, hin_max, options, &
+       valid, closing, opening, dardg1dt, dardg2dt, dvirdgdt, ierr)
+    real(c_double), intent(inout), contiguous, target :: aicen(..), vicen(..), aice0(..)
+    real(c_double), intent(in), contiguous, target :: convergence(..), shear(..)
+    real(c_double), intent(in) :: dt
+    real(c_double), intent(in), optional, contiguous, target :: hin_max(:)
+    type(pressridge_options), intent(in), optional, target :: options
+    logical, intent(in), optional :: valid(..)
+    real(c_double), intent(out), optional, contiguous, target :: closing(..), opening(..), &
+         dardg1dt(..), dardg2dt(..), dvirdgdt(..)
+    integer, intent(out), optional :: ierr
     character(len=*), parameter :: where = 'pressridge_ridge_step'
+    type(columns) :: c
+    integer(c_int32_t), allocatable, target :: flags(:)
+    type(c_ptr) :: pv
     type(c_rates) :: r
-    integer :: ncat, ncol, s(2)
-    s = [size(aicen, 1), size(aicen, 2)]
-    ncol = s(1) * s(2)
-    ncat = size(aicen, 3)
+    integer(c_int64_t) :: nb
+    c = columns_of(aicen)
     if (any(shape(vicen) /= shape(aicen))) then
        call fail(PRESSRIDGE_ERR_BAD_SIZE, 'vicen and aicen differ in shape', where, ierr)
        return
     end if
-    if (.not. same2(aice0, 'aice0')) return
-    if (.not. same2(convergence, 'convergence')) return
-    if (.not. same2(shear, 'shear')) return
-    if (present(valid)) then
-       if (any(shape(valid) /= s)) then
-          call fail(PRESSRIDGE_ERR_BAD_SIZE, 'valid must have the shape (nx, ny) of aicen', &
-               where, ierr)
+    if (.not. fits(c, aice0, 'aice0', where, ierr)) return
+    if (.not. fits(c, convergence, 'convergence', where, ierr)) return
+    if (.not. fits(c, shear, 'shear', where, ierr)) return
+    if (.not. fits(c, valid, 'valid', where, ierr)) return
+    if (.not. fits(c, closing, 'closing', where, ierr)) return
+    if (.not. fits(c, opening, 'opening', where, ierr)) return
+    if (.not. fits(c, dardg1dt, 'dardg1dt', where, ierr)) return
+    if (.not. fits(c, dardg2dt, 'dardg2dt', where, ierr)) return
+    if (.not. fits(c, dvirdgdt, 'dvirdgdt', where, ierr)) return
+    nb = 0
+    if (present(hin_max)) then
+       nb = size(hin_max, kind=c_int64_t)
+       if (nb == 0) then
+          call fail(PRESSRIDGE_ERR_BAD_SIZE, 'hin_max is empty', where, ierr)
           return
        end if
     end if
-    if (.not. ok2('closing', closing)) return
-    if (.not. ok2('opening', opening)) return
-    if (.not. ok2('dardg1dt', dardg1dt)) return
-    if (.not. ok2('dardg2dt', dardg2dt)) return
-    if (.not. ok2('dvirdgdt', dvirdgdt)) return
-    r = rate_ptrs(ncol, closing, opening, dardg1dt, dardg2dt, dvirdgdt)
-    if (present(valid)) then
-       call ridge_common(grid_3d(ncat, ncol), ptr3(aicen), ptr3(vicen), ptr2(aice0), &
-            ptr2(convergence), ptr2(shear), dt, hin_max, options, reshape(valid, [ncol]), r, &
-            where, ierr)
-    else
-       call ridge_common(grid_3d(ncat, ncol), ptr3(aicen), ptr3(vicen), ptr2(aice0), &
-            ptr2(convergence), ptr2(shear), dt, hin_max, options, r=r, where=where, ierr=ierr)
-    end if
-  contains
-    logical function same2(x, name)
-      real(c_double), intent(in) :: x(:, :)
-      character(len=*), intent(in) :: name
-      same2 = all(shape(x) == s)
-      if (.not. same2) call fail(PRESSRIDGE_ERR_BAD_SIZE, name// &
-           ' must have the shape (nx, ny) of aicen', where, ierr)
-    end function same2
-    !> An absent rate, or one of the shape (nx, ny) of aicen.
-    logical function ok2(name, x)
-      character(len=*), intent(in) :: name
-      real(c_double), intent(in), optional :: x(:, :)
-      ok2 = .true.
-      if (present(x)) ok2 = same2(x, name)
-    end function ok2
-  end subroutine ridge_step_3d
-
-  !> C pointers to the optional rates of a ridging call, null where absent; each present
-  !> array is contiguous and holds ncol values (its caller checked the shape). Assumed
-  !> size, so one routine serves the (ncol) and the (nx, ny) layouts.
-  type(c_rates) function rate_ptrs(ncol, closing, opening, dardg1dt, dardg2dt, dvirdgdt) &
-       result(r)
-    integer, intent(in) :: ncol
-    real(c_double), intent(in), optional, target :: closing(*), opening(*), dardg1dt(*), &
-         dardg2dt(*), dvirdgdt(*)
-    if (ncol == 0) return
-    if (present(closing)) r%closing = c_loc(closing(1))
-    if (present(opening)) r%opening = c_loc(opening(1))
-    if (present(dardg1dt)) r%dardg1dt = c_loc(dardg1dt(1))
-    if (present(dardg2dt)) r%dardg2dt = c_loc(dardg2dt(1))
-    if (present(dvirdgdt)) r%dvirdgdt = c_loc(dvirdgdt(1))
-  end function rate_ptrs
+    pv = mask_ptr(valid, flags)
+    r = c_rates(closing=cptr(closing), opening=cptr(opening), dardg1dt=cptr(dardg1dt), &
+         dardg2dt=cptr(dardg2dt), dvirdgdt=cptr(dvirdgdt))
+    call finish(c_ridge_step(c%grid, cptr(aicen), cptr(vicen), cptr(aice0), cptr(hin_max), nb, &
+         cptr(convergence), cptr(shear), dt, pv, options_ptr(options), r), where, ierr)
+  end subroutine ridge_columns
 
   ! ---------------------------------------------------------- the complete step (issue 15)
 
@@ -279,26 +201,10 @@ contains
     ridger%ntrcr = int(nt)
     if (present(ntrcr)) ntrcr = int(nt)
     len = nt
-    pd = c_null_ptr
-    pb = c_null_ptr
-    pn = c_null_ptr
-    ps = c_null_ptr
-    if (present(trcr_depend)) then
-       pd = c_loc(trcr_depend)
-       len = size(trcr_depend, kind=c_int64_t)
-    end if
-    if (present(trcr_base)) then
-       pb = c_loc(trcr_base)
-       len = size(trcr_base, 1, kind=c_int64_t)
-    end if
-    if (present(n_trcr_strata)) then
-       pn = c_loc(n_trcr_strata)
-       len = size(n_trcr_strata, kind=c_int64_t)
-    end if
-    if (present(nt_strata)) then
-       ps = c_loc(nt_strata)
-       len = size(nt_strata, 1, kind=c_int64_t)
-    end if
+    pd = layout_array(trcr_depend, len)
+    pb = layout_array(trcr_base, len)
+    pn = layout_array(n_trcr_strata, len)
+    ps = layout_array(nt_strata, len)
     if (present(trcr_depend)) then
        if (present(trcr_base)) then
           if (size(trcr_base, 1) /= size(trcr_depend)) len = -1
@@ -317,6 +223,17 @@ contains
          rc = c_ridger_tracers(ridger%ptr, nt, len, pd, pb, pn, ps)
     call finish(rc, where, ierr)
   end subroutine pressridge_ridger_init
+
+  !> The C pointer to an optional array of the tracer layout (null when absent); when
+  !> present, its first size becomes the length the C call is told.
+  type(c_ptr) function layout_array(x, len) result(p)
+    type(*), intent(in), optional, contiguous, target :: x(..)
+    integer(c_int64_t), intent(inout) :: len
+    p = c_null_ptr
+    if (.not. present(x)) return
+    p = c_loc(x)
+    len = size(x, 1, kind=c_int64_t)
+  end function layout_array
 
   !> Releases a ridging set-up.
   subroutine pressridge_ridger_free(ridger)

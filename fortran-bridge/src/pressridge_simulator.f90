@@ -166,7 +166,7 @@ contains
     character(len=:), allocatable, intent(out) :: name
     integer, intent(out), optional :: ierr
     integer(c_int32_t) :: rc
-    call get_string(2, table%ptr, int(set - 1, c_int64_t), name, rc)
+    call get_string(STRING_SET_NAME, table%ptr, int(set - 1, c_int64_t), name, rc)
     call finish(rc, 'pressridge_ridge_table_set_name', ierr)
   end subroutine pressridge_ridge_table_set_name
 
@@ -177,7 +177,7 @@ contains
     character(len=:), allocatable, intent(out) :: name
     integer, intent(out), optional :: ierr
     integer(c_int32_t) :: rc
-    call get_string(3, table%ptr, int(index - 1, c_int64_t), name, rc)
+    call get_string(STRING_VARIABLE_NAME, table%ptr, int(index - 1, c_int64_t), name, rc)
     call finish(rc, 'pressridge_ridge_table_variable_name', ierr)
   end subroutine pressridge_ridge_table_variable_name
 
@@ -263,7 +263,7 @@ contains
     character(len=:), allocatable, intent(out) :: json
     integer, intent(out), optional :: ierr
     integer(c_int32_t) :: rc
-    call get_string(4, run%ptr, 0_c_int64_t, json, rc)
+    call get_string(STRING_SUMMARY_JSON, run%ptr, 0_c_int64_t, json, rc)
     call finish(rc, 'pressridge_run_summary_json', ierr)
   end subroutine pressridge_run_summary_json
 

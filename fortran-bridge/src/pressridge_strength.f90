@@ -2,9 +2,11 @@
 !> CICE/Icepack's icepack_ice_strength.
 !>
 !> Owns pressridge_ice_strength (one cell, Icepack's argument list, the options of
-!> pressridge_init_parameters) and the batched generic pressridge_strength, strength_2d
-!> (aicen(ncat, ncol), x(ncol)) and strength_3d (CICE's block layout aicen(nx, ny, ncat),
-!> x(nx, ny)). Hosts `use pressridge`.
+!> pressridge_init_parameters) and the batched generic pressridge_strength: two thin
+!> rank-specific entry points, strength_2d (aicen(ncat, ncol), x(ncol)) and strength_3d
+!> (CICE's block layout aicen(nx, ny, ncat), x(nx, ny)), over one implementation,
+!> strength_columns, which takes the arrays as they are (assumed rank, contiguous, no copies)
+!> and reads the layout from the rank of aicen. Hosts `use pressridge`.
 module pressridge_strength_mod
   use, intrinsic :: iso_c_binding
   use pressridge_cabi_mod
@@ -46,35 +48,9 @@ contains
        return
     end if
     rc = c_strength_cell(size(aicen, kind=c_int64_t), c_loc(aicen), c_loc(vicen), aice0, &
-         c_loc(icepack_options), c_loc(strength))
+         options_ptr(), c_loc(strength))
     call finish(rc, 'pressridge_ice_strength', ierr)
   end subroutine pressridge_ice_strength
-
-  subroutine strength_common(g, aicen, vicen, strength, aice0, options, valid, &
-       cf_clamped_columns, where, ierr)
-    type(c_grid), intent(in) :: g
-    type(c_ptr), intent(in) :: aicen, vicen, strength, aice0
-    type(pressridge_options), intent(in), optional, target :: options
-    logical, intent(in), optional :: valid(:)
-    integer, intent(out), optional :: cf_clamped_columns
-    character(len=*), intent(in) :: where
-    integer, intent(out), optional :: ierr
-    integer(c_int32_t), allocatable, target :: v(:)
-    integer(c_int64_t), target :: nclamped
-    type(c_ptr) :: pv, po
-    integer(c_int32_t) :: rc
-    pv = c_null_ptr
-    if (present(valid)) then
-       allocate(v(size(valid)))
-       v = merge(1_c_int32_t, 0_c_int32_t, valid)
-       if (size(v) > 0) pv = c_loc(v)
-    end if
-    po = c_loc(icepack_options)
-    if (present(options)) po = c_loc(options)
-    rc = c_strength(g, aicen, vicen, aice0, pv, po, strength, c_loc(nclamped))
-    if (rc == PRESSRIDGE_OK .and. present(cf_clamped_columns)) cf_clamped_columns = int(nclamped)
-    call finish(rc, where, ierr)
-  end subroutine strength_common
 
   !> Strength P (N/m) of ncol columns: aicen(ncat, ncol) (1), vicen(ncat, ncol) (m),
   !> strength(ncol); optional aice0(ncol) (else 1 - sum(aicen)), options (else those of
@@ -89,26 +65,8 @@ contains
     logical, intent(in), optional :: valid(:)
     integer, intent(out), optional :: cf_clamped_columns
     integer, intent(out), optional :: ierr
-    character(len=*), parameter :: where = 'pressridge_strength'
-    integer :: ncat, ncol
-    type(c_ptr) :: pa0
-    ncat = size(aicen, 1)
-    ncol = size(aicen, 2)
-    if (any(shape(vicen) /= shape(aicen))) then
-       call fail(PRESSRIDGE_ERR_BAD_SIZE, 'vicen and aicen differ in shape', where, ierr)
-       return
-    end if
-    if (.not. sized(size(strength), ncol, 'strength', where, ierr)) return
-    pa0 = c_null_ptr
-    if (present(aice0)) then
-       if (.not. sized(size(aice0), ncol, 'aice0', where, ierr)) return
-       if (ncol > 0) pa0 = c_loc(aice0)
-    end if
-    if (present(valid)) then
-       if (.not. sized(size(valid), ncol, 'valid', where, ierr)) return
-    end if
-    call strength_common(grid_2d(ncat, ncol), ptr2(aicen), ptr2(vicen), ptr1(strength), pa0, &
-         options, valid, cf_clamped_columns, where, ierr)
+    call strength_columns(aicen, vicen, strength, aice0, options, valid, cf_clamped_columns, &
+         ierr)
   end subroutine strength_2d
 
   !> As strength_2d in CICE's block layout: aicen(nx, ny, ncat), vicen(nx, ny, ncat), and
@@ -121,41 +79,40 @@ contains
     logical, intent(in), optional :: valid(:, :)
     integer, intent(out), optional :: cf_clamped_columns
     integer, intent(out), optional :: ierr
+    call strength_columns(aicen, vicen, strength, aice0, options, valid, cf_clamped_columns, &
+         ierr)
+  end subroutine strength_3d
+
+  !> The batched strength in either layout (columns_of): shapes checked, then one call of
+  !> the C ABI on the caller's memory.
+  subroutine strength_columns(aicen, vicen, strength, aice0, options, valid, &
+       cf_clamped_columns, ierr)
+    real(c_double), intent(in), contiguous, target :: aicen(..), vicen(..)
+    real(c_double), intent(out), contiguous, target :: strength(..)
+    real(c_double), intent(in), contiguous, target, optional :: aice0(..)
+    type(pressridge_options), intent(in), optional, target :: options
+    logical, intent(in), optional :: valid(..)
+    integer, intent(out), optional :: cf_clamped_columns
+    integer, intent(out), optional :: ierr
     character(len=*), parameter :: where = 'pressridge_strength'
-    integer :: ncat, ncol
-    type(c_ptr) :: pa0
-    ncol = size(aicen, 1) * size(aicen, 2)
-    ncat = size(aicen, 3)
+    type(columns) :: c
+    integer(c_int32_t), allocatable, target :: flags(:)
+    integer(c_int64_t), target :: nclamped
+    type(c_ptr) :: pv
+    integer(c_int32_t) :: rc
+    c = columns_of(aicen)
     if (any(shape(vicen) /= shape(aicen))) then
        call fail(PRESSRIDGE_ERR_BAD_SIZE, 'vicen and aicen differ in shape', where, ierr)
        return
     end if
-    if (any(shape(strength) /= shape(aicen(:, :, 1)))) then
-       call fail(PRESSRIDGE_ERR_BAD_SIZE, 'strength must have the shape (nx, ny) of aicen', &
-            where, ierr)
-       return
-    end if
-    pa0 = c_null_ptr
-    if (present(aice0)) then
-       if (any(shape(aice0) /= shape(strength))) then
-          call fail(PRESSRIDGE_ERR_BAD_SIZE, 'aice0 must have the shape (nx, ny) of aicen', &
-               where, ierr)
-          return
-       end if
-       if (ncol > 0) pa0 = c_loc(aice0)
-    end if
-    if (present(valid)) then
-       if (any(shape(valid) /= shape(strength))) then
-          call fail(PRESSRIDGE_ERR_BAD_SIZE, 'valid must have the shape (nx, ny) of aicen', &
-               where, ierr)
-          return
-       end if
-       call strength_common(grid_3d(ncat, ncol), ptr3(aicen), ptr3(vicen), ptr2(strength), &
-            pa0, options, reshape(valid, [ncol]), cf_clamped_columns, where, ierr)
-    else
-       call strength_common(grid_3d(ncat, ncol), ptr3(aicen), ptr3(vicen), ptr2(strength), &
-            pa0, options, cf_clamped_columns=cf_clamped_columns, where=where, ierr=ierr)
-    end if
-  end subroutine strength_3d
+    if (.not. fits(c, strength, 'strength', where, ierr)) return
+    if (.not. fits(c, aice0, 'aice0', where, ierr)) return
+    if (.not. fits(c, valid, 'valid', where, ierr)) return
+    pv = mask_ptr(valid, flags)
+    rc = c_strength(c%grid, cptr(aicen), cptr(vicen), cptr(aice0), pv, options_ptr(options), &
+         cptr(strength), c_loc(nclamped))
+    if (rc == PRESSRIDGE_OK .and. present(cf_clamped_columns)) cf_clamped_columns = int(nclamped)
+    call finish(rc, where, ierr)
+  end subroutine strength_columns
 
 end module pressridge_strength_mod
