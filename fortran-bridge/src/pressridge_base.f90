@@ -8,7 +8,8 @@
 !> tests/params_faces.rs checks against the Rust ItdParams::FIELDS, and
 !> pressridge_get_parameters), and the two column layouts of the batched calls (the C
 !> grid, shape checks and C pointers for aicen(ncat, ncol) with x(ncol), and for CICE's
-!> block layout aicen(nx, ny, ncat) with x(nx, ny)). Hosts `use pressridge`.
+!> block layout aicen(nx, ny, ncat) with x(nx, ny); array_arg describes an array of either
+!> rank, without copying it, to a routine that serves both layouts). Hosts `use pressridge`.
 module pressridge_base_mod
   use, intrinsic :: iso_c_binding
   use, intrinsic :: iso_fortran_env, only: error_unit
@@ -23,7 +24,9 @@ module pressridge_base_mod
   ! For the other modules of the bridge.
   public :: finish, fail, get_string, options_ptr
   public :: STRING_SET_NAME, STRING_VARIABLE_NAME, STRING_SUMMARY_JSON
-  public :: columns, columns_of, fits, cptr, mask_ptr
+  public :: array_arg, arg_real1, arg_real2, arg_real3, opt_real1, opt_real2, opt_int1, opt_int2
+  public :: opt_mask1, opt_mask2
+  public :: mask_ptr, columns, columns_of, fits, sized
 
   ! What get_string reads.
   integer, parameter :: STRING_LAST_ERROR = 0, STRING_VERSION = 1, STRING_SET_NAME = 2, &
@@ -32,6 +35,22 @@ module pressridge_base_mod
   !> Options used by pressridge_ice_strength and pressridge_ridge_ice (the Icepack-style
   !> calls); set with pressridge_init_parameters.
   type(pressridge_options), save, target :: icepack_options
+
+  !> An array argument as a routine shared by both layouts sees it: the rank-specific entry
+  !> points describe each of their arrays (arg_real1 ... arg_real3 for required ones,
+  !> opt_real1, opt_mask1 and the like for optional ones) and pass the descriptions on, so that
+  !> one routine serves every rank in Fortran 2008 (no assumed rank) without copying the
+  !> arrays. Holds whether the array is present, its shape and the C pointer to its first
+  !> element (null when absent or empty, and for a logical mask, whose values the shared
+  !> routine takes beside it as an assumed-size array). The pointer is valid while the entry
+  !> point runs: its dummy arguments are contiguous and have the TARGET attribute.
+  type :: array_arg
+     logical :: present = .false.    !< whether the optional argument is present
+     integer :: rank = 0             !< its rank
+     integer :: shape(3) = 0         !< its shape, shape(1:rank)
+     integer :: n = 0                !< its number of elements
+     type(c_ptr) :: ptr = c_null_ptr !< its first element (null: absent, empty, a mask)
+  end type array_arg
 
   !> The layout of a batched call, from the rank of aicen: aicen(ncat, ncol) with per-column
   !> arrays x(ncol), or CICE's block layout aicen(nx, ny, ncat) with x(nx, ny) and
@@ -209,19 +228,117 @@ contains
 
   ! ------------------------------------------------------------------ column layouts
 
-  !> The layout of a batched call from its aicen: rank 2 is aicen(ncat, ncol), rank 3 CICE's
+  !> The description (array_arg) of a required contiguous real(c_double) array of rank 1 to 3
+  !> of a wrapper.
+  type(array_arg) function arg_real1(x) result(a)
+    real(c_double), intent(in), contiguous, target :: x(:)
+    a = described(shape(x), real_address(size(x), x))
+  end function arg_real1
+
+  type(array_arg) function arg_real2(x) result(a)
+    real(c_double), intent(in), contiguous, target :: x(:, :)
+    a = described(shape(x), real_address(size(x), x))
+  end function arg_real2
+
+  type(array_arg) function arg_real3(x) result(a)
+    real(c_double), intent(in), contiguous, target :: x(:, :, :)
+    a = described(shape(x), real_address(size(x), x))
+  end function arg_real3
+
+  !> The description of an optional contiguous array of a wrapper: opt_real1 and opt_real2 of
+  !> real(c_double) arrays of rank 1 and 2, opt_int1 and opt_int2 of integer(c_int32_t) ones,
+  !> opt_mask1 and opt_mask2 of logical masks. (One name a type and rank, not a generic: a
+  !> generic cannot tell absent arguments of different ranks apart. Required arrays go to
+  !> arg_real1 and the like: gfortran takes a zero-size array without storage, as a packed
+  !> empty section may be, for an absent one.)
+  type(array_arg) function opt_real1(x) result(a)
+    real(c_double), intent(in), optional, contiguous, target :: x(:)
+    if (present(x)) a = arg_real1(x)
+  end function opt_real1
+
+  type(array_arg) function opt_real2(x) result(a)
+    real(c_double), intent(in), optional, contiguous, target :: x(:, :)
+    if (present(x)) a = arg_real2(x)
+  end function opt_real2
+
+  type(array_arg) function opt_int1(x) result(a)
+    integer(c_int32_t), intent(in), optional, contiguous, target :: x(:)
+    if (present(x)) a = described(shape(x), int_address(size(x), x))
+  end function opt_int1
+
+  type(array_arg) function opt_int2(x) result(a)
+    integer(c_int32_t), intent(in), optional, contiguous, target :: x(:, :)
+    if (present(x)) a = described(shape(x), int_address(size(x), x))
+  end function opt_int2
+
+  type(array_arg) function opt_mask1(x) result(a)
+    logical, intent(in), optional :: x(:)
+    if (present(x)) a = described(shape(x), c_null_ptr)
+  end function opt_mask1
+
+  type(array_arg) function opt_mask2(x) result(a)
+    logical, intent(in), optional :: x(:, :)
+    if (present(x)) a = described(shape(x), c_null_ptr)
+  end function opt_mask2
+
+  !> A present array of shape `shape` whose first element is at `ptr`.
+  type(array_arg) function described(shape, ptr) result(a)
+    integer, intent(in) :: shape(:)
+    type(c_ptr), intent(in) :: ptr
+    a%present = .true.
+    a%rank = size(shape)
+    a%shape(1:a%rank) = shape
+    a%n = product(shape)
+    a%ptr = ptr
+  end function described
+
+  !> The C pointer to the first of the n values of x (a contiguous array of any rank, by
+  !> sequence association), or null when n = 0.
+  type(c_ptr) function real_address(n, x) result(p)
+    integer, intent(in) :: n
+    real(c_double), intent(in), target :: x(*)
+    p = c_null_ptr
+    if (n > 0) p = c_loc(x(1))
+  end function real_address
+
+  type(c_ptr) function int_address(n, x) result(p)
+    integer, intent(in) :: n
+    integer(c_int32_t), intent(in), target :: x(*)
+    p = c_null_ptr
+    if (n > 0) p = c_loc(x(1))
+  end function int_address
+
+  !> The mask `valid` (described by opt_mask1 or opt_mask2, its values in `mask`, of either
+  !> rank, by sequence association) as the C ABI's flags (1 valid, 0 not) in `flags`, and the
+  !> C pointer to them: null when valid is absent or empty.
+  type(c_ptr) function mask_ptr(valid, mask, flags) result(p)
+    type(array_arg), intent(in) :: valid
+    logical, intent(in), optional :: mask(*)
+    integer(c_int32_t), allocatable, target, intent(out) :: flags(:)
+    p = c_null_ptr
+    if (valid%n == 0) return
+    allocate(flags(valid%n))
+    flags = merge(1_c_int32_t, 0_c_int32_t, mask(1:valid%n))
+    p = c_loc(flags(1))
+  end function mask_ptr
+
+  !> The layout c of a batched call from its aicen: rank 2 is aicen(ncat, ncol), rank 3 CICE's
   !> aicen(nx, ny, ncat). Zero sizes are passed on for the library to reject with a message.
-  type(columns) function columns_of(aicen) result(c)
-    real(c_double), intent(in) :: aicen(..)
+  !> Whether vicen has the shape of aicen; if not, records PRESSRIDGE_ERR_BAD_SIZE.
+  logical function columns_of(aicen, vicen, c, where, ierr)
+    type(array_arg), intent(in) :: aicen, vicen
+    type(columns), intent(out) :: c
+    character(len=*), intent(in) :: where
+    integer, intent(out), optional :: ierr
     integer(c_int64_t) :: ncat, ncol
-    if (rank(aicen) == 2) then
+    if (aicen%rank == 2) then
        c%rank = 1
-       c%cols(1) = size(aicen, 2)
-       ncat = size(aicen, 1, kind=c_int64_t)
+       c%cols(1) = aicen%shape(2)
+       ncat = aicen%shape(1)
     else
        c%rank = 2
-       c%cols = [size(aicen, 1), size(aicen, 2)]
-       ncat = size(aicen, 3, kind=c_int64_t)
+       c%cols = aicen%shape(1:2)
+       ncat = aicen%shape(3)
     end if
     c%ncol = product(c%cols(1:c%rank))
     ncol = int(c%ncol, c_int64_t)
@@ -234,55 +351,54 @@ contains
        c%grid = c_grid(ncat, ncol, max(ncol, 1_c_int64_t), 1_c_int64_t, ncat * ncol, &
             1_c_int64_t, ncol)
     end if
+    columns_of = all(vicen%shape == aicen%shape)
+    if (.not. columns_of) call fail(PRESSRIDGE_ERR_BAD_SIZE, 'vicen and aicen differ in shape', &
+         where, ierr)
   end function columns_of
 
-  !> Whether the per-column array `name` is absent or has the shape of a per-column array of
-  !> layout c; if not, records PRESSRIDGE_ERR_BAD_SIZE naming it.
-  logical function fits(c, x, name, where, ierr)
+  !> Whether each array of `xs` (named `names`) is absent or has the shape of a per-column
+  !> array of layout c; if not, records PRESSRIDGE_ERR_BAD_SIZE naming the first that has not.
+  logical function fits(c, xs, names, where, ierr)
     type(columns), intent(in) :: c
-    type(*), intent(in), optional :: x(..)
-    character(len=*), intent(in) :: name, where
+    type(array_arg), intent(in) :: xs(:)
+    character(len=*), intent(in) :: names(:), where
     integer, intent(out), optional :: ierr
-    character(len=24) :: a, b
-    fits = .true.
-    if (.not. present(x)) return
-    fits = rank(x) == c%rank
-    if (fits) fits = all(shape(x) == c%cols(1:c%rank))
-    if (fits) return
+    integer :: i
     if (c%rank == 1) then
-       write (a, '(i0)') size(x)
-       write (b, '(i0)') c%ncol
-       call fail(PRESSRIDGE_ERR_BAD_SIZE, name//' has '//trim(a)// &
-            ' elements, expected ncol = '//trim(b), where, ierr)
-    else
-       call fail(PRESSRIDGE_ERR_BAD_SIZE, name//' must have the shape (nx, ny) of aicen', &
-            where, ierr)
+       fits = sized(xs, names, c%ncol, 'ncol', where, ierr)
+       return
     end if
+    fits = .true.
+    do i = 1, size(xs)
+       if (.not. xs(i)%present) cycle
+       if (all(xs(i)%shape(1:2) == c%cols)) cycle
+       call fail(PRESSRIDGE_ERR_BAD_SIZE, trim(names(i))// &
+            ' must have the shape (nx, ny) of aicen', where, ierr)
+       fits = .false.
+       return
+    end do
   end function fits
 
-  !> The C pointer to a contiguous array, or null when it is absent or empty.
-  type(c_ptr) function cptr(x)
-    real(c_double), intent(in), optional, contiguous, target :: x(..)
-    cptr = c_null_ptr
-    if (.not. present(x)) return
-    if (size(x) > 0) cptr = c_loc(x)
-  end function cptr
-
-  !> The mask `valid` (of either layout) as the C ABI's flags (1 valid, 0 not) in `flags`,
-  !> and the C pointer to them: null when valid is absent or empty.
-  type(c_ptr) function mask_ptr(valid, flags) result(p)
-    logical, intent(in), optional :: valid(..)
-    integer(c_int32_t), allocatable, target, intent(out) :: flags(:)
-    p = c_null_ptr
-    if (.not. present(valid)) return
-    allocate(flags(size(valid)))
-    select rank (valid)
-    rank (1)
-       flags = merge(1_c_int32_t, 0_c_int32_t, valid)
-    rank (2)
-       flags = reshape(merge(1_c_int32_t, 0_c_int32_t, valid), [size(valid)])
-    end select
-    if (size(flags) > 0) p = c_loc(flags)
-  end function mask_ptr
+  !> Whether each array of `xs` (named `names`) is absent or has n elements; if not, records
+  !> PRESSRIDGE_ERR_BAD_SIZE naming the first that has not: "aice0 has 3 elements, expected
+  !> ncol = 4", with `count` the name of n.
+  logical function sized(xs, names, n, count, where, ierr)
+    type(array_arg), intent(in) :: xs(:)
+    character(len=*), intent(in) :: names(:), count, where
+    integer, intent(in) :: n
+    integer, intent(out), optional :: ierr
+    character(len=24) :: a, b
+    integer :: i
+    sized = .true.
+    do i = 1, size(xs)
+       if (.not. xs(i)%present .or. xs(i)%n == n) cycle
+       write (a, '(i0)') xs(i)%n
+       write (b, '(i0)') n
+       call fail(PRESSRIDGE_ERR_BAD_SIZE, trim(names(i))//' has '//trim(a)// &
+            ' elements, expected '//count//' = '//trim(b), where, ierr)
+       sized = .false.
+       return
+    end do
+  end function sized
 
 end module pressridge_base_mod

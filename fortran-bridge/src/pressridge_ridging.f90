@@ -5,8 +5,9 @@
 !> cell, Icepack-style, the options of pressridge_init_parameters) and the batched generic
 !> pressridge_ridge_step, two thin rank-specific entry points, ridge_step_2d
 !> (aicen(ncat, ncol), x(ncol)) and ridge_step_3d (CICE's block layout aicen(nx, ny, ncat),
-!> x(nx, ny)), over one implementation, ridge_columns, which takes the arrays as they are
-!> (assumed rank, contiguous, in place, no copies) and reads the layout from the rank of aicen.
+!> x(nx, ny)), over one implementation, ridge_columns, which takes the caller's arrays as
+!> array_arg describes them (shape and address; in place, no copies) and reads the layout
+!> from the rank of aicen.
 !> And the complete step with snow, tracers and ocean fluxes: the set-up pressridge_ridger
 !> (pressridge_ridger_init, pressridge_ridger_free), one cell (pressridge_step_ridge,
 !> Icepack's argument names and units) and ncol cells in one call
@@ -21,6 +22,10 @@ module pressridge_ridging_mod
   public :: pressridge_ridge_step, pressridge_ridge_ice
   public :: pressridge_ridger_init, pressridge_ridger_free, pressridge_step_ridge
   public :: pressridge_step_ridge_cells
+
+  !> Where pressridge_ridger_init points the library at a present but empty tracer array
+  !> (never written: the library rejects the length first).
+  real(c_double), target, save :: no_tracers = 0
 
   !> One ridging step of many columns in one call, in place; layouts as pressridge_strength.
   interface pressridge_ridge_step
@@ -80,8 +85,10 @@ contains
     real(c_double), intent(out), optional, contiguous, target :: closing(:), opening(:), &
          dardg1dt(:), dardg2dt(:), dvirdgdt(:)
     integer, intent(out), optional :: ierr
-    call ridge_columns(aicen, vicen, aice0, convergence, shear, dt, hin_max, options, valid, &
-         closing, opening, dardg1dt, dardg2dt, dvirdgdt, ierr)
+    call ridge_columns(arg_real2(aicen), arg_real2(vicen), arg_real1(aice0), &
+         arg_real1(convergence), arg_real1(shear), dt, opt_real1(hin_max), options, &
+         opt_mask1(valid), valid, opt_real1(closing), opt_real1(opening), opt_real1(dardg1dt), &
+         opt_real1(dardg2dt), opt_real1(dvirdgdt), ierr)
   end subroutine ridge_step_2d
 
   !> As ridge_step_2d in CICE's block layout: aicen(nx, ny, ncat), vicen(nx, ny, ncat), and
@@ -98,56 +105,41 @@ contains
     real(c_double), intent(out), optional, contiguous, target :: closing(:, :), opening(:, :), &
          dardg1dt(:, :), dardg2dt(:, :), dvirdgdt(:, :)
     integer, intent(out), optional :: ierr
-    call ridge_columns(aicen, vicen, aice0, convergence, shear, dt, hin_max, options, valid, &
-         closing, opening, dardg1dt, dardg2dt, dvirdgdt, ierr)
+    call ridge_columns(arg_real3(aicen), arg_real3(vicen), arg_real2(aice0), &
+         arg_real2(convergence), arg_real2(shear), dt, opt_real1(hin_max), options, &
+         opt_mask2(valid), valid, opt_real2(closing), opt_real2(opening), opt_real2(dardg1dt), &
+         opt_real2(dardg2dt), opt_real2(dvirdgdt), ierr)
   end subroutine ridge_step_3d
 
-  !> The batched ridging step in either layout (columns_of): shapes checked, then one call
-  !> of the C ABI on the caller's memory; absent rates are not computed.
+  !> The batched ridging step in either layout (columns_of), on the arrays of ridge_step_2d
+  !> or ridge_step_3d as array_arg describes them: shapes checked, then one call of the C ABI
+  !> on the caller's memory; absent rates are not computed.
   subroutine ridge_columns(aicen, vicen, aice0, convergence, shear, dt, hin_max, options, &
-       valid, closing, opening, dardg1dt, dardg2dt, dvirdgdt, ierr)
-    real(c_double), intent(inout), contiguous, target :: aicen(..), vicen(..), aice0(..)
-    real(c_double), intent(in), contiguous, target :: convergence(..), shear(..)
+       valid, mask, closing, opening, dardg1dt, dardg2dt, dvirdgdt, ierr)
+    type(array_arg), intent(in) :: aicen, vicen, aice0, convergence, shear, hin_max
     real(c_double), intent(in) :: dt
-    real(c_double), intent(in), optional, contiguous, target :: hin_max(:)
     type(pressridge_options), intent(in), optional, target :: options
-    logical, intent(in), optional :: valid(..)
-    real(c_double), intent(out), optional, contiguous, target :: closing(..), opening(..), &
-         dardg1dt(..), dardg2dt(..), dvirdgdt(..)
+    type(array_arg), intent(in) :: valid
+    logical, intent(in), optional :: mask(*)  !< valid's values
+    type(array_arg), intent(in) :: closing, opening, dardg1dt, dardg2dt, dvirdgdt
     integer, intent(out), optional :: ierr
     character(len=*), parameter :: where = 'pressridge_ridge_step'
     type(columns) :: c
     integer(c_int32_t), allocatable, target :: flags(:)
-    type(c_ptr) :: pv
     type(c_rates) :: r
-    integer(c_int64_t) :: nb
-    c = columns_of(aicen)
-    if (any(shape(vicen) /= shape(aicen))) then
-       call fail(PRESSRIDGE_ERR_BAD_SIZE, 'vicen and aicen differ in shape', where, ierr)
+    if (.not. columns_of(aicen, vicen, c, where, ierr)) return
+    if (.not. fits(c, [aice0, convergence, shear, valid, closing, opening, dardg1dt, &
+         dardg2dt, dvirdgdt], [character(len=11) :: 'aice0', 'convergence', 'shear', 'valid', &
+         'closing', 'opening', 'dardg1dt', 'dardg2dt', 'dvirdgdt'], where, ierr)) return
+    if (hin_max%present .and. hin_max%n == 0) then
+       call fail(PRESSRIDGE_ERR_BAD_SIZE, 'hin_max is empty', where, ierr)
        return
     end if
-    if (.not. fits(c, aice0, 'aice0', where, ierr)) return
-    if (.not. fits(c, convergence, 'convergence', where, ierr)) return
-    if (.not. fits(c, shear, 'shear', where, ierr)) return
-    if (.not. fits(c, valid, 'valid', where, ierr)) return
-    if (.not. fits(c, closing, 'closing', where, ierr)) return
-    if (.not. fits(c, opening, 'opening', where, ierr)) return
-    if (.not. fits(c, dardg1dt, 'dardg1dt', where, ierr)) return
-    if (.not. fits(c, dardg2dt, 'dardg2dt', where, ierr)) return
-    if (.not. fits(c, dvirdgdt, 'dvirdgdt', where, ierr)) return
-    nb = 0
-    if (present(hin_max)) then
-       nb = size(hin_max, kind=c_int64_t)
-       if (nb == 0) then
-          call fail(PRESSRIDGE_ERR_BAD_SIZE, 'hin_max is empty', where, ierr)
-          return
-       end if
-    end if
-    pv = mask_ptr(valid, flags)
-    r = c_rates(closing=cptr(closing), opening=cptr(opening), dardg1dt=cptr(dardg1dt), &
-         dardg2dt=cptr(dardg2dt), dvirdgdt=cptr(dvirdgdt))
-    call finish(c_ridge_step(c%grid, cptr(aicen), cptr(vicen), cptr(aice0), cptr(hin_max), nb, &
-         cptr(convergence), cptr(shear), dt, pv, options_ptr(options), r), where, ierr)
+    r = c_rates(closing=closing%ptr, opening=opening%ptr, dardg1dt=dardg1dt%ptr, &
+         dardg2dt=dardg2dt%ptr, dvirdgdt=dvirdgdt%ptr)
+    call finish(c_ridge_step(c%grid, aicen%ptr, vicen%ptr, aice0%ptr, hin_max%ptr, &
+         int(hin_max%n, c_int64_t), convergence%ptr, shear%ptr, dt, mask_ptr(valid, mask, flags), &
+         options_ptr(options), r), where, ierr)
   end subroutine ridge_columns
 
   ! ---------------------------------------------------------- the complete step (issue 15)
@@ -173,7 +165,9 @@ contains
     character(len=*), parameter :: where = 'pressridge_ridger_init'
     integer(c_int32_t) :: flags, clean, rebin, rc
     integer(c_int64_t) :: nt, len
-    type(c_ptr) :: o, pd, pb, pn, ps
+    type(c_ptr) :: o
+    type(array_arg) :: arrays(4)
+    integer :: i
     flags = 0
     if (tr_iage) flags = flags + PRESSRIDGE_TRACER_AGE
     if (tr_FY) flags = flags + PRESSRIDGE_TRACER_FIRST_YEAR
@@ -200,40 +194,31 @@ contains
     ridger%ncat = ncat
     ridger%ntrcr = int(nt)
     if (present(ntrcr)) ntrcr = int(nt)
+    ! The tracer arrays, present ones passed on; the last present one's first size is the
+    ! length the C call is told.
+    arrays = [opt_int1(trcr_depend), opt_real2(trcr_base), opt_int1(n_trcr_strata), &
+         opt_int2(nt_strata)]
     len = nt
-    pd = layout_array(trcr_depend, len)
-    pb = layout_array(trcr_base, len)
-    pn = layout_array(n_trcr_strata, len)
-    ps = layout_array(nt_strata, len)
-    if (present(trcr_depend)) then
-       if (present(trcr_base)) then
-          if (size(trcr_base, 1) /= size(trcr_depend)) len = -1
-       end if
-    end if
-    if (present(nt_strata) .and. present(n_trcr_strata)) then
-       if (size(nt_strata, 1) /= size(n_trcr_strata)) len = -1
-    end if
+    do i = 1, size(arrays)
+       if (.not. arrays(i)%present) cycle
+       len = arrays(i)%shape(1)
+       ! Present but empty: still passed (the library reports the length it is told).
+       if (arrays(i)%n == 0) arrays(i)%ptr = c_loc(no_tracers)
+    end do
+    if (arrays(1)%present .and. arrays(2)%present .and. &
+         arrays(1)%shape(1) /= arrays(2)%shape(1)) len = -1
+    if (arrays(3)%present .and. arrays(4)%present .and. &
+         arrays(3)%shape(1) /= arrays(4)%shape(1)) len = -1
     rc = PRESSRIDGE_OK
     if (len < 0) then
        call fail(PRESSRIDGE_ERR_BAD_SIZE, 'the tracer arrays must have the same first size', &
             where, ierr)
        return
     end if
-    if (c_associated(pd) .or. c_associated(pb) .or. c_associated(pn) .or. c_associated(ps)) &
-         rc = c_ridger_tracers(ridger%ptr, nt, len, pd, pb, pn, ps)
+    if (any(arrays%present)) rc = c_ridger_tracers(ridger%ptr, nt, len, arrays(1)%ptr, &
+         arrays(2)%ptr, arrays(3)%ptr, arrays(4)%ptr)
     call finish(rc, where, ierr)
   end subroutine pressridge_ridger_init
-
-  !> The C pointer to an optional array of the tracer layout (null when absent); when
-  !> present, its first size becomes the length the C call is told.
-  type(c_ptr) function layout_array(x, len) result(p)
-    type(*), intent(in), optional, contiguous, target :: x(..)
-    integer(c_int64_t), intent(inout) :: len
-    p = c_null_ptr
-    if (.not. present(x)) return
-    p = c_loc(x)
-    len = size(x, 1, kind=c_int64_t)
-  end function layout_array
 
   !> Releases a ridging set-up.
   subroutine pressridge_ridger_free(ridger)

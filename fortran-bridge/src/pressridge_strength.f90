@@ -5,8 +5,8 @@
 !> pressridge_init_parameters) and the batched generic pressridge_strength: two thin
 !> rank-specific entry points, strength_2d (aicen(ncat, ncol), x(ncol)) and strength_3d
 !> (CICE's block layout aicen(nx, ny, ncat), x(nx, ny)), over one implementation,
-!> strength_columns, which takes the arrays as they are (assumed rank, contiguous, no copies)
-!> and reads the layout from the rank of aicen. Hosts `use pressridge`.
+!> strength_columns, which takes the caller's arrays as array_arg describes them (shape and
+!> address; no copies) and reads the layout from the rank of aicen. Hosts `use pressridge`.
 module pressridge_strength_mod
   use, intrinsic :: iso_c_binding
   use pressridge_cabi_mod
@@ -65,8 +65,8 @@ contains
     logical, intent(in), optional :: valid(:)
     integer, intent(out), optional :: cf_clamped_columns
     integer, intent(out), optional :: ierr
-    call strength_columns(aicen, vicen, strength, aice0, options, valid, cf_clamped_columns, &
-         ierr)
+    call strength_columns(arg_real2(aicen), arg_real2(vicen), arg_real1(strength), &
+         opt_real1(aice0), options, opt_mask1(valid), valid, cf_clamped_columns, ierr)
   end subroutine strength_2d
 
   !> As strength_2d in CICE's block layout: aicen(nx, ny, ncat), vicen(nx, ny, ncat), and
@@ -79,38 +79,31 @@ contains
     logical, intent(in), optional :: valid(:, :)
     integer, intent(out), optional :: cf_clamped_columns
     integer, intent(out), optional :: ierr
-    call strength_columns(aicen, vicen, strength, aice0, options, valid, cf_clamped_columns, &
-         ierr)
+    call strength_columns(arg_real3(aicen), arg_real3(vicen), arg_real2(strength), &
+         opt_real2(aice0), options, opt_mask2(valid), valid, cf_clamped_columns, ierr)
   end subroutine strength_3d
 
-  !> The batched strength in either layout (columns_of): shapes checked, then one call of
-  !> the C ABI on the caller's memory.
-  subroutine strength_columns(aicen, vicen, strength, aice0, options, valid, &
+  !> The batched strength in either layout (columns_of), on the arrays of strength_2d or
+  !> strength_3d as array_arg describes them: shapes checked, then one call of the C ABI on
+  !> the caller's memory.
+  subroutine strength_columns(aicen, vicen, strength, aice0, options, valid, mask, &
        cf_clamped_columns, ierr)
-    real(c_double), intent(in), contiguous, target :: aicen(..), vicen(..)
-    real(c_double), intent(out), contiguous, target :: strength(..)
-    real(c_double), intent(in), contiguous, target, optional :: aice0(..)
+    type(array_arg), intent(in) :: aicen, vicen, strength, aice0
     type(pressridge_options), intent(in), optional, target :: options
-    logical, intent(in), optional :: valid(..)
+    type(array_arg), intent(in) :: valid
+    logical, intent(in), optional :: mask(*)  !< valid's values
     integer, intent(out), optional :: cf_clamped_columns
     integer, intent(out), optional :: ierr
     character(len=*), parameter :: where = 'pressridge_strength'
     type(columns) :: c
     integer(c_int32_t), allocatable, target :: flags(:)
     integer(c_int64_t), target :: nclamped
-    type(c_ptr) :: pv
     integer(c_int32_t) :: rc
-    c = columns_of(aicen)
-    if (any(shape(vicen) /= shape(aicen))) then
-       call fail(PRESSRIDGE_ERR_BAD_SIZE, 'vicen and aicen differ in shape', where, ierr)
-       return
-    end if
-    if (.not. fits(c, strength, 'strength', where, ierr)) return
-    if (.not. fits(c, aice0, 'aice0', where, ierr)) return
-    if (.not. fits(c, valid, 'valid', where, ierr)) return
-    pv = mask_ptr(valid, flags)
-    rc = c_strength(c%grid, cptr(aicen), cptr(vicen), cptr(aice0), pv, options_ptr(options), &
-         cptr(strength), c_loc(nclamped))
+    if (.not. columns_of(aicen, vicen, c, where, ierr)) return
+    if (.not. fits(c, [strength, aice0, valid], [character(len=8) :: 'strength', 'aice0', &
+         'valid'], where, ierr)) return
+    rc = c_strength(c%grid, aicen%ptr, vicen%ptr, aice0%ptr, mask_ptr(valid, mask, flags), &
+         options_ptr(options), strength%ptr, c_loc(nclamped))
     if (rc == PRESSRIDGE_OK .and. present(cf_clamped_columns)) cf_clamped_columns = int(nclamped)
     call finish(rc, where, ierr)
   end subroutine strength_columns
