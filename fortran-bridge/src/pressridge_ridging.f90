@@ -233,7 +233,8 @@ contains
   !> closing absent: closing and opening from rdg_conv and rdg_shear (CICE), hin_max(ncat)
   !> set to params%big; closing present: the host's rates closing and opening (SIS2).
   !> fresh, fsalt, fhocn, fpond are added to; the other diagnostics are overwritten;
-  !> first_ice is set .true. for categories emptied by the clean-up.
+  !> first_ice is set .true. for categories emptied by the clean-up. The optional
+  !> per-category arrays (aparticn ... vraftn, first_ice) have ncat values each.
   subroutine pressridge_step_ridge(ridger, dt, ndtd, hin_max, rdg_conv, rdg_shear, aicen, &
        trcrn, vicen, vsnon, aice0, dardg1dt, dardg2dt, dvirdgdt, opening, fpond, fresh, &
        fhocn, aparticn, krdgn, aredistn, vredistn, dardg1ndt, dardg2ndt, dvirdgndt, araftn, &
@@ -271,6 +272,12 @@ contains
             &trcrn(ntrcr, ncat) of the ridger''s sizes', where, ierr)
        return
     end if
+    ! The optional per-category arrays: ncat values each (the library writes ncat).
+    if (.not. sized([opt_real1(aparticn), opt_real1(krdgn), opt_real1(aredistn), &
+         opt_real1(vredistn), opt_real1(dardg1ndt), opt_real1(dardg2ndt), opt_real1(dvirdgndt), &
+         opt_real1(araftn), opt_real1(vraftn), opt_mask1(first_ice)], [character(len=9) :: &
+         'aparticn', 'krdgn', 'aredistn', 'vredistn', 'dardg1ndt', 'dardg2ndt', 'dvirdgndt', &
+         'araftn', 'vraftn', 'first_ice'], n, 'ncat', where, ierr)) return
     fl = c_fluxes(fresh, fsalt, fhocn, fpond, 0.0_c_double)
     zapped = 0
     if (present(aparticn)) cd%aparticn = c_loc(aparticn)
@@ -306,7 +313,8 @@ contains
   !> trcrn(ntrcr, ncat, ncol), aice0, aice(ncol), rdg_conv, rdg_shear(ncol); optional Tf(ncol)
   !> (default -1.8), fluxes fresh, fsalt, fhocn, fpond(ncol) (added to), rates dardg1dt,
   !> dardg2dt, dvirdgdt(ncol), and closing with opening (ncol, SIS2 convention; opening is
-  !> also returned in the CICE convention). hin_max(0:ncat) is not modified.
+  !> also returned in the CICE convention), each optional array of ncol values.
+  !> hin_max(0:ncat) is not modified.
   subroutine pressridge_step_ridge_cells(ridger, dt, ndtd, hin_max, rdg_conv, rdg_shear, &
        aicen, trcrn, vicen, vsnon, aice0, aice, Tf, fresh, fsalt, fhocn, fpond, dardg1dt, &
        dardg2dt, dvirdgdt, closing, opening, ierr)
@@ -336,6 +344,12 @@ contains
             where, ierr)
        return
     end if
+    ! The optional per-column arrays: ncol values each (the library reads or writes ncol).
+    if (.not. sized([opt_real1(Tf), opt_real1(fresh), opt_real1(fsalt), opt_real1(fhocn), &
+         opt_real1(fpond), opt_real1(dardg1dt), opt_real1(dardg2dt), opt_real1(dvirdgdt), &
+         opt_real1(closing), opt_real1(opening)], [character(len=8) :: 'Tf', 'fresh', 'fsalt', &
+         'fhocn', 'fpond', 'dardg1dt', 'dardg2dt', 'dvirdgdt', 'closing', 'opening'], ncol, &
+         'ncol', where, ierr)) return
     c%rdg_conv = c_loc(rdg_conv)
     c%rdg_shear = c_loc(rdg_shear)
     if (present(closing)) c%closing = c_loc(closing)
