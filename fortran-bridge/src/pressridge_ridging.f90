@@ -148,7 +148,8 @@ contains
   !> and nslyr snow layers and the optional tracers (Icepack's flags), the options (default:
   !> CICE's; participation, redistribution and params are used) and Icepack's docleanup and
   !> dorebin (default .true.). Optionally returns the layout as Icepack's arrays (ntrcr and,
-  !> sized ntrcr or more, trcr_depend, trcr_base(:, 3), n_trcr_strata, nt_strata(:, 2)).
+  !> of one first size, ntrcr or more, trcr_depend, trcr_base(:, 3), n_trcr_strata,
+  !> nt_strata(:, 2)).
   subroutine pressridge_ridger_init(ridger, ncat, nilyr, nslyr, tr_iage, tr_FY, tr_lvl, &
        tr_pond_lvl, options, docleanup, dorebin, ntrcr, trcr_depend, trcr_base, &
        n_trcr_strata, nt_strata, ierr)
@@ -194,25 +195,30 @@ contains
     ridger%ncat = ncat
     ridger%ntrcr = int(nt)
     if (present(ntrcr)) ntrcr = int(nt)
-    ! The tracer arrays, present ones passed on; the last present one's first size is the
-    ! length the C call is told.
+    ! The tracer arrays, present ones passed on: all of the same first size, the length the C
+    ! call is told (the library writes ntrcr rows), trcr_base with 3 columns, nt_strata with 2.
     arrays = [opt_int1(trcr_depend), opt_real2(trcr_base), opt_int1(n_trcr_strata), &
          opt_int2(nt_strata)]
     len = nt
+    if (any(arrays%present)) len = maxval(arrays%shape(1), mask=arrays%present)
     do i = 1, size(arrays)
        if (.not. arrays(i)%present) cycle
-       len = arrays(i)%shape(1)
+       if (arrays(i)%shape(1) /= len) len = -1
        ! Present but empty: still passed (the library reports the length it is told).
        if (arrays(i)%n == 0) arrays(i)%ptr = c_loc(no_tracers)
     end do
-    if (arrays(1)%present .and. arrays(2)%present .and. &
-         arrays(1)%shape(1) /= arrays(2)%shape(1)) len = -1
-    if (arrays(3)%present .and. arrays(4)%present .and. &
-         arrays(3)%shape(1) /= arrays(4)%shape(1)) len = -1
     rc = PRESSRIDGE_OK
     if (len < 0) then
        call fail(PRESSRIDGE_ERR_BAD_SIZE, 'the tracer arrays must have the same first size', &
             where, ierr)
+       return
+    end if
+    if (arrays(2)%present .and. arrays(2)%shape(2) /= 3) then
+       call fail(PRESSRIDGE_ERR_BAD_SIZE, 'trcr_base must have 3 columns', where, ierr)
+       return
+    end if
+    if (arrays(4)%present .and. arrays(4)%shape(2) /= 2) then
+       call fail(PRESSRIDGE_ERR_BAD_SIZE, 'nt_strata must have 2 columns', where, ierr)
        return
     end if
     if (any(arrays%present)) rc = c_ridger_tracers(ridger%ptr, nt, len, arrays(1)%ptr, &

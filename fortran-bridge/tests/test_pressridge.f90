@@ -6,7 +6,7 @@
 !> Usage: test_pressridge SAMPLE.nc REFDIR (REFDIR holds strength_*.nc, ridged.nc,
 !> cf_table.nc and ridge_table.nc made by the Makefile).
 program test_pressridge
-  use, intrinsic :: iso_c_binding, only: c_double
+  use, intrinsic :: iso_c_binding, only: c_double, c_int32_t
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use pressridge
   use sample_io
@@ -343,6 +343,26 @@ program test_pressridge
          e == PRESSRIDGE_OK .and. any(an(:, 2) /= a1) .and. all(guard(nk + 1:) == -999) .and. &
          all(abs(a0 + sum(an, 1) - 1) < 1.0e-12_c_double))
     call pressridge_ridger_free(rg)
+    ! The tracer layout arrays: the library writes ntrcr rows of each, at the first size of
+    ! those given; all must have that size, and trcr_base 3 columns, nt_strata 2.
+    layout: block
+      integer(c_int32_t) :: dep(64), nst(64)
+      real(c_double) :: base(64, 2)
+      dep = -999
+      call pressridge_ridger_init(rg, nc, 7, 1, .true., .true., .true., .true., &
+           trcr_depend=dep(1:10), n_trcr_strata=nst, ierr=e)
+      call check('ridger_init, trcr_depend(10) with n_trcr_strata(64): PRESSRIDGE_ERR_BAD_SIZE, &
+           &nothing written past it', e == PRESSRIDGE_ERR_BAD_SIZE .and. &
+           pressridge_last_error_message() == 'the tracer arrays must have the same first size' &
+           .and. all(dep(11:) == -999))
+      call pressridge_ridger_free(rg)
+      call pressridge_ridger_init(rg, nc, 7, 1, .true., .true., .true., .true., &
+           trcr_base=base, ierr=e)
+      call check('ridger_init, trcr_base(64, 2): PRESSRIDGE_ERR_BAD_SIZE', &
+           e == PRESSRIDGE_ERR_BAD_SIZE .and. &
+           pressridge_last_error_message() == 'trcr_base must have 3 columns')
+      call pressridge_ridger_free(rg)
+    end block layout
   end block cstep
 
   ! --- ridging lookup tables
