@@ -1,9 +1,10 @@
 //! The thickness-distribution parameters are listed once, in Rust (`ItdParams::FIELDS`);
 //! the faces that cannot be generated from that list are checked against it here, as text:
 //! the C struct `PressridgeParams` of `include/pressridge.h` and the Fortran type
-//! `pressridge_params` of `fortran-bridge/pressridge.f90` (same fields, same order, same
-//! types, the Fortran initial values equal to `ItdParams::default()`), and the Fortran
-//! overrides by Icepack name in `pressridge_init_parameters`. The Python face
+//! `pressridge_params` of `fortran-bridge/src/pressridge_cabi.f90` (same fields, same order,
+//! same types, the Fortran initial values equal to `ItdParams::default()`), and the Fortran
+//! overrides by Icepack name in `pressridge_init_parameters`
+//! (`fortran-bridge/src/pressridge_base.f90`). The Python face
 //! (`PARAMETERS`, `DEFAULT_PARAMETERS`) is built from `ItdParams::FIELDS` by the extension.
 
 use pressridge::itd::ItdParams;
@@ -11,6 +12,12 @@ use pressridge::itd::ItdParams;
 /// The one documented difference: the C layout (and the Fortran type, which binds it)
 /// keeps the doubles first and puts the one integer, `nitermax` (`int64_t`), last.
 const MOVED_TO_END: &[&str] = &["nitermax"];
+
+/// The Fortran source that declares the type `pressridge_params` (the C ABI's types).
+const FORTRAN_TYPES: &str = "fortran-bridge/src/pressridge_cabi.f90";
+
+/// The Fortran source of `pressridge_init_parameters` (the overrides by Icepack name).
+const FORTRAN_OVERRIDES: &str = "fortran-bridge/src/pressridge_base.f90";
 
 /// The Rust names in the order of the C and Fortran faces, with the C type of each.
 fn expected() -> Vec<(&'static str, &'static str)> {
@@ -75,7 +82,7 @@ fn c_fields() -> Vec<(String, String)> {
 
 /// (name, C type, initial value) of the components of the Fortran type, in order.
 fn fortran_fields() -> Vec<(String, String, f64)> {
-    let file = "fortran-bridge/pressridge.f90";
+    let file = FORTRAN_TYPES;
     let text = read(file);
     block(
         &text,
@@ -131,7 +138,7 @@ fn fortran_type_has_the_rust_fields_in_order_with_the_rust_defaults() {
             .map(|(n, t, _)| (n.as_str(), t.as_str()))
             .collect::<Vec<_>>(),
         want,
-        "pressridge_params in fortran-bridge/pressridge.f90 against ItdParams::FIELDS \
+        "pressridge_params in {FORTRAN_TYPES} against ItdParams::FIELDS \
          (with {MOVED_TO_END:?} last, as the C struct it binds)"
     );
     let d = ItdParams::default();
@@ -139,7 +146,7 @@ fn fortran_type_has_the_rust_fields_in_order_with_the_rust_defaults() {
         assert_eq!(
             Some(*value),
             d.get(name),
-            "initial value of pressridge_params%{name} in fortran-bridge/pressridge.f90"
+            "initial value of pressridge_params%{name} in {FORTRAN_TYPES}"
         );
     }
 }
@@ -149,7 +156,7 @@ fn fortran_type_has_the_rust_fields_in_order_with_the_rust_defaults() {
 /// sets the field y = lower-case X, and y is a Rust name.
 #[test]
 fn fortran_overrides_by_icepack_name_set_the_field_of_that_name() {
-    let file = "fortran-bridge/pressridge.f90";
+    let file = FORTRAN_OVERRIDES;
     let text = read(file);
     let mut seen = 0;
     for line in text.lines().map(str::trim) {

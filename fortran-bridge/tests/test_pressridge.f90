@@ -6,7 +6,7 @@
 !> Usage: test_pressridge SAMPLE.nc REFDIR (REFDIR holds strength_*.nc, ridged.nc,
 !> cf_table.nc and ridge_table.nc made by the Makefile).
 program test_pressridge
-  use, intrinsic :: iso_c_binding, only: c_double
+  use, intrinsic :: iso_c_binding, only: c_double, c_int32_t
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use pressridge
   use sample_io
@@ -254,6 +254,116 @@ program test_pressridge
       call check('ridging with ncat bounds: PRESSRIDGE_ERR_BAD_SIZE', e == PRESSRIDGE_ERR_BAD_SIZE)
     end block rdg
   end block
+
+  ! --- the complete step (snow, tracers, fluxes): an optional per-category or per-column array
+  ! of the wrong size is an error naming it and the size it needs, the cell is not stepped and
+  ! nothing is written past the array's end (guard: the values after it stay -999)
+  cstep: block
+    integer, parameter :: nc = 5, nk = 3
+    type(pressridge_ridger) :: rg
+    integer :: nt, c, k
+    real(c_double) :: hb(0:nc), an(nc, nk), vn(nc, nk), sn(nc, nk), a0(nk), ai(nk), cv(nk), &
+         sh(nk), fr(nk), guard(2 * nc), a1(nc), d1, d2, d3, op, fp, fh, fs
+    real(c_double), allocatable :: tr(:, :, :)
+    logical :: fi(nc)
+    call pressridge_ridger_init(rg, nc, 7, 1, .true., .true., .true., .true., ntrcr=nt, ierr=e)
+    call check('complete step: a ridger with 23 tracers', e == PRESSRIDGE_OK .and. nt == 23)
+    allocate(tr(nt, nc, nk))
+    hb = [0.0_c_double, 0.6_c_double, 1.4_c_double, 2.4_c_double, 3.6_c_double, 1.0e8_c_double]
+    do c = 1, nk
+       do k = 1, nc
+          an(k, c) = 0.19_c_double
+          vn(k, c) = an(k, c) * (0.3_c_double + 0.9_c_double * (k - 1))
+          sn(k, c) = 0.1_c_double * vn(k, c)
+          tr(:, k, c) = [-15.0_c_double, (-3.0e8_c_double - 1.0e6_c_double * i, i = 1, 7), &
+               -1.15e8_c_double, (4.0_c_double + 0.2_c_double * i, i = 1, 7), 2.0e7_c_double, &
+               0.4_c_double, 0.8_c_double, 0.8_c_double, 0.2_c_double, 0.1_c_double, 0.01_c_double]
+       end do
+       a0(c) = 1 - sum(an(:, c))
+       ai(c) = sum(an(:, c))
+       cv(c) = 1.0e-6_c_double * c
+       sh(c) = 1.0e-6_c_double
+    end do
+    op = 0
+    fp = 0
+    fr = 0
+    fh = 0
+    fs = 0
+    a1 = an(:, 1)
+    guard = -999
+    call pressridge_step_ridge(rg, 3600.0_c_double, 1, hb, cv(1), sh(1), an(:, 1), tr(:, :, 1), &
+         vn(:, 1), sn(:, 1), a0(1), d1, d2, d3, op, fp, fr(1), fh, aice=ai(1), fsalt=fs, &
+         Tf=-1.8_c_double, aparticn=guard(1:nc), krdgn=guard(nc + 1:2 * nc - 1), ierr=e)
+    call check('step_ridge, krdgn(ncat - 1): PRESSRIDGE_ERR_BAD_SIZE naming it, nothing written', &
+         e == PRESSRIDGE_ERR_BAD_SIZE .and. &
+         pressridge_last_error_message() == 'krdgn has 4 elements, expected ncat = 5' .and. &
+         all(guard == -999) .and. all(an(:, 1) == a1))
+    fi = .false.
+    call pressridge_step_ridge(rg, 3600.0_c_double, 1, hb, cv(1), sh(1), an(:, 1), tr(:, :, 1), &
+         vn(:, 1), sn(:, 1), a0(1), d1, d2, d3, op, fp, fr(1), fh, aice=ai(1), fsalt=fs, &
+         Tf=-1.8_c_double, first_ice=fi(1:nc - 1), ierr=e)
+    call check('step_ridge, first_ice(ncat - 1): PRESSRIDGE_ERR_BAD_SIZE naming it', &
+         e == PRESSRIDGE_ERR_BAD_SIZE .and. &
+         pressridge_last_error_message() == 'first_ice has 4 elements, expected ncat = 5' .and. &
+         all(an(:, 1) == a1))
+    call pressridge_step_ridge(rg, 3600.0_c_double, 1, hb, cv(1), sh(1), an(:, 1), tr(:, :, 1), &
+         vn(:, 1), sn(:, 1), a0(1), d1, d2, d3, op, fp, fr(1), fh, aice=ai(1), fsalt=fs, &
+         Tf=-1.8_c_double, aparticn=guard(1:nc), first_ice=fi, ierr=e)
+    call check('step_ridge with aparticn(ncat) and first_ice(ncat) steps the cell', &
+         e == PRESSRIDGE_OK .and. any(an(:, 1) /= a1) .and. all(guard(nc + 1:) == -999) .and. &
+         abs(a0(1) + sum(an(:, 1)) - 1) < 1.0e-12_c_double)
+    guard = -999
+    a1 = an(:, 2)
+    call pressridge_step_ridge_cells(rg, 3600.0_c_double, 1, hb, cv, sh, an, tr, vn, sn, a0, &
+         ai, Tf=guard(1:nk - 1), ierr=e)
+    call check('step_ridge_cells, Tf(ncol - 1): PRESSRIDGE_ERR_BAD_SIZE naming it', &
+         e == PRESSRIDGE_ERR_BAD_SIZE .and. &
+         pressridge_last_error_message() == 'Tf has 2 elements, expected ncol = 3' .and. &
+         all(an(:, 2) == a1))
+    call pressridge_step_ridge_cells(rg, 3600.0_c_double, 1, hb, cv, sh, an, tr, vn, sn, a0, &
+         ai, fresh=guard(1:nk - 1), ierr=e)
+    call check('step_ridge_cells, fresh(ncol - 1): PRESSRIDGE_ERR_BAD_SIZE, nothing written', &
+         e == PRESSRIDGE_ERR_BAD_SIZE .and. &
+         pressridge_last_error_message() == 'fresh has 2 elements, expected ncol = 3' .and. &
+         all(guard == -999) .and. all(an(:, 2) == a1))
+    call pressridge_step_ridge_cells(rg, 3600.0_c_double, 1, hb, cv, sh, an, tr, vn, sn, a0, &
+         ai, closing=cv(1:nk - 1), opening=fr, ierr=e)
+    call check('step_ridge_cells, closing(ncol - 1): PRESSRIDGE_ERR_BAD_SIZE naming it', &
+         e == PRESSRIDGE_ERR_BAD_SIZE .and. &
+         pressridge_last_error_message() == 'closing has 2 elements, expected ncol = 3')
+    call pressridge_step_ridge_cells(rg, 3600.0_c_double, 1, hb, cv, sh, an, tr, vn, sn, a0, &
+         ai, dvirdgdt=guard(1:nk + 1), ierr=e)
+    call check('step_ridge_cells, dvirdgdt(ncol + 1): PRESSRIDGE_ERR_BAD_SIZE naming it', &
+         e == PRESSRIDGE_ERR_BAD_SIZE .and. &
+         pressridge_last_error_message() == 'dvirdgdt has 4 elements, expected ncol = 3')
+    fr = 0
+    call pressridge_step_ridge_cells(rg, 3600.0_c_double, 1, hb, cv, sh, an, tr, vn, sn, a0, &
+         ai, Tf=[(-1.8_c_double, i = 1, nk)], fresh=fr, dvirdgdt=guard(1:nk), ierr=e)
+    call check('step_ridge_cells with Tf, fresh and dvirdgdt of ncol values steps the cells', &
+         e == PRESSRIDGE_OK .and. any(an(:, 2) /= a1) .and. all(guard(nk + 1:) == -999) .and. &
+         all(abs(a0 + sum(an, 1) - 1) < 1.0e-12_c_double))
+    call pressridge_ridger_free(rg)
+    ! The tracer layout arrays: the library writes ntrcr rows of each, at the first size of
+    ! those given; all must have that size, and trcr_base 3 columns, nt_strata 2.
+    layout: block
+      integer(c_int32_t) :: dep(64), nst(64)
+      real(c_double) :: base(64, 2)
+      dep = -999
+      call pressridge_ridger_init(rg, nc, 7, 1, .true., .true., .true., .true., &
+           trcr_depend=dep(1:10), n_trcr_strata=nst, ierr=e)
+      call check('ridger_init, trcr_depend(10) with n_trcr_strata(64): PRESSRIDGE_ERR_BAD_SIZE, &
+           &nothing written past it', e == PRESSRIDGE_ERR_BAD_SIZE .and. &
+           pressridge_last_error_message() == 'the tracer arrays must have the same first size' &
+           .and. all(dep(11:) == -999))
+      call pressridge_ridger_free(rg)
+      call pressridge_ridger_init(rg, nc, 7, 1, .true., .true., .true., .true., &
+           trcr_base=base, ierr=e)
+      call check('ridger_init, trcr_base(64, 2): PRESSRIDGE_ERR_BAD_SIZE', &
+           e == PRESSRIDGE_ERR_BAD_SIZE .and. &
+           pressridge_last_error_message() == 'trcr_base must have 3 columns')
+      call pressridge_ridger_free(rg)
+    end block layout
+  end block cstep
 
   ! --- ridging lookup tables
   call pressridge_ridge_table_open(trim(dir)//'/ridge_table.nc', rt, e)

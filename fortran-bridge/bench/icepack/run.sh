@@ -41,8 +41,9 @@ if [ ${#todo[@]} -ne 0 ]; then
 fi
 LIB=$ROOT/target/release
 [ -f "$LIB/libpressridge.so" ] || (cd "$ROOT" && cargo build --release --lib)
-$FC -O2 -c "$ROOT/fortran-bridge/pressridge.f90" -o pressridge.o
+# The pressridge module (fortran-bridge/src/, in the Makefile's order): *.mod and pressridge*.o.
+make -s -C "$ROOT/fortran-bridge" module BUILD="$BUILD" FC="$FC" FFLAGS="-O2"
 $FC -O2 -ffree-line-length-none -c "$HERE/bench_icepack_ridge.f90" -o bench_icepack_ridge.o
-$FC -o bench_icepack_ridge bench_icepack_ridge.o pressridge.o icepack_*.o \
+$FC -o bench_icepack_ridge bench_icepack_ridge.o pressridge*.o icepack_*.o \
   -L"$LIB" -lpressridge -Wl,-rpath,"$LIB"
 ./bench_icepack_ridge "$NCOL"
