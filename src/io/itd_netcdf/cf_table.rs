@@ -1,7 +1,9 @@
 //! C_f tables in NetCDF: a plain table (1-D `thickness`, `cf`) or the C_f of a ridging table
 //! of `pressridge tabulate` at a friction pair; writing a plain one.
 
+use super::vars::{dims_of, nc_err, read_f64};
 use super::*;
+use crate::itd::CfTable;
 
 /// Reads the C_f at a friction pair (μ, μ_w; dimensionless) from `path`: from a ridging
 /// table of `pressridge tabulate` (with friction coordinates `mu` and `mu_w`), the set at
