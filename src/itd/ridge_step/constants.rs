@@ -1,8 +1,13 @@
-//! The thermodynamic constants of the complete ridging step ([`RidgeStepParams`], Icepack's
-//! defaults, their list with units and their checks) and the salt-flux option of the
-//! clean-up ([`SaltFlux`]).
+//! The constants of the complete ridging step: its thermodynamic constants
+//! ([`RidgeStepParams`], Icepack's defaults, their list with units and their checks), the
+//! salt-flux option of the clean-up ([`SaltFlux`]), and every constant of the step by name
+//! ([`RidgeStepOptions`] as a [`NamedParams`] set: the ridging parameters `ItdParams` and
+//! the thermodynamic constants, the one parser of `pressridge ridge-step --param` and of
+//! Python's `ridge_step` keywords).
 
-use crate::itd::ItdError;
+use super::RidgeStepOptions;
+use crate::itd::named_params::{NamedParams, ParamGroup, ParamMeta};
+use crate::itd::{ItdError, ItdParams};
 
 /// How the zapped ice's salt flux is computed (Icepack `saltflux_option`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -81,63 +86,51 @@ impl Default for RidgeStepParams {
 }
 
 /// Name, units and meaning of one settable constant of [`RidgeStepParams`] (the type the
-/// [`ItdParams`](crate::itd::ItdParams) fields are listed with too).
-pub type StepParamMeta = crate::itd::params::ParamMeta;
-
-const fn step_param(
-    name: &'static str,
-    units: &'static str,
-    description: &'static str,
-) -> StepParamMeta {
-    StepParamMeta {
-        name,
-        units,
-        description,
-    }
-}
+/// [`ItdParams`] fields are listed with too).
+pub type StepParamMeta = ParamMeta;
 
 impl RidgeStepParams {
     /// The numeric constants, in field order: the one list the faces (command line
     /// `--param`, Python keywords, output attributes) take their names and units from.
     /// [`RidgeStepParams::salt_flux`] is an option, not a number, and is not in it.
     pub const FIELDS: &'static [StepParamMeta] = &[
-        step_param("rhos", "kg m-3", "snow density (Icepack rhos)"),
-        step_param(
+        ParamMeta::new("rhos", "kg m-3", "snow density (Icepack rhos)"),
+        ParamMeta::new(
             "lfresh",
             "J kg-1",
             "latent heat of melting of fresh ice (Icepack Lfresh)",
         ),
-        step_param(
+        ParamMeta::new(
             "cp_ice",
             "J kg-1 K-1",
             "specific heat of fresh ice (Icepack cp_ice)",
         ),
-        step_param(
+        ParamMeta::new(
             "fsnowrdg",
             "1",
             "fraction of the snow on ridging ice that stays on the ridge (Icepack fsnowrdg)",
         ),
-        step_param(
+        ParamMeta::new(
             "ice_ref_salinity",
             "ppt",
             "salinity of zapped ice with the constant salt flux (Icepack ice_ref_salinity)",
         ),
-        step_param(
+        ParamMeta::new(
             "itd_area_min",
             "1",
             "cell ice area below which all ice is zapped (Icepack itd_area_min)",
         ),
-        step_param(
+        ParamMeta::new(
             "itd_mass_min",
             "kg m-2",
             "cell ice mass below which all ice is zapped (Icepack itd_mass_min)",
         ),
-        step_param(
+        ParamMeta::new(
             "hs_min",
             "m",
             "snow thickness above which the snow temperature is checked (Icepack hs_min)",
         ),
-        step_param(
+        ParamMeta::new(
             "tmin",
             "degC",
             "lowest physical snow temperature (Icepack Tmin)",
@@ -221,6 +214,49 @@ impl RidgeStepParams {
             return bad("tmin", self.tmin, "must be finite");
         }
         Ok(())
+    }
+}
+
+impl NamedParams for RidgeStepParams {
+    const GROUPS: &'static [ParamGroup] = &[ParamGroup {
+        label: "valid names",
+        fields: RidgeStepParams::FIELDS,
+    }];
+
+    fn get(&self, name: &str) -> Option<f64> {
+        RidgeStepParams::get(self, name)
+    }
+
+    fn set(&mut self, name: &str, value: f64) -> Result<(), ItdError> {
+        RidgeStepParams::set(self, name, value)
+    }
+}
+
+/// Every constant of the complete step by name: the ridging parameters (`params`, an
+/// [`ItdParams`] name) and the thermodynamic constants (`step`, a [`RidgeStepParams`] name).
+/// The options that are not numbers (participation, salt flux, ...) are not among them.
+impl NamedParams for RidgeStepOptions {
+    const GROUPS: &'static [ParamGroup] = &[
+        ParamGroup {
+            label: "ridging parameters",
+            fields: ItdParams::FIELDS,
+        },
+        ParamGroup {
+            label: "constants of the complete step",
+            fields: RidgeStepParams::FIELDS,
+        },
+    ];
+
+    fn get(&self, name: &str) -> Option<f64> {
+        self.params.get(name).or_else(|| self.step.get(name))
+    }
+
+    fn set(&mut self, name: &str, value: f64) -> Result<(), ItdError> {
+        if ItdParams::NAMES.contains(&name) {
+            self.params.set(name, value)
+        } else {
+            self.step.set(name, value)
+        }
     }
 }
 

@@ -1,10 +1,10 @@
 //! What `ridge-step` was told, for the step and for the record: the parameter overrides of
 //! --param-file and --param, and the global attributes common to both steps.
 
-use pressridge::itd::{ItdParams, RidgeOptions, RidgeStepParams};
+use pressridge::itd::{ItdParams, RidgeOptions, RidgeStepOptions, RidgeStepParams};
 
 use super::Args;
-use crate::BoxError;
+use crate::{BoxError, params};
 
 /// The parameters of --param-file and --param.
 pub(super) struct AllParams {
@@ -18,65 +18,34 @@ pub(super) struct AllParams {
     pub(super) described: String,
 }
 
-/// Reads --param-file, then --param (which wins): each NAME=VALUE names an `ItdParams` or a
-/// `RidgeStepParams` constant.
+/// Reads --param-file, then --param (which wins): each NAME=VALUE names a constant of the
+/// complete step (the library's [`RidgeStepOptions`] set: an `ItdParams` or a
+/// `RidgeStepParams` name).
 pub(super) fn parse_all_params(args: &Args) -> Result<AllParams, BoxError> {
-    let mut items: Vec<(String, String)> = Vec::new();
-    if let Some(path) = &args.param_file {
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| format!("--param-file {}: {e}", path.display()))?;
-        for (k, line) in text.lines().enumerate() {
-            let line = line.split('#').next().unwrap_or("").trim();
-            if !line.is_empty() {
-                items.push((format!("{}:{}", path.display(), k + 1), line.to_string()));
-            }
+    let mut c = RidgeStepOptions::default();
+    let given = params::apply(
+        &mut c,
+        &params::settings(args.param_file.as_deref(), &args.params)?,
+    )?;
+    let mut step_overrides: Vec<String> = Vec::new();
+    for (name, _) in &given {
+        if RidgeStepParams::FIELDS.iter().any(|f| f.name == *name)
+            && !step_overrides.iter().any(|n| n == name)
+        {
+            step_overrides.push(name.to_string());
         }
     }
-    for p in &args.params {
-        items.push((format!("--param {p}"), p.clone()));
-    }
-    let mut out = AllParams {
-        itd: ItdParams::default(),
-        step: RidgeStepParams::default(),
-        step_overrides: Vec::new(),
-        described: String::new(),
-    };
-    let mut described = Vec::new();
-    for (whence, item) in &items {
-        let (name, value) = item
-            .split_once('=')
-            .ok_or_else(|| format!("{whence}: expected NAME=VALUE"))?;
-        let (name, value) = (name.trim(), value.trim());
-        let x: f64 = value
-            .parse()
-            .map_err(|_| format!("{whence}: `{value}` is not a number"))?;
-        if ItdParams::NAMES.contains(&name) {
-            out.itd.set(name, x).map_err(|e| format!("{whence}: {e}"))?;
-        } else if RidgeStepParams::FIELDS.iter().any(|f| f.name == name) {
-            out.step
-                .set(name, x)
-                .map_err(|e| format!("{whence}: {e}"))?;
-            if !out.step_overrides.iter().any(|n| n == name) {
-                out.step_overrides.push(name.to_string());
-            }
+    let described: Vec<String> = given.iter().map(|(n, v)| format!("{n}={v}")).collect();
+    Ok(AllParams {
+        itd: c.params,
+        step: c.step,
+        step_overrides,
+        described: if described.is_empty() {
+            "none".into()
         } else {
-            let step: Vec<&str> = RidgeStepParams::FIELDS.iter().map(|f| f.name).collect();
-            return Err(format!(
-                "{whence}: unknown parameter `{name}`; ridging parameters: {}; constants of \
-                 the complete step: {}",
-                ItdParams::NAMES.join(", "),
-                step.join(", ")
-            )
-            .into());
-        }
-        described.push(format!("{name}={value}"));
-    }
-    out.described = if described.is_empty() {
-        "none".into()
-    } else {
-        described.join(", ")
-    };
-    Ok(out)
+            described.join(", ")
+        },
+    })
 }
 
 /// The global attributes common to both steps; `host`: the variables of the host's rates.
