@@ -75,7 +75,7 @@ pub trait NamedParams: Default {
     }
 
     /// The valid name closest to `name` when it is close (a likely misspelling): edit
-    /// distance at most 2 + len/4.
+    /// distance at most 2 + len/4 and below len (not every letter replaced).
     fn closest_name(name: &str) -> Option<&'static str> {
         closest_name(Self::GROUPS, name)
     }
@@ -186,14 +186,14 @@ fn unknown_message(noun: &str, name: &str, groups: &[ParamGroup]) -> String {
 }
 
 /// The name of `groups` closest to `name` when it is close: edit distance at most
-/// 2 + len/4.
+/// 2 + len/4 and below len.
 fn closest_name(groups: &[ParamGroup], name: &str) -> Option<&'static str> {
     groups
         .iter()
         .flat_map(|g| g.fields)
         .map(|f| (edit_distance(name, f.name), f.name))
         .min()
-        .filter(|(d, _)| *d <= 2 + name.len() / 4)
+        .filter(|(d, _)| *d <= 2 + name.len() / 4 && *d < name.chars().count())
         .map(|(_, n)| n)
 }
 
@@ -312,5 +312,7 @@ mod tests {
         }
         assert_eq!(ItdParams::closest_name("zzzzzzzz"), None);
         assert_eq!(RidgeStepOptions::closest_name("Cs"), Some("cs"));
+        // Not a name with every letter replaced.
+        assert_eq!(ItdParams::closest_name("mu"), None);
     }
 }
