@@ -9,7 +9,8 @@ use ndarray::{Array1, Array2};
 
 use super::forcing::read_deformation;
 use super::vars::{
-    all_dims, dims_of, fill_of, fmt_dims, is_fill, nc_err, read_f64, read_spatial, str_attr,
+    all_dims, dims_of, fill_of, fmt_dims, is_fill, nc_err, read_f64, read_spatial, required,
+    str_attr,
 };
 use super::{CoordVar, ItdGrid, NetcdfError, ReadOptions, category_axis};
 
@@ -193,13 +194,7 @@ fn read_bounds(
 /// Reads a gridded thickness distribution (see the module documentation for the layout).
 pub fn read_itd_with(path: &Path, opts: &ReadOptions) -> Result<ItdGrid, NetcdfError> {
     let file = netcdf::open(path).map_err(nc_err(path))?;
-    let get = |name: &str| {
-        file.variable(name)
-            .ok_or_else(|| NetcdfError::MissingVariable {
-                path: path.to_path_buf(),
-                var: name.into(),
-            })
-    };
+    let get = |name: &str| required(path, &file, name);
     let av = get("aicen")?;
     let vv = get("vicen")?;
     let ad = all_dims(&av);

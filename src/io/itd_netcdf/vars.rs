@@ -119,15 +119,23 @@ pub(super) fn str_attr(v: &netcdf::Variable<'_>, name: &str) -> Option<String> {
         .and_then(|x| String::try_from(x).ok())
 }
 
-/// Reads one variable as `f64` with its dimensions (name, length).
-pub fn read_field(path: &Path, name: &str) -> Result<(Dims, Vec<f64>), NetcdfError> {
-    let file = netcdf::open(path).map_err(nc_err(path))?;
-    let v = file
-        .variable(name)
+/// The variable `name` of `file` (read from `path`); its absence is an error naming it.
+pub(super) fn required<'f>(
+    path: &Path,
+    file: &'f netcdf::File,
+    name: &str,
+) -> Result<netcdf::Variable<'f>, NetcdfError> {
+    file.variable(name)
         .ok_or_else(|| NetcdfError::MissingVariable {
             path: path.to_path_buf(),
             var: name.into(),
-        })?;
+        })
+}
+
+/// Reads one variable as `f64` with its dimensions (name, length).
+pub fn read_field(path: &Path, name: &str) -> Result<(Dims, Vec<f64>), NetcdfError> {
+    let file = netcdf::open(path).map_err(nc_err(path))?;
+    let v = required(path, &file, name)?;
     Ok((dims_of(&v), read_f64(path, &v)?))
 }
 
@@ -140,11 +148,6 @@ pub fn has_variable(path: &Path, name: &str) -> Result<bool, NetcdfError> {
 /// The `_FillValue` (else `missing_value`) of variable `name`, if it has one.
 pub fn read_fill(path: &Path, name: &str) -> Result<Option<f64>, NetcdfError> {
     let file = netcdf::open(path).map_err(nc_err(path))?;
-    let v = file
-        .variable(name)
-        .ok_or_else(|| NetcdfError::MissingVariable {
-            path: path.to_path_buf(),
-            var: name.into(),
-        })?;
+    let v = required(path, &file, name)?;
     Ok(fill_of(&v))
 }
