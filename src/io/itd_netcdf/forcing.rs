@@ -27,16 +27,17 @@ fn rate_units(path: &Path, v: &netcdf::Variable<'_>) -> Result<RateUnits, Netcdf
     else {
         return Ok(RateUnits::PerSecond);
     };
-    let u: String = units.chars().filter(|c| !c.is_whitespace()).collect();
-    match u.as_str() {
-        "s-1" | "1/s" | "s^-1" | "/s" | "s**-1" => Ok(RateUnits::PerSecond),
-        "%/day" | "%/d" | "%day-1" | "percent/day" => Ok(RateUnits::PercentPerDay),
-        _ => Err(NetcdfError::Units {
+    if CellUnits::PerSecond.accepts(&units) {
+        Ok(RateUnits::PerSecond)
+    } else if rate_is_percent_per_day(&units) {
+        Ok(RateUnits::PercentPerDay)
+    } else {
+        Err(NetcdfError::Units {
             path: path.to_path_buf(),
             var: v.name(),
             units,
             extra: String::new(),
-        }),
+        })
     }
 }
 
