@@ -117,20 +117,13 @@ def _bool(x: Any, name: str) -> _np.ndarray:
 
 
 def _params(params: dict, step: bool = False) -> list:
-    """(name, value) pairs of ITD parameters, or with ``step`` of the complete step's
-    constants (:data:`STEP_PARAMETERS`)."""
+    """(name, value) pairs of ITD parameters (:data:`PARAMETERS`), or with ``step`` of the
+    complete ridging step's constants (:data:`PARAMETERS` and :data:`STEP_PARAMETERS`). An
+    unknown name raises the library's message (the closest valid name and all), as the
+    command line's ``--param`` does."""
     out = []
-    names = STEP_PARAMETERS if step else PARAMETERS
     for k, v in params.items():
-        if k not in names:
-            raise ValueError(
-                f"unknown keyword or parameter `{k}`; parameters are: {', '.join(PARAMETERS)}"
-                + (
-                    ""
-                    if step
-                    else f"; constants of the complete step: {', '.join(STEP_PARAMETERS)}"
-                )
-            )
+        _core.check_param_name(k, step)
         if isinstance(v, (bool, _np.bool_)):
             raise ValueError(f"parameter `{k}` must be a number, got {v!r}")
         try:
@@ -602,14 +595,12 @@ def ridge_step(
             ok,
             participation,
             redistribution,
-            _params(params),
+            _params(params, step=True),
         )
         return RidgeStepResult(
             a_new, v_new, _scalar_if_0d(a0_new), *[_scalar_if_0d(r) for r in rates]
         )
 
-    step_params = {k: v for k, v in params.items() if k in STEP_PARAMETERS}
-    itd_params = {k: v for k, v in params.items() if k not in STEP_PARAMETERS}
     if vsnon is not None and trcrn is None:
         raise ValueError(
             "vsnon needs trcrn (with layout): the snow's enthalpy is a tracer, and snow "
@@ -661,10 +652,9 @@ def ridge_step(
         ok,
         participation,
         redistribution,
-        _params(itd_params),
+        _params(params, step=True),
         True if cleanup is None else bool(cleanup),
         True if rebin is None else bool(rebin),
-        _params(step_params, step=True),
         "constant" if salt_flux is None else str(salt_flux),
     )
     c = {k: _scalar_if_0d(x) for k, x in cell}

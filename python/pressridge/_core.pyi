@@ -130,7 +130,6 @@ def ridge_step_full(
     params: Sequence[Tuple[str, float]],
     cleanup: bool,
     rebin: bool,
-    step_params: Sequence[Tuple[str, float]],
     salt_flux: str,
 ) -> Tuple[
     Tuple[_F64, _F64, _F64],
@@ -145,6 +144,9 @@ def ridge_step_full(
 
 def category_bounds(ncat: int, scheme: str = "round_numbers") -> _F64: ...
 def param_names() -> List[str]: ...
+def check_param_name(name: str, ridge_step: bool = False, keyword: bool = True) -> None:
+    """Raises the library's ValueError (closest valid name, every valid name) unless
+    ``name`` is an ITD parameter, or with ``ridge_step`` a constant of the complete step."""
 def cf_presets() -> List[Tuple[str, float]]: ...
 def read_cf_table(path: _Path) -> Tuple[_F64, _F64]: ...
 def read_cf_table_at_friction(

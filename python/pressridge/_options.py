@@ -97,11 +97,10 @@ class StrengthOptions:
             )
         checked = {}
         for k, v in self.params.items():
-            if k not in _PARAMETERS:
-                raise ValueError(
-                    f"StrengthOptions.params: unknown parameter `{k}`; parameters are: "
-                    + ", ".join(_PARAMETERS)
-                )
+            try:
+                _core.check_param_name(k if isinstance(k, str) else repr(k), keyword=False)
+            except ValueError as e:
+                raise ValueError(f"StrengthOptions.params: {e}") from None
             if isinstance(v, bool) or not _is_number(v):
                 raise ValueError(f"StrengthOptions.params: `{k}` must be a number, got {v!r}")
             checked[k] = float(v)
@@ -117,7 +116,6 @@ def _is_number(v: Any) -> bool:
     return not isinstance(v, (str, bytes, os.PathLike))
 
 
-_PARAMETERS: Tuple[str, ...] = tuple(_core.param_names())
 # The parameters' list in the docstring, from the library (name, units, CICE default).
 StrengthOptions.__doc__ = (StrengthOptions.__doc__ or "").replace(
     "values). The parameters, their units and defaults:\n",

@@ -476,8 +476,7 @@ def ridge_step(
     aicen, vicen, aice0, cat, spatial = _category_vars(ds, category_dim)
     use_mask = _mask_flag(mask, ds["aicen"], ds["vicen"], aice0)
     aicen, use_mask = _apply_tmask(ds, aicen, use_mask, mask)
-    _pr._params({k: v for k, v in params.items() if k not in _pr.STEP_PARAMETERS})
-    _pr._params({k: v for k, v in params.items() if k in _pr.STEP_PARAMETERS}, step=True)
+    _pr._params(params, step=True)
     if layout is not None and tf is None and "Tf" in ds:
         tf = _temperature_degc(ds["Tf"])
     conv_desc = "max(-divu, 0) from input"

@@ -1,7 +1,7 @@
 //! Errors on their way to Python, and the guard around every library call.
 //!
 //! Owns `BindError` (`Send`, so it can leave a GIL-free section) and its conversions from
-//! the library's errors to `ValueError`, `OSError`, `FileNotFoundError` and (for a panic, a
+//! the library's errors (parameter overrides included) to `ValueError`, `OSError`, `FileNotFoundError` and (for a panic, a
 //! bug) `RuntimeError`; `guarded` and `detached`, which run library code with panics caught
 //! and, for `detached`, the GIL released; and the `_panic_for_test` hook that tests them.
 
@@ -14,6 +14,7 @@ use pyo3::prelude::*;
 use pressridge::campaign::CampaignError;
 use pressridge::io::IoError;
 use pressridge::io::itd_netcdf::NetcdfError;
+use pressridge::itd::ParamError;
 use pressridge::scene::{SceneError, SceneLoadError};
 
 /// An error on its way to Python; `Send`, so it can leave a GIL-free section.
@@ -42,6 +43,14 @@ impl From<BindError> for PyErr {
 
 pub(crate) fn value_err(m: impl ToString) -> BindError {
     BindError::Value(m.to_string())
+}
+
+/// The library's error of a parameter override: Python's parameters are keywords of the
+/// call, so an unknown name is an unknown keyword or parameter.
+impl From<ParamError> for BindError {
+    fn from(e: ParamError) -> Self {
+        BindError::Value(e.message_as("keyword or parameter"))
+    }
 }
 
 impl From<IoError> for BindError {

@@ -60,6 +60,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<tracers::PyTracerLayout>()?;
     m.add_function(wrap_pyfunction!(options::category_bounds_py, m)?)?;
     m.add_function(wrap_pyfunction!(options::param_names, m)?)?;
+    m.add_function(wrap_pyfunction!(options::check_param_name, m)?)?;
     m.add_function(wrap_pyfunction!(options::cf_presets, m)?)?;
     m.add_function(wrap_pyfunction!(options::read_cf_table_py, m)?)?;
     m.add_function(wrap_pyfunction!(options::read_cf_table_at_friction, m)?)?;

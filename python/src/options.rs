@@ -1,7 +1,7 @@
 //! The library's options and parameters from Python values, and the queries about them.
 //!
 //! Owns the parsing of the participation, redistribution and strength-law names, of the
-//! `ItdParams` overrides and of the C_f argument (number, nodes or table file), gathered for
+//! `ItdParams` overrides (the library's parser) and of the C_f argument (number, nodes or table file), gathered for
 //! `strength` in [`StrengthArgs`]; and the module functions that list them: category bounds,
 //! C_f presets, C_f table files, parameter names, units and CICE defaults.
 
@@ -14,8 +14,8 @@ use pyo3::types::PyDict;
 
 use pressridge::io::itd_netcdf::read_cf_table;
 use pressridge::itd::{
-    CategoryBounds, Cf, CfPreset, CfTable, ItdParams, Participation, Redistribution,
-    StrengthFormula, StrengthOptions, category_bounds,
+    CategoryBounds, Cf, CfPreset, CfTable, ItdParams, NamedParams, Participation, Redistribution,
+    RidgeStepOptions, StrengthFormula, StrengthOptions, category_bounds,
 };
 
 use crate::arrays::Pair;
@@ -59,10 +59,30 @@ pub(crate) fn law(name: &str) -> PyResult<StrengthFormula> {
     })
 }
 
-/// CICE's defaults with the `(name, value)` overrides ([`ItdParams::from_pairs`]; an
-/// unknown name is answered with the closest valid one).
+/// CICE's defaults with the `(name, value)` overrides (the library's parser,
+/// [`NamedParams::from_pairs`]; an unknown name is answered with the closest valid one).
 pub(crate) fn itd_params(params: Vec<(String, f64)>) -> PyResult<ItdParams> {
-    Ok(ItdParams::from_pairs(params).map_err(value_err)?)
+    Ok(ItdParams::from_pairs(params).map_err(BindError::from)?)
+}
+
+/// Raises the library's error ([`NamedParams::check_name`]: the closest valid name and all)
+/// when `name` is not a parameter of `ItdParams`, or with `ridge_step` not a constant of the
+/// complete step (`RidgeStepOptions`: the `ItdParams` and `RidgeStepParams` names).
+/// `keyword`: the name was a keyword of the call, so the message says "unknown keyword or
+/// parameter".
+#[pyfunction]
+#[pyo3(signature = (name, ridge_step = false, keyword = true))]
+pub(crate) fn check_param_name(name: &str, ridge_step: bool, keyword: bool) -> PyResult<()> {
+    let checked = if ridge_step {
+        RidgeStepOptions::check_name(name)
+    } else {
+        ItdParams::check_name(name)
+    };
+    match checked {
+        Ok(_) => Ok(()),
+        Err(e) if keyword => Err(BindError::from(e).into()),
+        Err(e) => Err(value_err(e).into()),
+    }
 }
 
 /// The frictional factor from the normalised Python argument: a number, node arrays, a

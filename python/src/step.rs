@@ -1,8 +1,8 @@
 //! The complete ridging step (snow, tracers, ocean fluxes).
 //!
-//! Owns `ridge_step_full` (`itd::ridge_step_batch` over numpy arrays), the parsing of its
-//! thermodynamic constants and salt-flux option, and the lists of its constants
-//! (`step_parameters`) and outputs (`step_outputs`).
+//! Owns `ridge_step_full` (`itd::ridge_step_batch` over numpy arrays; its constants by name
+//! through the library's parser, `RidgeStepOptions::from_pairs`), the salt-flux option by
+//! name, and the lists of its constants (`step_parameters`) and outputs (`step_outputs`).
 
 use std::sync::Arc;
 
@@ -12,7 +12,7 @@ use pyo3::prelude::*;
 
 use pressridge::itd::{
     BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, CategoryBounds, CiceTracerFlags,
-    RidgeOptions, RidgeStepOptions, RidgeStepParams, SaltFlux, StepBatchMut, TracerLayout,
+    NamedParams, RidgeStepOptions, RidgeStepParams, SaltFlux, StepBatchMut, TracerLayout,
     category_bounds, ridge_step_batch,
 };
 
@@ -21,30 +21,16 @@ use crate::arrays::{
     flatten, flatten_mut, itd_err, new_array,
 };
 use crate::errors::{BindError, detached, value_err};
-use crate::options::{itd_params, participation, redistribution};
+use crate::options::{participation, redistribution};
 use crate::tracers::PyTracerLayout;
 
-/// The thermodynamic constants of the complete step from (name, value) pairs of
-/// `RidgeStepParams::FIELDS` names, and the salt-flux option by name.
-fn step_params_from(list: Vec<(String, f64)>, salt_flux: &str) -> PyResult<RidgeStepParams> {
-    let mut p = RidgeStepParams::default();
-    for (name, value) in list {
-        if !RidgeStepParams::FIELDS.iter().any(|f| f.name == name) {
-            let all: Vec<&str> = RidgeStepParams::FIELDS.iter().map(|f| f.name).collect();
-            return Err(value_err(format!(
-                "unknown constant `{name}`; the complete step's constants: {}",
-                all.join(", ")
-            ))
-            .into());
-        }
-        p.set(&name, value).map_err(value_err)?;
-    }
-    p.salt_flux = SaltFlux::from_name(salt_flux).ok_or_else(|| {
+/// The salt-flux option of the clean-up by name (`constant` or `prognostic`).
+fn salt_flux_from(name: &str) -> PyResult<SaltFlux> {
+    Ok(SaltFlux::from_name(name).ok_or_else(|| {
         value_err(format!(
-            "salt_flux = {salt_flux:?}: must be \"constant\" or \"prognostic\""
+            "salt_flux = {name:?}: must be \"constant\" or \"prognostic\""
         ))
-    })?;
-    Ok(p)
+    })?)
 }
 
 /// The complete step's thermodynamic constants (`RidgeStepParams::FIELDS`): (name, units,
@@ -97,7 +83,7 @@ type FullOut<'py> = (
 /// not returned). Returns ([aicen, vicen, vsnon], trcrn, [aice0, aice], hin_max used,
 /// [(cell output, array)], [(category output, array)]); the inputs are not modified.
 #[pyfunction]
-#[pyo3(signature = (aicen, vicen, vsnon, trcrn, layout, aice0, aice, hin_max, c1, c2, rates, tf, dt, ndtd, valid, participation_name, redistribution_name, params, cleanup, rebin, step_params, salt_flux))]
+#[pyo3(signature = (aicen, vicen, vsnon, trcrn, layout, aice0, aice, hin_max, c1, c2, rates, tf, dt, ndtd, valid, participation_name, redistribution_name, params, cleanup, rebin, salt_flux))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn ridge_step_full<'py>(
     py: Python<'py>,
@@ -121,7 +107,6 @@ pub(crate) fn ridge_step_full<'py>(
     params: Vec<(String, f64)>,
     cleanup: bool,
     rebin: bool,
-    step_params: Vec<(String, f64)>,
     salt_flux: &str,
 ) -> PyResult<FullOut<'py>> {
     let spatial = category_shapes(&aicen, &vicen)?;
@@ -169,18 +154,20 @@ pub(crate) fn ridge_step_full<'py>(
     if let Some(t) = &trcrn {
         check_array("trcrn", t, &tshape, "(ncat, layout.ntrcr, spatial...) =")?;
     }
-    let ro = RidgeOptions {
-        participation: participation(participation_name)?,
-        redistribution: redistribution(redistribution_name)?,
-        params: itd_params(params)?,
-    };
+    let participation = participation(participation_name)?;
+    let redistribution = redistribution(redistribution_name)?;
+    // Every constant of the step by name: the library's parser.
+    let constants = RidgeStepOptions::from_pairs(params).map_err(BindError::from)?;
     let opts = RidgeStepOptions {
-        participation: ro.participation,
-        redistribution: ro.redistribution,
-        params: ro.params,
-        step: step_params_from(step_params, salt_flux)?,
+        participation,
+        redistribution,
+        step: RidgeStepParams {
+            salt_flux: salt_flux_from(salt_flux)?,
+            ..constants.step
+        },
         cleanup,
         rebin,
+        ..constants
     };
     let hin_max = match hin_max {
         Some(h) => h,

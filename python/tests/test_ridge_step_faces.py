@@ -257,3 +257,72 @@ def test_command_line_host_rates_tf_and_constants_equal_xarray(cli, tmp_path):
         assert got.attrs[name] == want.attrs[name], name
     assert got.attrs["rates"].startswith("host") and "Tf" in got.attrs["tf"]
     got.close()
+
+
+# ---------------------------------------------------------------------------------------
+# One parser of the step's constants: the command line and Python
+
+
+def test_command_line_and_python_take_exactly_the_librarys_names(cli, sample, tmp_path):
+    """``pressridge ridge-step --param`` and the keywords of ``ridge_step`` and
+    ``xr.ridge_step`` go through the library's one parser of the step's constants (the Rust
+    ``RidgeStepOptions`` set: ``PARAMETERS`` then ``STEP_PARAMETERS``): each accepts every
+    name (all at their defaults: the default step, to the bit), and a misspelt name is
+    refused by each, complete step or area-volume step, with the same message (the closest
+    name and every valid name); Python calls it a keyword or parameter, its parameters being
+    keywords."""
+    import xarray as xr
+    import pressridge.xr as prx
+
+    names = [*pr.PARAMETERS, *pr.STEP_PARAMETERS]
+    defaults = {**pr.DEFAULT_PARAMETERS, **pr.DEFAULT_STEP_PARAMETERS}
+    assert list(defaults) == names, "one value per name, no name twice"
+    ds, layout = _dataset(ntime=1)
+    ds = ds.isel(time=0).drop_vars("time").rename({"nc_bounds": "nb"})
+    ds = ds.transpose("nc", "nj", "ni", "nb")
+    inp = tmp_path / "in.nc"
+    ds.to_netcdf(inp)
+    forcing = ["--dt", "1800", "--convergence", "2e-6", "--shear", "1e-6"]
+
+    # Every name accepted, at its default: the default step.
+    every = [a for n in names for a in ("--param", f"{n}={defaults[n]!r}")]
+    cli("ridge-step", "--input", inp, "--output", tmp_path / "plain.nc", *forcing)
+    cli("ridge-step", "--input", inp, "--output", tmp_path / "every.nc", *forcing, *every)
+    with xr.open_dataset(tmp_path / "plain.nc") as p, xr.open_dataset(tmp_path / "every.nc") as g:
+        for v in p.data_vars:
+            np.testing.assert_array_equal(g[v].values, p[v].values, err_msg=v)
+        assert g.attrs["parameter_overrides"] == ", ".join(f"{n}={defaults[n]!r}" for n in names)
+    hin, aicen, vicen, vsnon, t, aice0 = _columns(layout, ncol=40, seed=5)
+    common = dict(vsnon=vsnon, trcrn=t, layout=layout, dt=1800.0, convergence=2e-6,
+                  shear=1e-6, hin_max=hin)
+    d = pr.ridge_step(aicen, vicen, aice0, **common)
+    e = pr.ridge_step(aicen, vicen, aice0, **common, **defaults)
+    for f in ("aicen", "vicen", "vsnon", "trcrn", "fresh", "fhocn", "fsalt"):
+        np.testing.assert_array_equal(getattr(e, f), getattr(d, f), err_msg=f)
+
+    # A misspelt name: the same message from every face.
+    bad = ("fsnowrgd", 0.3)
+    said = []
+    for extra in (forcing, ["--dt", "1800"]):
+        src = inp if extra is forcing else sample
+        r = cli("ridge-step", "--input", src, "--output", tmp_path / "bad.nc", *extra,
+                "--param", f"{bad[0]}={bad[1]}", check=False)
+        assert r.returncode != 0 and "unknown parameter " in r.stderr, r.stderr
+        said.append(r.stderr.strip().split("unknown parameter ", 1)[1])
+    with xr.open_dataset(sample) as s:
+        a, v = s.aicen.values, s.vicen.values
+    for call in (
+        lambda: pr.ridge_step(aicen, vicen, aice0, **common, **dict([bad])),
+        lambda: pr.ridge_step(a, v, dt=1800.0, convergence=0.0, **dict([bad])),
+        lambda: prx.ridge_step(ds, dt=1800.0, convergence=2e-6, **dict([bad])),
+    ):
+        with pytest.raises(ValueError) as err:
+            call()
+        said.append(str(err.value).split("unknown keyword or parameter ", 1)[1])
+    assert len(set(said)) == 1, said
+    msg = said[0]
+    assert msg.startswith("`fsnowrgd` (did you mean `fsnowrdg`?); ridging parameters: "), msg
+    # The names listed are the library's, every one, in order.
+    groups = [part.split(": ", 1) for part in msg.split("; ")[1:]]
+    assert [g[0] for g in groups] == ["ridging parameters", "constants of the complete step"]
+    assert [n for g in groups for n in g[1].split(", ")] == names

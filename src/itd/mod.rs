@@ -17,6 +17,7 @@ pub mod bounds;
 pub mod cf;
 mod cleanup;
 mod lanes;
+pub mod named_params;
 pub mod params;
 pub mod participation;
 pub mod redistribution;
@@ -28,9 +29,8 @@ pub mod tracers;
 
 pub use bounds::{CategoryBounds, category_bounds};
 pub use cf::{Cf, CfLookup, CfPreset, CfProvider, CfTable};
-pub use params::{
-    ItdParams, ParamError, ParamMeta, Participation, Redistribution, StrengthFormula,
-};
+pub use named_params::{NamedParams, ParamError, ParamGroup, ParamMeta};
+pub use params::{ItdParams, Participation, Redistribution, StrengthFormula};
 pub use ridge_step::{
     Closing, ColumnMut, OceanFluxes, RidgeStepOptions, RidgeStepParams, SaltFlux, StepDiagnostics,
     StepForcing, StepParamMeta, StepWorkspace, deformation_terms, percent_per_day_to_per_second,

@@ -2,6 +2,9 @@
 //!
 //! Every value is a named, overridable field of [`ItdParams`] whose [`Default`] is the
 //! CICE/Icepack default (`icepack_parameters.F90`, `icepack_mechred.F90`). Units are SI.
+//! Overrides by name (`--param`, Python's keywords) go through [`NamedParams`].
+
+use super::named_params::{NamedParams, ParamGroup, ParamMeta};
 
 /// Parameters of participation, redistribution, strength and the ridging step.
 ///
@@ -74,29 +77,6 @@ impl Default for ItdParams {
             nitermax: 20,
             area_tolerance: 1.0e-6,
             max_area_before_ridging: 2.0,
-        }
-    }
-}
-
-/// Name, units and meaning of one settable parameter (an [`ItdParams`] field or a
-/// [`RidgeStepParams`](super::RidgeStepParams) constant).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct ParamMeta {
-    /// Field name, accepted by `set` (e.g. `mu_rdg`).
-    pub name: &'static str,
-    /// SI units (CF notation, e.g. `kg m-3`; `1` dimensionless).
-    pub units: &'static str,
-    /// What it is, with CICE/Icepack's name.
-    pub description: &'static str,
-}
-
-impl ParamMeta {
-    /// The entry `name`, `units`, `description`.
-    pub const fn new(name: &'static str, units: &'static str, description: &'static str) -> Self {
-        Self {
-            name,
-            units,
-            description,
         }
     }
 }
@@ -282,63 +262,6 @@ impl ItdParams {
         Ok(())
     }
 
-    /// The parameter name closest to `name` when it is close (a likely misspelling), for
-    /// "did you mean" hints: edit distance at most 2 + len/4.
-    pub fn closest_name(name: &str) -> Option<&'static str> {
-        Self::NAMES
-            .iter()
-            .map(|n| (edit_distance(name, n), *n))
-            .min()
-            .filter(|(d, _)| *d <= 2 + name.len() / 4)
-            .map(|(_, n)| n)
-    }
-
-    /// Sets the parameter `name` (surrounding blanks ignored) as [`ItdParams::set`] does,
-    /// but an unknown name is [`ParamError::Unknown`], with the closest valid name.
-    pub fn set_named(&mut self, name: &str, value: f64) -> Result<(), ParamError> {
-        let name = name.trim();
-        if !Self::NAMES.contains(&name) {
-            return Err(ParamError::Unknown { name: name.into() });
-        }
-        Ok(self.set(name, value)?)
-    }
-
-    /// CICE's defaults with `(name, value)` overrides applied in order
-    /// ([`ItdParams::set_named`]): Python's `params=`.
-    pub fn from_pairs<N: AsRef<str>>(
-        pairs: impl IntoIterator<Item = (N, f64)>,
-    ) -> Result<ItdParams, ParamError> {
-        let mut p = ItdParams::default();
-        for (name, value) in pairs {
-            p.set_named(name.as_ref(), value)?;
-        }
-        Ok(p)
-    }
-
-    /// CICE's defaults with `NAME=VALUE` overrides applied in order (blanks around the name
-    /// and the value ignored): the command line's `--param`.
-    pub fn from_settings<S: AsRef<str>>(settings: &[S]) -> Result<ItdParams, ParamError> {
-        let mut p = ItdParams::default();
-        for item in settings {
-            let item = item.as_ref();
-            let (name, value) = item
-                .split_once('=')
-                .ok_or_else(|| ParamError::Malformed { item: item.into() })?;
-            // An unknown name is reported before a bad value.
-            if !Self::NAMES.contains(&name.trim()) {
-                return Err(ParamError::Unknown {
-                    name: name.trim().into(),
-                });
-            }
-            let v: f64 = value.trim().parse().map_err(|_| ParamError::NotANumber {
-                item: item.into(),
-                value: value.into(),
-            })?;
-            p.set_named(name, v)?;
-        }
-        Ok(p)
-    }
-
     /// Rothrock (1975) potential-energy coefficient C_p = g·ρ_i·(ρ_w − ρ_i)/(2ρ_w) (kg m⁻² s⁻²,
     /// i.e. N/m³), evaluated in the same order as Icepack's `Cp` so results match to the bit.
     pub fn cp(&self) -> f64 {
@@ -346,53 +269,19 @@ impl ItdParams {
     }
 }
 
-/// An error in a parameter override given by name ([`ItdParams::set_named`],
-/// [`ItdParams::from_pairs`], [`ItdParams::from_settings`]).
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum ParamError {
-    /// A setting without `=`.
-    #[error("{item}: expected NAME=VALUE")]
-    Malformed {
-        /// The setting as given.
-        item: String,
-    },
-    /// A setting whose value is not a number.
-    #[error("{item}: `{value}` is not a number")]
-    NotANumber {
-        /// The setting as given.
-        item: String,
-        /// Its value part.
-        value: String,
-    },
-    /// No parameter has this name; the message names the closest one, if close, and all.
-    #[error(
-        "unknown parameter `{name}`{}; valid names: {}",
-        ItdParams::closest_name(name).map_or(String::new(), |n| format!(" (did you mean `{n}`?)")),
-        ItdParams::NAMES.join(", ")
-    )]
-    Unknown {
-        /// The name as given.
-        name: String,
-    },
-    /// The value is out of range ([`ItdParams::set`]).
-    #[error(transparent)]
-    Invalid(#[from] super::ItdError),
-}
+impl NamedParams for ItdParams {
+    const GROUPS: &'static [ParamGroup] = &[ParamGroup {
+        label: "valid names",
+        fields: ItdParams::FIELDS,
+    }];
 
-/// Levenshtein distance between two short names.
-fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut prev = row[0];
-        row[0] = i + 1;
-        for (j, &cb) in b.iter().enumerate() {
-            let cur = row[j + 1];
-            row[j + 1] = (prev + usize::from(ca != cb)).min(row[j] + 1).min(cur + 1);
-            prev = cur;
-        }
+    fn get(&self, name: &str) -> Option<f64> {
+        ItdParams::get(self, name)
     }
-    row[b.len()]
+
+    fn set(&mut self, name: &str, value: f64) -> Result<(), super::ItdError> {
+        ItdParams::set(self, name, value)
+    }
 }
 
 /// Participation function b(h) (Thorndike et al. 1975; Lipscomb et al. 2007).
@@ -500,6 +389,7 @@ impl StrengthFormula {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::itd::ParamError;
 
     /// The field list, `get` and `set` agree with each other and with the struct's own
     /// fields (read, names and values, from its `Debug` form).

@@ -8,6 +8,7 @@ use clap::{Parser, Subcommand};
 
 mod animate;
 mod campaign;
+mod params;
 mod plot_strength;
 mod progress;
 mod render;

@@ -122,17 +122,12 @@ pub struct Args {
     pub params: Vec<String>,
 }
 
-/// Applies `NAME=VALUE` overrides to CICE's default parameters
-/// ([`ItdParams::from_settings`], which names the closest valid name of a misspelt one).
+/// CICE's default parameters with the `NAME=VALUE` overrides of --param (the library's
+/// parser, which names the closest valid name of a misspelt one).
 pub fn parse_params(list: &[String]) -> Result<ItdParams, BoxError> {
-    use pressridge::itd::ParamError;
-    ItdParams::from_settings(list).map_err(|e| match e {
-        ParamError::Malformed { .. } | ParamError::NotANumber { .. } => {
-            format!("--param {e}").into()
-        }
-        ParamError::Unknown { .. } => format!("--param: {e}").into(),
-        ParamError::Invalid(e) => e.into(),
-    })
+    let mut p = ItdParams::default();
+    crate::params::apply(&mut p, &crate::params::settings(None, list)?)?;
+    Ok(p)
 }
 
 /// Global attributes listing the parameters that differ from CICE's defaults.

@@ -1,7 +1,9 @@
 //! C_f tables in NetCDF: a plain table (1-D `thickness`, `cf`) or the C_f of a ridging table
 //! of `pressridge tabulate` at a friction pair; writing a plain one.
 
+use super::vars::{dims_of, nc_err, read_f64, required};
 use super::*;
+use crate::itd::CfTable;
 
 /// Reads the C_f at a friction pair (μ, μ_w; dimensionless) from `path`: from a ridging
 /// table of `pressridge tabulate` (with friction coordinates `mu` and `mu_w`), the set at
@@ -68,12 +70,7 @@ pub fn read_cf_table(path: &Path) -> Result<CfTable, NetcdfError> {
     let file = netcdf::open(path).map_err(nc_err(path))?;
     let mut cols = Vec::new();
     for name in ["thickness", "cf"] {
-        let v = file
-            .variable(name)
-            .ok_or_else(|| NetcdfError::MissingVariable {
-                path: path.to_path_buf(),
-                var: name.into(),
-            })?;
+        let v = required(path, &file, name)?;
         if v.dimensions().len() != 1 {
             return Err(NetcdfError::Shape {
                 path: path.to_path_buf(),

@@ -2,6 +2,7 @@
 //! input's column dimensions and coordinates kept, land as the fill value, CF-1.8
 //! attributes, the options and the command in the history.
 
+use super::vars::nc_err;
 use super::*;
 
 /// Description of one output field.

@@ -1,0 +1,313 @@
+//! The ridging passes of one column (Icepack `ridge_ice`): closing and opening from the
+//! forcing (`ridge_prep`), repeated passes of participation (`ridge_itd`) and of area,
+//! volume, snow and tracer transfer (`ridge_shift`) until the total area is 1, then the
+//! ocean fluxes, the rates and the clean-up.
+
+// Several parallel per-category arrays are indexed by the category number, as in Icepack.
+#![allow(clippy::needless_range_loop)]
+
+use super::{
+    Closing, ColumnMut, OceanFluxes, RidgeStepOptions, StepDiagnostics, StepForcing, StepWorkspace,
+};
+use crate::itd::ColumnError;
+use crate::itd::cleanup::cleanup_itd;
+use crate::itd::params::Redistribution;
+use crate::itd::redistribution::{RidgeGeometry, category_fractions_all};
+use crate::itd::ridging::close_and_open;
+use crate::itd::tracers::TracerLayout;
+
+/// Sums of one ridging pass and of the whole step (Icepack `ridge_ice` locals).
+#[derive(Default)]
+struct Sums {
+    ardg1: f64,
+    ardg2: f64,
+    virdg: f64,
+    aopen: f64,
+    msnow_mlt: f64,
+    esnow_mlt: f64,
+    mpond: f64,
+    vsno_ocean: f64,
+}
+
+pub(super) fn step(
+    col: &mut ColumnMut<'_>,
+    hin_max: &[f64],
+    forcing: StepForcing,
+    opts: &RidgeStepOptions,
+    layout: &TracerLayout,
+    fluxes: &mut OceanFluxes,
+    ws: &mut StepWorkspace,
+) -> Result<StepDiagnostics, ColumnError> {
+    let p = &opts.params;
+    let puny = p.puny;
+    let dt = forcing.dt;
+    ws.reset_diagnostics();
+    let mut s = Sums::default();
+
+    let mut asum = asum_ridging(col.aicen, *col.aice0);
+    let (mut closing_net, mut opning, top) = match forcing.closing {
+        Closing::Rates { closing, opening } => (closing, opening, hin_max[hin_max.len() - 1]),
+        Closing::Deformation { convergence, shear } => {
+            // ridge_prep
+            let mut closing_net = p.cs * shear + convergence;
+            let divu_adv = (1.0 - asum) / dt;
+            if divu_adv < 0.0 {
+                closing_net = f64::max(closing_net, -divu_adv);
+            }
+            (closing_net, closing_net + divu_adv, p.big)
+        }
+    };
+    let mut d = StepDiagnostics {
+        closing: closing_net,
+        hin_max_top: top,
+        ..Default::default()
+    };
+
+    let mut niter = 0;
+    loop {
+        niter += 1;
+        let aksum = ridge_itd(col, opts, ws);
+        ridge_shift(
+            col,
+            hin_max,
+            top,
+            dt,
+            forcing.tf,
+            opts,
+            layout,
+            aksum,
+            closing_net,
+            &mut opning,
+            &mut s,
+            ws,
+        )?;
+        asum = asum_ridging(col.aicen, *col.aice0);
+        if (asum - 1.0).abs() < puny {
+            break;
+        }
+        if niter >= p.nitermax {
+            return Err(ColumnError::NoConvergence { niter, total: asum });
+        }
+        let divu_adv = (1.0 - asum) / dt;
+        closing_net = f64::max(0.0, -divu_adv);
+        opning = f64::max(0.0, divu_adv);
+    }
+
+    let dti = 1.0 / dt;
+    d.dardg1dt = s.ardg1 * dti;
+    d.dardg2dt = s.ardg2 * dti;
+    d.dvirdgdt = s.virdg * dti;
+    d.opening = s.aopen * dti;
+    d.niter = niter;
+    for n in 0..ws.ncat() {
+        ws.dardg1ndt[n] = ws.core.ardg1n[n] * dti;
+        ws.dardg2ndt[n] = ws.core.ardg2n[n] * dti;
+        ws.dvirdgndt[n] = ws.core.virdgn[n] * dti;
+        ws.araftn[n] = ws.mraft[n] * ws.core.ardg2n[n];
+        ws.vraftn[n] = ws.mraft[n] * ws.core.virdgn[n];
+    }
+    let dti = 1.0 / (f64::from(forcing.ndtd) * dt);
+    fluxes.fresh += s.msnow_mlt * dti;
+    fluxes.fhocn += s.esnow_mlt * dti;
+    fluxes.fpond -= s.mpond;
+    fluxes.dpnd_ridge = s.mpond;
+    d.snow_to_ocean = s.vsno_ocean;
+
+    if opts.cleanup {
+        let (vice, vsno) = cleanup_itd(
+            col,
+            hin_max,
+            dt * f64::from(forcing.ndtd),
+            forcing.tf,
+            opts.rebin,
+            puny,
+            p.rhoi,
+            &opts.step,
+            layout,
+            fluxes,
+            ws,
+        )?;
+        d.ice_to_ocean = vice;
+        d.snow_to_ocean += vsno;
+    }
+    Ok(d)
+}
+
+/// Icepack `asum_ridging`: open water plus the category areas, in that order.
+#[inline]
+pub(crate) fn asum_ridging(aicen: &[f64], aice0: f64) -> f64 {
+    let mut asum = aice0;
+    for &a in aicen {
+        asum += a;
+    }
+    asum
+}
+
+/// Icepack `ridge_itd`: participation, ridge geometry, rafting mask; returns `aksum`.
+fn ridge_itd(col: &ColumnMut<'_>, opts: &RidgeStepOptions, ws: &mut StepWorkspace) -> f64 {
+    let p = &opts.params;
+    let w = &mut ws.core;
+    let aksum = w.prepare_ridging(
+        opts.participation,
+        opts.redistribution,
+        p,
+        *col.aice0,
+        col.aicen,
+        col.vicen,
+    );
+    for n in 0..w.ncat() {
+        if opts.redistribution == Redistribution::Exponential && col.aicen[n] > p.puny {
+            // Rafting mask: 1 where h_min = 2h (the ice rafts), as Icepack's `mraft`.
+            let hi = f64::max(w.hi[n], p.puny);
+            let m = f64::max(0.0, 1.0f64.copysign(hi + p.maxraft - w.hrmin[n]));
+            let x = m * ((2.0 * hi + w.hrexp[n]) / hi - w.krdg[n]);
+            ws.mraft[n] = f64::max(0.0, 1.0f64.copysign(p.puny - x.abs()));
+        }
+        ws.aparticn[n] = w.apartic[n + 1];
+        ws.krdgn[n] = w.krdg[n];
+    }
+    aksum
+}
+
+/// Icepack `ridge_shift`: one ridging pass with area, volume, snow and tracers.
+#[allow(clippy::too_many_arguments)]
+fn ridge_shift(
+    col: &mut ColumnMut<'_>,
+    hin_max: &[f64],
+    top: f64,
+    dt: f64,
+    tf: f64,
+    opts: &RidgeStepOptions,
+    layout: &TracerLayout,
+    aksum: f64,
+    closing_net: f64,
+    opning: &mut f64,
+    s: &mut Sums,
+    ws: &mut StepWorkspace,
+) -> Result<(), ColumnError> {
+    let p = &opts.params;
+    let c = &opts.step;
+    let puny = p.puny;
+    let ncat = ws.ncat();
+    let nt = layout.ntrcr();
+    let nslyr = layout.nslyr as f64;
+    for n in 0..ncat {
+        ws.core.aicen_init[n] = col.aicen[n];
+        ws.core.vicen_init[n] = col.vicen[n];
+        ws.vsnon_init[n] = col.vsnon[n];
+        let trc = &col.trcrn[n * nt..(n + 1) * nt];
+        for it in 0..nt {
+            ws.atrcrn[n * nt + it] =
+                layout.amount(it, trc, col.aicen[n], col.vicen[n], col.vsnon[n]);
+        }
+    }
+    // pressridge: with no area above puny nothing can ridge (Icepack divides by aksum = 0);
+    // the missing area opens.
+    let closing_gross = close_and_open(
+        &ws.core.apartic,
+        aksum,
+        closing_net,
+        col.aicen,
+        col.aice0,
+        puny,
+        dt,
+        opning,
+    )?;
+    s.aopen = *opning * dt;
+
+    let one_minus_f = 1.0 - c.fsnowrdg;
+    for n in 0..ncat {
+        let ap = ws.core.apartic[n + 1];
+        let a_init = ws.core.aicen_init[n];
+        if !(a_init > puny && ap > 0.0 && closing_gross > 0.0) {
+            continue;
+        }
+        let mut ardg1n = ap * closing_gross * dt;
+        if ardg1n > a_init + puny {
+            return Err(ColumnError::StepFailed {
+                routine: "ridge_shift",
+                what: "ridging area exceeds the category's",
+                category: Some(n),
+                value: ardg1n,
+            });
+        }
+        ardg1n = f64::min(a_init, ardg1n);
+        let ardg2n = ardg1n / ws.core.krdg[n];
+        let afrac = ardg1n / a_init;
+        let virdgn = ws.core.vicen_init[n] * afrac;
+        let vsrdgn = ws.vsnon_init[n] * afrac;
+        col.aicen[n] -= ardg1n;
+        col.vicen[n] -= virdgn;
+        col.vsnon[n] -= vsrdgn;
+        s.ardg1 += ardg1n;
+        s.ardg2 += ardg2n;
+        s.virdg += virdgn;
+        ws.core.ardg1n[n] = ardg1n;
+        ws.core.ardg2n[n] = ardg2n;
+        ws.core.virdgn[n] = virdgn;
+
+        let trc = &col.trcrn[n * nt..(n + 1) * nt];
+        s.msnow_mlt += c.rhos * vsrdgn * one_minus_f;
+        s.vsno_ocean += vsrdgn * one_minus_f;
+        if let (Some(ia), Some(ip), Some(ih)) = (layout.nt_alvl, layout.nt_apnd, layout.nt_hpnd) {
+            s.mpond += ardg1n * trc[ip] * trc[ih] * trc[ia];
+        }
+        for k in 0..layout.nslyr {
+            let esrdgn = vsrdgn * trc[layout.nt_qsno + k] / nslyr;
+            s.esnow_mlt += esrdgn * one_minus_f;
+        }
+        for it in 0..nt {
+            ws.atrcrn[n * nt + it] -= layout.amount(it, trc, ardg1n, virdgn, vsrdgn);
+        }
+
+        let g = RidgeGeometry {
+            hi: ws.core.hi[n],
+            hrmin: ws.core.hrmin[n],
+            hrmax: ws.core.hrmax[n],
+            hrexp: ws.core.hrexp[n],
+            krdg: ws.core.krdg[n],
+        };
+        category_fractions_all(
+            opts.redistribution,
+            p,
+            &g,
+            hin_max,
+            top,
+            &mut ws.farea,
+            &mut ws.fvol,
+        );
+        let exponential = opts.redistribution == Redistribution::Exponential;
+        for nr in 0..ncat {
+            let (farea, fvol) = (ws.farea[nr], ws.fvol[nr]);
+            if n == 0 && exponential {
+                ws.aredistn[nr] = farea * ardg2n;
+                ws.vredistn[nr] = fvol * virdgn;
+            }
+            if farea == 0.0 && fvol == 0.0 {
+                continue; // adds nothing (Icepack adds zeros)
+            }
+            col.aicen[nr] += farea * ardg2n;
+            col.vicen[nr] += fvol * virdgn;
+            col.vsnon[nr] += fvol * vsrdgn * c.fsnowrdg;
+            let f = [ardg2n * farea, virdgn * fvol, vsrdgn * fvol * c.fsnowrdg];
+            let dst = &mut ws.atrcrn[nr * nt..(nr + 1) * nt];
+            for (k, list) in layout.ridge_lists.iter().enumerate() {
+                for &it in list {
+                    dst[it] += f[k] * trc[it];
+                }
+            }
+        }
+    }
+    for n in 0..ncat {
+        layout.compute(
+            &ws.atrcrn[n * nt..(n + 1) * nt],
+            col.aicen[n],
+            col.vicen[n],
+            col.vsnon[n],
+            puny,
+            tf,
+            &mut col.trcrn[n * nt..(n + 1) * nt],
+        );
+    }
+    Ok(())
+}
