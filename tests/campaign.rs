@@ -200,7 +200,7 @@ fn tiny_campaign_is_resumable_and_complete() {
         assert_eq!(p.seeds, vec![1, 2]);
         let w = p.get("work").unwrap();
         assert_eq!(w.n, 2);
-        let mean = 0.5 * (rs[0].summary.work + rs[1].summary.work);
+        let mean = 0.5 * (rs[0].summary.energy().work + rs[1].summary.energy().work);
         assert!((w.mean - mean).abs() <= 1e-12 * mean.abs());
         let f = p.get("friction_fraction").unwrap();
         assert!(f.mean > 0.0 && f.mean < 1.0, "{f:?}");
@@ -213,15 +213,18 @@ fn tiny_campaign_is_resumable_and_complete() {
         use pressridge::table::tabulate::tabulate;
         assert!(records.iter().all(|r| dissipation_violation(r).is_none()));
         let mut bad = records.clone();
-        let w = bad[0].summary.work;
-        bad[0].summary.viscous_dissipation = -0.01 * w;
+        let mut e = bad[0].summary.energy();
+        let w = e.work;
+        e.viscous_dissipation = -0.01 * w;
+        bad[0].summary.set_energy(&e);
         let why = dissipation_violation(&bad[0]).expect("negative Φ_i must be caught");
         assert!(why.contains("viscous_dissipation"), "{why}");
         let t = tabulate(&bad, 11).unwrap();
         assert_eq!(t.excluded.len(), 1);
         assert_eq!(t.excluded[0].0, records[0].id);
         assert_eq!(t.runs[0][0][0], 1, "one seed left at the first thickness");
-        bad[0].summary.viscous_dissipation = -1e-9 * w;
+        e.viscous_dissipation = -1e-9 * w;
+        bad[0].summary.set_energy(&e);
         assert!(
             dissipation_violation(&bad[0]).is_none(),
             "round-off is tolerated"

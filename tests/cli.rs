@@ -124,7 +124,7 @@ fn shipped_scene_files_load_and_compose() {
     // A wall scene builds and runs.
     let w = wall.with_overrides(&["duration=2"]).unwrap();
     let out = pressridge::simulation::run(&w, &mut |_| true).unwrap();
-    assert!(out.summary.work > 0.0);
+    assert!(out.summary.energy().work > 0.0);
 }
 
 #[test]
@@ -152,7 +152,7 @@ fn summaries_with_the_old_kinetic_energy_name_still_load() {
     .unwrap();
     assert!(old.contains("\"kinetic_energy\""));
     let s: pressridge::simulation::Summary = serde_json::from_str(&old).unwrap();
-    assert_eq!(s.kinetic_energy_change, -535.6536815566316);
+    assert_eq!(s.energy().kinetic_energy, -535.6536815566316);
     let back = serde_json::to_string(&s).unwrap();
     assert!(back.contains("\"kinetic_energy_change\""), "{back}");
     assert!(!back.contains("\"kinetic_energy\""), "{back}");

@@ -104,25 +104,26 @@ pub const QUANTITIES: [(&str, &str, &str); 25] = [
 /// The value of quantity `key` (see [`QUANTITIES`]) for one run, `None` where undefined.
 pub fn quantity(r: &RunRecord, key: &str) -> Option<f64> {
     let s = &r.summary;
+    let e = s.energy();
     let m = &r.metrics;
-    let frac = |x: f64| (s.work != 0.0).then(|| x / s.work);
+    let frac = |x: f64| (e.work != 0.0).then(|| x / e.work);
     match key {
-        "work" => Some(s.work),
-        "potential_energy" => Some(s.potential_energy),
-        "friction_dissipation" => Some(s.friction_dissipation),
-        "viscous_dissipation" => Some(s.viscous_dissipation),
-        "drag_dissipation" => Some(s.drag_dissipation),
-        "other_dissipation" => Some(s.other_dissipation),
-        "kinetic_energy_change" => Some(s.kinetic_energy_change),
-        "residual_fraction" => frac(s.residual.abs()),
-        "pe_fraction" => frac(s.potential_energy),
-        "friction_fraction" => frac(s.friction_dissipation),
-        "viscous_fraction" => frac(s.viscous_dissipation),
-        "drag_fraction" => frac(s.drag_dissipation),
-        "ratio_work_to_pe" => (s.potential_energy > 0.0).then_some(s.ratio_work_to_pe),
+        "work" => Some(e.work),
+        "potential_energy" => Some(e.potential_energy),
+        "friction_dissipation" => Some(e.friction_dissipation),
+        "viscous_dissipation" => Some(e.viscous_dissipation),
+        "drag_dissipation" => Some(e.drag_dissipation),
+        "other_dissipation" => Some(e.other_dissipation),
+        "kinetic_energy_change" => Some(e.kinetic_energy),
+        "residual_fraction" => frac(e.residual.abs()),
+        "pe_fraction" => frac(e.potential_energy),
+        "friction_fraction" => frac(e.friction_dissipation),
+        "viscous_fraction" => frac(e.viscous_dissipation),
+        "drag_fraction" => frac(e.drag_dissipation),
+        "ratio_work_to_pe" => (e.potential_energy > 0.0).then_some(s.ratio_work_to_pe),
         "mean_force" => {
             let u = r.scene.sheet.as_ref().map_or(0.0, |sh| sh.speed);
-            (u * s.time > 0.0).then(|| s.work / (u * s.time))
+            (u * s.time > 0.0).then(|| e.work / (u * s.time))
         }
         "blocks_broken" => Some(s.blocks_broken as f64),
         "handover_contacts" => Some(s.handover_contacts as f64),
@@ -149,13 +150,13 @@ pub const DISSIPATION_TOLERANCE: f64 = 1e-6;
 /// is negative (below −[`DISSIPATION_TOLERANCE`]·|W|, at the end or at any sample) books a
 /// numerical energy source: the run went unstable, and its energetics are not ridging.
 pub fn dissipation_violation(r: &RunRecord) -> Option<String> {
-    let s = &r.summary;
-    let tol = DISSIPATION_TOLERANCE * s.work.abs().max(1.0);
+    let e = r.summary.energy();
+    let tol = DISSIPATION_TOLERANCE * e.work.abs().max(1.0);
     let bad = |v: f64| v < -tol || !v.is_finite();
-    if let Some((name, v)) = s.energy().dissipations().find(|&(_, v)| bad(v)) {
+    if let Some((name, v)) = e.dissipations().find(|&(_, v)| bad(v)) {
         return Some(format!(
             "{name} = {v:.4e} J/m at the end (work {:.4e} J/m)",
-            s.work
+            e.work
         ));
     }
     r.samples.iter().find_map(|x| {
