@@ -312,77 +312,32 @@ fn relative_residual(e: &EnergyBudget) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::dem::ledger::term_index;
+    use crate::dem::ledger::terms::check;
 
-    /// A `summary.json` whose ledger term k holds k + 1, by the table's names.
-    fn numbered_summary() -> serde_json::Value {
-        let mut json = serde_json::json!({
+    /// `summary.json` keeps every ledger term of the table under its name, in the table's
+    /// order, with `work_eq9` right after the inputs, between the run's head and tail.
+    #[test]
+    fn the_summary_keeps_the_ledger_by_the_table() {
+        let json = serde_json::json!({
             "scene": "x", "seed": 1, "version": "v", "time": 1.0, "steps": 1, "dt": 1.0,
             "wall_seconds": 0.0, "bodies": 0, "work_eq9": 0.5, "max_relative_residual": 0.0,
             "ratio_work_to_pe": 0.0, "ridged_volume": 0.0, "blocks_broken": 0,
             "rubble_block_lengths": []
         });
-        for (k, t) in LEDGER_TERMS.iter().enumerate() {
-            json[t.name] = (k as f64 + 1.0).into();
-        }
-        json
-    }
-
-    /// The run summary keeps every ledger term under the table's name: a `summary.json`
-    /// whose term k holds k + 1 gives back the budget 1, 2, … in the table's order.
-    #[test]
-    fn the_summary_keeps_every_ledger_term_by_its_table_name() {
-        let s: Summary = serde_json::from_value(numbered_summary()).unwrap();
-        let want: Vec<f64> = (1..=LEDGER_TERMS.len()).map(|k| k as f64).collect();
-        assert_eq!(s.energy().values().to_vec(), want);
-        assert_eq!(s.energy().time, 1.0);
-        assert_eq!(s.work_eq9, 0.5);
-    }
-
-    /// `summary.json` writes every ledger term once, under its name, in the table's order,
-    /// `work_eq9` right after the inputs; and reads back what it wrote.
-    #[test]
-    fn the_summary_writes_the_ledger_in_the_table_order() {
-        let s: Summary = serde_json::from_value(numbered_summary()).unwrap();
-        let text = serde_json::to_string_pretty(&s).unwrap();
-        let at = |key: &str| {
-            let pat = format!("\"{key}\":");
-            assert_eq!(text.matches(&pat).count(), 1, "{key} once in {text}");
-            text.find(&pat).unwrap()
-        };
-        let mut keys: Vec<&str> = LEDGER_TERMS.iter().map(|t| t.name).collect();
-        let inputs = LEDGER_TERMS
+        let text = check::file(json, |t| t.summary, Summary::energy);
+        assert!(LEDGER_TERMS.iter().all(|t| t.summary != Keep::No));
+        let at = |k: &str| check::key_at(&text, k);
+        let inputs: Vec<&LedgerTerm> = LEDGER_TERMS
             .iter()
             .filter(|t| t.sign == Sign::Input)
-            .count();
-        keys.insert(inputs, "work_eq9");
-        let places: Vec<usize> = keys.iter().map(|k| at(k)).collect();
-        assert!(places.windows(2).all(|w| w[0] < w[1]), "{keys:?} in {text}");
-        assert!(at("bodies") < places[0] && places[keys.len() - 1] < at("max_relative_residual"));
-        let back: Summary = serde_json::from_str(&text).unwrap();
-        assert_eq!(back, s);
-    }
-
-    /// A term the summary always kept is required; a term added later reads as 0 from older
-    /// files; the old name of a term still reads.
-    #[test]
-    fn the_summary_reads_older_files_by_the_table() {
-        for t in &LEDGER_TERMS {
-            let mut json = numbered_summary();
-            json.as_object_mut().unwrap().remove(t.name);
-            let k = term_index(t.name);
-            match (serde_json::from_value::<Summary>(json), t.summary) {
-                (Err(e), Keep::Required) => assert!(e.to_string().contains(t.name), "{e}"),
-                (Ok(s), Keep::Added) => assert_eq!(s.energy().values()[k], 0.0),
-                (r, keep) => panic!("{}: {keep:?} but {r:?}", t.name),
-            }
-            if let Some(old) = t.alias {
-                let mut json = numbered_summary();
-                let v = json.as_object_mut().unwrap().remove(t.name).unwrap();
-                json[old] = v;
-                let s: Summary = serde_json::from_value(json).unwrap();
-                assert_eq!(s.energy().values()[k], k as f64 + 1.0);
-            }
-        }
+            .collect();
+        let (first, last) = (LEDGER_TERMS[0].name, LEDGER_TERMS[N_TERMS - 1].name);
+        assert!(inputs.iter().all(|t| at(t.name) < at("work_eq9")));
+        assert!(
+            LEDGER_TERMS[inputs.len()..]
+                .iter()
+                .all(|t| at("work_eq9") < at(t.name))
+        );
+        assert!(at("bodies") < at(first) && at(last) < at("max_relative_residual"));
     }
 }

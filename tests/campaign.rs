@@ -2,6 +2,7 @@
 //! its first finished run and resumed without redoing anything.
 
 use pressridge::campaign::{CampaignSpec, read_campaign, read_records};
+use pressridge::dem::EnergyBudget;
 use std::time::{Duration, Instant};
 
 const SPEC: &str = r#"
@@ -90,7 +91,7 @@ fn tiny_campaign_is_resumable_and_complete() {
         let h = r.scene.sheet.as_ref().unwrap().thickness;
         assert!((last.volume - 0.25 * h * last.time).abs() < 1e-12);
         assert!((last.time - 3.0).abs() <= r.summary.dt);
-        assert!(last.work > 0.0);
+        assert!(last.energy().work > 0.0);
         assert_eq!(r.profile.sail.len(), 32);
         assert!(out.join("runs").join(&r.id).join("state.json").is_file());
         // The rafting diagnostic: the largest overrun over the run bounds the final one, and
@@ -229,7 +230,11 @@ fn tiny_campaign_is_resumable_and_complete() {
             dissipation_violation(&bad[0]).is_none(),
             "round-off is tolerated"
         );
-        bad[0].samples[2].friction_dissipation = -0.5 * w;
+        let x = &mut bad[0].samples[2];
+        x.set_energy(&EnergyBudget {
+            friction_dissipation: -0.5 * w,
+            ..x.energy()
+        });
         assert!(dissipation_violation(&bad[0]).unwrap().contains("at t ="));
         assert!(tabulate(&records, 11).unwrap().excluded.is_empty());
     }
@@ -328,7 +333,11 @@ fn tiny_campaign_is_resumable_and_complete() {
         let w = fit_warnings(&tabulate(&short, 11).unwrap());
         assert!(w[0].contains("fit table is empty"), "{w:?}");
         let mut nan = records[..1].to_vec();
-        nan[0].samples[2].work = f64::NAN;
+        let x = &mut nan[0].samples[2];
+        x.set_energy(&EnergyBudget {
+            work: f64::NAN,
+            ..x.energy()
+        });
         assert!(!fit_warnings(&tabulate(&nan, 11).unwrap()).is_empty());
         let one = pressridge::table::ensemble::summarise(&records[..1]);
         let t1 = tabulate(&records[..1], 11).unwrap();

@@ -20,7 +20,7 @@ use super::fracture::JointWork;
 use super::water::WaterWork;
 use serde::{Deserialize, Serialize};
 
-mod terms;
+pub(crate) mod terms;
 pub use terms::{Keep, LEDGER_TERMS, LedgerTerm, N_TERMS, Sign, TermSet, Terms, term, term_index};
 
 /// Running integrals of the step, from which an [`EnergyBudget`] is derived.

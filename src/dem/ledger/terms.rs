@@ -388,3 +388,76 @@ impl<'de, S: TermSet> Visitor<'de> for TermsVisitor<S> {
         })
     }
 }
+
+/// Checks of a file that keeps ledger terms through [`Terms`], for the tests of each file.
+#[cfg(test)]
+pub(crate) mod check {
+    use super::*;
+    use serde::de::DeserializeOwned;
+
+    /// The position of `"key":` in `text`, which must hold it once.
+    pub fn key_at(text: &str, key: &str) -> usize {
+        let pat = format!("\"{key}\":");
+        assert_eq!(text.matches(&pat).count(), 1, "{key} once in {text}");
+        text.find(&pat).unwrap()
+    }
+
+    /// Checks a file type `T` against the column `keep` of the table, from `json`, a file
+    /// without ledger terms: with term k set to k + 1, it reads every kept term by its name
+    /// (and 0 for the others), writes each once under its name in the table's order and
+    /// reads back what it wrote; without a kept term it fails if the term is required and
+    /// reads 0 if it was added later; a term's old name still reads. Returns the file as
+    /// written, for the file's own checks.
+    pub fn file<T>(
+        json: serde_json::Value,
+        keep: fn(&LedgerTerm) -> Keep,
+        energy: fn(&T) -> EnergyBudget,
+    ) -> String
+    where
+        T: Serialize + DeserializeOwned + PartialEq + fmt::Debug,
+    {
+        let kept: Vec<(usize, &LedgerTerm)> = LEDGER_TERMS
+            .iter()
+            .enumerate()
+            .filter(|(_, t)| keep(t) != Keep::No)
+            .collect();
+        let mut full = json.clone();
+        for &(k, t) in &kept {
+            full[t.name] = (k as f64 + 1.0).into();
+        }
+        let x: T = serde_json::from_value(full.clone()).unwrap();
+        for (k, (t, v)) in LEDGER_TERMS.iter().zip(energy(&x).values()).enumerate() {
+            let want = if keep(t) == Keep::No {
+                0.0
+            } else {
+                k as f64 + 1.0
+            };
+            assert_eq!(v, want, "{}", t.name);
+        }
+        let text = serde_json::to_string_pretty(&x).unwrap();
+        let places: Vec<usize> = kept.iter().map(|(_, t)| key_at(&text, t.name)).collect();
+        assert!(
+            places.windows(2).all(|w| w[0] < w[1]),
+            "table order: {text}"
+        );
+        for t in LEDGER_TERMS.iter().filter(|t| keep(t) == Keep::No) {
+            assert!(!text.contains(&format!("\"{}\":", t.name)), "{}", t.name);
+        }
+        assert_eq!(serde_json::from_str::<T>(&text).unwrap(), x);
+        for &(k, t) in &kept {
+            let mut less = full.clone();
+            let v = less.as_object_mut().unwrap().remove(t.name).unwrap();
+            match (serde_json::from_value::<T>(less.clone()), keep(t)) {
+                (Err(e), Keep::Required) => assert!(e.to_string().contains(t.name), "{e}"),
+                (Ok(x), Keep::Added) => assert_eq!(energy(&x).values()[k], 0.0),
+                (r, keep) => panic!("{}: {keep:?} but {r:?}", t.name),
+            }
+            if let Some(old) = t.alias {
+                less[old] = v;
+                let x: T = serde_json::from_value(less).unwrap();
+                assert_eq!(energy(&x).values()[k], k as f64 + 1.0, "{old}");
+            }
+        }
+        text
+    }
+}
