@@ -309,6 +309,17 @@ fn relative_residual(e: &EnergyBudget) -> f64 {
     }
 }
 
+/// A `summary.json` of a run at t = 1 s without its ledger terms, for tests.
+#[cfg(test)]
+pub(crate) fn summary_without_ledger() -> serde_json::Value {
+    serde_json::json!({
+        "scene": "x", "seed": 1, "version": "v", "time": 1.0, "steps": 1, "dt": 1.0,
+        "wall_seconds": 0.0, "bodies": 0, "work_eq9": 0.5, "max_relative_residual": 0.0,
+        "ratio_work_to_pe": 0.0, "ridged_volume": 0.0, "blocks_broken": 0,
+        "rubble_block_lengths": []
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -318,13 +329,7 @@ mod tests {
     /// order, with `work_eq9` right after the inputs, between the run's head and tail.
     #[test]
     fn the_summary_keeps_the_ledger_by_the_table() {
-        let json = serde_json::json!({
-            "scene": "x", "seed": 1, "version": "v", "time": 1.0, "steps": 1, "dt": 1.0,
-            "wall_seconds": 0.0, "bodies": 0, "work_eq9": 0.5, "max_relative_residual": 0.0,
-            "ratio_work_to_pe": 0.0, "ridged_volume": 0.0, "blocks_broken": 0,
-            "rubble_block_lengths": []
-        });
-        let text = check::file(json, |t| t.summary, Summary::energy);
+        let text = check::file(summary_without_ledger(), |t| t.summary, Summary::energy);
         assert!(LEDGER_TERMS.iter().all(|t| t.summary != Keep::No));
         let at = |k: &str| check::key_at(&text, k);
         let inputs: Vec<&LedgerTerm> = LEDGER_TERMS

@@ -6,6 +6,7 @@
 //! a run (a flank slope with fewer than two strips in the 20–80 % band) is left out of that
 //! metric's statistics only, and its count says how many runs were behind it.
 
+use crate::dem::ledger::{LEDGER_TERMS, N_TERMS};
 use crate::record::RunRecord;
 
 /// Mean, sample standard deviation and count of one quantity over runs.
@@ -40,31 +41,16 @@ impl Stat {
     }
 }
 
-/// The quantities summarised, in report order: (key, unit, description).
-pub const QUANTITIES: [(&str, &str, &str); 25] = [
-    ("work", "J/m", "ridging work W, eq (9)"),
-    (
-        "potential_energy",
-        "J/m",
-        "potential energy change ΔPE, eq (10)",
-    ),
-    (
-        "friction_dissipation",
-        "J/m",
-        "frictional dissipation Φ_f, eq (11)",
-    ),
-    (
-        "viscous_dissipation",
-        "J/m",
-        "viscous contact dissipation Φ_i, eq (12)",
-    ),
-    ("drag_dissipation", "J/m", "water drag dissipation"),
-    (
-        "other_dissipation",
-        "J/m",
-        "joints, fracture, boundary forces",
-    ),
-    ("kinetic_energy_change", "J/m", "kinetic energy change"),
+/// The quantities summarised, (key, unit, description): every term of the energy ledger at
+/// the end of the run, from its table ([`LEDGER_TERMS`], in its order), then the
+/// [`OTHER_QUANTITIES`].
+pub const QUANTITIES: [(&str, &str, &str); N_QUANTITIES] = quantities();
+
+/// Number of [`QUANTITIES`].
+pub const N_QUANTITIES: usize = N_TERMS + OTHER_QUANTITIES.len();
+
+/// The quantities summarised besides the ledger terms: (key, unit, description).
+pub const OTHER_QUANTITIES: [(&str, &str, &str); 18] = [
     ("residual_fraction", "1", "|W − sinks| / W at the end"),
     ("pe_fraction", "1", "ΔPE / W"),
     ("friction_fraction", "1", "Φ_f / W"),
@@ -101,20 +87,32 @@ pub const QUANTITIES: [(&str, &str, &str); 25] = [
     ),
 ];
 
+/// [`QUANTITIES`]: the ledger's table, then the others.
+const fn quantities() -> [(&'static str, &'static str, &'static str); N_QUANTITIES] {
+    let mut out = [("", "", ""); N_QUANTITIES];
+    let mut k = 0;
+    while k < N_TERMS {
+        let t = &LEDGER_TERMS[k];
+        out[k] = (t.name, t.unit, t.description);
+        k += 1;
+    }
+    while k < out.len() {
+        out[k] = OTHER_QUANTITIES[k - N_TERMS];
+        k += 1;
+    }
+    out
+}
+
 /// The value of quantity `key` (see [`QUANTITIES`]) for one run, `None` where undefined.
 pub fn quantity(r: &RunRecord, key: &str) -> Option<f64> {
     let s = &r.summary;
     let e = s.energy();
     let m = &r.metrics;
+    if let Some(k) = LEDGER_TERMS.iter().position(|t| t.name == key) {
+        return Some(e.values()[k]);
+    }
     let frac = |x: f64| (e.work != 0.0).then(|| x / e.work);
     match key {
-        "work" => Some(e.work),
-        "potential_energy" => Some(e.potential_energy),
-        "friction_dissipation" => Some(e.friction_dissipation),
-        "viscous_dissipation" => Some(e.viscous_dissipation),
-        "drag_dissipation" => Some(e.drag_dissipation),
-        "other_dissipation" => Some(e.other_dissipation),
-        "kinetic_energy_change" => Some(e.kinetic_energy),
         "residual_fraction" => frac(e.residual.abs()),
         "pe_fraction" => frac(e.potential_energy),
         "friction_fraction" => frac(e.friction_dissipation),
@@ -225,6 +223,35 @@ pub fn summarise(records: &[RunRecord]) -> Vec<PointStats> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The ensemble summarises every ledger term under the table's name, unit and
+    /// description, with the run summary's value; no key is there twice.
+    #[test]
+    fn the_ledger_quantities_come_from_the_table() {
+        let mut json = crate::simulation::summary_without_ledger();
+        for (k, t) in LEDGER_TERMS.iter().enumerate() {
+            json[t.name] = (k as f64 + 1.0).into();
+        }
+        let r = RunRecord {
+            id: "x".into(),
+            settings: vec![],
+            seed: 1,
+            scene: crate::scene::Scene::default(),
+            summary: serde_json::from_value(json).unwrap(),
+            samples: vec![],
+            profile: Default::default(),
+            metrics: Default::default(),
+            digest: None,
+        };
+        for (k, t) in LEDGER_TERMS.iter().enumerate() {
+            assert_eq!(QUANTITIES[k], (t.name, t.unit, t.description));
+            assert_eq!(quantity(&r, t.name), Some(k as f64 + 1.0));
+        }
+        let mut keys: Vec<&str> = QUANTITIES.iter().map(|q| q.0).collect();
+        keys.sort_unstable();
+        keys.dedup();
+        assert_eq!(keys.len(), QUANTITIES.len());
+    }
 
     #[test]
     fn stat_is_the_sample_mean_and_deviation() {
