@@ -29,15 +29,14 @@ fn simulate_then_render() {
     }
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    // Every ledger term of the table is a key of the summary and, with its unit, a column
+    // of the series between the time and the two forces.
+    let terms = &pressridge::dem::ledger::LEDGER_TERMS;
+    for t in terms {
+        assert!(summary[t.name].is_number(), "summary lacks {}", t.name);
+    }
     for key in [
-        "work",
-        "potential_energy",
-        "friction_dissipation",
-        "viscous_dissipation",
-        "kinetic_energy_change",
-        "drag_dissipation",
-        "other_dissipation",
-        "residual",
+        "work_eq9",
         "ratio_work_to_pe",
         "ridged_volume",
         "steps",
@@ -53,8 +52,11 @@ fn simulate_then_render() {
     assert!((v - 0.25 * 0.30 * 0.5).abs() < 1e-3, "ridged volume {v}");
     let csv = std::fs::read_to_string(dir.join("series.csv")).unwrap();
     let header = csv.lines().next().unwrap();
-    assert!(header.starts_with("time [s],work [J/m]"));
-    assert!(header.contains("ridging_force [N/m]"));
+    let columns: Vec<String> = std::iter::once("time [s]".to_string())
+        .chain(terms.iter().map(|t| format!("{} [{}]", t.name, t.unit)))
+        .chain(["ridging_force [N/m]".into(), "mean_force [N/m]".into()])
+        .collect();
+    assert_eq!(header, columns.join(","));
     // 0.5 s at 0.2 s intervals: t = 0, 0.2, 0.4 and the end.
     assert_eq!(csv.lines().count(), 1 + 4);
     let png = dir.join("again.png");

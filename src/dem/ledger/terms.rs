@@ -461,3 +461,51 @@ pub(crate) mod check {
         text
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The table of terms in docs/model.md ("Energy ledger") lists the terms of the table,
+    /// in its order.
+    #[test]
+    fn the_model_documents_every_term_in_order() {
+        let doc =
+            std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/model.md")).unwrap();
+        let section = doc
+            .split("\n## Energy ledger")
+            .nth(1)
+            .expect("the ledger section");
+        let section = section.split("\n## ").next().unwrap();
+        let names: Vec<&str> = section
+            .lines()
+            .filter_map(|l| l.strip_prefix("| `"))
+            .map(|l| l.split('`').next().unwrap())
+            .collect();
+        let want: Vec<&str> = LEDGER_TERMS.iter().map(|t| t.name).collect();
+        assert_eq!(names, want);
+    }
+
+    /// Every dissipation is kept by the samples, so the tables' gate sees it at every sample;
+    /// the table's names and old names are unique, and every row is complete.
+    #[test]
+    fn the_table_is_complete() {
+        for t in &LEDGER_TERMS {
+            assert!(!t.is_dissipation() || t.sample != Keep::No, "{}", t.name);
+            assert!(
+                !t.label.is_empty() && !t.description.is_empty(),
+                "{}",
+                t.name
+            );
+            assert_eq!(term(t.name), *t);
+        }
+        let mut names: Vec<&str> = LEDGER_TERMS
+            .iter()
+            .flat_map(|t| std::iter::once(t.name).chain(t.alias))
+            .collect();
+        let n = names.len();
+        names.sort_unstable();
+        names.dedup();
+        assert_eq!(names.len(), n);
+    }
+}
