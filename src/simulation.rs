@@ -8,7 +8,8 @@ use crate::scene::{Scene, SceneError};
 use serde::{Deserialize, Serialize};
 
 /// The headline numbers of a run. Energies are in J per metre of ridge, changes since the
-/// start of the run.
+/// start of the run; the ledger's terms, kept by its table, are read through
+/// [`Summary::energy`].
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Summary {
     /// Scene name.
