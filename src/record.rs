@@ -5,6 +5,7 @@
 //! verified against its files stays in [`crate::campaign`].
 
 use crate::dem::EnergyBudget;
+use crate::dem::ledger::{Keep, LedgerTerm, TermSet, Terms};
 use crate::observe::{Profile, RidgeMetrics};
 use crate::scene::Scene;
 use crate::simulation::{self, Summary};
@@ -17,64 +18,44 @@ pub struct RunSample {
     pub time: f64,
     /// Ridged-ice volume V = U·h·t (m³/m).
     pub volume: f64,
-    /// Work W, eq (9) (J/m).
-    pub work: f64,
-    /// ΔPE, eq (10) (J/m).
-    pub potential_energy: f64,
-    /// Frictional dissipation Φ_f, eq (11) (J/m).
-    pub friction_dissipation: f64,
-    /// Viscous contact dissipation Φ_i, eq (12) (J/m).
-    pub viscous_dissipation: f64,
-    /// Drag dissipation (J/m).
-    #[serde(default)]
-    pub drag_dissipation: f64,
-    /// Joint viscous dissipation (J/m).
-    #[serde(default)]
-    pub joint_dissipation: f64,
-    /// Boundary dashpot dissipation (J/m).
-    #[serde(default)]
-    pub boundary_dissipation: f64,
-    /// Fracture dissipation (J/m).
-    #[serde(default)]
-    pub fracture_dissipation: f64,
+    /// The ledger terms a sample keeps ([`LedgerTerm::sample`]: work and ΔPE, which the
+    /// tables fit, and every dissipation, which their gate checks), each under its name
+    /// (J/m).
+    #[serde(flatten)]
+    pub ledger: Terms<Sampled>,
     /// Mean ridging force over the interval ending here, Δwork/(U·Δt) (N/m).
     pub mean_force: f64,
+}
+
+/// The terms of [`RunSample::ledger`]: the column [`LedgerTerm::sample`] of the table.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Sampled;
+
+impl TermSet for Sampled {
+    fn keep(t: &LedgerTerm) -> Keep {
+        t.sample
+    }
 }
 
 impl RunSample {
     /// The campaign's record of sample `x` of a run, with ridged volume `volume` (m³/m).
     pub fn of(x: &simulation::Sample, volume: f64) -> RunSample {
-        let e = &x.energy;
         RunSample {
-            time: e.time,
+            time: x.energy.time,
             volume,
-            work: e.work,
-            potential_energy: e.potential_energy,
-            friction_dissipation: e.friction_dissipation,
-            viscous_dissipation: e.viscous_dissipation,
-            drag_dissipation: e.drag_dissipation,
-            joint_dissipation: e.joint_dissipation,
-            boundary_dissipation: e.boundary_dissipation,
-            fracture_dissipation: e.fracture_dissipation,
+            ledger: Terms::of(&x.energy),
             mean_force: x.mean_force,
         }
     }
 
-    /// The sample as an energy budget (J/m): the terms a sample records (work, ΔPE and
-    /// every dissipation), the others zero.
+    /// The sample as an energy budget (J/m): the terms a sample keeps, the others zero.
     pub fn energy(&self) -> EnergyBudget {
-        EnergyBudget {
-            time: self.time,
-            work: self.work,
-            potential_energy: self.potential_energy,
-            friction_dissipation: self.friction_dissipation,
-            viscous_dissipation: self.viscous_dissipation,
-            drag_dissipation: self.drag_dissipation,
-            joint_dissipation: self.joint_dissipation,
-            boundary_dissipation: self.boundary_dissipation,
-            fracture_dissipation: self.fracture_dissipation,
-            ..EnergyBudget::default()
-        }
+        self.ledger.energy(self.time)
+    }
+
+    /// Replaces the kept ledger terms by those of `e` (J/m; its time is not used).
+    pub fn set_energy(&mut self, e: &EnergyBudget) {
+        self.ledger = Terms::of(e);
     }
 }
 
@@ -119,6 +100,20 @@ pub struct RunDigest {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::dem::ledger::LEDGER_TERMS;
+    use crate::dem::ledger::terms::check;
+
+    /// A campaign's sample keeps the terms of the table's `sample` column under their names,
+    /// in the table's order, between the volume and the mean force.
+    #[test]
+    fn a_sample_keeps_its_ledger_terms_by_the_table() {
+        let json = serde_json::json!({"time": 1.0, "volume": 2.0, "mean_force": 3.0});
+        let text = check::file(json, |t| t.sample, RunSample::energy);
+        let at = |k: &str| check::key_at(&text, k);
+        for t in LEDGER_TERMS.iter().filter(|t| t.sample != Keep::No) {
+            assert!(at("volume") < at(t.name) && at(t.name) < at("mean_force"));
+        }
+    }
 
     /// A sample records every dissipation of the ledger ([`crate::dem::ledger::LEDGER_TERMS`]),
     /// so the dissipation gate of the tables sees them all.

@@ -2,13 +2,14 @@
 //! ridging force at the scene's interval, and summarise. No file formats here (see
 //! [`crate::io`]).
 
-use crate::dem::ledger::LEDGER_TERMS;
+use crate::dem::ledger::{Keep, LEDGER_TERMS, LedgerTerm, N_TERMS, Sign, TermSet, Terms};
 use crate::dem::{EnergyBudget, Role, Snapshot, World};
 use crate::scene::{Scene, SceneError};
 use serde::{Deserialize, Serialize};
 
 /// The headline numbers of a run. Energies are in J per metre of ridge, changes since the
-/// start of the run.
+/// start of the run; the ledger's terms, kept by its table, are read through
+/// [`Summary::energy`].
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Summary {
     /// Scene name.
@@ -27,48 +28,17 @@ pub struct Summary {
     pub wall_seconds: f64,
     /// Number of bodies at the end.
     pub bodies: usize,
-    /// Work done on the system by the push (J/m): the driver that holds the sheet's end
-    /// block at U, the frame of eq (7) moving at U (`frame_work`) and external loads.
-    pub work: f64,
-    /// The part of `work` done by the frame of eqs (7)–(8) moving at U (J/m).
-    #[serde(default)]
-    pub frame_work: f64,
+    /// The ledger's inputs at the end of the run (the [`Sign::Input`] terms of
+    /// [`LEDGER_TERMS`], J/m), each under its name.
+    #[serde(flatten)]
+    pub inputs: Terms<SummaryInputs>,
     /// Work by eq (9) as the paper writes it: U·Δt·Σ F_x of the contact forces that other
     /// bodies exert on the sheet (J/m). It leaves out the sheet's own inertia, buoyancy and
     /// boundary forces, so it differs from `work` by those.
     pub work_eq9: f64,
-    /// Change of potential energy, eq (10) (J/m).
-    pub potential_energy: f64,
-    /// Change of kinetic energy since the start (J/m). Named `kinetic_energy` before;
-    /// files with that name still load.
-    #[serde(alias = "kinetic_energy")]
-    pub kinetic_energy_change: f64,
-    /// Frictional dissipation Φ_f, eq (11) (J/m).
-    pub friction_dissipation: f64,
-    /// Viscous contact dissipation Φ_i, eq (12) (J/m).
-    pub viscous_dissipation: f64,
-    /// Drag dissipation (J/m).
-    pub drag_dissipation: f64,
-    /// Joint viscous dissipation (J/m).
-    pub joint_dissipation: f64,
-    /// Dissipation by the dashpots of eqs (7)–(8) relative to their frame and the floe
-    /// dashpots (J/m).
-    pub boundary_dissipation: f64,
-    /// Elastic energy held by joints when they were severed (J/m).
-    pub fracture_dissipation: f64,
-    /// Elastic normal contact work not returned at separation (J/m; no fixed sign, see
-    /// [`EnergyBudget::contact_hysteresis`]).
-    #[serde(default)]
-    pub contact_hysteresis: f64,
-    /// Kinetic-energy change of blocks re-cut by bevels (J/m; no fixed sign).
-    #[serde(default)]
-    pub cut_away: f64,
-    /// Elastic energy held at the end (J/m).
-    pub elastic_energy: f64,
-    /// All dissipation other than Φ_f, Φ_i and drag (J/m).
-    pub other_dissipation: f64,
-    /// Work minus all sinks at the end (J/m).
-    pub residual: f64,
+    /// Every other term of the ledger at the end of the run (J/m), each under its name.
+    #[serde(flatten)]
+    pub sinks: Terms<SummarySinks>,
     /// Largest |residual| over all samples divided by the largest ledger term at that
     /// sample (dimensionless).
     pub max_relative_residual: f64,
@@ -95,28 +65,49 @@ pub struct Summary {
     pub rubble_block_lengths: Vec<f64>,
 }
 
+/// The terms of [`Summary::inputs`]: the inputs, which `summary.json` writes before
+/// `work_eq9`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct SummaryInputs;
+
+impl TermSet for SummaryInputs {
+    fn keep(t: &LedgerTerm) -> Keep {
+        if t.sign == Sign::Input {
+            t.summary
+        } else {
+            Keep::No
+        }
+    }
+}
+
+/// The terms of [`Summary::sinks`]: every term but the inputs.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct SummarySinks;
+
+impl TermSet for SummarySinks {
+    fn keep(t: &LedgerTerm) -> Keep {
+        if t.sign == Sign::Input {
+            Keep::No
+        } else {
+            t.summary
+        }
+    }
+}
+
 impl Summary {
     /// The ledger at the end of the run as an energy budget (J/m; its `time` is the
     /// simulated time, s).
     pub fn energy(&self) -> EnergyBudget {
-        EnergyBudget {
-            time: self.time,
-            work: self.work,
-            frame_work: self.frame_work,
-            potential_energy: self.potential_energy,
-            kinetic_energy: self.kinetic_energy_change,
-            friction_dissipation: self.friction_dissipation,
-            viscous_dissipation: self.viscous_dissipation,
-            drag_dissipation: self.drag_dissipation,
-            joint_dissipation: self.joint_dissipation,
-            boundary_dissipation: self.boundary_dissipation,
-            fracture_dissipation: self.fracture_dissipation,
-            contact_hysteresis: self.contact_hysteresis,
-            cut_away: self.cut_away,
-            elastic_energy: self.elastic_energy,
-            other_dissipation: self.other_dissipation,
-            residual: self.residual,
-        }
+        let mut values = [0.0; N_TERMS];
+        self.inputs.write_into(&mut values);
+        self.sinks.write_into(&mut values);
+        EnergyBudget::from_values(self.time, values)
+    }
+
+    /// Replaces the ledger terms by those of `e` (J/m; its time is not used).
+    pub fn set_energy(&mut self, e: &EnergyBudget) {
+        self.inputs = Terms::of(e);
+        self.sinks = Terms::of(e);
     }
 }
 
@@ -249,22 +240,9 @@ pub fn run_world(
         dt: world.dt(),
         wall_seconds: start.elapsed().as_secs_f64(),
         bodies: world.bodies.len(),
-        work: e.work,
-        frame_work: e.frame_work,
+        inputs: Terms::of(&e),
         work_eq9,
-        potential_energy: e.potential_energy,
-        kinetic_energy_change: e.kinetic_energy,
-        friction_dissipation: e.friction_dissipation,
-        viscous_dissipation: e.viscous_dissipation,
-        drag_dissipation: e.drag_dissipation,
-        joint_dissipation: e.joint_dissipation,
-        boundary_dissipation: e.boundary_dissipation,
-        fracture_dissipation: e.fracture_dissipation,
-        contact_hysteresis: e.contact_hysteresis,
-        cut_away: e.cut_away,
-        elastic_energy: e.elastic_energy,
-        other_dissipation: e.other_dissipation,
-        residual: e.residual,
+        sinks: Terms::of(&e),
         max_relative_residual: max_rel,
         ratio_work_to_pe: if e.potential_energy != 0.0 {
             e.work / e.potential_energy + 0.0
@@ -332,25 +310,40 @@ fn relative_residual(e: &EnergyBudget) -> f64 {
     }
 }
 
+/// A `summary.json` of a run at t = 1 s without its ledger terms, for tests.
+#[cfg(test)]
+pub(crate) fn summary_without_ledger() -> serde_json::Value {
+    serde_json::json!({
+        "scene": "x", "seed": 1, "version": "v", "time": 1.0, "steps": 1, "dt": 1.0,
+        "wall_seconds": 0.0, "bodies": 0, "work_eq9": 0.5, "max_relative_residual": 0.0,
+        "ratio_work_to_pe": 0.0, "ridged_volume": 0.0, "blocks_broken": 0,
+        "rubble_block_lengths": []
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::dem::ledger::terms::check;
 
-    /// The run summary keeps every ledger term under the table's name: a `summary.json`
-    /// whose term k holds k + 1 gives back the budget 1, 2, … in the table's order.
+    /// `summary.json` keeps every ledger term of the table under its name, in the table's
+    /// order, with `work_eq9` right after the inputs, between the run's head and tail.
     #[test]
-    fn the_summary_keeps_every_ledger_term_by_its_table_name() {
-        let mut json = serde_json::json!({
-            "scene": "x", "seed": 1, "version": "v", "time": 1.0, "steps": 1, "dt": 1.0,
-            "wall_seconds": 0.0, "bodies": 0, "work_eq9": 0.0, "max_relative_residual": 0.0,
-            "ratio_work_to_pe": 0.0, "ridged_volume": 0.0, "blocks_broken": 0,
-            "rubble_block_lengths": []
-        });
-        for (k, t) in LEDGER_TERMS.iter().enumerate() {
-            json[t.name] = (k as f64 + 1.0).into();
-        }
-        let s: Summary = serde_json::from_value(json).unwrap();
-        let want: Vec<f64> = (1..=LEDGER_TERMS.len()).map(|k| k as f64).collect();
-        assert_eq!(s.energy().values().to_vec(), want);
+    fn the_summary_keeps_the_ledger_by_the_table() {
+        let text = check::file(summary_without_ledger(), |t| t.summary, Summary::energy);
+        assert!(LEDGER_TERMS.iter().all(|t| t.summary != Keep::No));
+        let at = |k: &str| check::key_at(&text, k);
+        let inputs: Vec<&LedgerTerm> = LEDGER_TERMS
+            .iter()
+            .filter(|t| t.sign == Sign::Input)
+            .collect();
+        let (first, last) = (LEDGER_TERMS[0].name, LEDGER_TERMS[N_TERMS - 1].name);
+        assert!(inputs.iter().all(|t| at(t.name) < at("work_eq9")));
+        assert!(
+            LEDGER_TERMS[inputs.len()..]
+                .iter()
+                .all(|t| at("work_eq9") < at(t.name))
+        );
+        assert!(at("bodies") < at(first) && at(last) < at("max_relative_residual"));
     }
 }

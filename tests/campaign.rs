@@ -2,6 +2,7 @@
 //! its first finished run and resumed without redoing anything.
 
 use pressridge::campaign::{CampaignSpec, read_campaign, read_records};
+use pressridge::dem::EnergyBudget;
 use std::time::{Duration, Instant};
 
 const SPEC: &str = r#"
@@ -90,7 +91,7 @@ fn tiny_campaign_is_resumable_and_complete() {
         let h = r.scene.sheet.as_ref().unwrap().thickness;
         assert!((last.volume - 0.25 * h * last.time).abs() < 1e-12);
         assert!((last.time - 3.0).abs() <= r.summary.dt);
-        assert!(last.work > 0.0);
+        assert!(last.energy().work > 0.0);
         assert_eq!(r.profile.sail.len(), 32);
         assert!(out.join("runs").join(&r.id).join("state.json").is_file());
         // The rafting diagnostic: the largest overrun over the run bounds the final one, and
@@ -200,7 +201,7 @@ fn tiny_campaign_is_resumable_and_complete() {
         assert_eq!(p.seeds, vec![1, 2]);
         let w = p.get("work").unwrap();
         assert_eq!(w.n, 2);
-        let mean = 0.5 * (rs[0].summary.work + rs[1].summary.work);
+        let mean = 0.5 * (rs[0].summary.energy().work + rs[1].summary.energy().work);
         assert!((w.mean - mean).abs() <= 1e-12 * mean.abs());
         let f = p.get("friction_fraction").unwrap();
         assert!(f.mean > 0.0 && f.mean < 1.0, "{f:?}");
@@ -213,20 +214,27 @@ fn tiny_campaign_is_resumable_and_complete() {
         use pressridge::table::tabulate::tabulate;
         assert!(records.iter().all(|r| dissipation_violation(r).is_none()));
         let mut bad = records.clone();
-        let w = bad[0].summary.work;
-        bad[0].summary.viscous_dissipation = -0.01 * w;
+        let mut e = bad[0].summary.energy();
+        let w = e.work;
+        e.viscous_dissipation = -0.01 * w;
+        bad[0].summary.set_energy(&e);
         let why = dissipation_violation(&bad[0]).expect("negative Φ_i must be caught");
         assert!(why.contains("viscous_dissipation"), "{why}");
         let t = tabulate(&bad, 11).unwrap();
         assert_eq!(t.excluded.len(), 1);
         assert_eq!(t.excluded[0].0, records[0].id);
         assert_eq!(t.runs[0][0][0], 1, "one seed left at the first thickness");
-        bad[0].summary.viscous_dissipation = -1e-9 * w;
+        e.viscous_dissipation = -1e-9 * w;
+        bad[0].summary.set_energy(&e);
         assert!(
             dissipation_violation(&bad[0]).is_none(),
             "round-off is tolerated"
         );
-        bad[0].samples[2].friction_dissipation = -0.5 * w;
+        let x = &mut bad[0].samples[2];
+        x.set_energy(&EnergyBudget {
+            friction_dissipation: -0.5 * w,
+            ..x.energy()
+        });
         assert!(dissipation_violation(&bad[0]).unwrap().contains("at t ="));
         assert!(tabulate(&records, 11).unwrap().excluded.is_empty());
     }
@@ -325,7 +333,11 @@ fn tiny_campaign_is_resumable_and_complete() {
         let w = fit_warnings(&tabulate(&short, 11).unwrap());
         assert!(w[0].contains("fit table is empty"), "{w:?}");
         let mut nan = records[..1].to_vec();
-        nan[0].samples[2].work = f64::NAN;
+        let x = &mut nan[0].samples[2];
+        x.set_energy(&EnergyBudget {
+            work: f64::NAN,
+            ..x.energy()
+        });
         assert!(!fit_warnings(&tabulate(&nan, 11).unwrap()).is_empty());
         let one = pressridge::table::ensemble::summarise(&records[..1]);
         let t1 = tabulate(&records[..1], 11).unwrap();

@@ -10,12 +10,18 @@
 //!
 //! Sign convention: every sink is the work the bodies did *against* that force, so all
 //! dissipations are positive and `work = ΔPE + ΔKE + dissipations + stored + residual`.
+//!
+//! The table of its terms, from which every file and face of the ledger is derived, is
+//! [`LEDGER_TERMS`] (`ledger/terms.rs`).
 
 use super::boundary::BoundaryWork;
 use super::contact::ContactWork;
 use super::fracture::JointWork;
 use super::water::WaterWork;
 use serde::{Deserialize, Serialize};
+
+pub(crate) mod terms;
+pub use terms::{Keep, LEDGER_TERMS, LedgerTerm, N_TERMS, Sign, TermSet, Terms, term, term_index};
 
 /// Running integrals of the step, from which an [`EnergyBudget`] is derived.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -107,152 +113,6 @@ pub struct EnergyBudget {
     pub residual: f64,
 }
 
-/// The sign convention of a ledger term: what it must satisfy at every sample of a run.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Sign {
-    /// Supplied to the system: the input side of the budget.
-    Input,
-    /// A dissipation: grows from zero and is never negative (the tables' gate and the
-    /// tests check it at every sample).
-    Dissipation,
-    /// Energy held (stored, returnable): never negative.
-    Held,
-    /// A sink of either sign (a change of state, or a discrete-model term).
-    Any,
-    /// Work minus all sinks: zero to round-off when the books close.
-    Closure,
-}
-
-/// One term of the energy ledger ([`LEDGER_TERMS`]).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct LedgerTerm {
-    /// Name: the CSV column, the summary key, the Python series name.
-    pub name: &'static str,
-    /// Unit.
-    pub unit: &'static str,
-    /// What the term must satisfy.
-    pub sign: Sign,
-    /// One line: what it is, with the paper's equation.
-    pub description: &'static str,
-    /// Whether its magnitude counts towards [`EnergyBudget::largest_term`], the scale of
-    /// relative residuals (the terms that together make up the budget, without double
-    /// counting the parts of `other_dissipation` or of `work`).
-    pub scale: bool,
-}
-
-impl LedgerTerm {
-    /// True for a dissipation (a term that can only grow from zero).
-    pub const fn is_dissipation(&self) -> bool {
-        matches!(self.sign, Sign::Dissipation)
-    }
-}
-
-const fn term(
-    name: &'static str,
-    sign: Sign,
-    scale: bool,
-    description: &'static str,
-) -> LedgerTerm {
-    LedgerTerm {
-        name,
-        unit: "J/m",
-        sign,
-        description,
-        scale,
-    }
-}
-
-/// Every term of an [`EnergyBudget`] but its time, in the order of [`EnergyBudget::values`]:
-/// the one list behind the time series' columns, the summaries, the dissipation gate of the
-/// tables, the residual scale and the Python face (docs/model.md, "Energy budget").
-pub const LEDGER_TERMS: [LedgerTerm; 15] = [
-    term(
-        "work",
-        Sign::Input,
-        true,
-        "work done by the push, eq (9) as a power balance",
-    ),
-    term(
-        "frame_work",
-        Sign::Input,
-        false,
-        "the part of work done by the frame of eqs (7)-(8) moving at U",
-    ),
-    term(
-        "potential_energy",
-        Sign::Any,
-        true,
-        "potential energy change (gravity and buoyancy), eq (10)",
-    ),
-    term(
-        "kinetic_energy_change",
-        Sign::Any,
-        true,
-        "kinetic energy change since the start",
-    ),
-    term(
-        "friction_dissipation",
-        Sign::Dissipation,
-        true,
-        "frictional dissipation, eq (11)",
-    ),
-    term(
-        "viscous_dissipation",
-        Sign::Dissipation,
-        true,
-        "viscous contact dissipation, eq (12)",
-    ),
-    term(
-        "drag_dissipation",
-        Sign::Dissipation,
-        true,
-        "water drag dissipation",
-    ),
-    term(
-        "joint_dissipation",
-        Sign::Dissipation,
-        false,
-        "joint viscous dissipation, eq (1)",
-    ),
-    term(
-        "boundary_dissipation",
-        Sign::Dissipation,
-        false,
-        "dissipation of the dashpots of eqs (7)-(8) relative to their frame and of the floe dashpots",
-    ),
-    term(
-        "fracture_dissipation",
-        Sign::Dissipation,
-        false,
-        "elastic energy joints held when severed",
-    ),
-    term(
-        "contact_hysteresis",
-        Sign::Any,
-        false,
-        "elastic contact work not returned at separation",
-    ),
-    term(
-        "cut_away",
-        Sign::Any,
-        false,
-        "kinetic energy change of blocks re-cut by bevels",
-    ),
-    term(
-        "elastic_energy",
-        Sign::Held,
-        true,
-        "elastic energy held by contacts, joints and floe springs",
-    ),
-    term(
-        "other_dissipation",
-        Sign::Any,
-        true,
-        "joint, boundary and fracture dissipation, contact hysteresis and cut-away",
-    ),
-    term("residual", Sign::Closure, false, "work minus all sinks"),
-];
-
 impl EnergyBudget {
     /// Builds the budget from the accumulators, the current kinetic energy and the energy
     /// held by contacts (J/m). Joints and floe springs hold the work booked into them.
@@ -300,25 +160,45 @@ impl EnergyBudget {
         }
     }
 
-    /// The terms in the order of [`LEDGER_TERMS`] (J/m).
-    pub fn values(&self) -> [f64; LEDGER_TERMS.len()] {
+    /// The terms in the order of [`LEDGER_TERMS`] (J/m): the one list of the fields behind
+    /// [`Self::values`] and [`Self::from_values`].
+    fn terms_mut(&mut self) -> [&mut f64; N_TERMS] {
         [
-            self.work,
-            self.frame_work,
-            self.potential_energy,
-            self.kinetic_energy,
-            self.friction_dissipation,
-            self.viscous_dissipation,
-            self.drag_dissipation,
-            self.joint_dissipation,
-            self.boundary_dissipation,
-            self.fracture_dissipation,
-            self.contact_hysteresis,
-            self.cut_away,
-            self.elastic_energy,
-            self.other_dissipation,
-            self.residual,
+            &mut self.work,
+            &mut self.frame_work,
+            &mut self.potential_energy,
+            &mut self.kinetic_energy,
+            &mut self.friction_dissipation,
+            &mut self.viscous_dissipation,
+            &mut self.drag_dissipation,
+            &mut self.joint_dissipation,
+            &mut self.boundary_dissipation,
+            &mut self.fracture_dissipation,
+            &mut self.contact_hysteresis,
+            &mut self.cut_away,
+            &mut self.elastic_energy,
+            &mut self.other_dissipation,
+            &mut self.residual,
         ]
+    }
+
+    /// The terms in the order of [`LEDGER_TERMS`] (J/m).
+    pub fn values(&self) -> [f64; N_TERMS] {
+        let mut b = *self;
+        b.terms_mut().map(|x| *x)
+    }
+
+    /// The budget at time `time` (s) with the terms `values`, in the order of
+    /// [`LEDGER_TERMS`] (J/m).
+    pub fn from_values(time: f64, values: [f64; N_TERMS]) -> Self {
+        let mut b = EnergyBudget {
+            time,
+            ..Default::default()
+        };
+        for (x, v) in b.terms_mut().into_iter().zip(values) {
+            *x = v;
+        }
+        b
     }
 
     /// The dissipation terms, each of which can only grow from zero, by name (J/m).

@@ -86,10 +86,13 @@ fn write_ridge_table_at(
     f.add_dimension("volume", nv).map_err(&e)?;
     let ds = t.default_set();
     type Var<'a> = (&'a str, &'a [&'a str], &'a str, &'a str, Vec<f64>);
-    let vars: Vec<Var> = t
-        .variables()
-        .into_iter()
-        .map(|v| (v.name, v.dims, v.units, v.long_name, v.data))
+    let mut table_vars = t.variables();
+    let vars: Vec<Var> = table_vars
+        .iter_mut()
+        .map(|v| {
+            let data = std::mem::take(&mut v.data);
+            (v.name.as_str(), v.dims, v.units, v.long_name.as_str(), data)
+        })
         .collect();
     // The friction grid: every variable on `set` moves to (μ, μ_w) cells.
     type OnDims<'a> = (&'a str, Vec<&'a str>, &'a str, &'a str, Vec<f64>);

@@ -6,6 +6,7 @@
 //! a run (a flank slope with fewer than two strips in the 20–80 % band) is left out of that
 //! metric's statistics only, and its count says how many runs were behind it.
 
+use crate::dem::ledger::{LEDGER_TERMS, N_TERMS};
 use crate::record::RunRecord;
 
 /// Mean, sample standard deviation and count of one quantity over runs.
@@ -40,31 +41,16 @@ impl Stat {
     }
 }
 
-/// The quantities summarised, in report order: (key, unit, description).
-pub const QUANTITIES: [(&str, &str, &str); 25] = [
-    ("work", "J/m", "ridging work W, eq (9)"),
-    (
-        "potential_energy",
-        "J/m",
-        "potential energy change ΔPE, eq (10)",
-    ),
-    (
-        "friction_dissipation",
-        "J/m",
-        "frictional dissipation Φ_f, eq (11)",
-    ),
-    (
-        "viscous_dissipation",
-        "J/m",
-        "viscous contact dissipation Φ_i, eq (12)",
-    ),
-    ("drag_dissipation", "J/m", "water drag dissipation"),
-    (
-        "other_dissipation",
-        "J/m",
-        "joints, fracture, boundary forces",
-    ),
-    ("kinetic_energy_change", "J/m", "kinetic energy change"),
+/// The quantities summarised, (key, unit, description): every term of the energy ledger at
+/// the end of the run, from its table ([`LEDGER_TERMS`], in its order), then the
+/// [`OTHER_QUANTITIES`].
+pub const QUANTITIES: [(&str, &str, &str); N_QUANTITIES] = quantities();
+
+/// Number of [`QUANTITIES`].
+pub const N_QUANTITIES: usize = N_TERMS + OTHER_QUANTITIES.len();
+
+/// The quantities summarised besides the ledger terms: (key, unit, description).
+pub const OTHER_QUANTITIES: [(&str, &str, &str); 18] = [
     ("residual_fraction", "1", "|W − sinks| / W at the end"),
     ("pe_fraction", "1", "ΔPE / W"),
     ("friction_fraction", "1", "Φ_f / W"),
@@ -101,28 +87,41 @@ pub const QUANTITIES: [(&str, &str, &str); 25] = [
     ),
 ];
 
+/// [`QUANTITIES`]: the ledger's table, then the others.
+const fn quantities() -> [(&'static str, &'static str, &'static str); N_QUANTITIES] {
+    let mut out = [("", "", ""); N_QUANTITIES];
+    let mut k = 0;
+    while k < N_TERMS {
+        let t = &LEDGER_TERMS[k];
+        out[k] = (t.name, t.unit, t.description);
+        k += 1;
+    }
+    while k < out.len() {
+        out[k] = OTHER_QUANTITIES[k - N_TERMS];
+        k += 1;
+    }
+    out
+}
+
 /// The value of quantity `key` (see [`QUANTITIES`]) for one run, `None` where undefined.
 pub fn quantity(r: &RunRecord, key: &str) -> Option<f64> {
     let s = &r.summary;
+    let e = s.energy();
     let m = &r.metrics;
-    let frac = |x: f64| (s.work != 0.0).then(|| x / s.work);
+    if let Some(k) = LEDGER_TERMS.iter().position(|t| t.name == key) {
+        return Some(e.values()[k]);
+    }
+    let frac = |x: f64| (e.work != 0.0).then(|| x / e.work);
     match key {
-        "work" => Some(s.work),
-        "potential_energy" => Some(s.potential_energy),
-        "friction_dissipation" => Some(s.friction_dissipation),
-        "viscous_dissipation" => Some(s.viscous_dissipation),
-        "drag_dissipation" => Some(s.drag_dissipation),
-        "other_dissipation" => Some(s.other_dissipation),
-        "kinetic_energy_change" => Some(s.kinetic_energy_change),
-        "residual_fraction" => frac(s.residual.abs()),
-        "pe_fraction" => frac(s.potential_energy),
-        "friction_fraction" => frac(s.friction_dissipation),
-        "viscous_fraction" => frac(s.viscous_dissipation),
-        "drag_fraction" => frac(s.drag_dissipation),
-        "ratio_work_to_pe" => (s.potential_energy > 0.0).then_some(s.ratio_work_to_pe),
+        "residual_fraction" => frac(e.residual.abs()),
+        "pe_fraction" => frac(e.potential_energy),
+        "friction_fraction" => frac(e.friction_dissipation),
+        "viscous_fraction" => frac(e.viscous_dissipation),
+        "drag_fraction" => frac(e.drag_dissipation),
+        "ratio_work_to_pe" => (e.potential_energy > 0.0).then_some(s.ratio_work_to_pe),
         "mean_force" => {
             let u = r.scene.sheet.as_ref().map_or(0.0, |sh| sh.speed);
-            (u * s.time > 0.0).then(|| s.work / (u * s.time))
+            (u * s.time > 0.0).then(|| e.work / (u * s.time))
         }
         "blocks_broken" => Some(s.blocks_broken as f64),
         "handover_contacts" => Some(s.handover_contacts as f64),
@@ -149,13 +148,13 @@ pub const DISSIPATION_TOLERANCE: f64 = 1e-6;
 /// is negative (below −[`DISSIPATION_TOLERANCE`]·|W|, at the end or at any sample) books a
 /// numerical energy source: the run went unstable, and its energetics are not ridging.
 pub fn dissipation_violation(r: &RunRecord) -> Option<String> {
-    let s = &r.summary;
-    let tol = DISSIPATION_TOLERANCE * s.work.abs().max(1.0);
+    let e = r.summary.energy();
+    let tol = DISSIPATION_TOLERANCE * e.work.abs().max(1.0);
     let bad = |v: f64| v < -tol || !v.is_finite();
-    if let Some((name, v)) = s.energy().dissipations().find(|&(_, v)| bad(v)) {
+    if let Some((name, v)) = e.dissipations().find(|&(_, v)| bad(v)) {
         return Some(format!(
             "{name} = {v:.4e} J/m at the end (work {:.4e} J/m)",
-            s.work
+            e.work
         ));
     }
     r.samples.iter().find_map(|x| {
@@ -224,6 +223,35 @@ pub fn summarise(records: &[RunRecord]) -> Vec<PointStats> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The ensemble summarises every ledger term under the table's name, unit and
+    /// description, with the run summary's value; no key is there twice.
+    #[test]
+    fn the_ledger_quantities_come_from_the_table() {
+        let mut json = crate::simulation::summary_without_ledger();
+        for (k, t) in LEDGER_TERMS.iter().enumerate() {
+            json[t.name] = (k as f64 + 1.0).into();
+        }
+        let r = RunRecord {
+            id: "x".into(),
+            settings: vec![],
+            seed: 1,
+            scene: crate::scene::Scene::default(),
+            summary: serde_json::from_value(json).unwrap(),
+            samples: vec![],
+            profile: Default::default(),
+            metrics: Default::default(),
+            digest: None,
+        };
+        for (k, t) in LEDGER_TERMS.iter().enumerate() {
+            assert_eq!(QUANTITIES[k], (t.name, t.unit, t.description));
+            assert_eq!(quantity(&r, t.name), Some(k as f64 + 1.0));
+        }
+        let mut keys: Vec<&str> = QUANTITIES.iter().map(|q| q.0).collect();
+        keys.sort_unstable();
+        keys.dedup();
+        assert_eq!(keys.len(), QUANTITIES.len());
+    }
 
     #[test]
     fn stat_is_the_sample_mean_and_deviation() {

@@ -1,23 +1,26 @@
 //! The variables of a ridging table, each with its dimensions, units and description: one
 //! list behind the NetCDF file (`crate::io::table_netcdf`) and the in-memory lookup
-//! ([`RidgeTable::lookup`]), so that a table need not pass through a file to be queried.
+//! ([`RidgeTable::lookup`]), so that a table need not pass through a file to be queried. The
+//! ledger terms among them (the ensemble mean and spread of work and ΔPE) take their names,
+//! units and long names from the ledger's table ([`crate::dem::ledger::LEDGER_TERMS`]).
 
 use super::fit::Band;
 use super::lookup::{Axes, Field, LookupError, RidgeLookup};
 use super::tabulate::{RidgeTable, SetFits};
+use crate::dem::ledger::{LedgerTerm, term};
 
 /// One variable of a ridging table in the set layout: values in C order over `dims`
 /// (a subset of `set`, `thickness`, `volume` in that order), NaN where no run reached.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TableVariable {
     /// Name, as in the NetCDF file.
-    pub name: &'static str,
+    pub name: String,
     /// Dimensions, outermost first.
     pub dims: &'static [&'static str],
     /// UDUNITS string.
     pub units: &'static str,
     /// Description.
-    pub long_name: &'static str,
+    pub long_name: String,
     /// Values.
     pub data: Vec<f64>,
 }
@@ -30,6 +33,21 @@ type Var = (
     &'static str,
     Vec<f64>,
 );
+
+/// The names and long names of the ensemble mean and standard deviation of ledger term `lt`
+/// over the runs, as a table's variables.
+fn ensemble_names(lt: &LedgerTerm) -> [(String, String); 2] {
+    [
+        (
+            format!("{}_mean", lt.name),
+            format!("ensemble mean {}", lt.label_with_equation()),
+        ),
+        (
+            format!("{}_std", lt.name),
+            format!("ensemble standard deviation of the {}", lt.label),
+        ),
+    ]
+}
 
 impl RidgeTable {
     /// Every variable of the table, in file order (the set layout; the NetCDF writer spreads
@@ -67,7 +85,7 @@ impl RidgeTable {
         const SV: &[&str] = &["set", "volume"];
         const S1: &[&str] = &["set"];
         let ds = t.default_set();
-        let vars: Vec<Var> = vec![
+        let head: Vec<Var> = vec![
             (
                 "mu",
                 S1,
@@ -96,34 +114,8 @@ impl RidgeTable {
                 "ridged-ice volume per metre of ridge V = U h t",
                 t.volume.clone(),
             ),
-            (
-                "work_mean",
-                S3,
-                "J m-1",
-                "ensemble mean ridging work, eq (9)",
-                flat3(&t.work_mean),
-            ),
-            (
-                "work_std",
-                S3,
-                "J m-1",
-                "ensemble standard deviation of the ridging work",
-                flat3(&t.work_std),
-            ),
-            (
-                "potential_energy_mean",
-                S3,
-                "J m-1",
-                "ensemble mean potential energy change, eq (10)",
-                flat3(&t.pe_mean),
-            ),
-            (
-                "potential_energy_std",
-                S3,
-                "J m-1",
-                "ensemble standard deviation of the potential energy change",
-                flat3(&t.pe_std),
-            ),
+        ];
+        let rest: Vec<Var> = vec![
             (
                 "ratio_mean",
                 S3,
@@ -326,15 +318,35 @@ impl RidgeTable {
                 flat2(&t.ratio_fit),
             ),
         ];
-        vars.into_iter()
-            .map(|(name, dims, units, long_name, data)| TableVariable {
-                name,
-                dims,
-                units,
-                long_name,
-                data,
-            })
-            .collect()
+        let var = |(name, dims, units, long_name, data): Var| TableVariable {
+            name: name.into(),
+            dims,
+            units,
+            long_name: long_name.into(),
+            data,
+        };
+        // The ledger terms tabulated over the runs (work and ΔPE, which eqs (13)–(14) fit):
+        // their ensemble mean and spread, named and described by the ledger's table.
+        let ensemble = [
+            (const { term("work") }, &t.work_mean, &t.work_std),
+            (const { term("potential_energy") }, &t.pe_mean, &t.pe_std),
+        ];
+        let ledger = ensemble.into_iter().flat_map(|(lt, mean, std)| {
+            ensemble_names(&lt)
+                .into_iter()
+                .zip([mean, std])
+                .map(move |((name, long_name), x)| TableVariable {
+                    name,
+                    dims: S3,
+                    units: lt.udunits,
+                    long_name,
+                    data: flat3(x),
+                })
+        });
+        let mut vars: Vec<TableVariable> = head.into_iter().map(var).collect();
+        vars.extend(ledger);
+        vars.extend(rest.into_iter().map(var));
+        vars
     }
 
     /// The table as a [`RidgeLookup`] without a file: the same fields, axes and set labels
@@ -344,7 +356,7 @@ impl RidgeTable {
     pub fn lookup(&self) -> Result<RidgeLookup, LookupError> {
         let mut fields = Vec::new();
         for v in self.variables() {
-            if matches!(v.name, "thickness" | "volume") {
+            if matches!(v.name.as_str(), "thickness" | "volume") {
                 continue;
             }
             let on = |x: &str| v.dims.contains(&x);
@@ -353,10 +365,7 @@ impl RidgeTable {
                 thickness: on("thickness"),
                 volume: on("volume"),
             };
-            fields.push((
-                v.name.to_string(),
-                Field::new(axes, v.units, v.long_name, v.data),
-            ));
+            fields.push((v.name, Field::new(axes, v.units, &v.long_name, v.data)));
         }
         let seeds: Vec<String> = self.seeds.iter().map(u64::to_string).collect();
         let excluded: Vec<String> = self
@@ -379,5 +388,47 @@ impl RidgeTable {
             fields,
             attributes,
         )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The NetCDF names, units and long names of the tabulated ledger terms, made from the
+    /// ledger's table, stay those of the tables written before.
+    #[test]
+    fn tabulated_ledger_terms_keep_their_netcdf_names() {
+        let names = |n: &str| {
+            let t = term(n);
+            let [(a, b), (c, d)] = ensemble_names(&t);
+            (t.udunits, [a, b, c, d])
+        };
+        assert_eq!(
+            names("work"),
+            (
+                "J m-1",
+                [
+                    "work_mean",
+                    "ensemble mean ridging work, eq (9)",
+                    "work_std",
+                    "ensemble standard deviation of the ridging work"
+                ]
+                .map(String::from)
+            )
+        );
+        assert_eq!(
+            names("potential_energy"),
+            (
+                "J m-1",
+                [
+                    "potential_energy_mean",
+                    "ensemble mean potential energy change, eq (10)",
+                    "potential_energy_std",
+                    "ensemble standard deviation of the potential energy change"
+                ]
+                .map(String::from)
+            )
+        );
     }
 }

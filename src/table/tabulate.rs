@@ -371,7 +371,10 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
                         let ys: Vec<f64> = r.samples.iter().map(g).collect();
                         interp(&xs, &ys, v)
                     };
-                    let (wv, pv_) = (get(|s| s.work), get(|s| s.potential_energy));
+                    let (wv, pv_) = (
+                        get(|s| s.energy().work),
+                        get(|s| s.energy().potential_energy),
+                    );
                     if wv.is_finite() && pv_.is_finite() {
                         w.push(wv);
                         p.push(pv_);
@@ -401,11 +404,12 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
             let mut finals = Vec::new();
             for r in &group {
                 for s in r.samples.iter().filter(|s| s.volume > 0.0) {
+                    let e = s.energy();
                     fv.push(s.volume);
-                    fw.push(s.work);
-                    fp.push(s.potential_energy);
+                    fw.push(e.work);
+                    fp.push(e.potential_energy);
                 }
-                let last = r.samples.last().expect("≥ 2 samples");
+                let last = r.samples.last().expect("≥ 2 samples").energy();
                 if last.potential_energy > 0.0 {
                     finals.push(last.work / last.potential_energy);
                 }

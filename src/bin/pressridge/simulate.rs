@@ -235,6 +235,7 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         pressridge::plot::animate::animate(&a.out, &gif, &opts)?;
     }
     let sm = &out.summary;
+    let e = sm.energy();
     println!(
         "{}: {:.1} s simulated in {} steps of {:.3e} s ({:.1} s wall, {:.0} steps/s), {} blocks broken",
         sm.scene,
@@ -247,14 +248,14 @@ pub fn run(a: Args) -> Result<(), BoxError> {
     );
     println!(
         "work {:.4e} J/m, ΔPE {:.4e} J/m (ratio {:.2}), friction {:.4e}, viscous {:.4e}, drag {:.4e}, other {:.4e}, residual {:.2e} J/m (max relative {:.1e})",
-        sm.work,
-        sm.potential_energy,
+        e.work,
+        e.potential_energy,
         sm.ratio_work_to_pe,
-        sm.friction_dissipation,
-        sm.viscous_dissipation,
-        sm.drag_dissipation,
-        sm.other_dissipation,
-        sm.residual,
+        e.friction_dissipation,
+        e.viscous_dissipation,
+        e.drag_dissipation,
+        e.other_dissipation,
+        e.residual,
         sm.max_relative_residual
     );
     println!("wrote {}", a.out.display());
