@@ -236,7 +236,7 @@ impl CampaignSpec {
     pub fn from_toml(text: &str) -> Result<CampaignSpec, CampaignError> {
         let s: CampaignSpec =
             toml::from_str(text).map_err(|e| CampaignError::Spec(e.to_string()))?;
-        let max_seeds = crate::scene::limits::MAX_SEEDS;
+        let max_seeds = crate::limits::MAX_SEEDS;
         if s.seeds == 0 || s.seeds > max_seeds {
             return Err(CampaignError::Spec(format!(
                 "`seeds` = {} is out of range: must lie in [1, {max_seeds}] (the paper uses 7 per grid point; every seed is a full run)",
@@ -360,7 +360,7 @@ impl CampaignSpec {
             }
             points = next;
         }
-        let max_runs = crate::scene::limits::MAX_RUNS;
+        let max_runs = crate::limits::MAX_RUNS;
         let total = points.len().saturating_mul(self.seeds as usize);
         if total > max_runs {
             return Err(CampaignError::Spec(format!(

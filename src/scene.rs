@@ -64,7 +64,7 @@ pub enum SceneLoadError {
     Scene(#[from] SceneError),
 }
 
-pub use crate::limits;
+use crate::limits;
 use crate::limits::Range;
 
 /// Ice properties.

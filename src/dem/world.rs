@@ -427,10 +427,6 @@ impl World {
     pub fn contacts(&self) -> &[Contact] {
         self.contacts.contacts()
     }
-    /// The ledger's running integrals.
-    pub fn accumulators(&self) -> &Accumulators {
-        &self.acc
-    }
 
     /// Why the world stopped stepping, if it did: a step that produced a non-finite
     /// velocity ([`WorldError::NonFinite`], naming the step, the time and the first body).

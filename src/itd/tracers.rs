@@ -273,9 +273,6 @@ pub struct TracerLayout {
     /// Per tracer: number of strata (0..=2) and their tracer indices.
     pub(crate) nstrata: Vec<u8>,
     pub(crate) strata: Vec<[usize; 2]>,
-    /// Per tracer: carried onto new ridges (false for level-ice fractions and for every
-    /// tracer with strata: ridged ice is deformed, its ponds drain).
-    pub(crate) to_ridges: Vec<bool>,
     /// Per tracer: area tracer in Icepack's `trcr_depend = 0` sense (base area, no strata):
     /// recomputed only where the area exceeds `puny`.
     pub(crate) area_direct: Vec<bool>,
@@ -487,7 +484,6 @@ impl TracerLayout {
             base,
             nstrata,
             strata,
-            to_ridges,
             area_direct,
         })
     }

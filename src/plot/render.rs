@@ -68,7 +68,7 @@ impl Window {
     /// The window around the ridge: every rubble block (free blocks of role `Rubble` or
     /// `Block`) and, of the sheet, the floe and any other body, the part within `reach` (m)
     /// of the rubble's bounding box, all with a `margin` (m). `None` when the state holds
-    /// no rubble. Metres stay square when drawn ([`figure_size`]), whatever the shape.
+    /// no rubble. Metres stay square when drawn ([`state_layout`]), whatever the shape.
     pub fn fit_ridge(s: &Snapshot, reach: f64, margin: f64) -> Option<Window> {
         let bbox = |b: &crate::dem::world::BodyState| {
             let mut w = Window {
@@ -176,13 +176,6 @@ pub fn state_layout(window: Window, width_px: u32, title: &str) -> Layout {
     let mut l = l;
     l.width = plot_w + l.left + l.right;
     l.with_plot_height((plot_w as f64 * aspect).round().max(1.0) as u32)
-}
-
-/// The figure's size (px) for `window` drawn `width_px` wide with a title: see
-/// [`state_layout`].
-pub fn figure_size(window: Window, width_px: u32) -> (u32, u32) {
-    let l = state_layout(window, width_px, "t");
-    (l.width, l.height)
 }
 
 /// Draws a state into memory: RGB bytes (3 a pixel, row by row) of the size

@@ -53,11 +53,11 @@
 use faer::prelude::*;
 use thiserror::Error;
 
+pub use super::student_t::{student_t_cdf, student_t_quantile};
+
 /// Ratio `|R₂₂|/|R₁₁|` of the triangular factor of the column-normalised design matrix
 /// below which the basis `{V², V}` is declared rank-deficient (a condition number above
 /// 10¹² leaves no significant digit worth tabulating).
-pub use super::student_t::{student_t_cdf, student_t_quantile};
-
 const RANK_TOL: f64 = 1e-12;
 
 /// Why a fit could not be made.

@@ -23,7 +23,7 @@ impl World {
 
     /// Ends [`World::defer_time_step`]: derives the time step once from the bodies and
     /// joints present, as [`World::refresh_time_step`], and checks it against the stable
-    /// limit, as [`World::check_time_step`].
+    /// limit ([`WorldError::Unstable`] when a fixed time step exceeds it).
     pub(crate) fn finish_time_step(&mut self) -> Result<(), WorldError> {
         self.defer_time_step = false;
         let limit = self.stable_time_step();
@@ -31,16 +31,6 @@ impl World {
             Some(dt) => dt,
             None => self.params.time_step_safety * limit,
         };
-        if self.dt > limit {
-            return Err(WorldError::Unstable { dt: self.dt, limit });
-        }
-        Ok(())
-    }
-
-    /// Checks a fixed time step against the stable limit of the bodies and joints present;
-    /// the error gives the limit.
-    pub fn check_time_step(&self) -> Result<(), WorldError> {
-        let limit = self.stable_time_step();
         if self.dt > limit {
             return Err(WorldError::Unstable { dt: self.dt, limit });
         }
