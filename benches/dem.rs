@@ -113,7 +113,7 @@ fn step(c: &mut Criterion) {
     g.finish();
     eprintln!(
         "settled pile: {} bodies, {} contacts, dt = {:.3e} s",
-        world.bodies.len(),
+        world.bodies().len(),
         world.contacts().len(),
         world.dt()
     );

@@ -17,11 +17,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let steps: u64 = args.get(2).map_or(Ok(20_000), |s| s.parse())?;
     let snap = load_state(std::path::Path::new(path))?;
     let mut w = World::from_snapshot(&snap)?;
-    let n = w.bodies.len();
+    let n = w.bodies().len();
     let mut candidates = 0;
     for a in 0..n {
         for b in a + 1..n {
-            if w.bodies.aabb[a].overlaps(&w.bodies.aabb[b]) {
+            if w.bodies().aabb[a].overlaps(&w.bodies().aabb[b]) {
                 candidates += 1;
             }
         }

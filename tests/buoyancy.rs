@@ -37,13 +37,13 @@ fn floating_block_settles_to_archimedes_draft() {
     while w.time() < 20.0 {
         w.step();
     }
-    let bottom = w.bodies.pos[0].y - h / 2.0;
+    let bottom = w.bodies().pos[0].y - h / 2.0;
     let got = -bottom;
     assert!(
         ((got - draft) / draft).abs() < 1e-3,
         "draft {got} m, Archimedes {draft} m"
     );
-    assert!(w.bodies.vel[0].norm() < 1e-6);
+    assert!(w.bodies().vel[0].norm() < 1e-6);
 }
 
 /// The undamped heave period of a floating block is 2π·sqrt(ρ_i·h/(ρ_w·g)) within 2 %.
@@ -60,10 +60,10 @@ fn heave_period_matches_theory() {
     let mut w = floating_block(h, water, y_eq + 0.01);
     // Upward crossings of the equilibrium level.
     let mut crossings = Vec::new();
-    let mut prev = w.bodies.pos[0].y - y_eq;
+    let mut prev = w.bodies().pos[0].y - y_eq;
     while w.time() < 10.0 {
         w.step();
-        let cur = w.bodies.pos[0].y - y_eq;
+        let cur = w.bodies().pos[0].y - y_eq;
         if prev < 0.0 && cur >= 0.0 {
             // Linear interpolation of the crossing time.
             crossings.push(w.time() - w.dt() * cur / (cur - prev));

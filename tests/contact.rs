@@ -51,11 +51,11 @@ fn block_sticks_when_tan_alpha_below_mu() {
     let alpha = (0.8 * mu).atan();
     let (mut w, down) = block_on_incline(mu, alpha);
     run_to(&mut w, 0.2);
-    let s0 = w.bodies.pos[1].dot(down);
+    let s0 = w.bodies().pos[1].dot(down);
     run_to(&mut w, 2.2);
-    let moved = w.bodies.pos[1].dot(down) - s0;
+    let moved = w.bodies().pos[1].dot(down) - s0;
     assert!(moved.abs() < 1e-4, "stuck block moved {moved} m");
-    assert!(w.bodies.vel[1].norm() < 1e-3);
+    assert!(w.bodies().vel[1].norm() < 1e-3);
 }
 
 /// tan α > μ: the block slides with a = g(sin α − μ cos α), and the frictional dissipation
@@ -65,18 +65,18 @@ fn sliding_block_dissipates_mu_n_distance() {
     let mu = 0.3;
     let alpha = 30f64.to_radians();
     let (mut w, down) = block_on_incline(mu, alpha);
-    let m = w.bodies.mass[1];
+    let m = w.bodies().mass[1];
     run_to(&mut w, 0.2);
     let (s0, v0, f0, t0) = (
-        w.bodies.pos[1].dot(down),
-        w.bodies.vel[1].dot(down),
+        w.bodies().pos[1].dot(down),
+        w.bodies().vel[1].dot(down),
         w.energy().friction_dissipation,
         w.time(),
     );
     run_to(&mut w, 1.2);
     let (s1, v1, f1, t1) = (
-        w.bodies.pos[1].dot(down),
-        w.bodies.vel[1].dot(down),
+        w.bodies().pos[1].dot(down),
+        w.bodies().vel[1].dot(down),
         w.energy().friction_dissipation,
         w.time(),
     );
@@ -167,7 +167,7 @@ fn collision_restitution_matches_damped_oscillator() {
             let v0 = 0.5;
             w.set_velocity(a, V2::new(v0, 0.0), 0.0);
             w.set_velocity(b, V2::new(-v0, 0.0), 0.0);
-            let ke0 = w.bodies.kinetic_energy();
+            let ke0 = w.bodies().kinetic_energy();
             run_to(&mut w, 0.2);
             assert!(w.contacts().is_empty(), "still in contact");
             let p = w.params().contact.clone();
@@ -176,7 +176,7 @@ fn collision_restitution_matches_damped_oscillator() {
             let c = p.viscous_coefficient(920.0) * h;
             let zeta = c / (2.0 * (k * m_red).sqrt());
             assert!((zeta - 0.387).abs() < 1e-3);
-            let e = (w.bodies.vel[1].x - w.bodies.vel[0].x) / (2.0 * v0);
+            let e = (w.bodies().vel[1].x - w.bodies().vel[0].x) / (2.0 * v0);
             let err = (e - e_theory).abs() / e_theory;
             assert!(
                 err < tol,
@@ -187,7 +187,7 @@ fn collision_restitution_matches_damped_oscillator() {
             // The kinetic energy lost is the viscous dissipation Φ_i (plus the tiny elastic
             // hysteresis of the area law).
             let en = w.energy();
-            let lost = ke0 - w.bodies.kinetic_energy();
+            let lost = ke0 - w.bodies().kinetic_energy();
             let booked = en.viscous_dissipation + en.other_dissipation;
             assert!(
                 (lost - booked).abs() < 1e-9 * ke0,
@@ -195,7 +195,7 @@ fn collision_restitution_matches_damped_oscillator() {
             );
             assert!(en.other_dissipation.abs() < hysteresis * en.viscous_dissipation);
             // Head-on: no rotation, no vertical motion, no friction.
-            assert!(w.bodies.omega[0].abs() < 1e-9 && w.bodies.vel[0].y.abs() < 1e-9);
+            assert!(w.bodies().omega[0].abs() < 1e-9 && w.bodies().vel[0].y.abs() < 1e-9);
             assert!(en.friction_dissipation.abs() < 1e-9 * ke0);
         }
         assert!(

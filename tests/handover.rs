@@ -5,7 +5,7 @@
 //! pushes with k_ne·A and k_nv·A/dt at once, so the viscous contact "dissipation" turns
 //! negative and the blocks fly apart. With the overlap forgiven they stay put.
 
-use pressridge::dem::{Block, Drive, JointMaterial, Role, V2, World, WorldParams};
+use pressridge::dem::{Block, BodyId, Drive, JointMaterial, Role, V2, World, WorldParams};
 use pressridge::scene::Scene;
 
 const H: f64 = 0.30;
@@ -62,7 +62,7 @@ fn severed_joint_with_overlapping_blocks_injects_no_energy() {
     };
     w.join(a, b, 0.06, mat).unwrap();
     w.set_time_step(1e-4).unwrap();
-    let held: f64 = w.joints().iter().map(|j| j.stored_energy(&w.bodies)).sum();
+    let held: f64 = w.joints().iter().map(|j| j.stored_energy(w.bodies())).sum();
     assert!(held > 0.0);
     let mut ke_max: f64 = 0.0;
     for _ in 0..2000 {
@@ -114,9 +114,14 @@ fn block_grown_through_rubble_injects_no_energy() {
     )
     .unwrap();
     let mut w = scene.build().unwrap();
-    let sheet = w.boundary.sheet.as_ref().unwrap();
-    let (first, tip) = (sheet.blocks[0], *sheet.blocks.last().unwrap());
-    let p0 = w.bodies.pos[first as usize];
+    // The sheet's blocks from left to right: the driven block first, the tip last.
+    let b = w.bodies();
+    let mut sheet: Vec<BodyId> = (0..b.len() as BodyId)
+        .filter(|&i| b.role[i as usize] == Role::Sheet)
+        .collect();
+    sheet.sort_by(|&i, &j| b.pos[i as usize].x.total_cmp(&b.pos[j as usize].x));
+    let (first, tip) = (sheet[0], *sheet.last().unwrap());
+    let p0 = w.bodies().pos[first as usize];
     // 0.1 m clear of the driven block now; 0.15 m inside the slot of the next grown block.
     let rubble = w
         .add_rect(
@@ -148,7 +153,7 @@ fn block_grown_through_rubble_injects_no_energy() {
     assert!(ho.count >= 1, "no hand-over: {ho:?}");
     assert!(ho.max_area > 0.5 * 0.15 * H, "{ho:?}");
     // The rubble block was not shot away: it moved less than a block width.
-    let moved = (w.bodies.pos[rubble as usize] - V2::new(p0.x - W - 0.1, p0.y)).norm();
+    let moved = (w.bodies().pos[rubble as usize] - V2::new(p0.x - W - 0.1, p0.y)).norm();
     let e = w.energy();
     eprintln!("rubble moved {moved} m, largest KE {ke_max} J/m, {e:?}");
     assert!(moved < W, "the rubble block moved {moved} m");

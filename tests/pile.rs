@@ -7,7 +7,7 @@ use pressridge::scene::Scene;
 /// Largest overlap between any two blocks as a fraction of the smaller block's area, and
 /// whether any block's centroid lies inside another block.
 fn worst_interpenetration(w: &World) -> (f64, bool) {
-    let b = &w.bodies;
+    let b = &w.bodies();
     let mut worst: f64 = 0.0;
     let mut centroid_inside = false;
     for c in w.contacts() {
@@ -32,7 +32,7 @@ fn pile_of_200_blocks_settles_in_water_with_a_closed_budget() {
         .unwrap();
     assert!(scene.pile.as_ref().unwrap().blocks >= 200);
     let mut world = scene.build().unwrap();
-    let n = world.bodies.len();
+    let n = world.bodies().len();
     let mut max_ke: f64 = 0.0;
     let mut worst: f64 = 0.0;
     let mut max_rel_residual: f64 = 0.0;
@@ -41,7 +41,7 @@ fn pile_of_200_blocks_settles_in_water_with_a_closed_budget() {
             world.step();
         }
         let e = world.energy();
-        max_ke = max_ke.max(world.bodies.kinetic_energy());
+        max_ke = max_ke.max(world.bodies().kinetic_energy());
         max_rel_residual = max_rel_residual.max(e.residual.abs() / e.largest_term());
         let (over, inside) = worst_interpenetration(&world);
         worst = worst.max(over);
@@ -51,19 +51,19 @@ fn pile_of_200_blocks_settles_in_water_with_a_closed_budget() {
             world.time()
         );
         for i in 0..n {
-            let p = world.bodies.pos[i];
-            assert!(p.x.is_finite() && p.y.is_finite() && world.bodies.theta[i].is_finite());
+            let p = world.bodies().pos[i];
+            assert!(p.x.is_finite() && p.y.is_finite() && world.bodies().theta[i].is_finite());
         }
     }
     assert!(worst < 0.05, "overlap reached {:.3} of a block", worst);
     assert!(max_rel_residual < 5e-3, "residual {max_rel_residual}");
     // Settled: little kinetic energy left compared with the fall.
-    let ke = world.bodies.kinetic_energy();
+    let ke = world.bodies().kinetic_energy();
     assert!(ke < 0.02 * max_ke, "KE {ke} J/m of peak {max_ke} J/m");
     // The blocks are afloat between the walls, none lost below the pile.
     let level = 0.0;
     for i in 0..n - 2 {
-        let p = world.bodies.pos[i];
+        let p = world.bodies().pos[i];
         assert!(p.x.abs() < 2.0, "block {i} left the basin: {p:?}");
         assert!(p.y > level - 8.0 && p.y < level + 4.0, "block {i} at {p:?}");
     }

@@ -132,10 +132,10 @@ fn broken_floe_piece_subsides_at_most_half_a_metre() {
     let mut scene = scene;
     scene.sheet = None;
     let mut w = scene.build().unwrap();
-    let id = (0..w.bodies.len())
-        .find(|&i| w.bodies.role[i] == Role::Floe)
+    let id = (0..w.bodies().len())
+        .find(|&i| w.bodies().role[i] == Role::Floe)
         .unwrap();
-    let y0 = w.bodies.pos[id].y;
+    let y0 = w.bodies().pos[id].y;
     let f = scene.floe.as_ref().unwrap();
     let k = f.support_stiffness * f.block_width;
     let kb = 1010.0 * 9.81 * f.block_width;
@@ -145,7 +145,7 @@ fn broken_floe_piece_subsides_at_most_half_a_metre() {
     while w.time() < 30.0 {
         w.step();
     }
-    let got = y0 - w.bodies.pos[id].y;
+    let got = y0 - w.bodies().pos[id].y;
     let want = if load <= (k + kb) * freeboard {
         load / (k + kb)
     } else {

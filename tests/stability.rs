@@ -79,7 +79,7 @@ fn the_explicit_dashpot_has_the_smaller_limit() {
 fn a_run_that_turns_non_finite_stops_at_once_naming_step_time_and_body() {
     let sc = scene(&["duration=2"]);
     let mut w = sc.build().unwrap();
-    let body = w.bodies.len() - 1;
+    let body = w.bodies().len() - 1;
     w.set_load(body as u32, V2::new(f64::INFINITY, 0.0));
     let dt = w.dt();
     let err = simulation::run_world(&mut w, &sc, &mut |_| true).unwrap_err();
@@ -234,10 +234,9 @@ fn the_joint_limit_is_within_10_percent_of_the_chain_s_true_limit() {
                 w.join(p, id, 0.06, mat).unwrap();
             }
             // The alternating mode, 1 mm/s.
-            w.bodies.vel[id as usize] = V2::new(if k % 2 == 0 { 1e-3 } else { -1e-3 }, 0.0);
+            w.set_velocity(id, V2::new(if k % 2 == 0 { 1e-3 } else { -1e-3 }, 0.0), 0.0);
             prev = Some(id);
         }
-        w.refresh_time_step();
         w
     };
     let limit = chain(None).stable_time_step();
@@ -249,7 +248,7 @@ fn the_joint_limit_is_within_10_percent_of_the_chain_s_true_limit() {
             if w.fault().is_some() {
                 return f64::INFINITY;
             }
-            for v in &w.bodies.vel {
+            for v in &w.bodies().vel {
                 peak = peak.max(v.norm());
             }
         }

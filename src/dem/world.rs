@@ -218,14 +218,14 @@ impl WorldParams {
 /// A set of blocks in a vertical plane with water, stepping in time.
 #[derive(Clone, Debug)]
 pub struct World {
-    /// Body state arrays.
-    pub bodies: Bodies,
+    /// Body state arrays (read through [`World::bodies`]).
+    pub(crate) bodies: Bodies,
     params: WorldParams,
     k_nv: f64,
     contacts: ContactSet,
     joints: JointSet,
     /// Boundary conditions of the ridging experiment.
-    pub boundary: Boundary,
+    pub(crate) boundary: Boundary,
     loads: Vec<(BodyId, V2)>,
     broad: SweepAndPrune,
     water: WaterForces,
@@ -346,6 +346,34 @@ impl World {
             self.refresh_time_step();
         }
         Ok(k)
+    }
+
+    /// The bodies' state, read-only: one entry per body ([`BodyId`] as the index) in each
+    /// array. SI units per metre of depth: centroid positions `pos` (m), orientations
+    /// `theta` (rad, counter-clockwise), velocities `vel` (m/s) and angular velocities
+    /// `omega` (rad/s) at the half step n − ½ before a step and n + ½ after it (the
+    /// leapfrog's staggering), masses `mass` (kg/m), moments of inertia `inertia` about the
+    /// centroid (kg·m²/m). Bodies change only through the world ([`World::add_rect`],
+    /// [`World::set_velocity`], [`World::step`]), so that the energy ledger stays closed.
+    ///
+    /// ```
+    /// use pressridge::dem::{Block, Drive, Role, V2, World, WorldParams};
+    ///
+    /// let mut w = World::new(WorldParams::default())?;
+    /// let block = Block { width: 0.25, thickness: 0.30, bevel: [0.0; 4] };
+    /// let id = w.add_rect(block, V2::new(0.0, 0.0), 0.0, Drive::FREE, Role::Rubble)?;
+    /// for _ in 0..100 {
+    ///     w.step(); // gravity and buoyancy move it towards its floating level
+    /// }
+    /// let b = w.bodies();
+    /// let (y, v) = (b.pos[id as usize].y, b.vel[id as usize].y); // m, m/s
+    /// assert_eq!(b.len(), 1);
+    /// assert!((b.mass[id as usize] - 920.0 * 0.25 * 0.30).abs() < 1e-9); // kg/m
+    /// assert!(y.is_finite() && v.is_finite());
+    /// # Ok::<(), pressridge::dem::WorldError>(())
+    /// ```
+    pub fn bodies(&self) -> &Bodies {
+        &self.bodies
     }
 
     /// The joints.

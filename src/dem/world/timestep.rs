@@ -7,7 +7,7 @@ use super::*;
 impl World {
     /// Re-derives the time step from the bodies and joints present (unless fixed):
     /// `time_step_safety` × [`World::stable_time_step`].
-    pub fn refresh_time_step(&mut self) {
+    pub(crate) fn refresh_time_step(&mut self) {
         self.dt = match self.params.time_step {
             Some(dt) => dt,
             None => self.params.time_step_safety * self.stable_time_step(),
