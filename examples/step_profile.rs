@@ -18,10 +18,27 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let snap = load_state(std::path::Path::new(path))?;
     let mut w = World::from_snapshot(&snap)?;
     let n = w.bodies().len();
+    // Bounding boxes (x0, x1, y0, y1) of the bodies' outlines (m).
+    let boxes: Vec<[f64; 4]> = snap
+        .bodies
+        .iter()
+        .map(|b| {
+            let o = b.world_outline();
+            o.verts().iter().fold(
+                [
+                    f64::INFINITY,
+                    f64::NEG_INFINITY,
+                    f64::INFINITY,
+                    f64::NEG_INFINITY,
+                ],
+                |[x0, x1, y0, y1], p| [x0.min(p.x), x1.max(p.x), y0.min(p.y), y1.max(p.y)],
+            )
+        })
+        .collect();
     let mut candidates = 0;
-    for a in 0..n {
-        for b in a + 1..n {
-            if w.bodies().aabb[a].overlaps(&w.bodies().aabb[b]) {
+    for (a, p) in boxes.iter().enumerate() {
+        for q in &boxes[a + 1..] {
+            if p[0] <= q[1] && q[0] <= p[1] && p[2] <= q[3] && q[2] <= p[3] {
                 candidates += 1;
             }
         }

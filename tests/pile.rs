@@ -7,7 +7,8 @@ use pressridge::scene::Scene;
 /// Largest overlap between any two blocks as a fraction of the smaller block's area, and
 /// whether any block's centroid lies inside another block.
 fn worst_interpenetration(w: &World) -> (f64, bool) {
-    let b = &w.bodies();
+    let b = w.bodies();
+    let snap = w.snapshot();
     let mut worst: f64 = 0.0;
     let mut centroid_inside = false;
     for c in w.contacts() {
@@ -15,7 +16,7 @@ fn worst_interpenetration(w: &World) -> (f64, bool) {
         let smaller = b.shape[i].area().min(b.shape[j].area());
         worst = worst.max(c.area / smaller);
         for (p, q) in [(i, j), (j, i)] {
-            let poly = &b.world[q];
+            let poly = snap.bodies[q].world_outline();
             let v = poly.verts();
             let inside =
                 (0..v.len()).all(|k| (v[(k + 1) % v.len()] - v[k]).cross(b.pos[p] - v[k]) > 0.0);

@@ -36,9 +36,9 @@ pub struct Shape {
 
 /// Serialised form of a [`Shape`]: its vertices (m, relative to the centroid).
 #[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct ShapeDef {
+pub(crate) struct ShapeDef {
     /// Counter-clockwise vertices (m).
-    pub vertices: Vec<[f64; 2]>,
+    pub(crate) vertices: Vec<[f64; 2]>,
 }
 
 impl TryFrom<ShapeDef> for Shape {
@@ -149,7 +149,7 @@ impl Shape {
     }
 
     /// Centroid of a bevelled rectangle relative to the rectangle's centre (m).
-    pub fn bevel_centroid(width: f64, thickness: f64, bevel: [f64; 4]) -> V2 {
+    pub(crate) fn bevel_centroid(width: f64, thickness: f64, bevel: [f64; 4]) -> V2 {
         // Each cut removes a right triangle of legs b at a corner; its centroid lies b/3
         // in from the corner along both sides.
         let (w, h) = (0.5 * width, 0.5 * thickness);
@@ -185,16 +185,16 @@ impl Shape {
     }
     /// Polar second moment of area about the centroid (m⁴).
     #[inline]
-    pub fn polar_moment(&self) -> f64 {
+    pub(crate) fn polar_moment(&self) -> f64 {
         self.polar
     }
     /// Largest distance from the centroid to a vertex (m).
     #[inline]
-    pub fn radius(&self) -> f64 {
+    pub(crate) fn radius(&self) -> f64 {
         self.radius
     }
     /// Largest distance between two vertices (m).
-    pub fn diameter(&self) -> f64 {
+    pub(crate) fn diameter(&self) -> f64 {
         let v = self.outline.verts();
         let mut d: f64 = 0.0;
         for i in 0..v.len() {
@@ -231,7 +231,7 @@ impl Drive {
         omega: Some(0.0),
     };
     /// True when every degree of freedom is prescribed.
-    pub fn is_kinematic(&self) -> bool {
+    pub(crate) fn is_kinematic(&self) -> bool {
         self.u.is_some() && self.v.is_some() && self.omega.is_some()
     }
 }
@@ -267,7 +267,7 @@ pub struct Block {
 
 impl Block {
     /// The rectangle's centre relative to the body's centroid, in the body frame (m).
-    pub fn rect_centre(&self) -> V2 {
+    pub(crate) fn rect_centre(&self) -> V2 {
         -Shape::bevel_centroid(self.width, self.thickness, self.bevel)
     }
     /// The shape of this block.
@@ -303,15 +303,15 @@ pub struct Bodies {
     /// Nominal rectangle and bevels, for blocks made as rectangles.
     pub block: Vec<Option<Block>>,
     /// Unit x axis of each body, (cos θ, sin θ), at the current orientation.
-    pub axis: Vec<V2>,
+    pub(crate) axis: Vec<V2>,
     /// Outline in world coordinates at the current positions (m).
-    pub world: Vec<Outline>,
+    pub(crate) world: Vec<Outline>,
     /// Bounding box of `world` (m).
-    pub aabb: Vec<Aabb>,
+    pub(crate) aabb: Vec<Aabb>,
     /// Resultant force of the current step (N/m).
-    pub force: Vec<V2>,
+    pub(crate) force: Vec<V2>,
     /// Resultant moment of the current step about the centroid (N·m/m).
-    pub torque: Vec<f64>,
+    pub(crate) torque: Vec<f64>,
 }
 
 impl Bodies {
@@ -326,7 +326,7 @@ impl Bodies {
 
     /// Adds a body of the given shape and density (kg/m³) at centroid `pos` (m) with
     /// orientation `theta` (rad), at rest. Returns its index.
-    pub fn push(
+    pub(crate) fn push(
         &mut self,
         shape: Shape,
         density: f64,
@@ -359,7 +359,7 @@ impl Bodies {
     /// frame) from the old one: the pose and velocity move to the new centroid and the mass
     /// properties follow the new area. Returns the change of kinetic energy (J/m), which the
     /// caller books (material cut away takes its kinetic energy with it).
-    pub fn reshape(&mut self, i: usize, shape: Shape, shift: V2, density: f64) -> f64 {
+    pub(crate) fn reshape(&mut self, i: usize, shape: Shape, shift: V2, density: f64) -> f64 {
         let ke = |b: &Bodies| {
             0.5 * b.mass[i] * b.vel[i].dot(b.vel[i]) + 0.5 * b.inertia[i] * b.omega[i] * b.omega[i]
         };
@@ -388,7 +388,7 @@ impl Bodies {
     /// Velocity (m/s) of the material point at `p` (m) of body `i`, from the stored
     /// (half-step) velocities.
     #[inline]
-    pub fn point_velocity(&self, i: usize, p: V2) -> V2 {
+    pub(crate) fn point_velocity(&self, i: usize, p: V2) -> V2 {
         self.vel[i] + (p - self.pos[i]).perp() * self.omega[i]
     }
 
@@ -396,7 +396,7 @@ impl Bodies {
     /// force along the unit vector `n` at point `p` (m): 1/m + (r×n)²/I over the degrees
     /// of freedom that are free (a prescribed one has infinite mass).
     #[inline]
-    pub fn inverse_mass_along(&self, i: usize, p: V2, n: V2) -> f64 {
+    pub(crate) fn inverse_mass_along(&self, i: usize, p: V2, n: V2) -> f64 {
         let d = self.drive[i];
         let m = self.mass[i];
         let mut k = 0.0;
@@ -417,7 +417,7 @@ impl Bodies {
     /// and moment accumulated so far, over its free degrees of freedom (a prescribed one
     /// does not accelerate); the centripetal term is left out.
     #[inline]
-    pub fn point_acceleration(&self, i: usize, p: V2) -> V2 {
+    pub(crate) fn point_acceleration(&self, i: usize, p: V2) -> V2 {
         let d = self.drive[i];
         let f = self.force[i];
         let m = self.mass[i];
@@ -433,7 +433,7 @@ impl Bodies {
 
     /// Adds force `f` (N/m) acting at point `p` (m) to body `i`.
     #[inline]
-    pub fn apply(&mut self, i: usize, f: V2, p: V2) {
+    pub(crate) fn apply(&mut self, i: usize, f: V2, p: V2) {
         self.force[i] = self.force[i] + f;
         self.torque[i] += (p - self.pos[i]).cross(f);
     }

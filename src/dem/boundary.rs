@@ -20,61 +20,61 @@ use serde::{Deserialize, Serialize};
 
 /// The pushed sheet: what is needed to drive it and to grow it at the left.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct SheetBoundary {
+pub(crate) struct SheetBoundary {
     /// Speed U (m/s).
-    pub speed: f64,
+    pub(crate) speed: f64,
     /// The driven block is also held at its height and orientation.
-    pub clamp: bool,
+    pub(crate) clamp: bool,
     /// Block width W (m).
-    pub width: f64,
+    pub(crate) width: f64,
     /// Thickness h (m).
-    pub thickness: f64,
+    pub(crate) thickness: f64,
     /// Skeletal layer without joint (m).
-    pub skeletal: f64,
+    pub(crate) skeletal: f64,
     /// Nominal joint material; each new joint varies E by ±`modulus_variation`.
-    pub material: JointMaterial,
+    pub(crate) material: JointMaterial,
     /// Relative amplitude of the random variation of E at each joint (0.01 = ±1 %).
-    pub modulus_variation: f64,
+    pub(crate) modulus_variation: f64,
     /// Seed of the variation.
-    pub seed: u64,
+    pub(crate) seed: u64,
     /// Joints made so far (the variation of joint k is drawn from (seed, k)).
-    pub joints_made: u64,
+    pub(crate) joints_made: u64,
     /// Bevel leg at the bottom of the sheet tip, point B (m).
-    pub tip_bevel: f64,
+    pub(crate) tip_bevel: f64,
     /// Bevel leg on the corners of a broken face (m).
-    pub corner_bevel: f64,
+    pub(crate) corner_bevel: f64,
     /// Decay constant of eq (8) (dimensionless).
-    pub decay: f64,
+    pub(crate) decay: f64,
     /// k_nv·h of eq (8) (kg/(m·s)).
-    pub viscosity: f64,
+    pub(crate) viscosity: f64,
     /// Sheet blocks from left (driven) to right (tip).
-    pub blocks: Vec<BodyId>,
+    pub(crate) blocks: Vec<BodyId>,
 }
 
 /// The supports of the floe blocks.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct FloeSupport {
+pub(crate) struct FloeSupport {
     /// Floe blocks with their rest height (m).
-    pub blocks: Vec<(BodyId, f64)>,
+    pub(crate) blocks: Vec<(BodyId, f64)>,
     /// Spring stiffness per block (N/m per m of depth).
-    pub stiffness: Vec<f64>,
+    pub(crate) stiffness: Vec<f64>,
     /// Dashpot coefficient per block (kg/(m·s)).
-    pub damping: Vec<f64>,
+    pub(crate) damping: Vec<f64>,
     /// Bevel leg on the corners of a broken face (m).
-    pub corner_bevel: f64,
+    pub(crate) corner_bevel: f64,
 }
 
 /// Boundary conditions present in a world.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub struct Boundary {
+pub(crate) struct Boundary {
     /// The pushed sheet, if any.
-    pub sheet: Option<SheetBoundary>,
+    pub(crate) sheet: Option<SheetBoundary>,
     /// The floe supports, if any.
-    pub floe: Option<FloeSupport>,
+    pub(crate) floe: Option<FloeSupport>,
     /// Forces of the current step for the ledger: (body, viscous force of eq 7, support
     /// spring force, support dashpot force), all at the centroid (N/m).
     #[serde(skip)]
-    pub forces: Vec<(BodyId, V2, V2, V2)>,
+    pub(crate) forces: Vec<(BodyId, V2, V2, V2)>,
 }
 
 /// Work absorbed by boundary forces (J/m).
@@ -102,7 +102,7 @@ pub struct BoundaryWork {
 impl SheetBoundary {
     /// The random factor (1 ± variation) of joint number `k`, from the seed alone, so that
     /// the sequence does not depend on when joints are made.
-    pub fn modulus_factor(&self, k: u64) -> f64 {
+    pub(crate) fn modulus_factor(&self, k: u64) -> f64 {
         // SplitMix64 (Steele, Lea & Flood 2014) of (seed, k): a counter-based generator,
         // so a restored run draws the same numbers without carrying generator state.
         let mut z = self
@@ -119,7 +119,7 @@ impl SheetBoundary {
 
 impl Boundary {
     /// Adds the forces of eqs (7)–(8) and of the floe supports to the bodies.
-    pub fn apply(&mut self, b: &mut Bodies) {
+    pub(crate) fn apply(&mut self, b: &mut Bodies) {
         self.forces.clear();
         if let Some(s) = &self.sheet {
             let n = s.blocks.len();
@@ -156,7 +156,7 @@ impl Boundary {
     /// Books the boundary forces' work with mid-step velocities: the eq (7) dashpots
     /// relative to their frame moving at U, the frame's own work, the floe dashpots and
     /// springs (see [`BoundaryWork`]).
-    pub fn book_work(&self, vbar: &[V2], dt: f64, w: &mut BoundaryWork) {
+    pub(crate) fn book_work(&self, vbar: &[V2], dt: f64, w: &mut BoundaryWork) {
         let u = self.sheet.as_ref().map_or(0.0, |s| s.speed);
         for &(id, fv, fs, fd) in &self.forces {
             let v = vbar[id as usize];

@@ -66,7 +66,7 @@ pub const DEFAULT_REFERENCE_THICKNESS: f64 = 0.30;
 
 impl ContactParams {
     /// The reference thickness h in use (m).
-    pub fn thickness(&self) -> f64 {
+    pub(crate) fn thickness(&self) -> f64 {
         self.reference_thickness
             .unwrap_or(DEFAULT_REFERENCE_THICKNESS)
     }
@@ -76,14 +76,14 @@ impl ContactParams {
         self.damping_fraction * 2.0 * (self.normal_stiffness * self.thickness() * rho_i).sqrt()
     }
     /// k_nv for a parent sheet of thickness `h` (m) (kg/(m²·s)).
-    pub fn viscous_coefficient_for(&self, h: f64, rho_i: f64) -> f64 {
+    pub(crate) fn viscous_coefficient_for(&self, h: f64, rho_i: f64) -> f64 {
         self.damping_fraction * 2.0 * (self.normal_stiffness * h * rho_i).sqrt()
     }
     /// Tangential stiffness k_te (N/m² : force per metre of depth per metre of slip),
     /// eq (4). The paper gives k_te as "60% of the normal value"; the normal value is read
     /// as the normal stiffness of a contact along a face of the parent sheet's thickness,
     /// k_ne·h — the same product the paper uses in its critical damping 2·sqrt(k_ne·h·ρ_i).
-    pub fn tangential_stiffness(&self) -> f64 {
+    pub(crate) fn tangential_stiffness(&self) -> f64 {
         self.tangential_fraction * self.normal_stiffness * self.thickness()
     }
 }
@@ -97,28 +97,28 @@ pub struct Contact {
     /// eq (3).
     pub area: f64,
     /// Tangential force on `b` along `t` (N/m), eq (4), kept between steps.
-    pub ft: f64,
+    pub(crate) ft: f64,
     /// Elastic normal work absorbed while this contact has been active (J/m): the energy it
     /// holds as a compressed spring.
-    pub stored: f64,
+    pub(crate) stored: f64,
     /// Tangential work booked into this contact less its slip dissipation (J/m): the
     /// energy its tangential spring holds, to the step's accuracy.
     #[serde(default)]
-    pub stored_t: f64,
+    pub(crate) stored_t: f64,
     /// Forgiven overlap A_f (m²): the overlap a contact born overlapping (severed joint,
     /// grown block) had at birth, which the elastic law does not push against; it only
     /// decreases. Zero for every contact born by approach.
     #[serde(default)]
-    pub forgiven: f64,
+    pub(crate) forgiven: f64,
     /// Point of action: the overlap centroid (m).
     pub point: V2,
     /// Unit normal from `a` to `b`.
     pub normal: V2,
     /// Elastic normal force applied on `b` (N/m, ≥ 0).
-    pub fn_elastic: f64,
+    pub(crate) fn_elastic: f64,
     /// Viscous normal force applied on `b` (N/m); negative only as much as keeps the total
     /// normal force from pulling.
-    pub fn_viscous: f64,
+    pub(crate) fn_viscous: f64,
 }
 
 impl Contact {

@@ -86,7 +86,7 @@ pub const MAX_VERTS: usize = 8;
 /// Capacity of a clipping buffer: the intersection of two convex `MAX_VERTS`-gons has at
 /// most `2 · MAX_VERTS` vertices; a few extra slots absorb duplicated points in degenerate
 /// (touching, collinear) configurations.
-pub const CLIP_VERTS: usize = 2 * MAX_VERTS + 4;
+pub(crate) const CLIP_VERTS: usize = 2 * MAX_VERTS + 4;
 
 /// A convex polygon with at most `N` vertices in counter-clockwise order, stored inline.
 #[derive(Clone, Copy, Debug)]
@@ -127,7 +127,7 @@ impl<const N: usize> Poly<N> {
     /// Overwrites this polygon with `src` rotated by the angle of cosine `c` and sine `s`
     /// and moved by `d`, in place (no temporary copies).
     #[inline]
-    pub fn set_transformed(&mut self, src: &Poly<N>, c: f64, s: f64, d: V2) {
+    pub(crate) fn set_transformed(&mut self, src: &Poly<N>, c: f64, s: f64, d: V2) {
         self.n = src.n;
         for k in 0..src.n {
             self.p[k] = src.p[k].rotate(c, s) + d;
@@ -575,16 +575,16 @@ fn a_scale(p: &Outline) -> f64 {
 
 /// Axis-aligned bounding box (m).
 #[derive(Clone, Copy, Debug, Default)]
-pub struct Aabb {
+pub(crate) struct Aabb {
     /// Lower-left corner (m).
-    pub min: V2,
+    pub(crate) min: V2,
     /// Upper-right corner (m).
-    pub max: V2,
+    pub(crate) max: V2,
 }
 
 impl Aabb {
     /// The bounding box of a set of points.
-    pub fn of(v: &[V2]) -> Aabb {
+    pub(crate) fn of(v: &[V2]) -> Aabb {
         let mut min = V2::new(f64::INFINITY, f64::INFINITY);
         let mut max = V2::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
         for &p in v {
@@ -597,7 +597,7 @@ impl Aabb {
     }
     /// True when the boxes overlap (touching counts).
     #[inline]
-    pub fn overlaps(&self, o: &Aabb) -> bool {
+    pub(crate) fn overlaps(&self, o: &Aabb) -> bool {
         self.min.x <= o.max.x
             && o.min.x <= self.max.x
             && self.min.y <= o.max.y

@@ -57,29 +57,29 @@ pub struct Joint {
     /// Face height h (m).
     pub h: f64,
     /// Gauge length W (m): the distance between the block centres at rest.
-    pub gauge: f64,
+    pub(crate) gauge: f64,
     /// Material.
-    pub mat: JointMaterial,
+    pub(crate) mat: JointMaterial,
     /// Bottom of the intact span (m, face coordinate).
-    pub s_lo: f64,
+    pub(crate) s_lo: f64,
     /// Top of the intact span (m, face coordinate).
-    pub s_hi: f64,
+    pub(crate) s_hi: f64,
     /// A crack is running down from the top.
-    pub crack_top: bool,
+    pub(crate) crack_top: bool,
     /// A crack is running up from the bottom.
-    pub crack_bottom: bool,
+    pub(crate) crack_bottom: bool,
     /// Time at which the first crack started (s), or negative.
     pub crack_started: f64,
     /// Elastic work absorbed by the joint so far (J/m).
-    pub elastic_work: f64,
+    pub(crate) elastic_work: f64,
     /// Forces of the current step for the ledger: elastic (on a, moment on a, on b, moment
     /// on b) and viscous.
     #[serde(skip)]
-    pub forces: [JointForces; 2],
+    pub(crate) forces: [JointForces; 2],
     /// Elastic stresses at the ends of the intact span in the last [`Joint::apply`] (Pa),
     /// the input of the fracture test.
     #[serde(skip)]
-    pub stress: SurfaceStress,
+    pub(crate) stress: SurfaceStress,
     /// The Gauss points of the intact span and their moduli, kept between steps (they
     /// change only when a crack moves an end of the span).
     #[serde(skip)]
@@ -99,25 +99,25 @@ struct GaussCache {
 /// The resultant of a joint's stresses on its two blocks (N/m and N·m/m about each
 /// centroid).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct JointForces {
+pub(crate) struct JointForces {
     /// Force on a.
-    pub fa: V2,
+    pub(crate) fa: V2,
     /// Moment on a.
-    pub ma: f64,
+    pub(crate) ma: f64,
     /// Force on b.
-    pub fb: V2,
+    pub(crate) fb: V2,
     /// Moment on b.
-    pub mb: f64,
+    pub(crate) mb: f64,
 }
 
 /// Elastic stresses at the two ends of the intact span, for the fracture test (Pa, tension
 /// positive).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct SurfaceStress {
+pub(crate) struct SurfaceStress {
     /// Normal stress at the top of the intact span.
-    pub top: f64,
+    pub(crate) top: f64,
     /// Normal stress at the bottom of the intact span.
-    pub bottom: f64,
+    pub(crate) bottom: f64,
 }
 
 impl Joint {
@@ -125,7 +125,7 @@ impl Joint {
     /// are `pa`, `pb` in the bodies' frames (m); face height `h` (m), skeletal layer
     /// `skeletal` (m) without joint at the bottom, gauge length `gauge` (m).
     #[allow(clippy::too_many_arguments)]
-    pub fn new(
+    pub(crate) fn new(
         a: BodyId,
         b: BodyId,
         pa: V2,
@@ -163,7 +163,7 @@ impl Joint {
 
     /// Young's modulus at face height s (Pa).
     #[inline]
-    pub fn modulus(&self, s: f64) -> f64 {
+    pub(crate) fn modulus(&self, s: f64) -> f64 {
         let f = (s + 0.5 * self.h) / self.h;
         self.mat.e_bottom + (self.mat.e_top - self.mat.e_bottom) * f
     }
@@ -177,7 +177,7 @@ impl Joint {
     /// integrate E/W·g_n g_nᵀ + G/W·g_t g_tᵀ and the matching η terms of eq (1) over the
     /// intact span (3-point Gauss, exact: the integrand is cubic in s). The input of the
     /// joint limit of [`crate::dem::World::stable_time_step`].
-    pub fn modal_bounds(
+    pub(crate) fn modal_bounds(
         &self,
         b: &Bodies,
         rho_i: f64,
@@ -286,7 +286,7 @@ impl Joint {
     /// Computes the joint's forces from the current poses (with the block axes cached in
     /// `bodies.axis`) and half-step velocities, adds them to the bodies and keeps them for
     /// the ledger, with the elastic surface stresses for the fracture test.
-    pub fn apply(&mut self, bodies: &mut Bodies, rho_i: f64) {
+    pub(crate) fn apply(&mut self, bodies: &mut Bodies, rho_i: f64) {
         self.forces = [JointForces::default(); 2];
         if !self.is_intact() {
             return;
@@ -341,7 +341,7 @@ impl Joint {
 
     /// Work absorbed by the joint in this step with mid-step velocities: (elastic, viscous)
     /// (J/m). The elastic part is also added to the joint's own running total.
-    pub fn book_work(&mut self, vbar: &[V2], wbar: &[f64], dt: f64) -> (f64, f64) {
+    pub(crate) fn book_work(&mut self, vbar: &[V2], wbar: &[f64], dt: f64) -> (f64, f64) {
         let (ia, ib) = (self.a as usize, self.b as usize);
         let p = |f: &JointForces| {
             -(f.fa.dot(vbar[ia]) + f.ma * wbar[ia] + f.fb.dot(vbar[ib]) + f.mb * wbar[ib]) * dt

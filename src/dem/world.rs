@@ -28,7 +28,7 @@ mod fracture;
 mod snapshot;
 mod timestep;
 
-pub use snapshot::{BodyState, SNAPSHOT_FORMAT, Snapshot};
+pub use snapshot::{BodyState, Snapshot};
 
 /// Physical and numerical parameters of a world.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -154,7 +154,7 @@ pub enum WorldError {
 
 impl WorldParams {
     /// Checks every parameter; the message names the first offending one.
-    pub fn validate(&self) -> Result<(), WorldError> {
+    pub(crate) fn validate(&self) -> Result<(), WorldError> {
         let pos = |name, value: f64| {
             if value > 0.0 && value.is_finite() {
                 Ok(())

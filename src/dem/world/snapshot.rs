@@ -82,7 +82,7 @@ impl World {
 }
 
 /// Version of the [`Snapshot`] layout.
-pub const SNAPSHOT_FORMAT: u32 = 2;
+pub(crate) const SNAPSHOT_FORMAT: u32 = 2;
 
 fn nb_of(s: &Snapshot) -> u64 {
     s.bodies.len() as u64
@@ -127,7 +127,7 @@ impl BodyState {
 #[serde(deny_unknown_fields)]
 pub struct Snapshot {
     /// Layout version, [`SNAPSHOT_FORMAT`].
-    pub format: u32,
+    pub(crate) format: u32,
     /// Simulated time (s).
     pub time: f64,
     /// Steps taken.
@@ -139,19 +139,19 @@ pub struct Snapshot {
     /// Bodies.
     pub bodies: Vec<BodyState>,
     /// Active contacts with their history.
-    pub contacts: Vec<Contact>,
+    pub(crate) contacts: Vec<Contact>,
     /// Joints with their cracks.
     pub joints: Vec<Joint>,
     /// Boundary conditions.
-    pub boundary: Boundary,
+    pub(crate) boundary: Boundary,
     /// External loads.
-    pub loads: Vec<(BodyId, V2)>,
+    pub(crate) loads: Vec<(BodyId, V2)>,
     /// Joints severed so far.
     pub blocks_broken: u64,
     /// Contacts born overlapping so far (absent in older snapshots, which predate the
     /// hand-over).
     #[serde(default)]
-    pub handovers: Handovers,
+    pub(crate) handovers: Handovers,
     /// Ledger integrals.
-    pub ledger: Accumulators,
+    pub(crate) ledger: Accumulators,
 }
