@@ -164,12 +164,12 @@ pub struct PlannedRun {
 /// The file that marks a campaign directory as a records-only archive: its run records
 /// (`run.json`, with the summary, samples, final profile and metrics tabulate needs) without
 /// the final states the runs wrote, e.g. a finished campaign committed under `data/paper/`.
-/// Its records are checked for their id and scene digest only ([`RunRecord::verify`]); it is
-/// never resumed into (a campaign run there refuses the directory).
+/// Its records are checked for their id and scene digest only (not for the files their
+/// digest lists, which it does not hold); it is never resumed into (a campaign run there refuses the directory).
 pub const RECORDS_ONLY: &str = "RECORDS-ONLY";
 
 /// Whether `out` is a records-only archive ([`RECORDS_ONLY`]).
-pub fn is_records_only(out: &Path) -> bool {
+pub(crate) fn is_records_only(out: &Path) -> bool {
     out.join(RECORDS_ONLY).is_file()
 }
 
@@ -184,7 +184,7 @@ impl RunRecord {
     /// match. A record without a digest (older versions) is checked for its id and its
     /// `state.json` only. In a records-only archive ([`RECORDS_ONLY`] in `out`) the files
     /// are not there: the id and the scene digest are checked.
-    pub fn verify(&self, out: &Path, id: &str) -> Result<(), String> {
+    pub(crate) fn verify(&self, out: &Path, id: &str) -> Result<(), String> {
         let files = !is_records_only(out);
         if self.id != id {
             return Err(format!(
@@ -412,7 +412,7 @@ impl CampaignSpec {
 }
 
 /// Runs one planned run and makes its record.
-pub fn run_one(
+pub(crate) fn run_one(
     plan: &PlannedRun,
     spec: &CampaignSpec,
     progress: &dyn Fn(f64),
@@ -466,7 +466,7 @@ pub fn run_one(
 }
 
 /// Path of a run's record in a campaign directory.
-pub fn record_path(out: &Path, id: &str) -> PathBuf {
+pub(crate) fn record_path(out: &Path, id: &str) -> PathBuf {
     out.join("runs").join(id).join("run.json")
 }
 
@@ -488,12 +488,12 @@ pub struct CampaignRecords {
 
 impl CampaignRecords {
     /// Whether every planned run has a consistent record.
-    pub fn is_complete(&self) -> bool {
+    pub(crate) fn is_complete(&self) -> bool {
         self.missing.is_empty() && self.inconsistent.is_empty()
     }
 
     /// One line naming the missing and inconsistent runs (at most ten of each).
-    pub fn describe_gaps(&self) -> String {
+    pub(crate) fn describe_gaps(&self) -> String {
         let list = |v: Vec<String>| {
             let n = v.len();
             let mut s = v.into_iter().take(10).collect::<Vec<_>>().join(", ");
@@ -532,7 +532,8 @@ impl CampaignRecords {
 }
 
 /// Reads every run record of a campaign directory, in plan order, and checks each against
-/// its run ([`RunRecord::verify`]); a record whose scene and seed another record already has
+/// its run (its id, its scene and seed against its digest ([`scene_digest`]), and the files
+/// the digest lists, unless the directory is a [`RECORDS_ONLY`] archive); a record whose scene and seed another record already has
 /// counts once. Missing or inconsistent runs are an error naming them unless
 /// `allow_partial`, which returns the complete ones with the gaps listed.
 pub fn read_campaign(out: &Path, allow_partial: bool) -> Result<CampaignRecords, CampaignError> {
@@ -690,7 +691,7 @@ fn finished_record(out: &Path, id: &str) -> Option<RunRecord> {
 /// Takes the finished runs of this campaign from `archive` (e.g. a records-only archive of an
 /// interrupted campaign committed under `data/paper/`) into `out`, so that resuming the
 /// campaign in `out` runs only what the archive lacks. A run is taken when the archive holds
-/// a record of the same planned run (same id) that passes [`RunRecord::verify`] there and
+/// a record of the same planned run (same id) that passes the check of [`read_campaign`] there and
 /// has the planned scene and seed; its record is written into `out` (atomically) without its
 /// final state: the record's digest then lists no files, so `out` tabulates like the
 /// archive. Runs `out` already holds are left alone; an archive record of the same id with

@@ -81,7 +81,7 @@ impl Eta {
     }
 
     /// The mean rate since the origin (units per second); 0 before any progress.
-    pub fn rate(&self) -> f64 {
+    pub(crate) fn rate(&self) -> f64 {
         let Some((x0, t0)) = self.origin else {
             return 0.0;
         };

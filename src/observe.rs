@@ -201,7 +201,7 @@ pub fn profile_spread(ps: &[Profile]) -> Option<Profile> {
 }
 
 /// Flank slopes (degrees) of a strip profile: (lead side, floe side); see the module docs.
-pub fn flank_slopes(values: &[f64], x0: f64, dx: f64) -> (Option<f64>, Option<f64>) {
+pub(crate) fn flank_slopes(values: &[f64], x0: f64, dx: f64) -> (Option<f64>, Option<f64>) {
     let Some((peak_i, &peak)) = values.iter().enumerate().max_by(|a, b| a.1.total_cmp(b.1)) else {
         return (None, None);
     };

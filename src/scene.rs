@@ -265,7 +265,7 @@ impl Default for SheetSection {
 
 impl SheetSection {
     /// The prescribed motion of the driven block.
-    pub fn drive(&self) -> Drive {
+    pub(crate) fn drive(&self) -> Drive {
         Drive {
             u: Some(self.speed),
             v: self.clamp_driven_end.then_some(0.0),
@@ -274,12 +274,12 @@ impl SheetSection {
     }
 
     /// Bevel leg under the sheet tip (m).
-    pub fn tip_bevel(&self) -> f64 {
+    pub(crate) fn tip_bevel(&self) -> f64 {
         self.tip_bevel_fraction * self.thickness
     }
 
     /// Skeletal layer (m): `skeletal_fraction·h`, at most `skeletal_max`.
-    pub fn skeletal(&self) -> f64 {
+    pub(crate) fn skeletal(&self) -> f64 {
         (self.skeletal_fraction * self.thickness).min(self.skeletal_max)
     }
 }

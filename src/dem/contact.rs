@@ -11,7 +11,7 @@
 //! the ridge). The contact such a pair forms would be born deep and pre-loaded: the elastic
 //! law (2) would push with k_ne·A at once and the viscous law (3) would read the whole area
 //! as a one-step approach (k_nv·A/dt), both injecting energy no one stored. Such a contact
-//! is instead born with its overlap forgiven ([`Contact::forgiven`]):
+//! is instead born with its overlap forgiven (the contact's forgiven overlap A_f):
 //! it resists only further penetration, F_e = k_ne·max(A − A_f, 0), starts its rate from
 //! A₀ = A, and A_f only ever decreases (A_f ← min(A_f, A)), so once the blocks separate it
 //! is an ordinary contact. The paper does not discuss this hand-over.
@@ -33,8 +33,9 @@ pub struct ContactParams {
     /// Fraction of the critical damping 2·sqrt(k_ne·h·ρ_i) used for k_nv, eq (3).
     /// Default 0.5 ("50% of the critical damping value").
     pub damping_fraction: f64,
-    /// Tangential stiffness k_te as a fraction of the normal stiffness k_ne·h (see
-    /// [`ContactParams::tangential_stiffness`]). Default 0.6 ("60% of the normal value").
+    /// Tangential stiffness k_te as a fraction of the normal stiffness k_ne·h (k_te =
+    /// `tangential_fraction`·k_ne·h, eq 4, with h the reference thickness). Default 0.6
+    /// ("60% of the normal value").
     pub tangential_fraction: f64,
     /// Thickness h of the parent sheet (m) in k_nv = f·2·sqrt(k_ne·h·ρ_i) and in the normal
     /// stiffness k_ne·h. Unset (the default), scenes take their sheet's thickness, or

@@ -38,7 +38,7 @@ const NONE: u32 = u32::MAX;
 
 /// Work absorbed by joints (J/m).
 ///
-/// A joint holds the elastic work booked into it ([`Joint::elastic_work`]), as a contact
+/// A joint holds the elastic work booked into it (its running elastic work), as a contact
 /// holds its elastic normal work: the books then close exactly, and the O(Δt²) difference
 /// between booked work and the closed-form energy ½∫(E·δ_n² + G·δ_t²)/W (which also carries
 /// the joint law's small non-conservative part under large rotations) stays with the

@@ -3,7 +3,7 @@
 //! One module per mechanism:
 //! - [`geometry`] — convex clipping, areas, centroids, boundary crossings, the water line;
 //! - [`body`] — block shapes and the state arrays;
-//! - [`broadphase`] — candidate pairs by sort-and-sweep;
+//! - `broadphase` — candidate pairs by sort-and-sweep (crate-private);
 //! - [`contact`] — the rubble contact law, eqs (2)–(4);
 //! - [`joint`] — viscous-elastic joints, eq (1);
 //! - [`fracture`] — crack initiation and growth, splitting pieces;

@@ -468,9 +468,9 @@ impl World {
     /// the positions; later calls do nothing.
     ///
     /// The phases, in order: every force at the poses and half-step velocities
-    /// ([`World::gather_forces`]), the leapfrog velocities (eq 5, [`World::integrate`]), the
-    /// ledger with the mid-step velocities (eqs 9–12, [`World::book_ledger`]), the
-    /// positions (eq 6) and fracture ([`World::advance_positions`]).
+    /// (`gather_forces`), the leapfrog velocities (eq 5, `integrate`), the ledger with the
+    /// mid-step velocities (eqs 9–12, `book_ledger`), the positions (eq 6) and fracture
+    /// (`advance_positions`).
     pub fn step(&mut self) {
         let dt = self.dt;
         if dt.is_nan() || dt <= 0.0 || dt.is_infinite() || self.fault.is_some() {

@@ -1,7 +1,7 @@
 //! Reading and writing files. Physics modules never touch files; this module does. Only
 //! this module touches NetCDF.
 
-pub mod digest;
+pub(crate) mod digest;
 pub mod itd_netcdf;
 pub mod report;
 pub mod series;

@@ -14,7 +14,7 @@ pub fn write_json<T: Serialize>(path: &Path, value: &T) -> Result<(), IoError> {
 }
 
 /// Reads a JSON file into a value, naming the file and the problem on failure.
-pub fn read_json<T: DeserializeOwned>(path: &Path) -> Result<T, IoError> {
+pub(crate) fn read_json<T: DeserializeOwned>(path: &Path) -> Result<T, IoError> {
     let text = std::fs::read_to_string(path).map_err(|e| IoError::os(path, e))?;
     serde_json::from_str(&text).map_err(|e| IoError::format(path, e))
 }

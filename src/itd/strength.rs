@@ -36,7 +36,7 @@ pub struct StrengthOptions {
 
 impl StrengthOptions {
     /// Checks option values that could otherwise give garbage (C_f).
-    pub fn validate(&self) -> Result<(), ItdError> {
+    pub(crate) fn validate(&self) -> Result<(), ItdError> {
         self.cf.validate()
     }
 }

@@ -1,5 +1,5 @@
 //! Animations of a run: its snapshots (`snapshots/t*.json`) drawn with the state renderer
-//! ([`super::render`]) in one fixed window and encoded as a looping GIF ([`super::gif`]),
+//! ([`super::render`]) in one fixed window and encoded as a looping GIF (the crate's own encoder),
 //! and as MP4 through `ffmpeg` where it is on the PATH.
 
 use super::PlotError;
@@ -16,7 +16,7 @@ const REACH: f64 = 3.0;
 
 /// The snapshots of the run directory `run_dir` (`snapshots/t*.json`), in time order.
 /// An error naming the directory when there are none.
-pub fn load_snapshots(run_dir: &Path) -> Result<Vec<Snapshot>, IoError> {
+pub(crate) fn load_snapshots(run_dir: &Path) -> Result<Vec<Snapshot>, IoError> {
     let dir = run_dir.join("snapshots");
     let none = || {
         IoError::format(
@@ -53,7 +53,7 @@ pub fn load_snapshots(run_dir: &Path) -> Result<Vec<Snapshot>, IoError> {
 
 /// One window for every frame: the union of the ridge windows ([`Window::fit_ridge`]) of
 /// the snapshots that hold rubble, else the union of their free bodies' windows.
-pub fn common_window(snaps: &[Snapshot]) -> Window {
+pub(crate) fn common_window(snaps: &[Snapshot]) -> Window {
     snaps
         .iter()
         .filter_map(|s| Window::fit_ridge(s, REACH, MARGIN))
@@ -148,7 +148,7 @@ pub fn animate(run_dir: &Path, gif: &Path, opts: &AnimateOptions) -> Result<Anim
 }
 
 /// Whether an `ffmpeg` program runs.
-pub fn ffmpeg_found() -> bool {
+pub(crate) fn ffmpeg_found() -> bool {
     std::process::Command::new("ffmpeg")
         .arg("-version")
         .stdout(std::process::Stdio::null())

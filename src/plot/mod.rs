@@ -1,6 +1,6 @@
 //! Figures (PNG/SVG). Plotting lives here and only here: no physics module depends on it.
 //!
-//! Text needs a TrueType font. [`ensure_font`] registers DejaVu Sans once, looked up in the
+//! Text needs a TrueType font: DejaVu Sans, registered once per process, looked up in the
 //! environment variable `PRESSRIDGE_FONT` (a path to a `.ttf`) and then in Debian's
 //! `fonts-dejavu-core` locations (`scripts/setup.sh` installs it).
 
@@ -17,7 +17,7 @@ macro_rules! to_file {
 }
 
 pub mod animate;
-pub mod gif;
+pub(crate) mod gif;
 pub mod layout;
 pub mod render;
 pub mod series;
@@ -61,7 +61,7 @@ const FONT_PATHS: &[&str] = &[
 
 /// Registers a sans-serif font with plotters under the family name `"sans-serif"`.
 /// Safe to call many times and from several threads; the font file is read once.
-pub fn ensure_font() -> Result<(), PlotError> {
+pub(crate) fn ensure_font() -> Result<(), PlotError> {
     static FONT: OnceLock<bool> = OnceLock::new();
     let ok = *FONT.get_or_init(|| {
         let env = std::env::var("PRESSRIDGE_FONT").ok();

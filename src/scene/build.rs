@@ -6,7 +6,7 @@ use super::*;
 
 impl Scene {
     /// The world parameters of this scene.
-    pub fn world_params(&self) -> WorldParams {
+    pub(crate) fn world_params(&self) -> WorldParams {
         let mut contact = self.contact.clone();
         if contact.reference_thickness.is_none()
             && let Some(sh) = &self.sheet

@@ -6,10 +6,11 @@
 //!   (Hopkins 1994, eqs 13–16), with confidence and prediction bands;
 //! - [`tabulate`] — campaign records to a lookup table (ensemble statistics on a volume
 //!   grid, fits per thickness and pooled, C_f per thickness);
-//! - [`campaigns`] — campaign directories to a table: the pipeline of `pressridge tabulate`
+//! - [`crate::campaign::tabulation`] — campaign directories to a table: the pipeline of `pressridge tabulate`
 //!   and Python's `tabulate` (reading, pooling, rafting exclusion, provenance);
 //! - [`rafting`] — which runs rafted over the floe instead of ridging against it;
-//! - [`student_t`] — Student's t CDF and quantile for the confidence intervals;
+//! - [`fit::student_t_cdf`], [`fit::student_t_quantile`] — Student's t CDF and quantile for
+//!   the confidence intervals;
 //! - [`lookup`] — interpolation in a tabulated campaign (clamped and flagged outside its
 //!   range, NaN where no run reached), read back from NetCDF by `RidgeLookup::open`.
 
@@ -18,5 +19,5 @@ pub mod fields;
 pub mod fit;
 pub mod lookup;
 pub mod rafting;
-pub mod student_t;
+pub(crate) mod student_t;
 pub mod tabulate;

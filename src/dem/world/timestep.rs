@@ -49,7 +49,7 @@ impl World {
     /// Δt < √2/ω whatever ζ.
     ///
     /// Joints. Each joint's mass-scaled stiffness and damping have largest eigenvalues λ
-    /// (1/s²) and μ (1/s) ([`Joint::modal_bounds`]); ω² of the joined blocks is at most the
+    /// (1/s²) and μ (1/s) (`Joint::modal_bounds`); ω² of the joined blocks is at most the
     /// largest sum of λ over one body's joints plus one contact's ω_c² (a jointed block may
     /// be in contact too), the damping rate d likewise, and the step is stable for
     /// Δt < 2/(sqrt(ω² + d²/4) + d/2).
