@@ -49,6 +49,44 @@
 //! assert!(band.conf_lo[10] < band.fit[10] && band.fit[10] < band.conf_hi[10]);
 //! # Ok::<(), pressridge::table::fit::FitError>(())
 //! ```
+//!
+//! The uncertainties, e.g. of fits to one's own ensembles (records read with
+//! [`crate::campaign::read_campaign`]): intervals of the coefficients, bands of the curve,
+//! standard errors of eqs (15)–(16), and a p-value from the t distribution.
+//!
+//! ```
+//! use pressridge::table::fit::{
+//!     cross_covariance, data_ratio, fit_through_origin, fitted_ratio, force, force_std_error,
+//!     ratio, ratio_std_error, student_t_cdf,
+//! };
+//!
+//! let v: [f64; 6] = [0.5, 1.0, 1.5, 2.0, 2.5, 3.0]; // m³/m
+//! let w: Vec<f64> = v.iter().map(|&x| x * (1.8e3 * x + 2.4e4) + 10.0 * x.sin()).collect();
+//! let pe: Vec<f64> = v.iter().map(|&x| x * (4.0e2 * x + 1.0e3) + 5.0 * x.cos()).collect();
+//! let (fit_w, fit_pe) = (fit_through_origin(&v, &w)?, fit_through_origin(&v, &pe)?);
+//! // 95 % intervals of a_W (J/m⁵) and b_W (J/m³); bands of the work curve at V = 2 m³/m
+//! // (J/m): of the mean curve, and for a new sample (wider).
+//! let [(a_lo, a_hi), (b_lo, b_hi)] = fit_w.coefficient_intervals(0.95);
+//! assert!(a_lo < fit_w.a && fit_w.a < a_hi && b_lo < fit_w.b && fit_w.b < b_hi);
+//! let (lo, hi) = fit_w.confidence_band(2.0, 0.95);
+//! let (plo, phi) = fit_w.prediction_band(2.0, 0.95);
+//! assert!(plo < lo && lo < fit_w.eval(2.0) && fit_w.eval(2.0) < hi && hi < phi);
+//! // Eq (15) for a 0.5 m sheet at V = 2 m³/m and its standard error (N/m), and the
+//! // two-sided p-value of "no force" with n − 2 degrees of freedom.
+//! let (f, se) = (force(&fit_w, 0.5, 2.0), force_std_error(&fit_w, 0.5, 2.0));
+//! let p = 2.0 * (1.0 - student_t_cdf(f / se, fit_w.dof as f64));
+//! assert!(p < 1e-3);
+//! // Eq (16) with its delta-method standard error (dimensionless): the two fits share
+//! // their samples, so their errors are correlated.
+//! let cross = cross_covariance(&v, &w, &pe, &fit_w, &fit_pe)?;
+//! let r = ratio(&fit_w, &fit_pe, 2.0);
+//! let se_r = ratio_std_error(&fit_w, &fit_pe, Some(&cross), 2.0);
+//! assert!(r > 1.0 && se_r.is_finite());
+//! // Plain W/PE (dimensionless): of the fitted curves, and sample by sample.
+//! let (r_fit, r_data) = (fitted_ratio(&fit_w, &fit_pe, 2.0), data_ratio(&w, &pe)?);
+//! assert!((r_data[3] / r_fit - 1.0).abs() < 0.05); // the sample at V = 2 m³/m
+//! # Ok::<(), pressridge::table::fit::FitError>(())
+//! ```
 
 use faer::prelude::*;
 use thiserror::Error;
@@ -430,19 +468,19 @@ pub fn data_ratio(w: &[f64], pe: &[f64]) -> Result<Vec<f64>, FitError> {
 /// volumes, for plotting and tabulation. All vectors have the length of `v`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Band {
-    /// Two-sided level of both bands (e.g. 0.95).
+    /// Two-sided level of both bands (dimensionless, e.g. 0.95).
     pub level: f64,
     /// Ridged volumes (m³/m).
     pub v: Vec<f64>,
     /// Fitted curve `V·(a·V + b)` (units of `y`, J/m).
     pub fit: Vec<f64>,
-    /// Lower edge of the confidence band of the mean curve.
+    /// Lower edge of the confidence band of the mean curve (units of `y`, J/m).
     pub conf_lo: Vec<f64>,
-    /// Upper edge of the confidence band of the mean curve.
+    /// Upper edge of the confidence band of the mean curve (units of `y`, J/m).
     pub conf_hi: Vec<f64>,
-    /// Lower edge of the prediction band for a new observation.
+    /// Lower edge of the prediction band for a new observation (units of `y`, J/m).
     pub pred_lo: Vec<f64>,
-    /// Upper edge of the prediction band for a new observation.
+    /// Upper edge of the prediction band for a new observation (units of `y`, J/m).
     pub pred_hi: Vec<f64>,
 }
 

@@ -105,7 +105,7 @@ pub struct Field {
     pub units: String,
     /// Description.
     pub long_name: String,
-    /// Values in C order over `axes` (NaN where no run reached).
+    /// Values in `units`, in C order over `axes` (NaN where no run reached).
     pub data: Vec<f64>,
 }
 
