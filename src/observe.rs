@@ -90,7 +90,8 @@ fn vertical_extent(v: &[V2], x: f64) -> Option<(f64, f64)> {
 }
 
 /// The profile of a state over `strips` strips of width `dx` (m) from `x0` (m), sampled on
-/// `lines` vertical lines per strip.
+/// `lines` vertical lines per strip: sail heights and keel depths in m, of all ice and of
+/// rubble alone (see the module documentation, and [`metrics`] for an example).
 pub fn profile(s: &Snapshot, x0: f64, dx: f64, strips: usize, lines: usize) -> Profile {
     let level = s.params.water.as_ref().map_or(0.0, |w| w.level);
     let outlines: Vec<(Role, Vec<V2>, f64, f64)> = s
@@ -239,7 +240,30 @@ pub(crate) fn flank_slopes(values: &[f64], x0: f64, dx: f64) -> (Option<f64>, Op
 
 /// Metrics of a profile, with the solid rubble areas and piece lengths of the state they
 /// came from (`None` for an averaged profile: those fields are then 0 and should be
-/// averaged from the runs).
+/// averaged from the runs). `state` is the state, its rubble piece lengths (m; the run
+/// summary's `rubble_block_lengths`) and the sheet thickness (m).
+///
+/// ```
+/// use pressridge::{observe, scene::Scene, simulation};
+///
+/// // A 3 m sheet (0.30 m thick) pushed against a 4 m floe for 3 s.
+/// let scene = Scene::from_toml("duration = 3.0\n[sheet]\nlength = 3.0\n[floe]\nlength = 4.0")?;
+/// let out = simulation::run(&scene, &mut |_| true)?;
+/// // The profile in 32 strips of 1 m from x = -20 m, 10 sample lines a strip (the
+/// // defaults of a campaign's `[profile]`): sail heights and keel depths in m.
+/// let p = observe::profile(&out.final_state, -20.0, 1.0, 32, 10);
+/// assert_eq!(p.keel.len(), 32);
+/// let lengths = &out.summary.rubble_block_lengths;
+/// let m = observe::metrics(&p, Some((&out.final_state, lengths, 0.30)));
+/// println!(
+///     "sail {:.2} m, keel {:.2} m, rubble below water {:.3} m²/m, L/h = {:.1}",
+///     m.max_sail_height, m.max_keel_depth, m.keel_ice_area, m.length_to_thickness,
+/// );
+/// // Flank slopes (degrees) need two strips between 20 % and 80 % of the peak: None here.
+/// println!("keel slopes {:?}, {:?}", m.keel_slope_lead, m.keel_slope_floe);
+/// assert!(m.max_keel_depth > 0.0 && m.keel_ice_area > 0.0); // rubble went under the floe
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn metrics(p: &Profile, state: Option<(&Snapshot, &[f64], f64)>) -> RidgeMetrics {
     let max = |v: &[f64]| v.iter().copied().fold(0.0, f64::max);
     let (sail_slope_lead, sail_slope_floe) = flank_slopes(&p.rubble_sail, p.x0, p.dx);

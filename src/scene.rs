@@ -488,7 +488,32 @@ impl Scene {
     }
 
     /// Parses a scene from TOML text; missing keys take their defaults, unknown keys are
-    /// an error naming them.
+    /// an error naming them. Lengths are in m, speeds in m/s, times in s (SI throughout;
+    /// `pressridge simulate --print-scene` prints every key with its default).
+    ///
+    /// ```
+    /// use pressridge::scene::Scene;
+    ///
+    /// // A 2 m sheet, 0.30 m thick, pushed against a fixed wall for 1 s.
+    /// let scene = Scene::from_toml(
+    ///     r#"
+    ///     name = "sheet-on-wall"
+    ///     duration = 1.0
+    ///     [sheet]
+    ///     thickness = 0.30
+    ///     length = 2.0
+    ///     [wall]
+    ///     "#,
+    /// )?;
+    /// assert_eq!(scene.sheet.as_ref().unwrap().speed, 0.25); // m/s, the default
+    /// assert_eq!(Scene::from_toml(&scene.to_toml())?, scene); // TOML round trip
+    /// let faster = scene.with_overrides(&["sheet.speed=0.5"])?; // as `--set sheet.speed=0.5`
+    /// assert_eq!(faster.sheet.unwrap().speed, 0.5);
+    /// assert!(Scene::from_toml("[sheet]\nthikness = 0.3").is_err()); // unknown key
+    /// let world = scene.build()?; // the world at time zero, its time step derived
+    /// assert!(world.dt() > 0.0); // s
+    /// # Ok::<(), pressridge::scene::SceneError>(())
+    /// ```
     pub fn from_toml(text: &str) -> Result<Scene, SceneError> {
         let s: Scene = toml::from_str(text).map_err(|e| SceneError::Parse(e.to_string()))?;
         s.validate()?;
@@ -498,6 +523,17 @@ impl Scene {
     /// The scene of a run: the TOML file at `path` (the built-in default when `None`) with
     /// the `key=value` overrides `sets` applied ([`Scene::with_overrides`]) and validated.
     /// The one loader of the command line, Python and campaigns.
+    ///
+    /// ```no_run
+    /// use pressridge::scene::Scene;
+    /// use std::path::Path;
+    ///
+    /// // As `pressridge simulate --scene ridge.toml --set duration=20 --set contact.mu=0.4`.
+    /// let scene = Scene::load(Some(Path::new("ridge.toml")), &["duration=20", "contact.mu=0.4"])?;
+    /// // The built-in default, the paper's Figure 5 experiment, run for 20 s.
+    /// let figure5 = Scene::load(None, &["duration=20"])?;
+    /// # Ok::<(), pressridge::scene::SceneLoadError>(())
+    /// ```
     pub fn load<S: AsRef<str>>(
         path: Option<&std::path::Path>,
         sets: &[S],

@@ -72,6 +72,30 @@ pub struct RidgeDiagnostics {
 ///
 /// # Panics
 /// If the slice lengths do not match `ws.ncat()` (the batched driver checks shapes first).
+///
+/// # Example
+/// ```
+/// use pressridge::itd::{
+///     CategoryBounds, RidgeForcing, RidgeOptions, Workspace, category_bounds, ridge_column,
+/// };
+///
+/// let hin_max = category_bounds(&CategoryBounds::default(), 5)?; // 0, 0.6, 1.4, 2.4, 3.6, 5 m
+/// let mut aicen = [0.2, 0.3, 0.2, 0.15, 0.05]; // dimensionless
+/// let mut vicen = [0.06, 0.3, 0.38, 0.45, 0.2]; // m
+/// let mut aice0 = 0.1; // open water
+/// let volume = vicen.iter().sum::<f64>();
+/// // One hour of convergence at 1e-6 1/s (about 9 % a day), no shear.
+/// let forcing = RidgeForcing { convergence: 1e-6, shear: 0.0, dt: 3600.0 };
+/// let mut ws = Workspace::new(5);
+/// let opts = RidgeOptions::default(); // CICE's
+/// let d = ridge_column(&mut aicen, &mut vicen, &mut aice0, &hin_max, forcing, &opts, &mut ws)?;
+/// // The total area stays 1 and the ice volume is conserved, to round-off.
+/// assert!((aice0 + aicen.iter().sum::<f64>() - 1.0).abs() < 1e-12);
+/// assert!((vicen.iter().sum::<f64>() - volume).abs() < 1e-12);
+/// // Rates (1/s) and the areas ridged out of each category (dimensionless).
+/// assert!(d.dardg1dt > 0.0 && d.dardg2dt < d.dardg1dt && ws.ardg1n.iter().sum::<f64>() > 0.0);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn ridge_column(
     aicen: &mut [f64],
     vicen: &mut [f64],

@@ -60,6 +60,22 @@ pub struct ColumnStrength {
 ///
 /// # Panics
 /// If the slice lengths differ from `ws.ncat()` (the batched driver checks shapes first).
+///
+/// # Example
+/// ```
+/// use pressridge::itd::{StrengthOptions, Workspace, strength_column};
+///
+/// // Five categories: areas (dimensionless) and volumes per unit area (m), i.e. ice
+/// // 0.3, 1.0, 1.9, 3.0 and 4.0 m thick, and 10 % open water.
+/// let aicen = [0.2, 0.3, 0.2, 0.15, 0.05];
+/// let vicen = [0.06, 0.3, 0.38, 0.45, 0.2];
+/// let mut ws = Workspace::new(aicen.len()); // reuse it for every column
+/// // CICE's defaults: exponential participation and redistribution, Rothrock, C_f = 17.
+/// let opts = StrengthOptions::default();
+/// let p = strength_column(&aicen, &vicen, None, &opts, &mut ws)?; // aice0 = 1 − Σ aicen
+/// assert!(p.strength > 0.0 && !p.cf_clamped); // N/m
+/// # Ok::<(), pressridge::itd::ColumnError>(())
+/// ```
 pub fn strength_column(
     aicen: &[f64],
     vicen: &[f64],
