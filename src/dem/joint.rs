@@ -76,10 +76,10 @@ pub struct Joint {
     /// on b) and viscous.
     #[serde(skip)]
     pub(crate) forces: [JointForces; 2],
-    /// Elastic stresses at the ends of the intact span in the last [`Joint::apply`] (Pa),
+    /// Elastic stresses at the ends of the intact span at the last step (Pa),
     /// the input of the fracture test.
     #[serde(skip)]
-    pub(crate) stress: SurfaceStress,
+    pub stress: SurfaceStress,
     /// The Gauss points of the intact span and their moduli, kept between steps (they
     /// change only when a crack moves an end of the span).
     #[serde(skip)]
@@ -113,11 +113,11 @@ pub(crate) struct JointForces {
 /// Elastic stresses at the two ends of the intact span, for the fracture test (Pa, tension
 /// positive).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub(crate) struct SurfaceStress {
-    /// Normal stress at the top of the intact span.
-    pub(crate) top: f64,
-    /// Normal stress at the bottom of the intact span.
-    pub(crate) bottom: f64,
+pub struct SurfaceStress {
+    /// Normal stress at the top of the intact span (Pa).
+    pub top: f64,
+    /// Normal stress at the bottom of the intact span (Pa).
+    pub bottom: f64,
 }
 
 impl Joint {
