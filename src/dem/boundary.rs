@@ -88,7 +88,7 @@ pub(crate) struct Boundary {
 /// is brought up to speed, which, booked as dissipation, made that negative).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
-pub struct BoundaryWork {
+pub(crate) struct BoundaryWork {
     /// Dissipation of the eq (7)–(8) dashpots (relative to the moving frame) and of the
     /// floe dashpots.
     pub damping: f64,

@@ -142,7 +142,7 @@ impl Contact {
 
 /// Totals of the work absorbed by all contacts, for the energy ledger (J/m).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub struct ContactWork {
+pub(crate) struct ContactWork {
     /// Work absorbed by elastic normal forces, eq (12) elastic part.
     pub normal_elastic: f64,
     /// Work absorbed by viscous normal forces: the inelastic dissipation Φ_i, eq (12).

@@ -47,7 +47,7 @@ const NONE: u32 = u32::MAX;
 /// except by that O(Δt²) difference on a joint that breaks unloaded.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
-pub struct JointWork {
+pub(crate) struct JointWork {
     /// Work of the elastic stresses on all joints, intact or severed.
     pub elastic: f64,
     /// Work of the viscous stresses: joint dissipation.

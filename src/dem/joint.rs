@@ -14,7 +14,7 @@
 //!
 //! integrated over the intact span [s_lo, s_hi]: the skeletal layer (the bottom 20 % of h, at
 //! most 6 cm) carries nothing, and cracks eat into the span from the top and the bottom
-//! ([`crate::dem::fracture`]). W is the distance between the two block centres (the width of a
+//! (`dem::fracture`, docs/model.md "Fracture"). W is the distance between the two block centres (the width of a
 //! block for equal blocks). The fibre force acts on each block at its own face point, so the
 //! work it absorbs is exactly ∫(σ·δ̇_n + τ·δ̇_t) ds in the limit of small rotations.
 

@@ -26,7 +26,7 @@ pub use terms::{Keep, LEDGER_TERMS, LedgerTerm, N_TERMS, Sign, TermSet, Terms, t
 /// Running integrals of the step, from which an [`EnergyBudget`] is derived.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
-pub struct Accumulators {
+pub(crate) struct Accumulators {
     /// Work done on the system by prescribed motions (the pushed sheet), eq (9) (J/m).
     pub work: f64,
     /// Work done against gravity: the gravity part of ΔPE, eq (10) (J/m).
@@ -52,7 +52,7 @@ pub struct Accumulators {
 
 /// Energy held in elastic elements at one instant (J/m).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Stored {
+pub(crate) struct Stored {
     /// Normal contact springs (elastic work booked and not yet returned).
     pub contact_normal: f64,
     /// Tangential contact springs: tangential work booked less slip dissipation.
@@ -76,7 +76,7 @@ pub struct EnergyBudget {
     /// (`frame_work`), and external loads.
     pub work: f64,
     /// The part of `work` done by the frame of eqs (7)–(8) moving at U (J/m): see
-    /// [`crate::dem::boundary::BoundaryWork`].
+    /// `dem::boundary` (crate-private) and docs/model.md, "Boundary conditions".
     pub frame_work: f64,
     /// Change of potential energy (gravity and buoyancy), eq (10).
     pub potential_energy: f64,
@@ -84,7 +84,7 @@ pub struct EnergyBudget {
     /// entry).
     pub kinetic_energy: f64,
     /// Frictional dissipation Φ_f, eq (11): the slip dissipation of the Coulomb cap
-    /// ([`crate::dem::contact::ContactWork::slip`]).
+    /// (docs/model.md, "Energy ledger").
     pub friction_dissipation: f64,
     /// Viscous (inelastic) contact dissipation Φ_i, eq (12).
     pub viscous_dissipation: f64,
@@ -116,7 +116,7 @@ pub struct EnergyBudget {
 impl EnergyBudget {
     /// Builds the budget from the accumulators, the current kinetic energy and the energy
     /// held by contacts (J/m). Joints and floe springs hold the work booked into them.
-    pub fn from_parts(time: f64, acc: &Accumulators, kinetic_now: f64, st: &Stored) -> Self {
+    pub(crate) fn from_parts(time: f64, acc: &Accumulators, kinetic_now: f64, st: &Stored) -> Self {
         let c = &acc.contact;
         let work = acc.work + acc.loads + acc.boundary.frame;
         let potential_energy = acc.gravity + acc.water.buoyancy;

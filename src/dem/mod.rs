@@ -6,17 +6,17 @@
 //! - `broadphase` — candidate pairs by sort-and-sweep (crate-private);
 //! - [`contact`] — the rubble contact law, eqs (2)–(4);
 //! - [`joint`] — viscous-elastic joints, eq (1);
-//! - [`fracture`] — crack initiation and growth, splitting pieces;
-//! - [`boundary`] — the pushed sheet, eqs (7)–(8), floe supports;
+//! - `fracture` — crack initiation and growth, splitting pieces (crate-private);
+//! - `boundary` — the pushed sheet, eqs (7)–(8), floe supports (crate-private);
 //! - [`water`] — buoyancy and drag;
 //! - [`ledger`] — the energy budget, eqs (9)–(12);
 //! - [`world`] — the leapfrog step, eqs (5)–(6).
 
 pub mod body;
-pub mod boundary;
+pub(crate) mod boundary;
 pub(crate) mod broadphase;
 pub mod contact;
-pub mod fracture;
+pub(crate) mod fracture;
 pub mod geometry;
 pub mod joint;
 pub mod ledger;

@@ -59,7 +59,7 @@ pub(crate) struct WaterForces {
 
 /// Work absorbed from the bodies by water forces (J/m).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub struct WaterWork {
+pub(crate) struct WaterWork {
     /// Work done against buoyancy: the buoyancy part of ΔPE in eq (10).
     pub buoyancy: f64,
     /// Work dissipated by drag.

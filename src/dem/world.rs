@@ -53,7 +53,7 @@ pub struct WorldParams {
     #[serde(default)]
     pub contact_dashpot: Dashpot,
     /// Speed at which a crack crosses a joint (m/s). Default 50 m/s; see
-    /// [`crate::dem::fracture`] and docs/model.md ("Fracture").
+    /// docs/model.md ("Fracture").
     pub crack_speed: f64,
     /// Mass-proportional numerical damping γ (1/s): F = −γ·m·v, M = −γ·I·ω. Default 0;
     /// used only to relax verification scenes to their static state.
