@@ -80,6 +80,11 @@ pub struct Joint {
     /// the input of the fracture test.
     #[serde(skip)]
     pub stress: SurfaceStress,
+    /// The elastic surface stresses filtered over the incubation time, when the fracture
+    /// test uses one ([`crate::dem::WorldParams::incubation_time`]); kept in the state so
+    /// that a resumed run continues exactly.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(crate) stress_filtered: Option<SurfaceStress>,
     /// The Gauss points of the intact span and their moduli, kept between steps (they
     /// change only when a crack moves an end of the span).
     #[serde(skip)]
@@ -112,7 +117,7 @@ pub(crate) struct JointForces {
 
 /// Elastic stresses at the two ends of the intact span, for the fracture test (Pa, tension
 /// positive).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct SurfaceStress {
     /// Normal stress at the top of the intact span (Pa).
     pub top: f64,
@@ -151,6 +156,7 @@ impl Joint {
             elastic_work: 0.0,
             forces: [JointForces::default(); 2],
             stress: SurfaceStress::default(),
+            stress_filtered: None,
             gauss: GaussCache::default(),
         }
     }

@@ -55,6 +55,10 @@ pub struct WorldParams {
     /// Speed at which a crack crosses a joint (m/s). Default 50 m/s; see
     /// docs/model.md ("Fracture").
     pub crack_speed: f64,
+    /// Incubation time of crack initiation (s), or `None` for the paper's instantaneous
+    /// test; see [`crate::scene::JointSection::incubation_time`].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub incubation_time: Option<f64>,
     /// Mass-proportional numerical damping γ (1/s): F = −γ·m·v, M = −γ·I·ω. Default 0;
     /// used only to relax verification scenes to their static state.
     pub global_damping: f64,
@@ -71,6 +75,7 @@ impl Default for WorldParams {
             time_step: None,
             contact_dashpot: Dashpot::default(),
             crack_speed: 50.0,
+            incubation_time: None,
             global_damping: 0.0,
         }
     }
@@ -675,8 +680,13 @@ impl World {
         self.time += dt;
         self.steps += 1;
         if !self.joints.is_empty() {
-            self.joints
-                .advance(self.params.crack_speed, self.time, dt, &mut self.acc.joints);
+            self.joints.advance(
+                self.params.crack_speed,
+                self.params.incubation_time,
+                self.time,
+                dt,
+                &mut self.acc.joints,
+            );
             if !self.joints.severed().is_empty() {
                 self.after_fracture();
             }

@@ -18,6 +18,7 @@ impl Scene {
             ice_density: self.ice.density,
             contact,
             crack_speed: self.joint.crack_speed,
+            incubation_time: self.joint.incubation_time,
             water: self.water.enabled.then_some(WaterParams {
                 level: self.water.level,
                 density: self.water.density,
