@@ -24,17 +24,22 @@ fn finite_max(xs: impl Iterator<Item = f64>) -> f64 {
     xs.filter(|x| x.is_finite()).fold(0.0, f64::max)
 }
 
-/// The ensemble-mean work curve of set `s` at thickness index `hi` (V in m³/m, W in MJ/m),
-/// drawn only where at least half of its runs reached the volume: beyond, the mean of the
-/// one or two runs that went farthest jumps about and is no ensemble mean.
-fn mean_work_curve(t: &RidgeTable, s: usize, hi: usize) -> Vec<(f64, f64)> {
-    let n = t
-        .runs
+/// The largest number of runs behind a value of set `s` at thickness index `hi` (the runs
+/// of that thickness, where all reached).
+fn most_runs(t: &RidgeTable, s: usize, hi: usize) -> u32 {
+    t.runs
         .slice(s![s, hi, ..])
         .iter()
         .copied()
         .max()
-        .unwrap_or(0);
+        .unwrap_or(0)
+}
+
+/// The ensemble-mean work curve of set `s` at thickness index `hi` (V in m³/m, W in MJ/m),
+/// drawn only where at least half of its runs reached the volume: beyond, the mean of the
+/// one or two runs that went farthest jumps about and is no ensemble mean.
+fn mean_work_curve(t: &RidgeTable, s: usize, hi: usize) -> Vec<(f64, f64)> {
+    let n = most_runs(t, s, hi);
     t.volume
         .iter()
         .zip(&t.work_mean.slice(s![s, hi, ..]))
@@ -197,13 +202,7 @@ where
     for (k, &s) in sets.iter().enumerate() {
         let c = COLORS[k % COLORS.len()];
         let pts = mean_work_curve(t, s, hi);
-        let n = t
-            .runs
-            .slice(s![s, hi, ..])
-            .iter()
-            .copied()
-            .max()
-            .unwrap_or(0) as usize;
+        let n = most_runs(t, s, hi) as usize;
         chart
             .draw_series(LineSeries::new(pts, c.stroke_width(line)))
             .map_err(draw_err)?
