@@ -223,7 +223,7 @@ fn tiny_campaign_is_resumable_and_complete() {
         let t = tabulate(&bad, 11).unwrap();
         assert_eq!(t.excluded.len(), 1);
         assert_eq!(t.excluded[0].0, records[0].id);
-        assert_eq!(t.runs[0][0][0], 1, "one seed left at the first thickness");
+        assert_eq!(t.runs[[0, 0, 0]], 1, "one seed left at the first thickness");
         e.viscous_dissipation = -1e-9 * w;
         bad[0].summary.set_energy(&e);
         assert!(
@@ -318,12 +318,13 @@ fn tiny_campaign_is_resumable_and_complete() {
             let bits = |f: &pressridge::table::lookup::Field| -> Vec<u64> {
                 f.data.iter().map(|x| x.to_bits()).collect()
             };
+            assert_eq!(a.data.shape(), b.data.shape(), "{n}");
             assert_eq!(bits(a), bits(b), "{n}");
         }
-        for (h, runs) in t.cf_finals[0].iter().enumerate() {
+        for (h, runs) in t.cf_finals.row(0).iter().enumerate() {
             assert_eq!(runs.len(), 2);
             let mean = runs.iter().sum::<f64>() / 2.0;
-            assert!((mean - t.cf[0][h]).abs() <= 1e-12 * mean);
+            assert!((mean - t.cf[[0, h]]).abs() <= 1e-12 * mean);
         }
         // An empty fit table and a NaN fit are warned about; one seed shows as "(1 seed)".
         use pressridge::table::tabulate::fit_warnings;

@@ -219,7 +219,7 @@ pub(crate) fn tabulate(
         let mut lines = Vec::new();
         for (si, set) in table.sets.iter().enumerate() {
             for (hi, &h) in table.thickness.iter().enumerate() {
-                lines.push((set.clone(), h, table.cf[si][hi]));
+                lines.push((set.clone(), h, table.cf[[si, hi]]));
             }
         }
         Ok((lines, warnings))

@@ -4,7 +4,6 @@
 use std::path::PathBuf;
 use std::sync::Arc;
 
-use ndarray::IxDyn;
 use numpy::{PyArray1, PyArrayDyn};
 use pyo3::prelude::*;
 
@@ -108,19 +107,8 @@ impl PyRidgeLookup {
                 self.inner.variables().collect::<Vec<_>>().join(", ")
             ))
         })?;
-        let t = &self.inner;
-        let mut shape = Vec::new();
-        if f.axes.set {
-            shape.push(t.sets().len());
-        }
-        if f.axes.thickness {
-            shape.push(t.thickness().len());
-        }
-        if f.axes.volume {
-            shape.push(t.volume().len());
-        }
-        let data = ndarray::ArrayD::from_shape_vec(IxDyn(&shape), f.data.clone())
-            .map_err(|e| BindError::Internal(e.to_string()))?;
+        // The field's array is already laid out on its axes (set, thickness, volume).
+        let data = f.data.clone();
         Ok((
             f.axes.names(),
             f.units.clone(),

@@ -179,7 +179,7 @@ pub fn campaign_report(
     for (si, set) in table.sets.iter().enumerate() {
         let label = if set.is_empty() { "all" } else { set.as_str() };
         for (hi, h) in table.thickness.iter().enumerate() {
-            if let Some(f) = &table.fits[si][hi] {
+            if let Some(f) = &table.fits[[si, hi]] {
                 fit_row(&mut o, label, &format!("{h}"), f);
             }
         }
@@ -213,12 +213,12 @@ pub fn campaign_report(
         let label = if set.is_empty() { "all" } else { set.as_str() };
         let _ = write!(o, "| {label} |");
         for &k in &picks {
-            let _ = write!(o, " {:.1} |", table.ratio_fit[si][k]);
+            let _ = write!(o, " {:.1} |", table.ratio_fit[[si, k]]);
         }
         let cf: Vec<String> = table
             .thickness
             .iter()
-            .zip(&table.cf_finals[si])
+            .zip(table.cf_finals.row(si))
             .map(|(h, runs)| format!("{h} m: {}", pm(Some(Stat::of(runs)), 1.0, 1)))
             .collect();
         let _ = writeln!(o, " {} |", cf.join(", "));

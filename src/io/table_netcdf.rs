@@ -24,6 +24,7 @@
 
 use super::itd_netcdf::NetcdfError;
 use crate::table::tabulate::RidgeTable;
+use std::borrow::Cow;
 use std::path::Path;
 
 fn nc_err(path: &Path) -> impl Fn(netcdf::Error) -> NetcdfError + '_ {
@@ -85,34 +86,38 @@ fn write_ridge_table_at(
     }
     f.add_dimension("volume", nv).map_err(&e)?;
     let ds = t.default_set();
-    type Var<'a> = (&'a str, &'a [&'a str], &'a str, &'a str, Vec<f64>);
-    let mut table_vars = t.variables();
+    // The table's variables in the set layout, as C-order slices of its arrays.
+    type Var<'a> = (&'a str, &'a [&'a str], &'a str, &'a str, &'a [f64]);
+    let table_vars = t.variables();
     let vars: Vec<Var> = table_vars
-        .iter_mut()
+        .iter()
         .map(|v| {
-            let data = std::mem::take(&mut v.data);
+            let data = v
+                .data
+                .as_slice()
+                .expect("table variables are in standard layout");
             (v.name.as_str(), v.dims, v.units, v.long_name.as_str(), data)
         })
         .collect();
     // The friction grid: every variable on `set` moves to (μ, μ_w) cells.
-    type OnDims<'a> = (&'a str, Vec<&'a str>, &'a str, &'a str, Vec<f64>);
+    type OnDims<'a> = (&'a str, Vec<&'a str>, &'a str, &'a str, Cow<'a, [f64]>);
     let vars: Vec<OnDims> = match &grid {
         None => vars
             .into_iter()
-            .map(|(n, d, u, l, x)| (n, d.to_vec(), u, l, x))
+            .map(|(n, d, u, l, x)| (n, d.to_vec(), u, l, Cow::Borrowed(x)))
             .collect(),
         Some(g) => vars
             .into_iter()
             .map(|(n, d, u, l, x)| match n {
-                "mu" => (n, vec!["mu"], u, l, g.mu.clone()),
-                "mu_w" => (n, vec!["mu_w"], u, l, g.mu_w.clone()),
+                "mu" => (n, vec!["mu"], u, l, Cow::Owned(g.mu.clone())),
+                "mu_w" => (n, vec!["mu_w"], u, l, Cow::Owned(g.mu_w.clone())),
                 _ if d.first() == Some(&"set") => {
                     let count = matches!(n, "runs" | "cf_runs");
                     let fill = if count { 0.0 } else { f64::NAN };
-                    let (dims, data) = g.spread(&d[1..], &x, fill, (nh, nv));
-                    (n, dims, u, l, data)
+                    let (dims, data) = g.spread(&d[1..], x, fill, (nh, nv));
+                    (n, dims, u, l, Cow::Owned(data))
                 }
-                _ => (n, d.to_vec(), u, l, x),
+                _ => (n, d.to_vec(), u, l, Cow::Borrowed(x)),
             })
             .collect(),
     };
@@ -183,7 +188,7 @@ fn write_ridge_table_at(
     f.enddef().map_err(&e)?;
     for (name, _, _, _, data) in &vars {
         let mut v = f.variable_mut(name).expect("just defined");
-        v.put_values(data, ..).map_err(&e)?;
+        v.put_values(data.as_ref(), ..).map_err(&e)?;
     }
     f.close().map_err(&e)?;
     Ok(())
@@ -291,6 +296,7 @@ impl crate::table::lookup::RidgeLookup {
     /// missing or malformed variable.
     pub fn open(path: &Path) -> Result<Self, NetcdfError> {
         use crate::table::lookup::{Axes, Field, RidgeLookup};
+        use ndarray::{Array1, ArrayD, IxDyn};
         let e = nc_err(path);
         let file = netcdf::open(path).map_err(&e)?;
         let missing = |var: &str| NetcdfError::MissingVariable {
@@ -376,11 +382,14 @@ impl crate::table::lookup::RidgeLookup {
                     1,
                 ),
             ] {
-                let data = pairs
+                let data: Array1<f64> = pairs
                     .iter()
                     .map(|p| if k == 0 { p.0 } else { p.1 })
                     .collect();
-                fields.push((name.to_string(), Field::new(Axes::SET, "1", long, data)));
+                fields.push((
+                    name.to_string(),
+                    Field::new(Axes::SET, "1", long, data.into_dyn()),
+                ));
             }
         }
         for v in file.variables() {
@@ -426,6 +435,23 @@ impl crate::table::lookup::RidgeLookup {
                 let vol = if axes.volume { volume.len() } else { 1 };
                 data = g.gather(&data, outer, vol);
             }
+            // The set layout: one array axis per axis of the field, set first.
+            let shape: Vec<usize> = [
+                (axes.set, nsets),
+                (axes.thickness, thickness.len()),
+                (axes.volume, volume.len()),
+            ]
+            .into_iter()
+            .filter_map(|(on, n)| on.then_some(n))
+            .collect();
+            let found = data.len();
+            let data =
+                ArrayD::from_shape_vec(IxDyn(&shape), data).map_err(|_| NetcdfError::Shape {
+                    path: path.to_path_buf(),
+                    var: name.clone(),
+                    expected: format!("{} values on {:?}", shape.iter().product::<usize>(), shape),
+                    found: format!("{found} values"),
+                })?;
             fields.push((
                 name,
                 Field::new(axes, &text("units"), &text("long_name"), data),

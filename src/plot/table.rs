@@ -4,6 +4,7 @@ use super::layout::{Axis, Layout};
 use super::{PlotError, draw_err, ensure_font};
 use crate::observe::Profile;
 use crate::table::tabulate::RidgeTable;
+use ndarray::s;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
@@ -23,15 +24,26 @@ fn finite_max(xs: impl Iterator<Item = f64>) -> f64 {
     xs.filter(|x| x.is_finite()).fold(0.0, f64::max)
 }
 
+/// The largest number of runs behind a value of set `s` at thickness index `hi` (the runs
+/// of that thickness, where all reached).
+fn most_runs(t: &RidgeTable, s: usize, hi: usize) -> u32 {
+    t.runs
+        .slice(s![s, hi, ..])
+        .iter()
+        .copied()
+        .max()
+        .unwrap_or(0)
+}
+
 /// The ensemble-mean work curve of set `s` at thickness index `hi` (V in m³/m, W in MJ/m),
 /// drawn only where at least half of its runs reached the volume: beyond, the mean of the
 /// one or two runs that went farthest jumps about and is no ensemble mean.
 fn mean_work_curve(t: &RidgeTable, s: usize, hi: usize) -> Vec<(f64, f64)> {
-    let n = t.runs[s][hi].iter().copied().max().unwrap_or(0);
+    let n = most_runs(t, s, hi);
     t.volume
         .iter()
-        .zip(&t.work_mean[s][hi])
-        .zip(&t.runs[s][hi])
+        .zip(&t.work_mean.slice(s![s, hi, ..]))
+        .zip(&t.runs.slice(s![s, hi, ..]))
         .filter(|((_, w), k)| w.is_finite() && 2 * **k >= n && **k > 0)
         .map(|((v, w), _)| (*v, w / 1e6))
         .collect()
@@ -60,9 +72,9 @@ where
     let vmax = t.volume.last().copied().unwrap_or(1.0).max(1e-9);
     let band = t.work_band[s].as_ref();
     let wmax = finite_max(
-        t.work_mean[s]
+        t.work_mean
+            .index_axis(ndarray::Axis(0), s)
             .iter()
-            .flatten()
             .copied()
             .chain(band.into_iter().flat_map(|b| b.pred_hi.iter().copied())),
     ) / 1e6;
@@ -156,7 +168,7 @@ fn plot_work_sets_at(t: &RidgeTable, hi: usize, path: &Path) -> Result<(), PlotE
 /// The sets with at least one run at thickness index `hi`.
 pub fn sets_at(t: &RidgeTable, hi: usize) -> Vec<usize> {
     (0..t.sets.len())
-        .filter(|&s| t.runs[s][hi].iter().any(|&n| n > 0))
+        .filter(|&s| t.runs.slice(s![s, hi, ..]).iter().any(|&n| n > 0))
         .collect()
 }
 
@@ -172,7 +184,7 @@ where
     let vmax = t.volume.last().copied().unwrap_or(1.0).max(1e-9);
     let wmax = finite_max(
         sets.iter()
-            .flat_map(|&s| t.work_mean[s][hi].iter().copied()),
+            .flat_map(|&s| t.work_mean.slice(s![s, hi, ..]).into_iter().copied()),
     ) / 1e6;
     root.fill(&WHITE).map_err(draw_err)?;
     let title = format!(
@@ -190,7 +202,7 @@ where
     for (k, &s) in sets.iter().enumerate() {
         let c = COLORS[k % COLORS.len()];
         let pts = mean_work_curve(t, s, hi);
-        let n = t.runs[s][hi].iter().copied().max().unwrap_or(0) as usize;
+        let n = most_runs(t, s, hi) as usize;
         chart
             .draw_series(LineSeries::new(pts, c.stroke_width(line)))
             .map_err(draw_err)?
@@ -222,10 +234,10 @@ where
 {
     let vmax = t.volume.last().copied().unwrap_or(1.0).max(1e-9);
     let fmax = finite_max(
-        t.force_fit[s]
+        t.force_fit
+            .index_axis(ndarray::Axis(0), s)
             .iter()
-            .chain(t.force_mean[s].iter())
-            .flatten()
+            .chain(t.force_mean.index_axis(ndarray::Axis(0), s).iter())
             .copied(),
     ) / 1e3;
     root.fill(&WHITE).map_err(draw_err)?;
@@ -252,7 +264,7 @@ where
             .draw_series(LineSeries::new(
                 t.volume
                     .iter()
-                    .zip(&t.force_fit[s][hi])
+                    .zip(&t.force_fit.slice(s![s, hi, ..]))
                     .filter(|(_, f)| f.is_finite())
                     .map(|(v, f)| (*v, f / 1e3)),
                 c.stroke_width(line),
@@ -264,7 +276,7 @@ where
             .draw_series(
                 t.volume
                     .iter()
-                    .zip(&t.force_mean[s][hi])
+                    .zip(&t.force_mean.slice(s![s, hi, ..]))
                     .filter(|(_, f)| f.is_finite())
                     .map(|(v, f)| Circle::new((*v, f / 1e3), 3, c.filled())),
             )
@@ -448,9 +460,8 @@ where
         t.cf_finals
             .iter()
             .flatten()
-            .flatten()
             .copied()
-            .chain(t.cf_finals.iter().flatten().map(|r| {
+            .chain(t.cf_finals.iter().map(|r| {
                 let s = stat(r);
                 s.mean + s.std
             }))
@@ -484,11 +495,11 @@ where
         let stats: Vec<(f64, crate::table::ensemble::Stat)> = t
             .thickness
             .iter()
-            .zip(&t.cf_finals[si])
+            .zip(&t.cf_finals.row(si))
             .filter(|(_, r)| !r.is_empty())
             .map(|(h, r)| (*h, stat(r)))
             .collect();
-        let n: usize = t.cf_finals[si].iter().map(Vec::len).max().unwrap_or(0);
+        let n: usize = t.cf_finals.row(si).iter().map(Vec::len).max().unwrap_or(0);
         let name = if set.is_empty() {
             "ensemble mean".to_string()
         } else {
@@ -513,10 +524,16 @@ where
                 .map_err(draw_err)?;
         }
         chart
-            .draw_series(t.thickness.iter().zip(&t.cf_finals[si]).flat_map(|(h, r)| {
-                r.iter()
-                    .map(move |v| Circle::new((*h + 2.0 * whisker, *v), dot, c.mix(0.6).filled()))
-            }))
+            .draw_series(
+                t.thickness
+                    .iter()
+                    .zip(&t.cf_finals.row(si))
+                    .flat_map(|(h, r)| {
+                        r.iter().map(move |v| {
+                            Circle::new((*h + 2.0 * whisker, *v), dot, c.mix(0.6).filled())
+                        })
+                    }),
+            )
             .map_err(draw_err)?;
         // The fit: W/ΔPE of the set's pooled fits, eqs (13)–(14), at each thickness's final
         // volume (the largest one its runs reached), dashed; a cross where the set has one
@@ -527,7 +544,9 @@ where
                 .iter()
                 .enumerate()
                 .filter_map(|(hi, &h)| {
-                    let v_end = t.runs[si][hi]
+                    let v_end = t
+                        .runs
+                        .slice(s![si, hi, ..])
                         .iter()
                         .rposition(|&n| n > 0)
                         .map(|k| t.volume[k])?;

@@ -8,11 +8,18 @@ use super::fit::Band;
 use super::lookup::{Axes, Field, LookupError, RidgeLookup};
 use super::tabulate::{RidgeTable, SetFits};
 use crate::dem::ledger::{LedgerTerm, term};
+use ndarray::{Array, Array1, Array2, ArrayView1, CowArray, Dimension, IxDyn};
 
-/// One variable of a ridging table in the set layout: values in C order over `dims`
-/// (a subset of `set`, `thickness`, `volume` in that order), NaN where no run reached.
+/// The values of a [`TableVariable`]: a view of the table's own array where the variable is
+/// one of [`RidgeTable`]'s grid fields, else an array made from the table (fit
+/// coefficients, bands, counts as `f64`).
+pub type TableData<'a> = CowArray<'a, f64, IxDyn>;
+
+/// One variable of a ridging table in the set layout: an array over `dims` (a subset of
+/// `set`, `thickness`, `volume` in that order, the layout of [`RidgeTable`]'s grid fields),
+/// NaN where no run reached.
 #[derive(Clone, Debug, PartialEq)]
-pub struct TableVariable {
+pub struct TableVariable<'a> {
     /// Name, as in the NetCDF file.
     pub name: String,
     /// Dimensions, outermost first.
@@ -21,17 +28,32 @@ pub struct TableVariable {
     pub units: &'static str,
     /// Description.
     pub long_name: String,
-    /// Values.
-    pub data: Vec<f64>,
+    /// Values, one axis per entry of `dims`, in standard (C) layout.
+    pub data: TableData<'a>,
+}
+
+/// A grid field of the table as it is: a view of its array.
+fn view<D: Dimension>(x: &Array<f64, D>) -> TableData<'_> {
+    CowArray::from(x.view().into_dyn())
+}
+
+/// A 1-D field or axis of the table (a `Vec`) as it is: a view of it.
+fn axis(x: &[f64]) -> TableData<'_> {
+    CowArray::from(ArrayView1::from(x).into_dyn())
+}
+
+/// An array made from the table.
+fn owned<D: Dimension>(x: Array<f64, D>) -> TableData<'static> {
+    CowArray::from(x.into_dyn())
 }
 
 /// (name, dims, units, long_name, values), as [`TableVariable`].
-type Var = (
+type Var<'a> = (
     &'static str,
     &'static [&'static str],
     &'static str,
     &'static str,
-    Vec<f64>,
+    TableData<'a>,
 );
 
 /// The names and long names of the ensemble mean and standard deviation of ledger term `lt`
@@ -52,33 +74,24 @@ fn ensemble_names(lt: &LedgerTerm) -> [(String, String); 2] {
 impl RidgeTable {
     /// Every variable of the table, in file order (the set layout; the NetCDF writer spreads
     /// the `set` axis onto a (μ, μ_w) grid where the sets differ only in friction).
-    pub fn variables(&self) -> Vec<TableVariable> {
+    pub fn variables<'a>(&'a self) -> Vec<TableVariable<'a>> {
         let t = self;
-        let nv = t.volume.len();
-        let flat3 =
-            |x: &Vec<Vec<Vec<f64>>>| x.iter().flatten().flatten().copied().collect::<Vec<f64>>();
-        let flat2 = |x: &Vec<Vec<f64>>| x.iter().flatten().copied().collect::<Vec<f64>>();
-        let coef = |g: &dyn Fn(&SetFits) -> f64| -> Vec<f64> {
-            t.fits
-                .iter()
-                .flatten()
-                .map(|x| x.as_ref().map_or(f64::NAN, g))
-                .collect()
+        let (ns, nv) = (t.sets.len(), t.volume.len());
+        let coef =
+            |g: &dyn Fn(&SetFits) -> f64| owned(t.fits.map(|x| x.as_ref().map_or(f64::NAN, g)));
+        let pooled = |g: &dyn Fn(&SetFits) -> f64| {
+            owned(Array1::from_iter(
+                t.pooled.iter().map(|x| x.as_ref().map_or(f64::NAN, g)),
+            ))
         };
-        let pooled = |g: &dyn Fn(&SetFits) -> f64| -> Vec<f64> {
-            t.pooled
-                .iter()
-                .map(|x| x.as_ref().map_or(f64::NAN, g))
-                .collect()
-        };
-        let band = |g: &dyn Fn(&Band) -> &Vec<f64>| -> Vec<f64> {
-            t.work_band
-                .iter()
-                .flat_map(|b| match b {
-                    Some(b) => g(b).clone(),
-                    None => vec![f64::NAN; nv],
-                })
-                .collect()
+        let band = |g: &dyn Fn(&Band) -> &Vec<f64>| {
+            let mut x = Array2::from_elem((ns, nv), f64::NAN);
+            for (mut row, b) in x.rows_mut().into_iter().zip(&t.work_band) {
+                if let Some(b) = b {
+                    row.assign(&ArrayView1::from(g(b)));
+                }
+            }
+            owned(x)
         };
         const S3: &[&str] = &["set", "thickness", "volume"];
         const S2: &[&str] = &["set", "thickness"];
@@ -91,28 +104,28 @@ impl RidgeTable {
                 S1,
                 "1",
                 "friction coefficient between ice blocks above the water line",
-                t.mu.clone(),
+                axis(&t.mu),
             ),
             (
                 "mu_w",
                 S1,
                 "1",
                 "friction coefficient between ice blocks below the water line",
-                t.mu_w.clone(),
+                axis(&t.mu_w),
             ),
             (
                 "thickness",
                 &["thickness"],
                 "m",
                 "lead-ice sheet thickness",
-                t.thickness.clone(),
+                axis(&t.thickness),
             ),
             (
                 "volume",
                 &["volume"],
                 "m3 m-1",
                 "ridged-ice volume per metre of ridge V = U h t",
-                t.volume.clone(),
+                axis(&t.volume),
             ),
         ];
         let rest: Vec<Var> = vec![
@@ -121,33 +134,28 @@ impl RidgeTable {
                 S3,
                 "1",
                 "ensemble mean of work over potential energy change",
-                flat3(&t.ratio_mean),
+                view(&t.ratio_mean),
             ),
             (
                 "force_mean",
                 S3,
                 "N m-1",
                 "ensemble mean ridging force over the sampling interval",
-                flat3(&t.force_mean),
+                view(&t.force_mean),
             ),
             (
                 "runs",
                 S3,
                 "1",
                 "number of runs behind each ensemble value",
-                t.runs
-                    .iter()
-                    .flatten()
-                    .flatten()
-                    .map(|&n| n as f64)
-                    .collect(),
+                owned(t.runs.mapv(f64::from)),
             ),
             (
                 "force_fit",
                 S3,
                 "N m-1",
                 "ridging force from the pooled work fit, eq (15), within the volumes the runs of each thickness reached",
-                flat3(&t.force_fit),
+                view(&t.force_fit),
             ),
             (
                 "work_a",
@@ -196,42 +204,42 @@ impl RidgeTable {
                 S2,
                 "1",
                 "C_f: ensemble mean of final work over potential energy change",
-                flat2(&t.cf),
+                view(&t.cf),
             ),
             (
                 "cf_std",
                 S2,
                 "1",
                 "sample standard deviation of the runs' final work over potential energy change",
-                flat2(&t.cf_std),
+                view(&t.cf_std),
             ),
             (
                 "cf_conf_lo",
                 S2,
                 "1",
                 "lower end of the 95 % confidence interval of cf_by_set (Student t)",
-                t.cf_conf.iter().flatten().map(|c| c.0).collect(),
+                owned(t.cf_conf.map(|c| c.0)),
             ),
             (
                 "cf_conf_hi",
                 S2,
                 "1",
                 "upper end of the 95 % confidence interval of cf_by_set (Student t)",
-                t.cf_conf.iter().flatten().map(|c| c.1).collect(),
+                owned(t.cf_conf.map(|c| c.1)),
             ),
             (
                 "cf_runs",
                 S2,
                 "1",
                 "number of runs behind cf_by_set",
-                t.cf_runs.iter().flatten().map(|&n| f64::from(n)).collect(),
+                owned(t.cf_runs.mapv(f64::from)),
             ),
             (
                 "cf",
                 &["thickness"],
                 "1",
                 "C_f at the friction of the attributes mu and mu_w: ratio of ridging work to potential energy change",
-                t.cf[ds].clone(),
+                CowArray::from(t.cf.row(ds).into_dyn()),
             ),
             (
                 "pooled_work_a",
@@ -315,10 +323,10 @@ impl RidgeTable {
                 SV,
                 "1",
                 "dWork/dPE from the pooled fits, eq (16)",
-                flat2(&t.ratio_fit),
+                view(&t.ratio_fit),
             ),
         ];
-        let var = |(name, dims, units, long_name, data): Var| TableVariable {
+        let var = |(name, dims, units, long_name, data): Var<'a>| TableVariable {
             name: name.into(),
             dims,
             units,
@@ -340,7 +348,7 @@ impl RidgeTable {
                     dims: S3,
                     units: lt.udunits,
                     long_name,
-                    data: flat3(x),
+                    data: view(x),
                 })
         });
         let mut vars: Vec<TableVariable> = head.into_iter().map(var).collect();
@@ -365,7 +373,10 @@ impl RidgeTable {
                 thickness: on("thickness"),
                 volume: on("volume"),
             };
-            fields.push((v.name, Field::new(axes, v.units, &v.long_name, v.data)));
+            fields.push((
+                v.name,
+                Field::new(axes, v.units, &v.long_name, v.data.into_owned()),
+            ));
         }
         let seeds: Vec<String> = self.seeds.iter().map(u64::to_string).collect();
         let excluded: Vec<String> = self

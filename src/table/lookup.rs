@@ -20,7 +20,7 @@
 //! use pressridge::table::lookup::{Axes, Field, RidgeLookup};
 //! // Work (J/m) on 2 thicknesses x 3 volumes, one set.
 //! let work = Field::new(Axes::SET_THICKNESS_VOLUME, "J m-1", "work",
-//!     vec![0.0, 1000.0, 3000.0, 0.0, 2000.0, 5000.0]);
+//!     ndarray::array![[[0.0, 1000.0, 3000.0], [0.0, 2000.0, 5000.0]]].into_dyn());
 //! let t = RidgeLookup::new(vec!["mu=1".into()], vec![0.2, 0.4], vec![0.0, 5.0, 10.0],
 //!     vec![("work_mean".into(), work)], Default::default()).unwrap();
 //! let w = t.value("work_mean", 0, 0.3, 7.5).unwrap();
@@ -35,6 +35,7 @@ use std::collections::BTreeMap;
 use crate::interp::{bracket, lerp};
 
 use crate::itd::{CfLookup, CfTable};
+use ndarray::{ArrayD, Axis};
 
 /// Which axes a field lies on, in the order `set`, `thickness`, `volume` (C order, volume
 /// fastest).
@@ -105,13 +106,16 @@ pub struct Field {
     pub units: String,
     /// Description.
     pub long_name: String,
-    /// Values in `units`, in C order over `axes` (NaN where no run reached).
-    pub data: Vec<f64>,
+    /// Values in `units`, one array axis per entry of `axes` in the order `set`,
+    /// `thickness`, `volume` (the layout of [`crate::table::tabulate::RidgeTable`]'s grid
+    /// fields), in standard (C) layout; NaN where no run reached.
+    pub data: ArrayD<f64>,
 }
 
 impl Field {
-    /// A field from its axes, units, description and values (C order over the axes).
-    pub fn new(axes: Axes, units: &str, long_name: &str, data: Vec<f64>) -> Self {
+    /// A field from its axes, units, description and values (an array over the axes, see
+    /// [`Field::data`]; [`RidgeLookup::new`] checks its shape against the table's axes).
+    pub fn new(axes: Axes, units: &str, long_name: &str, data: ArrayD<f64>) -> Self {
         Self {
             axes,
             units: units.into(),
@@ -213,16 +217,25 @@ impl RidgeLookup {
         check_axis("volume", &volume)?;
         let mut map = BTreeMap::new();
         for (name, f) in fields {
-            let len = |on: bool, n: usize| if on { n } else { 1 };
-            let want = len(f.axes.set, sets.len())
-                * len(f.axes.thickness, thickness.len())
-                * len(f.axes.volume, volume.len());
-            if f.data.len() != want {
+            let want: Vec<usize> = [
+                (f.axes.set, sets.len()),
+                (f.axes.thickness, thickness.len()),
+                (f.axes.volume, volume.len()),
+            ]
+            .into_iter()
+            .filter_map(|(on, n)| on.then_some(n))
+            .collect();
+            if f.data.shape() != want {
                 return Err(LookupError::Invalid(format!(
-                    "field `{name}` on ({}) has {} values, expected {want}",
+                    "field `{name}` on ({}) has shape {:?}, expected {want:?}",
                     f.axes.names().join(", "),
-                    f.data.len()
+                    f.data.shape()
                 )));
+            }
+            // Standard layout, so that `value` may index the values as one C-order slice.
+            let mut f = f;
+            if !f.data.is_standard_layout() {
+                f.data = f.data.as_standard_layout().into_owned();
             }
             map.insert(name, f);
         }
@@ -350,7 +363,10 @@ impl RidgeLookup {
         let sh = if a.volume { nv } else { 1 };
         let ss = if a.thickness { nh * sh } else { sh };
         let base = if a.set { set * ss } else { 0 };
-        let d = &f.data;
+        let d = f
+            .data
+            .as_slice()
+            .expect("standard layout, by RidgeLookup::new");
         let row = |i: usize| {
             let o = base + i * sh;
             lerp(d[o + iv], || d[o + iv + 1], wv)
@@ -396,8 +412,10 @@ impl RidgeLookup {
                 nsets: self.sets.len(),
             });
         }
-        let nh = self.thickness.len();
-        let row = &f.data[set * nh..(set + 1) * nh];
+        let row = f.data.index_axis(Axis(0), set);
+        let row = row
+            .as_slice()
+            .expect("standard layout, by RidgeLookup::new");
         let t = CfTable::from_nodes(&self.thickness, row)
             .map_err(|e| LookupError::Invalid(format!("cf_by_set of set {set}: {e}")))?;
         Ok(match self.friction() {
@@ -410,6 +428,8 @@ impl RidgeLookup {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    use ndarray::{Array, IxDyn};
 
     fn table() -> RidgeLookup {
         // Two sets, three thicknesses, four volumes; work = 1000·set + 100·ih + iv, with the
@@ -434,15 +454,30 @@ mod tests {
             vec![
                 (
                     "work_mean".into(),
-                    Field::new(Axes::SET_THICKNESS_VOLUME, "J m-1", "w", work),
+                    Field::new(
+                        Axes::SET_THICKNESS_VOLUME,
+                        "J m-1",
+                        "w",
+                        Array::from_shape_vec((2, 3, 4), work).unwrap().into_dyn(),
+                    ),
                 ),
                 (
                     "cf_by_set".into(),
-                    Field::new(Axes::SET_THICKNESS, "1", "cf", cf),
+                    Field::new(
+                        Axes::SET_THICKNESS,
+                        "1",
+                        "cf",
+                        Array::from_shape_vec((2, 3), cf).unwrap().into_dyn(),
+                    ),
                 ),
                 (
                     "pooled_work_a".into(),
-                    Field::new(Axes::SET, "J m-5", "a", vec![3.0, 4.0]),
+                    Field::new(
+                        Axes::SET,
+                        "J m-5",
+                        "a",
+                        ndarray::array![3.0, 4.0].into_dyn(),
+                    ),
                 ),
             ],
             BTreeMap::new(),
@@ -538,22 +573,28 @@ mod tests {
 
     #[test]
     fn inconsistent_tables_are_refused() {
-        let bad = |h: Vec<f64>, n: usize| {
+        let bad = |h: Vec<f64>, shape: &[usize]| {
             RidgeLookup::new(
                 vec!["a".into()],
                 h,
                 vec![0.0, 1.0],
                 vec![(
                     "w".into(),
-                    Field::new(Axes::SET_THICKNESS_VOLUME, "J m-1", "w", vec![0.0; n]),
+                    Field::new(
+                        Axes::SET_THICKNESS_VOLUME,
+                        "J m-1",
+                        "w",
+                        ArrayD::zeros(IxDyn(shape)),
+                    ),
                 )],
                 BTreeMap::new(),
             )
         };
-        assert!(bad(vec![0.2, 0.3], 4).is_ok());
-        assert!(bad(vec![0.3, 0.2], 4).is_err());
-        assert!(bad(vec![0.2, f64::NAN], 4).is_err());
-        assert!(bad(vec![0.2, 0.3], 5).is_err());
-        assert!(bad(vec![], 0).is_err());
+        assert!(bad(vec![0.2, 0.3], &[1, 2, 2]).is_ok());
+        assert!(bad(vec![0.3, 0.2], &[1, 2, 2]).is_err());
+        assert!(bad(vec![0.2, f64::NAN], &[1, 2, 2]).is_err());
+        assert!(bad(vec![0.2, 0.3], &[1, 2, 3]).is_err());
+        assert!(bad(vec![0.2, 0.3], &[1, 4]).is_err());
+        assert!(bad(vec![], &[1, 0, 2]).is_err());
     }
 }

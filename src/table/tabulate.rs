@@ -24,6 +24,7 @@
 use super::ensemble::{Stat, dissipation_violation};
 use super::fit::{Band, FitError, QuadFit, fit_through_origin, force, ratio, student_t_quantile};
 use crate::record::RunRecord;
+use ndarray::{Array2, Array3, s};
 
 /// The fits of one group of samples (J/m against m³/m).
 #[derive(Clone, Debug, PartialEq)]
@@ -35,6 +36,14 @@ pub struct SetFits {
 }
 
 /// A tabulated campaign.
+///
+/// The grid fields are ndarray arrays over the axes `(set, thickness, volume)`, or the
+/// subset named on each, always in that order and in standard (C, volume fastest) layout:
+/// axis 0 indexes [`RidgeTable::sets`], axis `thickness` indexes [`RidgeTable::thickness`]
+/// and axis `volume` indexes [`RidgeTable::volume`]. This is the layout of the table's
+/// variables ([`RidgeTable::variables`]), of the in-memory lookup
+/// ([`crate::table::lookup::Field::data`]) and of the NetCDF set layout; cells no run
+/// reached hold NaN (counts hold 0).
 #[derive(Clone, Debug, PartialEq)]
 pub struct RidgeTable {
     /// Set labels: the friction pair, then the first run's other settings than thickness
@@ -48,43 +57,45 @@ pub struct RidgeTable {
     pub thickness: Vec<f64>,
     /// Ridged-volume grid (m³/m).
     pub volume: Vec<f64>,
-    /// Ensemble statistics, indexed `[set][thickness][volume]`.
-    pub work_mean: Vec<Vec<Vec<f64>>>,
-    /// Standard deviation of the work over the runs (J/m).
-    pub work_std: Vec<Vec<Vec<f64>>>,
-    /// Mean potential energy (J/m).
-    pub pe_mean: Vec<Vec<Vec<f64>>>,
-    /// Standard deviation of the potential energy (J/m).
-    pub pe_std: Vec<Vec<Vec<f64>>>,
-    /// Mean W/ΔPE (dimensionless).
-    pub ratio_mean: Vec<Vec<Vec<f64>>>,
-    /// Mean ridging force over the sampling interval (N/m).
-    pub force_mean: Vec<Vec<Vec<f64>>>,
-    /// Number of runs behind each value.
-    pub runs: Vec<Vec<Vec<u32>>>,
-    /// Fits per set and thickness (`None` where there were too few samples).
-    pub fits: Vec<Vec<Option<SetFits>>>,
+    /// Ensemble mean of the work over the runs, `(set, thickness, volume)` (J/m).
+    pub work_mean: Array3<f64>,
+    /// Standard deviation of the work over the runs, `(set, thickness, volume)` (J/m).
+    pub work_std: Array3<f64>,
+    /// Mean potential energy, `(set, thickness, volume)` (J/m).
+    pub pe_mean: Array3<f64>,
+    /// Standard deviation of the potential energy, `(set, thickness, volume)` (J/m).
+    pub pe_std: Array3<f64>,
+    /// Mean W/ΔPE, `(set, thickness, volume)` (dimensionless).
+    pub ratio_mean: Array3<f64>,
+    /// Mean ridging force over the sampling interval, `(set, thickness, volume)` (N/m).
+    pub force_mean: Array3<f64>,
+    /// Number of runs behind each value, `(set, thickness, volume)`.
+    pub runs: Array3<u32>,
+    /// Fits per set and thickness, `(set, thickness)` (`None` where there were too few
+    /// samples).
+    pub fits: Array2<Option<SetFits>>,
     /// Fits per set pooled over thicknesses.
     pub pooled: Vec<Option<SetFits>>,
     /// Bands of the pooled work fit per set on the volume grid.
     pub work_band: Vec<Option<Band>>,
-    /// Force of eq (15) from the pooled work fit, `[set][thickness][volume]` (N/m); NaN at
+    /// Force of eq (15) from the pooled work fit, `(set, thickness, volume)` (N/m); NaN at
     /// volumes no run of that thickness reached.
-    pub force_fit: Vec<Vec<Vec<f64>>>,
-    /// dW/dPE of eq (16) from the pooled fits, `[set][volume]`.
-    pub ratio_fit: Vec<Vec<f64>>,
-    /// C_f = mean final W/ΔPE per set and thickness (dimensionless).
-    pub cf: Vec<Vec<f64>>,
-    /// Sample standard deviation of the final W/ΔPE over the runs (dimensionless).
-    pub cf_std: Vec<Vec<f64>>,
-    /// Lower and upper ends of the 95 % confidence interval of C_f (Student t on the runs'
-    /// final W/ΔPE; NaN with fewer than two runs).
-    pub cf_conf: Vec<Vec<(f64, f64)>>,
-    /// Runs behind each C_f.
-    pub cf_runs: Vec<Vec<u32>>,
-    /// Each run's final W/ΔPE per set and thickness, in the runs' order (the seed spread
-    /// behind `cf`; dimensionless).
-    pub cf_finals: Vec<Vec<Vec<f64>>>,
+    pub force_fit: Array3<f64>,
+    /// dW/dPE of eq (16) from the pooled fits, `(set, volume)` (dimensionless).
+    pub ratio_fit: Array2<f64>,
+    /// C_f = mean final W/ΔPE, `(set, thickness)` (dimensionless).
+    pub cf: Array2<f64>,
+    /// Sample standard deviation of the final W/ΔPE over the runs, `(set, thickness)`
+    /// (dimensionless).
+    pub cf_std: Array2<f64>,
+    /// Lower and upper ends of the 95 % confidence interval of C_f, `(set, thickness)`
+    /// (Student t on the runs' final W/ΔPE; NaN with fewer than two runs; dimensionless).
+    pub cf_conf: Array2<(f64, f64)>,
+    /// Runs behind each C_f, `(set, thickness)`.
+    pub cf_runs: Array2<u32>,
+    /// Each run's final W/ΔPE, `(set, thickness)`, in the runs' order (the seed spread
+    /// behind `cf`, as many as `cf_runs`; dimensionless).
+    pub cf_finals: Array2<Vec<f64>>,
     /// The set of every run tabulated: (run id, set index).
     pub run_set: Vec<(String, usize)>,
     /// Seeds used.
@@ -163,7 +174,7 @@ pub fn fit_warnings(t: &RidgeTable) -> Vec<String> {
         .iter()
         .all(|v| v.is_finite())
     };
-    if t.pooled.iter().all(Option::is_none) && t.fits.iter().flatten().all(Option::is_none) {
+    if t.pooled.iter().all(Option::is_none) && t.fits.iter().all(Option::is_none) {
         out.push(
             "the fit table is empty: no set or thickness had enough samples with V > 0 for \
              eqs (13)-(14) (runs too short for the sample interval?)"
@@ -181,10 +192,10 @@ pub fn fit_warnings(t: &RidgeTable) -> Vec<String> {
             _ => {}
         }
         for (hi, h) in t.thickness.iter().enumerate() {
-            if t.runs[si][hi].iter().all(|&n| n == 0) {
+            if t.runs.slice(s![si, hi, ..]).iter().all(|&n| n == 0) {
                 continue;
             }
-            match &t.fits[si][hi] {
+            match &t.fits[[si, hi]] {
                 None => out.push(format!("{}, h = {h} m: no fit of eqs (13)-(14)", name(si))),
                 Some(f) if !finite(f) => out.push(format!(
                     "{}, h = {h} m: the fit is not a number (NaN)",
@@ -192,7 +203,7 @@ pub fn fit_warnings(t: &RidgeTable) -> Vec<String> {
                 )),
                 _ => {}
             }
-            if !t.cf[si][hi].is_finite() {
+            if !t.cf[[si, hi]].is_finite() {
                 out.push(format!(
                     "{}, h = {h} m: C_f is not a number (no run with ΔPE > 0 at its end)",
                     name(si)
@@ -314,7 +325,7 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
         .map(|k| vmax * k as f64 / (points - 1) as f64)
         .collect();
     let (ns, nh, nv) = (sets.len(), thickness.len(), points);
-    let grid = || vec![vec![vec![f64::NAN; nv]; nh]; ns];
+    let grid = || Array3::from_elem((ns, nh, nv), f64::NAN);
     let mut t = RidgeTable {
         sets: sets.clone(),
         mu,
@@ -327,17 +338,17 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
         pe_std: grid(),
         ratio_mean: grid(),
         force_mean: grid(),
-        runs: vec![vec![vec![0; nv]; nh]; ns],
-        fits: vec![vec![None; nh]; ns],
+        runs: Array3::zeros((ns, nh, nv)),
+        fits: Array2::from_elem((ns, nh), None),
         pooled: vec![None; ns],
         work_band: vec![None; ns],
         force_fit: grid(),
-        ratio_fit: vec![vec![f64::NAN; nv]; ns],
-        cf: vec![vec![f64::NAN; nh]; ns],
-        cf_std: vec![vec![f64::NAN; nh]; ns],
-        cf_conf: vec![vec![(f64::NAN, f64::NAN); nh]; ns],
-        cf_runs: vec![vec![0; nh]; ns],
-        cf_finals: vec![vec![Vec::new(); nh]; ns],
+        ratio_fit: Array2::from_elem((ns, nv), f64::NAN),
+        cf: Array2::from_elem((ns, nh), f64::NAN),
+        cf_std: Array2::from_elem((ns, nh), f64::NAN),
+        cf_conf: Array2::from_elem((ns, nh), (f64::NAN, f64::NAN)),
+        cf_runs: Array2::zeros((ns, nh)),
+        cf_finals: Array2::from_elem((ns, nh), Vec::new()),
         run_set: recs
             .iter()
             .zip(&set_index)
@@ -387,16 +398,17 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
                         }
                     }
                 }
+                let c = [si, hi, vi];
                 if !w.is_empty() {
-                    t.runs[si][hi][vi] = w.len() as u32;
-                    (t.work_mean[si][hi][vi], t.work_std[si][hi][vi]) = mean_std(&w);
-                    (t.pe_mean[si][hi][vi], t.pe_std[si][hi][vi]) = mean_std(&p);
+                    t.runs[c] = w.len() as u32;
+                    (t.work_mean[c], t.work_std[c]) = mean_std(&w);
+                    (t.pe_mean[c], t.pe_std[c]) = mean_std(&p);
                 }
                 if !q.is_empty() {
-                    t.ratio_mean[si][hi][vi] = mean_std(&q).0;
+                    t.ratio_mean[c] = mean_std(&q).0;
                 }
                 if !f.is_empty() {
-                    t.force_mean[si][hi][vi] = mean_std(&f).0;
+                    t.force_mean[c] = mean_std(&f).0;
                 }
             }
             // Fits over every sample of every run of this thickness (V > 0).
@@ -416,19 +428,19 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
             }
             if !finals.is_empty() {
                 let st = Stat::of(&finals);
-                t.cf[si][hi] = st.mean;
-                t.cf_std[si][hi] = st.std;
-                t.cf_runs[si][hi] = st.n as u32;
+                t.cf[[si, hi]] = st.mean;
+                t.cf_std[[si, hi]] = st.std;
+                t.cf_runs[[si, hi]] = st.n as u32;
                 if st.n > 1 {
                     let half = student_t_quantile(0.975, (st.n - 1) as f64) * st.std
                         / (st.n as f64).sqrt();
-                    t.cf_conf[si][hi] = (st.mean - half, st.mean + half);
+                    t.cf_conf[[si, hi]] = (st.mean - half, st.mean + half);
                 }
             }
-            t.cf_finals[si][hi] = finals;
+            t.cf_finals[[si, hi]] = finals;
             if let (Ok(work), Ok(pe)) = (fit_through_origin(&fv, &fw), fit_through_origin(&fv, &fp))
             {
-                t.fits[si][hi] = Some(SetFits {
+                t.fits[[si, hi]] = Some(SetFits {
                     work,
                     potential_energy: pe,
                 });
@@ -440,12 +452,12 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
         if let (Ok(work), Ok(pe)) = (fit_through_origin(&pv, &pw), fit_through_origin(&pv, &pp)) {
             t.work_band[si] = Some(Band::new(&work, &volume, 0.95));
             for (vi, &v) in volume.iter().enumerate() {
-                t.ratio_fit[si][vi] = ratio(&work, &pe, v);
+                t.ratio_fit[[si, vi]] = ratio(&work, &pe, v);
                 for (hi, &h) in thickness.iter().enumerate() {
                     // Only where this thickness's runs reached: eq (15) holds for primary
                     // ridge growth, which a thin sheet may have left at larger volumes.
-                    if t.runs[si][hi][vi] > 0 {
-                        t.force_fit[si][hi][vi] = force(&work, h, v);
+                    if t.runs[[si, hi, vi]] > 0 {
+                        t.force_fit[[si, hi, vi]] = force(&work, h, v);
                     }
                 }
             }

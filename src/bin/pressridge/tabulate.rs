@@ -230,10 +230,11 @@ pub fn run(a: Args) -> Result<(), BoxError> {
     );
     for (si, set) in table.sets.iter().enumerate() {
         for (hi, h) in table.thickness.iter().enumerate() {
-            if table.cf_runs[si][hi] > 0 {
+            if table.cf_runs[[si, hi]] > 0 {
                 println!(
                     "  [{set}] h = {h} m: C_f = {:.2} ({} runs)",
-                    table.cf[si][hi], table.cf_runs[si][hi]
+                    table.cf[[si, hi]],
+                    table.cf_runs[[si, hi]]
                 );
             }
         }
