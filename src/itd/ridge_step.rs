@@ -196,6 +196,50 @@ pub fn percent_per_day_to_per_second(x: f64) -> f64 {
 ///
 /// # Panics
 /// If the slice lengths do not match `ws` (the batched drivers check shapes first).
+///
+/// # Example
+///
+/// A five-category CICE column (one ice and one snow layer, no optional tracers) closing
+/// under convergence for one hour: ice moves into thicker categories, area and ice volume
+/// are conserved with the open water and the fluxes (what snow does not stay on the ridges
+/// goes to the ocean).
+///
+/// ```
+/// use pressridge::itd::{
+///     CiceTracerFlags, Closing, ColumnMut, OceanFluxes, RidgeStepOptions, StepForcing,
+///     StepWorkspace, TracerLayout, ridge_step_column,
+/// };
+/// let layout = TracerLayout::cice(1, 1, CiceTracerFlags::default()).unwrap();
+/// let (ncat, nt) = (5, layout.ntrcr());
+/// let hin_max = [0.0, 0.64, 1.39, 2.47, 4.57, 9.33]; // category bounds (m)
+/// let mut aicen = vec![0.3, 0.25, 0.2, 0.1, 0.05]; // area fractions (1)
+/// let mut vicen = vec![0.12, 0.25, 0.38, 0.33, 0.3]; // ice volume (m)
+/// let mut vsnon = vec![0.01, 0.02, 0.03, 0.02, 0.01]; // snow volume (m)
+/// let mut trcrn = vec![0.0; ncat * nt];
+/// let (mut aice0, mut aice) = (0.1, 0.9);
+/// let (area0, ice0) = (aice0 + aicen.iter().sum::<f64>(), vicen.iter().sum::<f64>());
+/// let mut fluxes = OceanFluxes::default();
+/// let mut ws = StepWorkspace::new(ncat, nt);
+/// let forcing = StepForcing {
+///     closing: Closing::Deformation { convergence: 1e-6, shear: 0.0 }, // 1/s
+///     dt: 3600.0, // s
+///     ndtd: 1,
+///     tf: -1.8, // °C
+/// };
+/// let mut col = ColumnMut {
+///     aicen: &mut aicen,
+///     vicen: &mut vicen,
+///     vsnon: &mut vsnon,
+///     trcrn: &mut trcrn,
+///     aice0: &mut aice0,
+///     aice: &mut aice,
+/// };
+/// ridge_step_column(&mut col, &hin_max, forcing, &RidgeStepOptions::default(), &layout,
+///     &mut fluxes, &mut ws).unwrap();
+/// let area = aice0 + aicen.iter().sum::<f64>();
+/// assert!((area - area0).abs() < 1e-12 && (vicen.iter().sum::<f64>() - ice0).abs() < 1e-12);
+/// assert!(aicen[0] < 0.3 && aicen[4] > 0.05); // thin ice ridged into thick
+/// ```
 pub fn ridge_step_column(
     col: &mut ColumnMut<'_>,
     hin_max: &[f64],
