@@ -47,5 +47,6 @@ else
   "$table" reference="$(runs_of data/speed-vs-error reference)" \
     default="$(runs_of data/speed-vs-error default)" \
     step-1.0="$(runs_of data/speed-vs-error step-1.0)" \
+    step-0.25=data/speed-vs-error/step-0.25 \
     implicit-2.32e-4=data/speed-vs-error/implicit-0.8
 fi
