@@ -285,4 +285,26 @@ mod tests {
         let fine = first_crack(7.5e5, Some(tau), 1e-5).unwrap();
         assert!((coarse - fine).abs() <= 4e-4, "{coarse} against {fine}");
     }
+
+    /// A world built by hand is refused a zero, negative or non-finite incubation time,
+    /// with the parameter named (a negative τ would make the filter grow without bound).
+    #[test]
+    fn a_bad_incubation_time_is_refused_by_name() {
+        use crate::dem::{World, WorldError, WorldParams};
+        for bad in [0.0, -1e-3, f64::NAN, f64::INFINITY] {
+            let p = WorldParams {
+                incubation_time: Some(bad),
+                ..WorldParams::default()
+            };
+            match World::new(p) {
+                Err(WorldError::Param { name, .. }) => assert_eq!(name, "incubation_time"),
+                other => panic!("τ = {bad}: {:?}", other.map(|_| ())),
+            }
+        }
+        let p = WorldParams {
+            incubation_time: Some(2e-3),
+            ..WorldParams::default()
+        };
+        assert!(World::new(p).is_ok());
+    }
 }

@@ -212,6 +212,9 @@ impl WorldParams {
             });
         }
         pos("crack_speed", self.crack_speed)?;
+        if let Some(t) = self.incubation_time {
+            pos("incubation_time", t)?;
+        }
         nonneg("global_damping", self.global_damping)?;
         if let Some(dt) = self.time_step {
             pos("time_step", dt)?;
