@@ -24,7 +24,6 @@
 
 use pressridge::campaign::{RunRecord, read_campaign};
 use pressridge::table::ensemble::{Stat, quantity};
-use pressridge::table::fit::student_t_quantile;
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -40,15 +39,6 @@ const QUANTITIES: [(&str, &str, Option<f64>); 8] = [
     ("max_sail_height", "sail", None),
     ("max_keel_depth", "keel", None),
 ];
-
-/// Difference of means (b − a) and the half-width of its 95 % Welch interval.
-fn welch(a: &Stat, b: &Stat) -> (f64, f64) {
-    let (va, vb) = (a.std.powi(2) / a.n as f64, b.std.powi(2) / b.n as f64);
-    let se = (va + vb).sqrt();
-    let dof = (va + vb).powi(2)
-        / (va.powi(2) / (a.n as f64 - 1.0) + vb.powi(2) / (b.n as f64 - 1.0)).max(1e-300);
-    (b.mean - a.mean, student_t_quantile(0.975, dof) * se)
-}
 
 type Groups = BTreeMap<String, Vec<RunRecord>>;
 
@@ -153,7 +143,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     print!(" — |");
                     continue;
                 }
-                let (d, h) = welch(&a, &b);
+                let (d, h) = a.welch_difference(&b);
                 let (pd, ph) = (100.0 * d / a.mean, 100.0 * (h / a.mean).abs());
                 let flag = match bound {
                     Some(bd) if (pd - ph).abs().max((pd + ph).abs()) > bd => " ✗",

@@ -39,6 +39,34 @@ impl Stat {
         };
         Stat { mean, std, n }
     }
+
+    /// Half-width of the 95 % Student-t interval of the mean (units of the quantity; NaN
+    /// for fewer than two runs).
+    pub fn half_width_95(&self) -> f64 {
+        if self.n < 2 {
+            return f64::NAN;
+        }
+        crate::table::fit::student_t_quantile(0.975, (self.n - 1) as f64) * self.std
+            / (self.n as f64).sqrt()
+    }
+
+    /// The difference of means `other − self` and the half-width of its 95 % Welch interval
+    /// (unequal variances, Welch–Satterthwaite degrees of freedom), in units of the quantity:
+    /// how ensembles of two configurations are compared (docs/speed-vs-error.md).
+    pub fn welch_difference(&self, other: &Stat) -> (f64, f64) {
+        let (va, vb) = (
+            self.std.powi(2) / self.n as f64,
+            other.std.powi(2) / other.n as f64,
+        );
+        let se = (va + vb).sqrt();
+        let dof = (va + vb).powi(2)
+            / (va.powi(2) / (self.n as f64 - 1.0) + vb.powi(2) / (other.n as f64 - 1.0))
+                .max(1e-300);
+        (
+            other.mean - self.mean,
+            crate::table::fit::student_t_quantile(0.975, dof) * se,
+        )
+    }
 }
 
 /// The quantities summarised, (key, unit, description): every term of the energy ledger at
@@ -223,6 +251,36 @@ pub fn summarise(records: &[RunRecord]) -> Vec<PointStats> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Two ensembles of six runs with standard deviation 1: Welch's degrees of freedom are
+    /// (2/6)²/(2·(1/6)²/5) = 10, so the half-width is t₀.₉₇₅,₁₀·sqrt(2/6) = 2.228139·0.577350;
+    /// the mean's own interval is t₀.₉₇₅,₅/sqrt(6) = 2.570582/2.449490.
+    #[test]
+    fn welch_and_student_intervals_match_the_textbook_values() {
+        let a = Stat {
+            mean: 10.0,
+            std: 1.0,
+            n: 6,
+        };
+        let b = Stat {
+            mean: 12.5,
+            std: 1.0,
+            n: 6,
+        };
+        let (d, h) = a.welch_difference(&b);
+        assert_eq!(d, 2.5);
+        assert!((h - 2.228139 * (2.0f64 / 6.0).sqrt()).abs() < 1e-5, "{h}");
+        assert!((a.half_width_95() - 2.570582 / 6f64.sqrt()).abs() < 1e-5);
+        assert!(
+            Stat {
+                mean: 1.0,
+                std: 0.0,
+                n: 1
+            }
+            .half_width_95()
+            .is_nan()
+        );
+    }
 
     /// The ensemble summarises every ledger term under the table's name, unit and
     /// description, with the run summary's value; no key is there twice.
