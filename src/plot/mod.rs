@@ -88,6 +88,20 @@ pub(crate) fn ensure_font() -> Result<(), PlotError> {
     if ok { Ok(()) } else { Err(PlotError::NoFont) }
 }
 
+/// Writes the figure `path` atomically: registers the font, then `draw` writes into the
+/// temporary file it is given (renamed to `path` on success, removed on error); a drawing
+/// error names `path`. Every figure file of this module is written through here.
+pub(crate) fn write_figure(
+    path: &std::path::Path,
+    draw: impl FnOnce(&std::path::Path) -> Result<(), PlotError>,
+) -> Result<(), PlotError> {
+    crate::io::write_atomic_with(path, |tmp| {
+        ensure_font()?;
+        draw(tmp)
+    })
+    .map_err(|e| e.at(path))
+}
+
 /// Converts any plotters drawing error into a [`PlotError`].
 pub(crate) fn draw_err<E: std::fmt::Display>(e: E) -> PlotError {
     PlotError::Draw(e.to_string())

@@ -1,7 +1,7 @@
 //! Ridge snapshots: blocks, the water, axes in metres (cf. Hopkins 1994, Figure 5).
 
 use super::layout::{Axis, Layout};
-use super::{PlotError, draw_err, ensure_font};
+use super::{PlotError, draw_err, ensure_font, write_figure};
 use crate::dem::{Role, Snapshot};
 use plotters::prelude::*;
 use std::path::Path;
@@ -132,8 +132,7 @@ pub fn render_state(
     width_px: u32,
     title: &str,
 ) -> Result<(), PlotError> {
-    crate::io::write_atomic_with(path, |tmp| render_state_at(s, tmp, window, width_px, title))
-        .map_err(|e| e.at(path))
+    write_figure(path, |tmp| render_state_at(s, tmp, window, width_px, title))
 }
 
 /// [`render_state`] into the file `path` (a temporary file renamed by the caller).
@@ -144,17 +143,9 @@ fn render_state_at(
     width_px: u32,
     title: &str,
 ) -> Result<(), PlotError> {
-    ensure_font()?;
     let layout = state_layout(window, width_px, title);
     let size = (layout.width, layout.height);
-    let svg = path.extension().is_some_and(|e| e == "svg");
-    if svg {
-        let root = SVGBackend::new(path, size).into_drawing_area();
-        draw(root, s, window, title, &layout)
-    } else {
-        let root = BitMapBackend::new(path, size).into_drawing_area();
-        draw(root, s, window, title, &layout)
-    }
+    to_file!(path, size, draw(s, window, title, &layout))
 }
 
 /// The axes of a state figure: x and y in metres over the window.

@@ -1,7 +1,7 @@
 //! Figures of a tabulated campaign (cf. Hopkins 1994, Figures 8–12).
 
 use super::layout::{Axis, Layout};
-use super::{PlotError, draw_err, ensure_font};
+use super::{PlotError, draw_err, write_figure};
 use crate::observe::Profile;
 use crate::table::tabulate::RidgeTable;
 use ndarray::s;
@@ -52,13 +52,7 @@ fn mean_work_curve(t: &RidgeTable, s: usize, hi: usize) -> Vec<(f64, f64)> {
 /// Work against ridged volume for set `s` (cf. Figures 9, 11, 12): the ensemble mean of each
 /// thickness (where at least half its runs reached), the pooled fit of eq (13) and its 95 % confidence and prediction bands, in MJ/m.
 pub fn plot_work(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> {
-    crate::io::write_atomic_with(path, |tmp| plot_work_at(t, s, tmp)).map_err(|e| e.at(path))
-}
-
-/// [`plot_work`] into the file `path` (a temporary file renamed by the caller).
-fn plot_work_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> {
-    ensure_font()?;
-    to_file!(path, (900, 600), draw_work(t, s))
+    write_figure(path, |tmp| to_file!(tmp, (900, 600), draw_work(t, s)))
 }
 
 fn draw_work<DB: DrawingBackend>(
@@ -156,13 +150,7 @@ where
 /// (cf. Figure 9, the eight friction sets at 0.30 m): one ensemble-mean curve per set, in
 /// MJ/m. PNG, or SVG by the extension.
 pub fn plot_work_sets(t: &RidgeTable, hi: usize, path: &Path) -> Result<(), PlotError> {
-    crate::io::write_atomic_with(path, |tmp| plot_work_sets_at(t, hi, tmp)).map_err(|e| e.at(path))
-}
-
-/// [`plot_work_sets`] into the file `path` (a temporary file renamed by the caller).
-fn plot_work_sets_at(t: &RidgeTable, hi: usize, path: &Path) -> Result<(), PlotError> {
-    ensure_font()?;
-    to_file!(path, (900, 600), draw_work_sets(t, hi))
+    write_figure(path, |tmp| to_file!(tmp, (900, 600), draw_work_sets(t, hi)))
 }
 
 /// The sets with at least one run at thickness index `hi`.
@@ -215,13 +203,7 @@ where
 /// Ridging force against volume for set `s`: eq (15) from the pooled fit per thickness
 /// (lines) and the ensemble mean of the runs' interval-mean force (dots), in kN/m.
 pub fn plot_force(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> {
-    crate::io::write_atomic_with(path, |tmp| plot_force_at(t, s, tmp)).map_err(|e| e.at(path))
-}
-
-/// [`plot_force`] into the file `path` (a temporary file renamed by the caller).
-fn plot_force_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> {
-    ensure_font()?;
-    to_file!(path, (900, 520), draw_force(t, s))
+    write_figure(path, |tmp| to_file!(tmp, (900, 520), draw_force(t, s)))
 }
 
 fn draw_force<DB: DrawingBackend>(
@@ -313,13 +295,7 @@ pub fn seeds(n: usize) -> String {
 /// mean ± one standard deviation over the seeds as a shaded band, the rubble-only mean as a
 /// thin line; the water line at 0. PNG, or SVG by the extension.
 pub fn plot_profiles(groups: &[ProfileGroup], path: &Path) -> Result<(), PlotError> {
-    crate::io::write_atomic_with(path, |tmp| plot_profiles_at(groups, tmp)).map_err(|e| e.at(path))
-}
-
-/// [`plot_profiles`] into the file `path` (a temporary file renamed by the caller).
-fn plot_profiles_at(groups: &[ProfileGroup], path: &Path) -> Result<(), PlotError> {
-    ensure_font()?;
-    to_file!(path, (900, 560), draw_profiles(groups))
+    write_figure(path, |tmp| to_file!(tmp, (900, 560), draw_profiles(groups)))
 }
 
 fn draw_profiles<DB: DrawingBackend>(
@@ -435,13 +411,7 @@ where
 /// deviation over the seeds as whiskers, and CICE's default C_f = 17 dashed. PNG, or SVG by
 /// the extension.
 pub fn plot_cf(t: &RidgeTable, path: &Path) -> Result<(), PlotError> {
-    crate::io::write_atomic_with(path, |tmp| plot_cf_at(t, tmp)).map_err(|e| e.at(path))
-}
-
-/// [`plot_cf`] into the file `path` (a temporary file renamed by the caller).
-fn plot_cf_at(t: &RidgeTable, path: &Path) -> Result<(), PlotError> {
-    ensure_font()?;
-    to_file!(path, (900, 560), draw_cf(t))
+    write_figure(path, |tmp| to_file!(tmp, (900, 560), draw_cf(t)))
 }
 
 fn draw_cf<DB: DrawingBackend>(
