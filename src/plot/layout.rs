@@ -271,7 +271,8 @@ impl Layout {
     }
 
     /// The x range of the y-axis description's line (px from the left edge) and of the y
-    /// tick labels: the first ends before the second starts.
+    /// tick labels: the first ends before the second starts. For the figure tests.
+    #[cfg(test)]
     pub fn y_columns(&self) -> ((u32, u32), (u32, u32)) {
         let desc = (self.pad, self.pad + self.desc_height);
         let ticks_end = self.left - 2 * self.tick_mark;

@@ -17,15 +17,16 @@ macro_rules! to_file {
 }
 
 pub mod animate;
+#[cfg(test)]
+mod figure_tests;
 pub(crate) mod gif;
-pub mod layout;
+pub(crate) mod layout;
 pub mod render;
 pub mod series;
+pub mod strength_map;
 pub mod table;
 
 use std::sync::OnceLock;
-
-pub mod strength_map;
 
 /// An error while drawing or writing a figure.
 #[derive(Debug, thiserror::Error)]

@@ -159,7 +159,7 @@ fn axes(window: Window) -> (Axis, Axis) {
 /// The layout of a state figure of `window` drawn `width_px` wide (at least 200 px) with
 /// `title` (may be empty): margins measured from its labels, the height following from the
 /// window's aspect ratio so that the plot area keeps metres square.
-pub fn state_layout(window: Window, width_px: u32, title: &str) -> Layout {
+pub(crate) fn state_layout(window: Window, width_px: u32, title: &str) -> Layout {
     let (x, y) = axes(window);
     let l = Layout::new(width_px.max(200), &x, &y, title);
     let aspect = (window.y1 - window.y0) / (window.x1 - window.x0);
@@ -171,7 +171,7 @@ pub fn state_layout(window: Window, width_px: u32, title: &str) -> Layout {
 
 /// Draws a state into memory: RGB bytes (3 a pixel, row by row) of the size
 /// [`state_layout`] gives, returned with that size.
-pub fn render_state_rgb(
+pub(crate) fn render_state_rgb(
     s: &Snapshot,
     window: Window,
     width_px: u32,
