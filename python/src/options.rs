@@ -1,9 +1,10 @@
 //! The library's options and parameters from Python values, and the queries about them.
 //!
 //! Owns the parsing of the participation, redistribution and strength-law names, of the
-//! `ItdParams` overrides (the library's parser) and of the C_f argument (number, nodes or table file), gathered for
-//! `strength` in [`StrengthArgs`]; and the module functions that list them: category bounds,
-//! C_f presets, C_f table files, parameter names, units and CICE defaults.
+//! `ItdParams` overrides (the library's parser) and of the C_f argument (number, nodes or
+//! table file), gathered for `strength` in [`StrengthArgs`]; and the module functions that
+//! list them: category bounds, C_f presets, C_f table files, parameter names, units and
+//! CICE defaults.
 
 use std::path::PathBuf;
 use std::sync::Arc;

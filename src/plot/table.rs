@@ -49,8 +49,9 @@ fn mean_work_curve(t: &RidgeTable, s: usize, hi: usize) -> Vec<(f64, f64)> {
         .collect()
 }
 
-/// Work against ridged volume for set `s` (cf. Figures 9, 11, 12): the ensemble mean of each
-/// thickness (where at least half its runs reached), the pooled fit of eq (13) and its 95 % confidence and prediction bands, in MJ/m.
+/// Work against ridged volume for set `s` (cf. Figures 9, 11, 12): the ensemble mean of
+/// each thickness (where at least half its runs reached), the pooled fit of eq (13) and its
+/// 95 % confidence and prediction bands, in MJ/m.
 pub fn plot_work(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> {
     write_figure(path, |tmp| to_file!(tmp, (900, 600), draw_work(t, s)))
 }
