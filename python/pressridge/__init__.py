@@ -929,9 +929,9 @@ def tabulate(
     ``runs_tabulated`` and ``partial`` say what was left out (docs/failure.md).
 
     A run counts as rafted when its intact lead sheet passed the floe's nose by more than
-    ``rafting_reach`` (m, ``--rafting-reach``; default :data:`RAFTING_REACH`, 2 m). ``exclude_rafted``
-    (``--exclude-rafted``) leaves rafted runs out of the table (listed in its
-    ``excluded_runs`` attribute). Runs left out, partial campaigns and missing fits are
+    ``rafting_reach`` (m, ``--rafting-reach``; default :data:`RAFTING_REACH`, 2 m).
+    ``exclude_rafted`` (``--exclude-rafted``) leaves rafted runs out of the table (listed in
+    its ``excluded_runs`` attribute). Runs left out, partial campaigns and missing fits are
     reported as ``UserWarning``, as the command line prints them."""
     if int(points) < 2:
         raise ValueError(f"points must be at least 2, got {points}")
