@@ -55,7 +55,11 @@ fn plot_energy_at(samples: &[Sample], path: &Path, title: &str) -> Result<(), Pl
     }
     let pad = 0.05 * (hi - lo).max(1e-9);
     let (lo, hi) = (lo - pad, hi + pad);
-    to_file!(path, (900, 560), draw_energy(series, &lines, title, t1, lo, hi))
+    to_file!(
+        path,
+        (900, 560),
+        draw_energy(series, &lines, title, t1, lo, hi)
+    )
 }
 
 type Getter = fn(&EnergyBudget) -> f64;

@@ -46,8 +46,8 @@ pub fn default_width(panels: usize) -> u32 {
 
 /// Draws the panels side by side into `path` (PNG, or SVG by the extension), `width_px`
 /// wide, colour scale 0 ..= max over all panels (kN/m on the colour bar). Fonts scale with
-/// the width ([`Fonts::for_width`]); the height follows the grid's aspect ratio. `ny`, `nx`:
-/// grid shape.
+/// the width (14-px tick labels at 900 px); the height follows the grid's aspect ratio.
+/// `ny`, `nx`: grid shape.
 pub fn draw_strength_maps(
     path: &Path,
     panels: &[Panel<'_>],
@@ -55,7 +55,9 @@ pub fn draw_strength_maps(
     nx: usize,
     width_px: u32,
 ) -> Result<(), PlotError> {
-    write_figure(path, |tmp| draw_strength_maps_at(tmp, panels, ny, nx, width_px))
+    write_figure(path, |tmp| {
+        draw_strength_maps_at(tmp, panels, ny, nx, width_px)
+    })
 }
 
 /// Where the panels and the colour bar of a strength-map figure go (px).
