@@ -81,9 +81,7 @@ where
         Axis::new(0.0, t1, "time (s)"),
         Axis::new(y0, y1, "energy (kJ/m)"),
     );
-    let (w, h) = root.dim_in_pixel();
-    let layout = Layout::new(w, &x, &y, title).with_height(h);
-    let mut chart = layout.chart(&root, &x, &y, title, true)?;
+    let (layout, mut chart) = Layout::canvas_chart(&root, &x, &y, title)?;
     let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
     for &(name, f, color) in lines {
         chart
@@ -134,9 +132,7 @@ where
         Axis::new(0.0, t1, "time (s)"),
         Axis::new(lo, hi * 1.05, "ridging force (kN/m)"),
     );
-    let (w, h) = root.dim_in_pixel();
-    let layout = Layout::new(w, &x, &y, title).with_height(h);
-    let mut chart = layout.chart(&root, &x, &y, title, true)?;
+    let (layout, mut chart) = Layout::canvas_chart(&root, &x, &y, title)?;
     chart
         .draw_series(LineSeries::new(
             samples

@@ -83,9 +83,7 @@ where
         Axis::new(0.0, vmax, "ridged volume V (m³/m)"),
         Axis::new(0.0, (wmax * 1.05).max(1e-9), "work (MJ/m)"),
     );
-    let layout =
-        Layout::new(root.dim_in_pixel().0, &x, &y, &title).with_height(root.dim_in_pixel().1);
-    let mut chart = layout.chart(&root, &x, &y, &title, true)?;
+    let (layout, mut chart) = Layout::canvas_chart(&root, &x, &y, &title)?;
     let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
     if let Some(b) = band {
         let area = |lo: &[f64], hi: &[f64]| -> Vec<(f64, f64)> {
@@ -184,9 +182,7 @@ where
         Axis::new(0.0, vmax, "ridged volume V (m³/m)"),
         Axis::new(0.0, (wmax * 1.05).max(1e-9), "work (MJ/m)"),
     );
-    let layout =
-        Layout::new(root.dim_in_pixel().0, &x, &y, &title).with_height(root.dim_in_pixel().1);
-    let mut chart = layout.chart(&root, &x, &y, &title, true)?;
+    let (layout, mut chart) = Layout::canvas_chart(&root, &x, &y, &title)?;
     let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
     for (k, &s) in sets.iter().enumerate() {
         let c = COLORS[k % COLORS.len()];
@@ -237,9 +233,7 @@ where
         Axis::new(0.0, vmax, "ridged volume V (m³/m)"),
         Axis::new(0.0, (fmax * 1.05).max(1e-9), "force (kN/m)"),
     );
-    let layout =
-        Layout::new(root.dim_in_pixel().0, &x, &y, title).with_height(root.dim_in_pixel().1);
-    let mut chart = layout.chart(&root, &x, &y, title, true)?;
+    let (layout, mut chart) = Layout::canvas_chart(&root, &x, &y, title)?;
     let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
     for (hi, th) in t.thickness.iter().enumerate() {
         let c = COLORS[hi % COLORS.len()];
@@ -352,9 +346,7 @@ where
             "sail height up, keel depth down (m)",
         ),
     );
-    let (w, h) = root.dim_in_pixel();
-    let layout = Layout::new(w, &x, &y, title).with_height(h);
-    let mut chart = layout.chart(&root, &x, &y, title, true)?;
+    let (layout, mut chart) = Layout::canvas_chart(&root, &x, &y, title)?;
     let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
     let thin = layout.fonts.px(1.0);
     for (k, g) in groups.iter().enumerate() {
@@ -444,9 +436,7 @@ where
         Axis::new((hmin - pad).max(0.0), hmax + pad, "sheet thickness h (m)"),
         Axis::new(0.0, cmax * 1.15, "C_f = W/ΔPE"),
     );
-    let (w, h) = root.dim_in_pixel();
-    let layout = Layout::new(w, &x, &y, title).with_height(h);
-    let mut chart = layout.chart(&root, &x, &y, title, true)?;
+    let (layout, mut chart) = Layout::canvas_chart(&root, &x, &y, title)?;
     let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
     let dot = layout.fonts.px(3.0);
     let whisker = (x.hi - x.lo) * 0.012;
