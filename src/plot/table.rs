@@ -96,32 +96,24 @@ where
             );
             p
         };
-        chart
-            .draw_series(std::iter::once(Polygon::new(
-                area(&b.pred_lo, &b.pred_hi),
-                RGBColor(200, 200, 200).mix(0.5).filled(),
-            )))
-            .map_err(draw_err)?
-            .label("95 % prediction band")
-            .legend(move |(x, y)| {
-                Rectangle::new(
-                    [(x, y - key / 4), (x + key, y + key / 4)],
-                    RGBColor(200, 200, 200).filled(),
-                )
-            });
-        chart
-            .draw_series(std::iter::once(Polygon::new(
-                area(&b.conf_lo, &b.conf_hi),
-                RGBColor(120, 120, 120).mix(0.6).filled(),
-            )))
-            .map_err(draw_err)?
-            .label("95 % confidence band")
-            .legend(move |(x, y)| {
-                Rectangle::new(
-                    [(x, y - key / 4), (x + key, y + key / 4)],
-                    RGBColor(120, 120, 120).filled(),
-                )
-            });
+        // The prediction band, then the confidence band over it: (lower, upper, grey, alpha).
+        let bands = [
+            (&b.pred_lo, &b.pred_hi, 200, 0.5, "95 % prediction band"),
+            (&b.conf_lo, &b.conf_hi, 120, 0.6, "95 % confidence band"),
+        ];
+        for (lo, hi, grey, alpha, label) in bands {
+            let fill = RGBColor(grey, grey, grey);
+            chart
+                .draw_series(std::iter::once(Polygon::new(
+                    area(lo, hi),
+                    fill.mix(alpha).filled(),
+                )))
+                .map_err(draw_err)?
+                .label(label)
+                .legend(move |(x, y)| {
+                    Rectangle::new([(x, y - key / 4), (x + key, y + key / 4)], fill.filled())
+                });
+        }
         chart
             .draw_series(LineSeries::new(
                 b.v.iter().zip(&b.fit).map(|(v, y)| (*v, y / 1e6)),
