@@ -36,9 +36,10 @@ fn area(o: &Outline) -> f64 {
     area_centroid(o.verts()).0
 }
 
-/// Oracle of [`super::Poly::crossings`]: the points where the boundaries of two convex polygons cross. For two overlapping
-/// convex polygons in general position there are exactly two; vertex-on-edge contacts may
-/// report a point twice. Returns how many were written to `out` (at most `out.len()`).
+/// Oracle of [`super::Poly::crossings`]: the points where the boundaries of two convex
+/// polygons cross. For two overlapping convex polygons in general position there are
+/// exactly two; vertex-on-edge contacts may report a point twice. Returns how many were
+/// written to `out` (at most `out.len()`).
 fn boundary_crossings(a: &Outline, b: &Outline, out: &mut [V2]) -> usize {
     let mut k = 0;
     let na = a.len();
