@@ -10,9 +10,10 @@
 //! For each thickness and configuration the table gives the runs, the steps and the mean
 //! wall time of a run, and for W, ΔPE, W/ΔPE, Φ_f/W, L/h, blocks broken (joints severed),
 //! sail height and keel depth the difference of the configuration's mean from the reference
-//! mean, in % of the reference mean, with its 95 % interval by Welch's t (unequal variances, Welch–Satterthwaite degrees
-//! of freedom; the reference mean in the denominator is taken as exact), and the worst
-//! closure residual |W − sinks| / largest term over all samples of all runs.
+//! mean, in % of the reference mean, with its 95 % interval by Welch's t (unequal
+//! variances, Welch–Satterthwaite degrees of freedom; the reference mean in the denominator
+//! is taken as exact), and the worst closure residual |W − sinks| / largest term over all
+//! samples of all runs.
 //!
 //! ```sh
 //! cargo run --release --example speed_vs_error -- \

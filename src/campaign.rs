@@ -162,10 +162,11 @@ pub struct PlannedRun {
 }
 
 /// The file that marks a campaign directory as a records-only archive: its run records
-/// (`run.json`, with the summary, samples, final profile and metrics tabulate needs) without
-/// the final states the runs wrote, e.g. a finished campaign committed under `data/paper/`.
-/// Its records are checked for their id and scene digest only (not for the files their
-/// digest lists, which it does not hold); it is never resumed into (a campaign run there refuses the directory).
+/// (`run.json`, with the summary, samples, final profile and metrics tabulate needs)
+/// without the final states the runs wrote, e.g. a finished campaign committed under
+/// `data/paper/`. Its records are checked for their id and scene digest only (not for the
+/// files their digest lists, which it does not hold); it is never resumed into (a campaign
+/// run there refuses the directory).
 pub const RECORDS_ONLY: &str = "RECORDS-ONLY";
 
 /// Whether `out` is a records-only archive ([`RECORDS_ONLY`]).
@@ -533,9 +534,10 @@ impl CampaignRecords {
 
 /// Reads every run record of a campaign directory, in plan order, and checks each against
 /// its run (its id, its scene and seed against its digest ([`scene_digest`]), and the files
-/// the digest lists, unless the directory is a [`RECORDS_ONLY`] archive); a record whose scene and seed another record already has
-/// counts once. Missing or inconsistent runs are an error naming them unless
-/// `allow_partial`, which returns the complete ones with the gaps listed.
+/// the digest lists, unless the directory is a [`RECORDS_ONLY`] archive); a record whose
+/// scene and seed another record already has counts once. Missing or inconsistent runs are
+/// an error naming them unless `allow_partial`, which returns the complete ones with the
+/// gaps listed.
 pub fn read_campaign(out: &Path, allow_partial: bool) -> Result<CampaignRecords, CampaignError> {
     let spec: CampaignSpec = read_json(&out.join("campaign.json"))?;
     let ids: Vec<String> = read_json(&out.join("plan.json"))?;

@@ -188,7 +188,7 @@ def tabulate(
     rafting_reach: float = 2.0,
     exclude_rafted: bool = False,
 ) -> Tuple[List[Tuple[str, float, float]], List[str]]:
-    """([(set, thickness (m), C_f)], [warning]) (``table::campaigns::tabulate_campaigns``)."""
+    """([(set, thickness (m), C_f)], [warning]) (``campaign::tabulation::tabulate_campaigns``)."""
 
 class RidgeLookup:
     @staticmethod

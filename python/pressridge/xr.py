@@ -435,9 +435,9 @@ def ridge_step(
     dataset's ``shear``, else 0. The dataset's ``divu`` and ``shear`` are read by their
     ``units``: ``s-1`` (or none) as given (``shear`` being the ridging shear term); ``%/day``
     (CICE history) converted, ``shear`` then being CICE's shear strain rate from which the
-    term is formed as Icepack does; other units raise ``ValueError``. ``hin_max`` (m): default the dataset's ``hin_max``, else
-    its ``NCAT`` (CICE history: upper bounds, from 0 m; both present must agree), else CICE's
-    ``kcatbound = 1`` bounds. ``aice0`` defaults to max(1 - sum(aicen), 0). Other options as
+    term is formed as Icepack does; other units raise ``ValueError``. ``hin_max`` (m):
+    default the dataset's ``hin_max``, else its ``NCAT`` (CICE history: upper bounds, from
+    0 m; both present must agree), else CICE's ``kcatbound = 1`` bounds. ``aice0`` defaults to max(1 - sum(aicen), 0). Other options as
     :func:`pressridge.ridge_step`.
 
     Returns a copy of ``ds`` (coordinates, attributes and other variables kept) with

@@ -1,9 +1,10 @@
 //! Errors on their way to Python, and the guard around every library call.
 //!
 //! Owns `BindError` (`Send`, so it can leave a GIL-free section) and its conversions from
-//! the library's errors (parameter overrides included) to `ValueError`, `OSError`, `FileNotFoundError` and (for a panic, a
-//! bug) `RuntimeError`; `guarded` and `detached`, which run library code with panics caught
-//! and, for `detached`, the GIL released; and the `_panic_for_test` hook that tests them.
+//! the library's errors (parameter overrides included) to `ValueError`, `OSError`,
+//! `FileNotFoundError` and (for a panic, a bug) `RuntimeError`; `guarded` and `detached`,
+//! which run library code with panics caught and, for `detached`, the GIL released; and the
+//! `_panic_for_test` hook that tests them.
 
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::Path;

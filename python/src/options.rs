@@ -1,9 +1,10 @@
 //! The library's options and parameters from Python values, and the queries about them.
 //!
 //! Owns the parsing of the participation, redistribution and strength-law names, of the
-//! `ItdParams` overrides (the library's parser) and of the C_f argument (number, nodes or table file), gathered for
-//! `strength` in [`StrengthArgs`]; and the module functions that list them: category bounds,
-//! C_f presets, C_f table files, parameter names, units and CICE defaults.
+//! `ItdParams` overrides (the library's parser) and of the C_f argument (number, nodes or
+//! table file), gathered for `strength` in [`StrengthArgs`]; and the module functions that
+//! list them: category bounds, C_f presets, C_f table files, parameter names, units and
+//! CICE defaults.
 
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -29,34 +30,56 @@ fn quoted_names<T: Copy>(all: &[T], name: fn(T) -> &'static str) -> String {
         .join(" or ")
 }
 
-pub(crate) fn participation(name: &str) -> PyResult<Participation> {
-    Participation::from_name(name).ok_or_else(|| {
+/// The option value called `name` (the library's `from_name`), or a `ValueError` naming
+/// `what` and listing the valid names with `sources` (who each is from).
+fn by_name<T: Copy>(
+    what: &str,
+    name: &str,
+    from_name: fn(&str) -> Option<T>,
+    all: &[T],
+    names: fn(T) -> &'static str,
+    sources: &str,
+) -> PyResult<T> {
+    from_name(name).ok_or_else(|| {
         value_err(format!(
-            "unknown participation `{name}`; use {} (exponential: Lipscomb et al. 2007, CICE default; thorndike: Thorndike et al. 1975)",
-            quoted_names(&Participation::ALL, Participation::name)
+            "unknown {what} `{name}`; use {} ({sources})",
+            quoted_names(all, names)
         ))
         .into()
     })
+}
+
+pub(crate) fn participation(name: &str) -> PyResult<Participation> {
+    by_name(
+        "participation",
+        name,
+        Participation::from_name,
+        &Participation::ALL,
+        Participation::name,
+        "exponential: Lipscomb et al. 2007, CICE default; thorndike: Thorndike et al. 1975",
+    )
 }
 
 pub(crate) fn redistribution(name: &str) -> PyResult<Redistribution> {
-    Redistribution::from_name(name).ok_or_else(|| {
-        value_err(format!(
-            "unknown redistribution `{name}`; use {} (exponential: Lipscomb et al. 2007, CICE default; uniform: Hibler 1980)",
-            quoted_names(&Redistribution::ALL, Redistribution::name)
-        ))
-        .into()
-    })
+    by_name(
+        "redistribution",
+        name,
+        Redistribution::from_name,
+        &Redistribution::ALL,
+        Redistribution::name,
+        "exponential: Lipscomb et al. 2007, CICE default; uniform: Hibler 1980",
+    )
 }
 
 pub(crate) fn law(name: &str) -> PyResult<StrengthFormula> {
-    StrengthFormula::from_name(name).ok_or_else(|| {
-        value_err(format!(
-            "unknown strength law `{name}`; use {} (rothrock: Rothrock 1975, CICE default; hibler: Hibler 1979)",
-            quoted_names(&StrengthFormula::ALL, StrengthFormula::name)
-        ))
-        .into()
-    })
+    by_name(
+        "strength law",
+        name,
+        StrengthFormula::from_name,
+        &StrengthFormula::ALL,
+        StrengthFormula::name,
+        "rothrock: Rothrock 1975, CICE default; hibler: Hibler 1979",
+    )
 }
 
 /// CICE's defaults with the `(name, value)` overrides (the library's parser,

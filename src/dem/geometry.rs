@@ -164,7 +164,7 @@ impl<const N: usize> Poly<N> {
     /// that lie on both boundaries (within 1 nm). With flush, collinear edges both ends of
     /// the shared segment count, so the chord does not hang on round-off. Written to
     /// `out`; returns how many.
-    pub fn crossings(&self, a: &Outline, b: &Outline, out: &mut [V2]) -> usize {
+    pub(crate) fn crossings(&self, a: &Outline, b: &Outline, out: &mut [V2]) -> usize {
         let mut k = 0;
         let second = |t: u8| t as usize >= MAX_VERTS;
         for i in 0..self.n {
@@ -182,7 +182,9 @@ impl<const N: usize> Poly<N> {
         }
         k
     }
-    /// Area (m²) and centroid (m); see [`area_centroid`].
+    /// Area (m², positive for counter-clockwise order) and centroid (m), by the shoelace
+    /// formula; a degenerate polygon (area below 1e-18 m²) has the mean of its vertices as
+    /// centroid.
     pub fn area_centroid(&self) -> (f64, V2) {
         area_centroid(self.verts())
     }
@@ -196,7 +198,7 @@ pub(crate) type ClipPoly = Poly<CLIP_VERTS>;
 /// Area (m², positive for counter-clockwise order) and centroid (m) of a simple polygon, by
 /// the shoelace formula. Degenerate polygons (area below 1e-18 m²) report their area as
 /// computed and the mean of their vertices as centroid, so the result is always finite.
-pub fn area_centroid(v: &[V2]) -> (f64, V2) {
+pub(crate) fn area_centroid(v: &[V2]) -> (f64, V2) {
     let n = v.len();
     if n == 0 {
         return (0.0, V2::default());
@@ -310,6 +312,10 @@ fn separated_by_edge_of(a: &Outline, b: &Outline) -> bool {
 /// edge of `b` with every vertex outside ends the clipping at once), and small overlaps at
 /// a corner (an edge of `b` with every vertex inside leaves the polygon as it is, with no
 /// copy).
+///
+/// Public, and hidden from the docs, only for the clipper benchmark (`benches/dem.rs`, against
+/// parry2d): the simulator clips through [`overlap`]'s crate-private form.
+#[doc(hidden)]
 pub fn intersect(a: &Outline, b: &Outline) -> ClipPoly {
     let mut bufs = [ClipPoly::default(), ClipPoly::default()];
     intersect_in(a, b, &mut bufs).copied().unwrap_or_default()
@@ -376,7 +382,7 @@ pub(crate) fn clip_below_into(poly: &Outline, level: f64, out: &mut ClipPoly) {
 
 /// The part of a polygon below the horizontal line `y = level` (m): its area (m²) and
 /// centroid (m). Returns zero area when the polygon is entirely above.
-pub fn below_line(poly: &Outline, level: f64) -> (f64, V2) {
+pub(crate) fn below_line(poly: &Outline, level: f64) -> (f64, V2) {
     let mut lo = f64::INFINITY;
     let mut hi = f64::NEG_INFINITY;
     for &p in poly.verts() {
@@ -392,43 +398,9 @@ pub fn below_line(poly: &Outline, level: f64) -> (f64, V2) {
     clip_below(poly, level).area_centroid()
 }
 
-/// The points where the boundaries of two convex polygons cross. For two overlapping
-/// convex polygons in general position there are exactly two; vertex-on-edge contacts may
-/// report a point twice. Returns how many were written to `out` (at most `out.len()`).
-pub fn boundary_crossings(a: &Outline, b: &Outline, out: &mut [V2]) -> usize {
-    let mut k = 0;
-    let na = a.n;
-    let nb = b.n;
-    for i in 0..na {
-        let p = a.p[i];
-        let r = a.p[(i + 1) % na] - p;
-        for j in 0..nb {
-            let q = b.p[j];
-            let s = b.p[(j + 1) % nb] - q;
-            let den = r.cross(s);
-            // Parallel (or collinear) edges have no isolated crossing point; the ends of a
-            // collinear overlap are found where the neighbouring edges cross.
-            if den.abs() <= 1e-12 * (r.norm() * s.norm()) {
-                continue;
-            }
-            let qp = q - p;
-            let t = qp.cross(s) / den;
-            let u = qp.cross(r) / den;
-            const TOL: f64 = 1e-12;
-            if (-TOL..=1.0 + TOL).contains(&t) && (-TOL..=1.0 + TOL).contains(&u) {
-                if k < out.len() {
-                    out[k] = p + r * t;
-                    k += 1;
-                } else {
-                    return k;
-                }
-            }
-        }
-    }
-    k
-}
-
-/// The geometry of a contact between two convex polygons `a` and `b`.
+/// The geometry of a contact between two convex polygons `a` and `b`. Public, and hidden
+/// from the docs, only as the result of [`overlap`].
+#[doc(hidden)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Overlap {
     /// Area of the intersection polygon (m²).
@@ -452,6 +424,10 @@ pub struct Overlap {
 /// so that it points from `a`'s centroid side to `b`'s. When the chord is undefined
 /// (one polygon inside the other, or a touch of zero length) the normal falls back to the
 /// direction between the centroids, and to `+y` if those coincide.
+///
+/// Public, and hidden from the docs, only for the contact-geometry benchmark
+/// (`benches/dem.rs`): the simulator calls the crate-private `overlap_with`.
+#[doc(hidden)]
 pub fn overlap(a: &Outline, b: &Outline, ca: V2, cb: V2) -> Option<Overlap> {
     overlap_with(a, b, ca, cb, &mut OverlapScratch::default())
 }
@@ -604,6 +580,9 @@ impl Aabb {
             && o.min.y <= self.max.y
     }
 }
+
+#[cfg(test)]
+mod props;
 
 #[cfg(test)]
 mod tests {

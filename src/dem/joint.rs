@@ -12,11 +12,12 @@
 //! - shear τ(s) = G(s)·δ_t(s)/W + η_G(s)·δ̇_t(s) with G = E/(2(1 + ν)) (k_te = G/W) and
 //!   η_G = f·2·sqrt(ρ_i·G(s)),
 //!
-//! integrated over the intact span [s_lo, s_hi]: the skeletal layer (the bottom 20 % of h, at
-//! most 6 cm) carries nothing, and cracks eat into the span from the top and the bottom
-//! (`dem::fracture`, docs/model.md "Fracture"). W is the distance between the two block centres (the width of a
-//! block for equal blocks). The fibre force acts on each block at its own face point, so the
-//! work it absorbs is exactly ∫(σ·δ̇_n + τ·δ̇_t) ds in the limit of small rotations.
+//! integrated over the intact span [s_lo, s_hi]: the skeletal layer (the bottom 20 % of h,
+//! at most 6 cm) carries nothing, and cracks eat into the span from the top and the bottom
+//! (`dem::fracture`, docs/model.md "Fracture"). W is the distance between the two block
+//! centres (the width of a block for equal blocks). The fibre force acts on each block at
+//! its own face point, so the work it absorbs is exactly ∫(σ·δ̇_n + τ·δ̇_t) ds in the limit
+//! of small rotations.
 
 use super::body::{Bodies, BodyId};
 use super::geometry::V2;

@@ -1,7 +1,8 @@
 //! The discrete-element ridge simulator (Hopkins 1994, "Dynamic Ridge Model").
 //!
 //! One module per mechanism:
-//! - [`geometry`] — convex clipping, areas, centroids, boundary crossings, the water line;
+//! - [`geometry`] — vectors and block outlines (public); convex clipping, areas, centroids,
+//!   the contact chord and normal, the water line (crate-private);
 //! - [`body`] — block shapes and the state arrays;
 //! - `broadphase` — candidate pairs by sort-and-sweep (crate-private);
 //! - [`contact`] — the rubble contact law, eqs (2)–(4);

@@ -84,13 +84,7 @@ fn rebin(
     ws: &mut StepWorkspace,
 ) -> Result<(), ColumnError> {
     let ncat = col.aicen.len();
-    for n in 0..ncat {
-        ws.hicen[n] = if col.aicen[n] > puny {
-            col.vicen[n] / col.aicen[n]
-        } else {
-            0.0
-        };
-    }
+    mean_thickness(col, puny, &mut ws.hicen);
     if col.aicen[0] > puny && ws.hicen[0] <= hin_max[0] && hin_max[0] > 0.0 {
         col.aicen[0] = col.vicen[0] / hin_max[0];
         ws.hicen[0] = hin_max[0];
@@ -121,17 +115,10 @@ fn shift_ice(
     layout: &TracerLayout,
     ws: &mut StepWorkspace,
 ) -> Result<(), ColumnError> {
-    let ncat = col.aicen.len();
     let nt = layout.ntrcr();
     let aicen_init_nd = col.aicen[nd];
     let vsnon_init_nd = col.vsnon[nd];
-    for n in 0..ncat {
-        let trc = &col.trcrn[n * nt..(n + 1) * nt];
-        for it in 0..nt {
-            ws.atrcrn[n * nt + it] =
-                layout.amount(it, trc, col.aicen[n], col.vicen[n], col.vsnon[n]);
-        }
-    }
+    col.tracer_amounts(layout, &mut ws.atrcrn);
     let mut daice = col.aicen[nd];
     let mut dvice = col.vicen[nd];
     let fail = |what: &'static str, value: f64| ColumnError::StepFailed {
@@ -203,23 +190,21 @@ fn shift_ice(
             ws.atrcrn[nr * nt + it] += d;
         }
     }
-    for n in 0..ncat {
-        ws.hicen[n] = if col.aicen[n] > puny {
+    mean_thickness(col, puny, &mut ws.hicen);
+    col.tracers_from_amounts(layout, &ws.atrcrn, puny, tf);
+    Ok(())
+}
+
+/// Each category's mean ice thickness (m) into `hicen`: volume over area where the area is
+/// above `puny`, else 0.
+fn mean_thickness(col: &ColumnMut<'_>, puny: f64, hicen: &mut [f64]) {
+    for n in 0..col.aicen.len() {
+        hicen[n] = if col.aicen[n] > puny {
             col.vicen[n] / col.aicen[n]
         } else {
             0.0
         };
-        layout.compute(
-            &ws.atrcrn[n * nt..(n + 1) * nt],
-            col.aicen[n],
-            col.vicen[n],
-            col.vsnon[n],
-            puny,
-            tf,
-            &mut col.trcrn[n * nt..(n + 1) * nt],
-        );
     }
-    Ok(())
 }
 
 /// Icepack `zap_small_areas`: empties categories with 0 < |area| ≤ `puny` (or any leftover
@@ -267,16 +252,7 @@ fn zap_small_areas(
             *q = 0.0;
         }
         z.fresh += rhoi * v / dt;
-        z.fsalt += match c.salt_flux {
-            SaltFlux::Constant => rhoi * v * c.ice_ref_salinity * 0.001 / dt,
-            SaltFlux::Prognostic => {
-                let mut sicen = 0.0;
-                for k in 0..layout.nilyr {
-                    sicen += trc[layout.nt_sice + k] / nilyr;
-                }
-                rhoi * v * sicen * 0.001 / dt
-            }
-        };
+        z.fsalt += rhoi * v * ice_salinity(trc, c, layout) * 0.001 / dt;
         z.vice += v;
         *col.aice0 += a;
         col.aicen[n] = 0.0;
@@ -310,18 +286,8 @@ fn zap_small_areas(
                 z.fhocn += trc[layout.nt_qsno + k] * s / nslyr * (aice - 1.0) / aice / dt;
             }
             z.fresh += (rhoi * v + c.rhos * s) * (aice - 1.0) / aice / dt;
-            z.fsalt += match c.salt_flux {
-                SaltFlux::Constant => {
-                    rhoi * v * c.ice_ref_salinity * 0.001 * (aice - 1.0) / aice / dt
-                }
-                SaltFlux::Prognostic => {
-                    let mut sicen = 0.0;
-                    for k in 0..layout.nilyr {
-                        sicen += trc[layout.nt_sice + k] / nilyr;
-                    }
-                    rhoi * v * sicen * 0.001 * (aice - 1.0) / aice / dt
-                }
-            };
+            let sal = ice_salinity(trc, c, layout);
+            z.fsalt += rhoi * v * sal * 0.001 * (aice - 1.0) / aice / dt;
             col.aicen[n] *= 1.0 / aice;
             col.vicen[n] *= 1.0 / aice;
             col.vsnon[n] *= 1.0 / aice;
@@ -335,6 +301,23 @@ fn zap_small_areas(
         *col.aice0 *= 1.0 / aice;
     }
     Ok(())
+}
+
+/// The salinity (ppt) of the ice that a zapped category puts into the ocean: the reference
+/// salinity, or with prognostic salinity the mean of the category's layer salinities
+/// (`trc`, its tracers), summed layer by layer as Icepack does.
+fn ice_salinity(trc: &[f64], c: &RidgeStepParams, layout: &TracerLayout) -> f64 {
+    match c.salt_flux {
+        SaltFlux::Constant => c.ice_ref_salinity,
+        SaltFlux::Prognostic => {
+            let nilyr = layout.nilyr as f64;
+            let mut sicen = 0.0;
+            for k in 0..layout.nilyr {
+                sicen += trc[layout.nt_sice + k] / nilyr;
+            }
+            sicen
+        }
+    }
 }
 
 /// Icepack `zap_snow`: melts one category's snow into the ocean.

@@ -394,12 +394,23 @@ pub(crate) fn check_column(
     Ok(sum)
 }
 
-pub(crate) fn check_len(var: &'static str, found: usize, ncat: usize) -> Result<(), ItdError> {
-    if found != ncat {
+/// Checks that the 1-D array `var` has length `n` (an [`ItdError::Shape`] naming it if not).
+pub(crate) fn check_len(var: &'static str, found: usize, n: usize) -> Result<(), ItdError> {
+    check_shape(var, &[found], &[n])
+}
+
+/// Checks that the array `var` has the shape `expected` (an [`ItdError::Shape`] naming it and
+/// giving both shapes if not).
+pub(crate) fn check_shape(
+    var: &'static str,
+    found: &[usize],
+    expected: &[usize],
+) -> Result<(), ItdError> {
+    if found != expected {
         return Err(ItdError::Shape {
             var,
-            expected: vec![ncat],
-            found: vec![found],
+            expected: expected.to_vec(),
+            found: found.to_vec(),
         });
     }
     Ok(())

@@ -124,6 +124,47 @@ pub struct ColumnMut<'a> {
     pub aice: &'a mut f64,
 }
 
+impl ColumnMut<'_> {
+    /// Icepack's `atrcrn`: the conserved amount of every tracer of every category
+    /// ([`TracerLayout::amount`] with the category's area, ice and snow volume), into
+    /// `atrc[n * ntrcr + it]`. The ridging passes and `shift_ice` start from it.
+    pub(crate) fn tracer_amounts(&self, layout: &TracerLayout, atrc: &mut [f64]) {
+        let nt = layout.ntrcr();
+        for n in 0..self.aicen.len() {
+            let trc = &self.trcrn[n * nt..(n + 1) * nt];
+            for it in 0..nt {
+                atrc[n * nt + it] =
+                    layout.amount(it, trc, self.aicen[n], self.vicen[n], self.vsnon[n]);
+            }
+        }
+    }
+
+    /// Every category's tracers from the conserved amounts `atrc` (as
+    /// [`ColumnMut::tracer_amounts`] lays them out) and its new area, ice and snow volume
+    /// ([`TracerLayout::compute`], Icepack's `icepack_compute_tracers`). The ridging passes and
+    /// `shift_ice` end with it.
+    pub(crate) fn tracers_from_amounts(
+        &mut self,
+        layout: &TracerLayout,
+        atrc: &[f64],
+        puny: f64,
+        tf: f64,
+    ) {
+        let nt = layout.ntrcr();
+        for n in 0..self.aicen.len() {
+            layout.compute(
+                &atrc[n * nt..(n + 1) * nt],
+                self.aicen[n],
+                self.vicen[n],
+                self.vsnon[n],
+                puny,
+                tf,
+                &mut self.trcrn[n * nt..(n + 1) * nt],
+            );
+        }
+    }
+}
+
 /// Fluxes to the ocean. The step **adds** to these (as Icepack adds to its arguments);
 /// zero them first to get one step's values.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]

@@ -14,7 +14,7 @@ use super::ridge_step::{
     ridge_step_column,
 };
 use super::tracers::TracerLayout;
-use super::{ItdError, check_len};
+use super::{ItdError, check_len, check_shape};
 
 /// Name, CF units and long name of one output of the batched step.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -225,22 +225,9 @@ pub fn ridge_step_batch(
             found: vec![0, ncol],
         });
     }
-    for (var, v) in [("vicen", &vicen), ("vsnon", &vsnon)] {
-        if v.dim() != (ncat, ncol) {
-            return Err(ItdError::Shape {
-                var,
-                expected: vec![ncat, ncol],
-                found: v.shape().to_vec(),
-            });
-        }
-    }
-    if trcrn.dim() != (ncat, nt, ncol) {
-        return Err(ItdError::Shape {
-            var: "trcrn",
-            expected: vec![ncat, nt, ncol],
-            found: trcrn.shape().to_vec(),
-        });
-    }
+    check_shape("vicen", vicen.shape(), &[ncat, ncol])?;
+    check_shape("vsnon", vsnon.shape(), &[ncat, ncol])?;
+    check_shape("trcrn", trcrn.shape(), &[ncat, nt, ncol])?;
     check_len("hin_max", hin_max.len(), ncat + 1)?;
     check_len("aice0", aice0.len(), ncol)?;
     check_len("aice", aice.len(), ncol)?;
@@ -260,32 +247,14 @@ pub fn ridge_step_batch(
     if let Some(m) = &valid {
         check_len("valid", m.len(), ncol)?;
     }
-    if cell.len() != CELL_OUTPUTS.len() {
-        return Err(ItdError::Shape {
-            var: "cell outputs",
-            expected: vec![CELL_OUTPUTS.len()],
-            found: vec![cell.len()],
-        });
-    }
+    check_len("cell outputs", cell.len(), CELL_OUTPUTS.len())?;
     for (m, o) in CELL_OUTPUTS.iter().zip(cell.iter()) {
         check_len(m.name, o.len(), ncol)?;
     }
     if let Some(cat) = category.as_deref() {
-        if cat.len() != CATEGORY_OUTPUTS.len() {
-            return Err(ItdError::Shape {
-                var: "category outputs",
-                expected: vec![CATEGORY_OUTPUTS.len()],
-                found: vec![cat.len()],
-            });
-        }
+        check_len("category outputs", cat.len(), CATEGORY_OUTPUTS.len())?;
         for (m, o) in CATEGORY_OUTPUTS.iter().zip(cat.iter()) {
-            if o.dim() != (ncat, ncol) {
-                return Err(ItdError::Shape {
-                    var: m.name,
-                    expected: vec![ncat, ncol],
-                    found: o.shape().to_vec(),
-                });
-            }
+            check_shape(m.name, o.shape(), &[ncat, ncol])?;
         }
     }
 

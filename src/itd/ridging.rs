@@ -19,7 +19,7 @@ use super::bounds::validate_bounds;
 use super::params::{ItdParams, Participation, Redistribution};
 use super::redistribution::{RidgeGeometry, category_fractions};
 use super::ridge_step::asum_ridging;
-use super::{ColumnError, ItdError, Workspace, check_column, check_len};
+use super::{ColumnError, ItdError, Workspace, check_column, check_len, check_shape};
 
 /// Options of the ridging step; the default is CICE's (exponential, exponential).
 #[derive(Debug, Clone, Copy, Default)]
@@ -373,13 +373,7 @@ pub fn ridge_batch_masked(
     rates: RidgeRatesMut<'_>,
 ) -> Result<(), ItdError> {
     let (ncat, ncol) = aicen.dim();
-    if vicen.dim() != (ncat, ncol) {
-        return Err(ItdError::Shape {
-            var: "vicen",
-            expected: vec![ncat, ncol],
-            found: vicen.shape().to_vec(),
-        });
-    }
+    check_shape("vicen", vicen.shape(), &[ncat, ncol])?;
     validate_bounds(hin_max)?;
     check_len("hin_max", hin_max.len(), ncat + 1)?;
     check_len("aice0", aice0.len(), ncol)?;

@@ -16,7 +16,7 @@ use super::lanes;
 use super::params::{ItdParams, Participation, Redistribution, StrengthFormula};
 use super::participation::{ExpCache, participation_with};
 use super::redistribution::mean_square_ridge_thickness;
-use super::{ColumnError, ItdError, Workspace, check_column, check_len};
+use super::{ColumnError, ItdError, Workspace, check_column, check_len, check_shape};
 
 /// Options of the strength routine. `StrengthOptions::default()` is CICE's default
 /// (exponential participation, exponential redistribution, Rothrock, C_f = 17).
@@ -425,13 +425,7 @@ pub fn strength_batch_masked(
 ) -> Result<BatchSummary, ItdError> {
     opts.validate()?;
     let (ncat, ncol) = aicen.dim();
-    if vicen.dim() != (ncat, ncol) {
-        return Err(ItdError::Shape {
-            var: "vicen",
-            expected: vec![ncat, ncol],
-            found: vicen.shape().to_vec(),
-        });
-    }
+    check_shape("vicen", vicen.shape(), &[ncat, ncol])?;
     if let Some(a0) = &aice0 {
         check_len("aice0", a0.len(), ncol)?;
     }

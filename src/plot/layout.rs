@@ -17,6 +17,9 @@ use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+/// A chart with linear f64 axes, as every figure draws.
+pub type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
 /// Reference figure width (px) at which the base font sizes apply.
 pub const REFERENCE_WIDTH: f64 = 900.0;
 /// Smallest tick-label font (px): below it text stops being legible on screen.
@@ -271,7 +274,8 @@ impl Layout {
     }
 
     /// The x range of the y-axis description's line (px from the left edge) and of the y
-    /// tick labels: the first ends before the second starts.
+    /// tick labels: the first ends before the second starts. For the figure tests.
+    #[cfg(test)]
     pub fn y_columns(&self) -> ((u32, u32), (u32, u32)) {
         let desc = (self.pad, self.pad + self.desc_height);
         let ticks_end = self.left - 2 * self.tick_mark;
@@ -288,7 +292,7 @@ impl Layout {
         y: &Axis,
         title: &str,
         grid: bool,
-    ) -> Result<ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>, PlotError>
+    ) -> Result<Chart<'a, DB>, PlotError>
     where
         DB::ErrorType: 'static,
     {
@@ -321,13 +325,30 @@ impl Layout {
         Ok(chart)
     }
 
+    /// The layout of the whole canvas `root` (its size, axes `x` and `y`, `title`) and its
+    /// chart with grid lines ([`Layout::chart`]): how every single-chart figure starts.
+    pub fn canvas_chart<'a, DB: DrawingBackend>(
+        root: &'a DrawingArea<DB, Shift>,
+        x: &Axis,
+        y: &Axis,
+        title: &str,
+    ) -> Result<(Layout, Chart<'a, DB>), PlotError>
+    where
+        DB::ErrorType: 'static,
+    {
+        let (w, h) = root.dim_in_pixel();
+        let layout = Layout::new(w, x, y, title).with_height(h);
+        let chart = layout.chart(root, x, y, title, true)?;
+        Ok((layout, chart))
+    }
+
     /// Finishes a figure made by [`Layout::chart`]: the legend of its labelled series in the
     /// figures' one style (white box at 85 %, black border, the legend font) at `position`,
     /// then the drawing flushed to its file.
     pub fn finish<'a, DB: DrawingBackend + 'a>(
         &self,
         root: &DrawingArea<DB, Shift>,
-        chart: &mut ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>,
+        chart: &mut Chart<'a, DB>,
         position: SeriesLabelPosition,
     ) -> Result<(), PlotError>
     where

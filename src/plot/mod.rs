@@ -17,15 +17,16 @@ macro_rules! to_file {
 }
 
 pub mod animate;
+#[cfg(test)]
+mod figure_tests;
 pub(crate) mod gif;
-pub mod layout;
+pub(crate) mod layout;
 pub mod render;
 pub mod series;
+pub mod strength_map;
 pub mod table;
 
 use std::sync::OnceLock;
-
-pub mod strength_map;
 
 /// An error while drawing or writing a figure.
 #[derive(Debug, thiserror::Error)]
@@ -86,6 +87,20 @@ pub(crate) fn ensure_font() -> Result<(), PlotError> {
         false
     });
     if ok { Ok(()) } else { Err(PlotError::NoFont) }
+}
+
+/// Writes the figure `path` atomically: registers the font, then `draw` writes into the
+/// temporary file it is given (renamed to `path` on success, removed on error); a drawing
+/// error names `path`. Every figure file of this module is written through here.
+pub(crate) fn write_figure(
+    path: &std::path::Path,
+    draw: impl FnOnce(&std::path::Path) -> Result<(), PlotError>,
+) -> Result<(), PlotError> {
+    crate::io::write_atomic_with(path, |tmp| {
+        ensure_font()?;
+        draw(tmp)
+    })
+    .map_err(|e| e.at(path))
 }
 
 /// Converts any plotters drawing error into a [`PlotError`].

@@ -1,7 +1,7 @@
 //! Ridge snapshots: blocks, the water, axes in metres (cf. Hopkins 1994, Figure 5).
 
 use super::layout::{Axis, Layout};
-use super::{PlotError, draw_err, ensure_font};
+use super::{PlotError, draw_err, ensure_font, write_figure};
 use crate::dem::{Role, Snapshot};
 use plotters::prelude::*;
 use std::path::Path;
@@ -68,7 +68,7 @@ impl Window {
     /// The window around the ridge: every rubble block (free blocks of role `Rubble` or
     /// `Block`) and, of the sheet, the floe and any other body, the part within `reach` (m)
     /// of the rubble's bounding box, all with a `margin` (m). `None` when the state holds
-    /// no rubble. Metres stay square when drawn ([`state_layout`]), whatever the shape.
+    /// no rubble. Metres stay square when drawn ([`render_state`]), whatever the shape.
     pub fn fit_ridge(s: &Snapshot, reach: f64, margin: f64) -> Option<Window> {
         let bbox = |b: &crate::dem::world::BodyState| {
             let mut w = Window {
@@ -124,7 +124,7 @@ impl Window {
 
 /// Draws a saved state into a PNG (or SVG, by the file extension) of `width_px` pixels
 /// wide, height from the window's aspect ratio so that metres are square. Fonts and margins
-/// scale with the width ([`super::layout`]).
+/// scale with the width (14-px tick labels at 900 px, never below 9 px).
 pub fn render_state(
     s: &Snapshot,
     path: &Path,
@@ -132,8 +132,7 @@ pub fn render_state(
     width_px: u32,
     title: &str,
 ) -> Result<(), PlotError> {
-    crate::io::write_atomic_with(path, |tmp| render_state_at(s, tmp, window, width_px, title))
-        .map_err(|e| e.at(path))
+    write_figure(path, |tmp| render_state_at(s, tmp, window, width_px, title))
 }
 
 /// [`render_state`] into the file `path` (a temporary file renamed by the caller).
@@ -144,17 +143,9 @@ fn render_state_at(
     width_px: u32,
     title: &str,
 ) -> Result<(), PlotError> {
-    ensure_font()?;
     let layout = state_layout(window, width_px, title);
     let size = (layout.width, layout.height);
-    let svg = path.extension().is_some_and(|e| e == "svg");
-    if svg {
-        let root = SVGBackend::new(path, size).into_drawing_area();
-        draw(root, s, window, title, &layout)
-    } else {
-        let root = BitMapBackend::new(path, size).into_drawing_area();
-        draw(root, s, window, title, &layout)
-    }
+    to_file!(path, size, draw(s, window, title, &layout))
 }
 
 /// The axes of a state figure: x and y in metres over the window.
@@ -168,7 +159,7 @@ fn axes(window: Window) -> (Axis, Axis) {
 /// The layout of a state figure of `window` drawn `width_px` wide (at least 200 px) with
 /// `title` (may be empty): margins measured from its labels, the height following from the
 /// window's aspect ratio so that the plot area keeps metres square.
-pub fn state_layout(window: Window, width_px: u32, title: &str) -> Layout {
+pub(crate) fn state_layout(window: Window, width_px: u32, title: &str) -> Layout {
     let (x, y) = axes(window);
     let l = Layout::new(width_px.max(200), &x, &y, title);
     let aspect = (window.y1 - window.y0) / (window.x1 - window.x0);
@@ -180,7 +171,7 @@ pub fn state_layout(window: Window, width_px: u32, title: &str) -> Layout {
 
 /// Draws a state into memory: RGB bytes (3 a pixel, row by row) of the size
 /// [`state_layout`] gives, returned with that size.
-pub fn render_state_rgb(
+pub(crate) fn render_state_rgb(
     s: &Snapshot,
     window: Window,
     width_px: u32,

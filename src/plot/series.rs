@@ -1,7 +1,7 @@
 //! Energy budget against time (cf. Hopkins 1994, Figure 7).
 
 use super::layout::{Axis, Layout};
-use super::{PlotError, draw_err, ensure_font};
+use super::{PlotError, draw_err, write_figure};
 use crate::dem::EnergyBudget;
 use crate::simulation::Sample;
 use plotters::prelude::*;
@@ -10,13 +10,11 @@ use std::path::Path;
 /// Draws every ledger term against time into a PNG (or SVG, by the file extension), in kJ
 /// per metre.
 pub fn plot_energy(samples: &[Sample], path: &Path, title: &str) -> Result<(), PlotError> {
-    crate::io::write_atomic_with(path, |tmp| plot_energy_at(samples, tmp, title))
-        .map_err(|e| e.at(path))
+    write_figure(path, |tmp| plot_energy_at(samples, tmp, title))
 }
 
 /// [`plot_energy`] into the file `path` (a temporary file renamed by the caller).
 fn plot_energy_at(samples: &[Sample], path: &Path, title: &str) -> Result<(), PlotError> {
-    ensure_font()?;
     let series: Vec<EnergyBudget> = samples.iter().map(|s| s.energy).collect();
     let series = &series[..];
     let lines: [(&str, Getter, RGBColor); 10] = [
@@ -56,14 +54,12 @@ fn plot_energy_at(samples: &[Sample], path: &Path, title: &str) -> Result<(), Pl
         }
     }
     let pad = 0.05 * (hi - lo).max(1e-9);
-    let size = (900, 560);
-    if path.extension().is_some_and(|e| e == "svg") {
-        let root = SVGBackend::new(path, size).into_drawing_area();
-        draw_energy(root, series, &lines, title, t1, lo - pad, hi + pad)
-    } else {
-        let root = BitMapBackend::new(path, size).into_drawing_area();
-        draw_energy(root, series, &lines, title, t1, lo - pad, hi + pad)
-    }
+    let (lo, hi) = (lo - pad, hi + pad);
+    to_file!(
+        path,
+        (900, 560),
+        draw_energy(series, &lines, title, t1, lo, hi)
+    )
 }
 
 type Getter = fn(&EnergyBudget) -> f64;
@@ -85,9 +81,7 @@ where
         Axis::new(0.0, t1, "time (s)"),
         Axis::new(y0, y1, "energy (kJ/m)"),
     );
-    let (w, h) = root.dim_in_pixel();
-    let layout = Layout::new(w, &x, &y, title).with_height(h);
-    let mut chart = layout.chart(&root, &x, &y, title, true)?;
+    let (layout, mut chart) = Layout::canvas_chart(&root, &x, &y, title)?;
     let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
     for &(name, f, color) in lines {
         chart
@@ -108,27 +102,18 @@ where
 /// metre, sampled at the scene's interval (0.2 s by default, as in the paper); PNG, or SVG
 /// by the file extension.
 pub fn plot_force(samples: &[Sample], path: &Path, title: &str) -> Result<(), PlotError> {
-    crate::io::write_atomic_with(path, |tmp| plot_force_at(samples, tmp, title))
-        .map_err(|e| e.at(path))
+    write_figure(path, |tmp| plot_force_at(samples, tmp, title))
 }
 
 /// [`plot_force`] into the file `path` (a temporary file renamed by the caller).
 fn plot_force_at(samples: &[Sample], path: &Path, title: &str) -> Result<(), PlotError> {
-    ensure_font()?;
     let t1 = samples.last().map_or(1.0, |s| s.energy.time).max(1e-9);
     let (mut lo, mut hi) = (0.0f64, 1.0f64);
     for s in samples {
         lo = lo.min(s.ridging_force / 1e3);
         hi = hi.max(s.ridging_force / 1e3);
     }
-    let size = (900, 420);
-    if path.extension().is_some_and(|e| e == "svg") {
-        let root = SVGBackend::new(path, size).into_drawing_area();
-        draw_force(root, samples, title, t1, lo, hi)
-    } else {
-        let root = BitMapBackend::new(path, size).into_drawing_area();
-        draw_force(root, samples, title, t1, lo, hi)
-    }
+    to_file!(path, (900, 420), draw_force(samples, title, t1, lo, hi))
 }
 
 fn draw_force<DB: DrawingBackend>(
@@ -147,9 +132,7 @@ where
         Axis::new(0.0, t1, "time (s)"),
         Axis::new(lo, hi * 1.05, "ridging force (kN/m)"),
     );
-    let (w, h) = root.dim_in_pixel();
-    let layout = Layout::new(w, &x, &y, title).with_height(h);
-    let mut chart = layout.chart(&root, &x, &y, title, true)?;
+    let (layout, mut chart) = Layout::canvas_chart(&root, &x, &y, title)?;
     chart
         .draw_series(LineSeries::new(
             samples

@@ -8,7 +8,7 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::layout::{Axis, Fonts, Layout, TICKS, text_size};
-use super::{PlotError, draw_err, ensure_font};
+use super::{PlotError, draw_err, write_figure};
 
 /// One panel: a title and `ny × nx` values in C order (row `j` = grid row, `x` fastest).
 /// Non-finite values are drawn grey.
@@ -46,8 +46,8 @@ pub fn default_width(panels: usize) -> u32 {
 
 /// Draws the panels side by side into `path` (PNG, or SVG by the extension), `width_px`
 /// wide, colour scale 0 ..= max over all panels (kN/m on the colour bar). Fonts scale with
-/// the width ([`Fonts::for_width`]); the height follows the grid's aspect ratio. `ny`, `nx`:
-/// grid shape.
+/// the width (14-px tick labels at 900 px); the height follows the grid's aspect ratio.
+/// `ny`, `nx`: grid shape.
 pub fn draw_strength_maps(
     path: &Path,
     panels: &[Panel<'_>],
@@ -55,10 +55,9 @@ pub fn draw_strength_maps(
     nx: usize,
     width_px: u32,
 ) -> Result<(), PlotError> {
-    crate::io::write_atomic_with(path, |tmp| {
+    write_figure(path, |tmp| {
         draw_strength_maps_at(tmp, panels, ny, nx, width_px)
     })
-    .map_err(|e| e.at(path))
 }
 
 /// Where the panels and the colour bar of a strength-map figure go (px).
@@ -102,7 +101,6 @@ fn draw_strength_maps_at(
     nx: usize,
     width_px: u32,
 ) -> Result<(), PlotError> {
-    ensure_font()?;
     if panels.is_empty() || ny == 0 || nx == 0 {
         return Err(PlotError::Draw("nothing to draw".into()));
     }

@@ -1,7 +1,7 @@
 //! Figures of a tabulated campaign (cf. Hopkins 1994, Figures 8–12).
 
 use super::layout::{Axis, Layout};
-use super::{PlotError, draw_err, ensure_font};
+use super::{PlotError, draw_err, write_figure};
 use crate::observe::Profile;
 use crate::table::tabulate::RidgeTable;
 use ndarray::s;
@@ -49,16 +49,11 @@ fn mean_work_curve(t: &RidgeTable, s: usize, hi: usize) -> Vec<(f64, f64)> {
         .collect()
 }
 
-/// Work against ridged volume for set `s` (cf. Figures 9, 11, 12): the ensemble mean of each
-/// thickness (where at least half its runs reached), the pooled fit of eq (13) and its 95 % confidence and prediction bands, in MJ/m.
+/// Work against ridged volume for set `s` (cf. Figures 9, 11, 12): the ensemble mean of
+/// each thickness (where at least half its runs reached), the pooled fit of eq (13) and its
+/// 95 % confidence and prediction bands, in MJ/m.
 pub fn plot_work(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> {
-    crate::io::write_atomic_with(path, |tmp| plot_work_at(t, s, tmp)).map_err(|e| e.at(path))
-}
-
-/// [`plot_work`] into the file `path` (a temporary file renamed by the caller).
-fn plot_work_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> {
-    ensure_font()?;
-    to_file!(path, (900, 600), draw_work(t, s))
+    write_figure(path, |tmp| to_file!(tmp, (900, 600), draw_work(t, s)))
 }
 
 fn draw_work<DB: DrawingBackend>(
@@ -88,9 +83,7 @@ where
         Axis::new(0.0, vmax, "ridged volume V (m³/m)"),
         Axis::new(0.0, (wmax * 1.05).max(1e-9), "work (MJ/m)"),
     );
-    let layout =
-        Layout::new(root.dim_in_pixel().0, &x, &y, &title).with_height(root.dim_in_pixel().1);
-    let mut chart = layout.chart(&root, &x, &y, &title, true)?;
+    let (layout, mut chart) = Layout::canvas_chart(&root, &x, &y, &title)?;
     let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
     if let Some(b) = band {
         let area = |lo: &[f64], hi: &[f64]| -> Vec<(f64, f64)> {
@@ -103,32 +96,24 @@ where
             );
             p
         };
-        chart
-            .draw_series(std::iter::once(Polygon::new(
-                area(&b.pred_lo, &b.pred_hi),
-                RGBColor(200, 200, 200).mix(0.5).filled(),
-            )))
-            .map_err(draw_err)?
-            .label("95 % prediction band")
-            .legend(move |(x, y)| {
-                Rectangle::new(
-                    [(x, y - key / 4), (x + key, y + key / 4)],
-                    RGBColor(200, 200, 200).filled(),
-                )
-            });
-        chart
-            .draw_series(std::iter::once(Polygon::new(
-                area(&b.conf_lo, &b.conf_hi),
-                RGBColor(120, 120, 120).mix(0.6).filled(),
-            )))
-            .map_err(draw_err)?
-            .label("95 % confidence band")
-            .legend(move |(x, y)| {
-                Rectangle::new(
-                    [(x, y - key / 4), (x + key, y + key / 4)],
-                    RGBColor(120, 120, 120).filled(),
-                )
-            });
+        // The prediction band, then the confidence band over it: (lower, upper, grey, alpha).
+        let bands = [
+            (&b.pred_lo, &b.pred_hi, 200, 0.5, "95 % prediction band"),
+            (&b.conf_lo, &b.conf_hi, 120, 0.6, "95 % confidence band"),
+        ];
+        for (lo, hi, grey, alpha, label) in bands {
+            let fill = RGBColor(grey, grey, grey);
+            chart
+                .draw_series(std::iter::once(Polygon::new(
+                    area(lo, hi),
+                    fill.mix(alpha).filled(),
+                )))
+                .map_err(draw_err)?
+                .label(label)
+                .legend(move |(x, y)| {
+                    Rectangle::new([(x, y - key / 4), (x + key, y + key / 4)], fill.filled())
+                });
+        }
         chart
             .draw_series(LineSeries::new(
                 b.v.iter().zip(&b.fit).map(|(v, y)| (*v, y / 1e6)),
@@ -156,13 +141,7 @@ where
 /// (cf. Figure 9, the eight friction sets at 0.30 m): one ensemble-mean curve per set, in
 /// MJ/m. PNG, or SVG by the extension.
 pub fn plot_work_sets(t: &RidgeTable, hi: usize, path: &Path) -> Result<(), PlotError> {
-    crate::io::write_atomic_with(path, |tmp| plot_work_sets_at(t, hi, tmp)).map_err(|e| e.at(path))
-}
-
-/// [`plot_work_sets`] into the file `path` (a temporary file renamed by the caller).
-fn plot_work_sets_at(t: &RidgeTable, hi: usize, path: &Path) -> Result<(), PlotError> {
-    ensure_font()?;
-    to_file!(path, (900, 600), draw_work_sets(t, hi))
+    write_figure(path, |tmp| to_file!(tmp, (900, 600), draw_work_sets(t, hi)))
 }
 
 /// The sets with at least one run at thickness index `hi`.
@@ -195,9 +174,7 @@ where
         Axis::new(0.0, vmax, "ridged volume V (m³/m)"),
         Axis::new(0.0, (wmax * 1.05).max(1e-9), "work (MJ/m)"),
     );
-    let layout =
-        Layout::new(root.dim_in_pixel().0, &x, &y, &title).with_height(root.dim_in_pixel().1);
-    let mut chart = layout.chart(&root, &x, &y, &title, true)?;
+    let (layout, mut chart) = Layout::canvas_chart(&root, &x, &y, &title)?;
     let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
     for (k, &s) in sets.iter().enumerate() {
         let c = COLORS[k % COLORS.len()];
@@ -215,13 +192,7 @@ where
 /// Ridging force against volume for set `s`: eq (15) from the pooled fit per thickness
 /// (lines) and the ensemble mean of the runs' interval-mean force (dots), in kN/m.
 pub fn plot_force(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> {
-    crate::io::write_atomic_with(path, |tmp| plot_force_at(t, s, tmp)).map_err(|e| e.at(path))
-}
-
-/// [`plot_force`] into the file `path` (a temporary file renamed by the caller).
-fn plot_force_at(t: &RidgeTable, s: usize, path: &Path) -> Result<(), PlotError> {
-    ensure_font()?;
-    to_file!(path, (900, 520), draw_force(t, s))
+    write_figure(path, |tmp| to_file!(tmp, (900, 520), draw_force(t, s)))
 }
 
 fn draw_force<DB: DrawingBackend>(
@@ -254,9 +225,7 @@ where
         Axis::new(0.0, vmax, "ridged volume V (m³/m)"),
         Axis::new(0.0, (fmax * 1.05).max(1e-9), "force (kN/m)"),
     );
-    let layout =
-        Layout::new(root.dim_in_pixel().0, &x, &y, title).with_height(root.dim_in_pixel().1);
-    let mut chart = layout.chart(&root, &x, &y, title, true)?;
+    let (layout, mut chart) = Layout::canvas_chart(&root, &x, &y, title)?;
     let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
     for (hi, th) in t.thickness.iter().enumerate() {
         let c = COLORS[hi % COLORS.len()];
@@ -313,13 +282,7 @@ pub fn seeds(n: usize) -> String {
 /// mean ± one standard deviation over the seeds as a shaded band, the rubble-only mean as a
 /// thin line; the water line at 0. PNG, or SVG by the extension.
 pub fn plot_profiles(groups: &[ProfileGroup], path: &Path) -> Result<(), PlotError> {
-    crate::io::write_atomic_with(path, |tmp| plot_profiles_at(groups, tmp)).map_err(|e| e.at(path))
-}
-
-/// [`plot_profiles`] into the file `path` (a temporary file renamed by the caller).
-fn plot_profiles_at(groups: &[ProfileGroup], path: &Path) -> Result<(), PlotError> {
-    ensure_font()?;
-    to_file!(path, (900, 560), draw_profiles(groups))
+    write_figure(path, |tmp| to_file!(tmp, (900, 560), draw_profiles(groups)))
 }
 
 fn draw_profiles<DB: DrawingBackend>(
@@ -375,9 +338,7 @@ where
             "sail height up, keel depth down (m)",
         ),
     );
-    let (w, h) = root.dim_in_pixel();
-    let layout = Layout::new(w, &x, &y, title).with_height(h);
-    let mut chart = layout.chart(&root, &x, &y, title, true)?;
+    let (layout, mut chart) = Layout::canvas_chart(&root, &x, &y, title)?;
     let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
     let thin = layout.fonts.px(1.0);
     for (k, g) in groups.iter().enumerate() {
@@ -435,13 +396,7 @@ where
 /// deviation over the seeds as whiskers, and CICE's default C_f = 17 dashed. PNG, or SVG by
 /// the extension.
 pub fn plot_cf(t: &RidgeTable, path: &Path) -> Result<(), PlotError> {
-    crate::io::write_atomic_with(path, |tmp| plot_cf_at(t, tmp)).map_err(|e| e.at(path))
-}
-
-/// [`plot_cf`] into the file `path` (a temporary file renamed by the caller).
-fn plot_cf_at(t: &RidgeTable, path: &Path) -> Result<(), PlotError> {
-    ensure_font()?;
-    to_file!(path, (900, 560), draw_cf(t))
+    write_figure(path, |tmp| to_file!(tmp, (900, 560), draw_cf(t)))
 }
 
 fn draw_cf<DB: DrawingBackend>(
@@ -473,9 +428,7 @@ where
         Axis::new((hmin - pad).max(0.0), hmax + pad, "sheet thickness h (m)"),
         Axis::new(0.0, cmax * 1.15, "C_f = W/ΔPE"),
     );
-    let (w, h) = root.dim_in_pixel();
-    let layout = Layout::new(w, &x, &y, title).with_height(h);
-    let mut chart = layout.chart(&root, &x, &y, title, true)?;
+    let (layout, mut chart) = Layout::canvas_chart(&root, &x, &y, title)?;
     let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
     let dot = layout.fonts.px(3.0);
     let whisker = (x.hi - x.lo) * 0.012;

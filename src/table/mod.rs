@@ -6,8 +6,9 @@
 //!   (Hopkins 1994, eqs 13–16), with confidence and prediction bands;
 //! - [`tabulate`] — campaign records to a lookup table (ensemble statistics on a volume
 //!   grid, fits per thickness and pooled, C_f per thickness);
-//! - [`crate::campaign::tabulation`] — campaign directories to a table: the pipeline of `pressridge tabulate`
-//!   and Python's `tabulate` (reading, pooling, rafting exclusion, provenance);
+//! - [`crate::campaign::tabulation`] — campaign directories to a table: the pipeline of
+//!   `pressridge tabulate` and Python's `tabulate` (reading, pooling, rafting exclusion,
+//!   provenance);
 //! - [`rafting`] — which runs rafted over the floe instead of ridging against it;
 //! - [`fit::student_t_cdf`], [`fit::student_t_quantile`] — Student's t CDF and quantile for
 //!   the confidence intervals;

@@ -1,12 +1,16 @@
 //! Student's t distribution: its CDF and quantile, for the confidence intervals of the fits
 //! (eqs 13–16), of C_f and of the speed-against-error table.
 //!
-//! The quantile is implemented here rather than taken from a crate: the dependency set has
-//! no small, well-kept crate for it (statrs is large and pulls nalgebra), and only the
-//! quantile at a handful of levels is needed. The method is plain and checkable: the upper
-//! tail P(T > t) = ½·I_x(ν/2, ½) with x = ν/(ν + t²), the regularised incomplete beta
-//! function I evaluated by its continued fraction (modified Lentz), and the quantile found
-//! by bracketing and bisection, which cannot fail to converge because the tail is monotone.
+//! The quantile is implemented here rather than taken from statrs, checked against
+//! statrs 0.18 (`StudentsT::inverse_cdf`, `default-features = false`) on ν from 1 to 10⁴
+//! and p from 0.6 to 0.9995: the two agree to 1.1e-8 relative but only 7 of those 120
+//! quantiles to the bit, and at ν = 10⁴, p = 0.9 statrs is 1.1e-8 off the exact quantile
+//! (40-digit mpmath) where this one is 4e-12 off. Taking statrs would move every confidence
+//! interval the tables and the examples print in its last digits and lose accuracy at large
+//! ν, for ~200 lines of code saved. The method is plain and checkable: the upper tail
+//! P(T > t) = ½·I_x(ν/2, ½) with x = ν/(ν + t²), the regularised incomplete beta function I
+//! evaluated by its continued fraction (modified Lentz), and the quantile found by
+//! bracketing and bisection, which cannot fail to converge because the tail is monotone.
 //! For ν = ∞ the normal tail ½·Q(½, z²/2) (regularised upper incomplete gamma) is used.
 
 const CF_EPS: f64 = 1e-15;
@@ -153,8 +157,8 @@ pub fn student_t_cdf(t: f64, dof: f64) -> f64 {
 /// `P(T ≤ t) = p`. `dof > 0` may be non-integer, or `f64::INFINITY` for the standard
 /// normal. Returns NaN unless `0 < p < 1` and `dof > 0`.
 ///
-/// Why here: see the module docs — no tiny, well-kept crate in the
-/// dependency set provides it. Method: bisection on the upper tail `½·I_x(ν/2, ½)`,
+/// Why here and not statrs: see the module docs (more accurate at large ν, and the tables'
+/// intervals stay bit for bit). Method: bisection on the upper tail `½·I_x(ν/2, ½)`,
 /// `x = ν/(ν + t²)`, with the regularised incomplete beta function `I` from its continued
 /// fraction; agrees with the closed forms for ν = 1 and 2 to ~1e-13 relative.
 pub fn student_t_quantile(p: f64, dof: f64) -> f64 {

@@ -31,9 +31,9 @@ pub struct SnowTracers {
 
 /// Reads the snow and tracers that go with `grid` (read from the same file by
 /// [`read_itd`](super::read_itd)): `Ok(None)` when the file has none of `vsnon`, `Tsfcn`,
-/// `qice001`, `sice001`, `qsno001` (then only area and volume can be ridged). The layout is told from the variable names by
-/// [`TracerLayout::detect_cice`] (the one detection, which Python's `xr.ridge_step` uses
-/// too). Errors name the missing or malformed variable.
+/// `qice001`, `sice001`, `qsno001` (then only area and volume can be ridged). The layout is
+/// told from the variable names by [`TracerLayout::detect_cice`] (the one detection, which
+/// Python's `xr.ridge_step` uses too). Errors name the missing or malformed variable.
 pub fn read_snow_tracers(path: &Path, grid: &ItdGrid) -> Result<Option<SnowTracers>, NetcdfError> {
     let file = netcdf::open(path).map_err(nc_err(path))?;
     let has = |n: &str| file.variable(n).is_some();

@@ -191,16 +191,10 @@ fn ridge_shift(
     let ncat = ws.ncat();
     let nt = layout.ntrcr();
     let nslyr = layout.nslyr as f64;
-    for n in 0..ncat {
-        ws.core.aicen_init[n] = col.aicen[n];
-        ws.core.vicen_init[n] = col.vicen[n];
-        ws.vsnon_init[n] = col.vsnon[n];
-        let trc = &col.trcrn[n * nt..(n + 1) * nt];
-        for it in 0..nt {
-            ws.atrcrn[n * nt + it] =
-                layout.amount(it, trc, col.aicen[n], col.vicen[n], col.vsnon[n]);
-        }
-    }
+    ws.core.aicen_init.copy_from_slice(col.aicen);
+    ws.core.vicen_init.copy_from_slice(col.vicen);
+    ws.vsnon_init.copy_from_slice(col.vsnon);
+    col.tracer_amounts(layout, &mut ws.atrcrn);
     // pressridge: with no area above puny nothing can ridge (Icepack divides by aksum = 0);
     // the missing area opens.
     let closing_gross = close_and_open(
@@ -298,16 +292,6 @@ fn ridge_shift(
             }
         }
     }
-    for n in 0..ncat {
-        layout.compute(
-            &ws.atrcrn[n * nt..(n + 1) * nt],
-            col.aicen[n],
-            col.vicen[n],
-            col.vsnon[n],
-            puny,
-            tf,
-            &mut col.trcrn[n * nt..(n + 1) * nt],
-        );
-    }
+    col.tracers_from_amounts(layout, &ws.atrcrn, puny, tf);
     Ok(())
 }

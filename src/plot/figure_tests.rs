@@ -1,9 +1,11 @@
 //! Figures fit for a paper: fonts scale with the figure, no label is clipped at the canvas
 //! edge or overprints another, at the smallest and a large supported size, PNG and SVG.
+//! Unit tests, since they measure the figure against its layout ([`super::layout`]), which
+//! is crate-private.
 
-use pressridge::plot::layout::{Fonts, MIN_TICK_PX};
-use pressridge::plot::render::{Window, render_state, render_state_rgb, state_layout};
-use pressridge::scene::Scene;
+use super::layout::{Fonts, MIN_TICK_PX};
+use super::render::{Window, render_state, render_state_rgb, state_layout};
+use crate::scene::Scene;
 
 /// The Figure 5 window of the paper's snapshots (m).
 const WINDOW: Window = Window {
@@ -13,7 +15,7 @@ const WINDOW: Window = Window {
     y1: 4.0,
 };
 
-fn state() -> pressridge::dem::Snapshot {
+fn state() -> crate::dem::Snapshot {
     Scene::default().build().unwrap().snapshot()
 }
 

@@ -1,12 +1,11 @@
-//! Property tests of the contact geometry, with parry2d as an independent oracle.
+//! Property tests of the contact geometry, with parry2d and a brute-force crossing search
+//! as independent oracles (unit tests: most of what they check is crate-private).
 
+use super::{Outline, V2, area_centroid, below_line, intersect, overlap};
+use crate::dem::Shape;
 use parry2d_f64::mass_properties::details::convex_polygon_area_and_center_of_mass;
 use parry2d_f64::na::Point2;
 use parry2d_f64::transformation::convex_polygons_intersection_points;
-use pressridge::dem::Shape;
-use pressridge::dem::geometry::{
-    Outline, V2, area_centroid, below_line, boundary_crossings, intersect, overlap,
-};
 use proptest::prelude::*;
 
 /// A block as the simulator makes them: a bevelled rectangle, rotated and placed.
@@ -35,6 +34,43 @@ fn moved(o: &Outline, th: f64, d: V2) -> Outline {
 
 fn area(o: &Outline) -> f64 {
     area_centroid(o.verts()).0
+}
+
+/// Oracle of [`super::Poly::crossings`]: the points where the boundaries of two convex
+/// polygons cross. For two overlapping convex polygons in general position there are
+/// exactly two; vertex-on-edge contacts may report a point twice. Returns how many were
+/// written to `out` (at most `out.len()`).
+fn boundary_crossings(a: &Outline, b: &Outline, out: &mut [V2]) -> usize {
+    let mut k = 0;
+    let na = a.len();
+    let nb = b.len();
+    for i in 0..na {
+        let p = a.verts()[i];
+        let r = a.verts()[(i + 1) % na] - p;
+        for j in 0..nb {
+            let q = b.verts()[j];
+            let s = b.verts()[(j + 1) % nb] - q;
+            let den = r.cross(s);
+            // Parallel (or collinear) edges have no isolated crossing point; the ends of a
+            // collinear overlap are found where the neighbouring edges cross.
+            if den.abs() <= 1e-12 * (r.norm() * s.norm()) {
+                continue;
+            }
+            let qp = q - p;
+            let t = qp.cross(s) / den;
+            let u = qp.cross(r) / den;
+            const TOL: f64 = 1e-12;
+            if (-TOL..=1.0 + TOL).contains(&t) && (-TOL..=1.0 + TOL).contains(&u) {
+                if k < out.len() {
+                    out[k] = p + r * t;
+                    k += 1;
+                } else {
+                    return k;
+                }
+            }
+        }
+    }
+    k
 }
 
 fn to_parry(o: &Outline) -> Vec<Point2<f64>> {
@@ -95,7 +131,8 @@ proptest! {
         let ca = area_centroid(a.verts()).1;
         let cb = area_centroid(b.verts()).1;
         let o1 = overlap(&a, &b, ca, cb);
-        let o2 = overlap(&moved(&a, th, d), &moved(&b, th, d), ca.rotate(c, s) + d, cb.rotate(c, s) + d);
+        let (ma, mb) = (moved(&a, th, d), moved(&b, th, d));
+        let o2 = overlap(&ma, &mb, ca.rotate(c, s) + d, cb.rotate(c, s) + d);
         match (o1, o2) {
             (Some(p), Some(q)) => {
                 let scale = area(&a).max(area(&b));
