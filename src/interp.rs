@@ -1,6 +1,8 @@
-//! Piecewise-linear interpolation on a strictly increasing axis, the one rule behind every
-//! table lookup: the C_f table of the strength routine ([`crate::itd::cf::CfTable`]) and the
-//! ridging lookup table ([`crate::table::lookup::RidgeLookup`]).
+//! Piecewise-linear interpolation, every routine of the crate: on a strictly increasing axis
+//! ([`bracket`], [`lerp`]), the one rule behind every table lookup: the C_f table of the
+//! strength routine ([`crate::itd::cf::CfTable`]) and the ridging lookup table
+//! ([`crate::table::lookup::RidgeLookup`]); and [`resample`], a run's samples onto the
+//! table's volume grid ([`crate::table::tabulate`]).
 //!
 //! Written here rather than taken from a crate (ndarray-interp and the like) because the
 //! lookups need two things such crates do not offer: the clamp flag, so that a value held at
@@ -46,6 +48,26 @@ pub(crate) fn lerp(a: f64, b: impl FnOnce() -> f64, w: f64) -> f64 {
     if w == 0.0 { a } else { a + w * (b() - a) }
 }
 
+/// Linear interpolation of `ys(xs)` at `x` within [xs[0], xs[last]], else NaN: one run's
+/// samples resampled onto the table's volume grid. Not [`bracket`] and [`lerp`]'s rule on purpose:
+/// a run's samples may repeat a volume (a sheet at rest) and a volume beyond them is missing,
+/// not clamped; and its operation order, (y₁ − y₀)·(x − x₀)/(x₁ − x₀), is kept so that
+/// tables made before stay bit-identical.
+pub(crate) fn resample(xs: &[f64], ys: &[f64], x: f64) -> f64 {
+    if xs.is_empty() || x < xs[0] || x > xs[xs.len() - 1] {
+        return f64::NAN;
+    }
+    let k = xs.partition_point(|&v| v < x);
+    if k == 0 {
+        return ys[0];
+    }
+    let (x0, x1) = (xs[k - 1], xs[k]);
+    if x1 == x0 {
+        return ys[k];
+    }
+    ys[k - 1] + (ys[k] - ys[k - 1]) * (x - x0) / (x1 - x0)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -70,5 +92,15 @@ mod tests {
                 .unwrap_err()
                 .contains("h[0] = NaN")
         );
+    }
+
+    #[test]
+    fn resample_inside_and_outside() {
+        let xs = [0.0, 1.0, 3.0];
+        let ys = [0.0, 2.0, 6.0];
+        assert_eq!(resample(&xs, &ys, 2.0), 4.0);
+        assert_eq!(resample(&xs, &ys, 0.0), 0.0);
+        assert_eq!(resample(&xs, &ys, 3.0), 6.0);
+        assert!(resample(&xs, &ys, 3.5).is_nan());
     }
 }

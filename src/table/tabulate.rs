@@ -214,26 +214,6 @@ pub fn fit_warnings(t: &RidgeTable) -> Vec<String> {
     out
 }
 
-/// Linear interpolation of `ys(xs)` at `x` within [xs[0], xs[last]], else NaN: one run's
-/// samples resampled onto the table's volume grid. Not [`crate::interp`]'s rule on purpose:
-/// a run's samples may repeat a volume (a sheet at rest) and a volume beyond them is missing,
-/// not clamped; and its operation order, (y₁ − y₀)·(x − x₀)/(x₁ − x₀), is kept so that
-/// tables made before stay bit-identical.
-fn interp(xs: &[f64], ys: &[f64], x: f64) -> f64 {
-    if xs.is_empty() || x < xs[0] || x > xs[xs.len() - 1] {
-        return f64::NAN;
-    }
-    let k = xs.partition_point(|&v| v < x);
-    if k == 0 {
-        return ys[0];
-    }
-    let (x0, x1) = (xs[k - 1], xs[k]);
-    if x1 == x0 {
-        return ys[k];
-    }
-    ys[k - 1] + (ys[k] - ys[k - 1]) * (x - x0) / (x1 - x0)
-}
-
 /// Tabulates campaign records on a volume grid of `points` points from 0 to the largest
 /// volume reached. Runs whose dissipation went negative (a numerical energy source, see
 /// [`dissipation_violation`]) are left out and listed in [`RidgeTable::excluded`].
@@ -380,7 +360,7 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
                     let xs: Vec<f64> = r.samples.iter().map(|s| s.volume).collect();
                     let get = |g: fn(&crate::record::RunSample) -> f64| {
                         let ys: Vec<f64> = r.samples.iter().map(g).collect();
-                        interp(&xs, &ys, v)
+                        crate::interp::resample(&xs, &ys, v)
                     };
                     let (wv, pv_) = (
                         get(|s| s.energy().work),
@@ -468,19 +448,4 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
         }
     }
     Ok(t)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn interpolation_inside_and_outside() {
-        let xs = [0.0, 1.0, 3.0];
-        let ys = [0.0, 2.0, 6.0];
-        assert_eq!(interp(&xs, &ys, 2.0), 4.0);
-        assert_eq!(interp(&xs, &ys, 0.0), 0.0);
-        assert_eq!(interp(&xs, &ys, 3.0), 6.0);
-        assert!(interp(&xs, &ys, 3.5).is_nan());
-    }
 }
