@@ -53,6 +53,30 @@ pub fn campaign_report(
         "Means ± sample standard deviations over the seeds of each grid point, at the end of \
          the runs. Energies per metre of ridge.\n"
     );
+    if !table.scaled_keys.is_empty() {
+        let _ = writeln!(
+            o,
+            "## Scene keys scaled with the thickness\n\nWithin a set these vary with the sheet \
+             thickness (`tabulate --scaled-with-thickness`); their values per set and \
+             thickness:\n\n| set | thickness (m) | {} |\n|---|---|{}",
+            table.scaled_keys.join(" | "),
+            "---|".repeat(table.scaled_keys.len())
+        );
+        for (si, set) in table.sets.iter().enumerate() {
+            for (hi, h) in table.thickness.iter().enumerate() {
+                let v = &table.scaled_values[[si, hi]];
+                if v.is_empty() {
+                    continue;
+                }
+                let cells: Vec<&str> = v
+                    .split(", ")
+                    .map(|kv| kv.split_once('=').map_or(kv, |(_, x)| x))
+                    .collect();
+                let _ = writeln!(o, "| {set} | {h} | {} |", cells.join(" | "));
+            }
+        }
+        let _ = writeln!(o);
+    }
     if !table.excluded.is_empty() {
         let _ = writeln!(
             o,
@@ -128,7 +152,16 @@ pub fn campaign_report(
         "\n## Rafting\n\nA run *rafted* when the leading edge of its intact lead sheet passed the \
          floe's nose by more than {reach} m at some step (`sheet_overrun_max`; docs/tables.md, \
          \"Rafting\"): it slid over or under the floe instead of breaking against it. Runs made \
-         before the diagnostic existed are unknown. The statistics above include rafted runs.\n"
+         before the diagnostic existed are unknown. The statistics above include rafted runs.{}\n",
+        if table.scaled_keys.is_empty() {
+            String::new()
+        } else {
+            format!(
+                " The reach is for the paper's 20-m floe; a run against a longer floe (a scene \
+                 scaled with the sheet, keys {}) has the same fraction of its floe's length.",
+                table.scaled_keys.join(", ")
+            )
+        }
     );
     let _ = writeln!(
         o,
