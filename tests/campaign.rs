@@ -265,7 +265,7 @@ fn tiny_campaign_is_resumable_and_complete() {
         "## Ridge metrics",
         "pooled",
         "## Rafting",
-        "| sheet.thickness=0.25, sheet.block_width=0.25 | 0 / 2 | – |",
+        "| sheet.thickness=0.25, sheet.block_width=0.25 | 2.0 | 0 / 2 | – |",
     ] {
         assert!(report.contains(want), "report lacks {want}:\n{report}");
     }

@@ -150,24 +150,18 @@ pub fn campaign_report(
     let _ = writeln!(
         o,
         "\n## Rafting\n\nA run *rafted* when the leading edge of its intact lead sheet passed the \
-         floe's nose by more than {reach} m at some step (`sheet_overrun_max`; docs/tables.md, \
-         \"Rafting\"): it slid over or under the floe instead of breaking against it. Runs made \
-         before the diagnostic existed are unknown. The statistics above include rafted runs.{}\n",
-        if table.scaled_keys.is_empty() {
-            String::new()
-        } else {
-            format!(
-                " The reach is for the paper's 20-m floe; a run against a longer floe (a scene \
-                 scaled with the sheet, keys {}) has the same fraction of its floe's length.",
-                table.scaled_keys.join(", ")
-            )
-        }
+         floe's nose by more than the rafting reach at some step (`sheet_overrun_max`; \
+         docs/tables.md, \"Rafting\"): it slid over or under the floe instead of breaking \
+         against it. The reach is {reach} m against the paper's 20-m floe and the same \
+         fraction of the floe's length against another (a scene scaled with the sheet). Runs \
+         made before the diagnostic existed are unknown. The statistics above include rafted \
+         runs.\n"
     );
     let _ = writeln!(
         o,
-        "| point | rafted / known | rafted runs (overrun, W/ΔPE) | largest overrun of the others (m) | W/ΔPE of the others |"
+        "| point | reach (m) | rafted / known | rafted runs (overrun, W/ΔPE) | largest overrun of the others (m) | W/ΔPE of the others |"
     );
-    let _ = writeln!(o, "|---|---|---|---|---|");
+    let _ = writeln!(o, "|---|---|---|---|---|---|");
     for p in rafting {
         let runs: Vec<String> = p
             .rafted
@@ -176,8 +170,9 @@ pub fn campaign_report(
             .collect();
         let _ = writeln!(
             o,
-            "| {} | {} / {} | {} | {} | {} |",
+            "| {} | {:.1} | {} / {} | {} | {} | {} |",
             p.label,
+            p.reach,
             p.rafted.len(),
             p.known,
             if runs.is_empty() {

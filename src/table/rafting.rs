@@ -65,6 +65,9 @@ pub fn outcome(r: &RunRecord, reach: f64) -> Outcome {
 pub struct PointRafting {
     /// The grid point's label ([`group_by_point`]).
     pub label: String,
+    /// The rafting reach of its runs (m; [`reach_of`]: the reach given for a 20-m floe, in
+    /// proportion to the floe's length), the largest if they differ.
+    pub reach: f64,
     /// Runs with a known outcome.
     pub known: usize,
     /// Rafted runs: (run id, overrun (m), final W/ΔPE).
@@ -83,6 +86,7 @@ pub fn by_point(records: &[RunRecord], reach: f64) -> Vec<PointRafting> {
         .map(|(label, rs)| {
             let mut p = PointRafting {
                 label,
+                reach: rs.iter().map(|r| reach_of(r, reach)).fold(0.0, f64::max),
                 known: 0,
                 rafted: Vec::new(),
                 ridged_overrun: Stat::of(&[]),
