@@ -678,6 +678,7 @@ fn shipped_specs_plan_the_papers_sets() {
     assert_eq!(count("thickness-thick-floe.toml"), 3 * 7);
     assert_eq!(count("friction-thickness.toml"), 7 * 2 * 7);
     assert_eq!(count("thickness-scaled.toml"), 8 * 7);
+    assert_eq!(count("thickness-scaled-floe.toml"), 2 * 7);
     // thickness-scaled: the Figure 5 scene with its lengths in their ratio to the 0.30 m
     // sheet (rounded to 0.01 m), the block width 2h/3, the paper's 100 m of sheet pushed,
     // everything else as the thickness set's scene; the floe no thicker than a scene allows.
@@ -718,6 +719,29 @@ fn shipped_specs_plan_the_papers_sets() {
         same.output.snapshot_interval = fig5.output.snapshot_interval;
         assert_eq!(same, fig5, "{}: only the scaled lengths differ", p.id);
     }
+    // thickness-scaled-floe: the same runs against a floe of half the ratio, nothing else.
+    let scaled = CampaignSpec::read(&dir.join("thickness-scaled.toml"))
+        .unwrap()
+        .plan(&dir)
+        .unwrap();
+    for p in CampaignSpec::read(&dir.join("thickness-scaled-floe.toml"))
+        .unwrap()
+        .plan(&dir)
+        .unwrap()
+    {
+        let h = p.scene.sheet.as_ref().unwrap().thickness;
+        let mut q = scaled
+            .iter()
+            .find(|q| q.seed == p.seed && q.scene.sheet.as_ref().unwrap().thickness == h)
+            .unwrap_or_else(|| panic!("{}: no thickness-scaled twin", p.id))
+            .scene
+            .clone();
+        let f = q.floe.as_mut().unwrap();
+        assert!((p.scene.floe.as_ref().unwrap().thickness - f.thickness / 2.0).abs() < 0.01);
+        f.thickness = p.scene.floe.as_ref().unwrap().thickness;
+        q.name.clone_from(&p.scene.name);
+        assert_eq!(q, p.scene, "{}", p.id);
+    }
     let plan = |f: &str| {
         CampaignSpec::read(&dir.join(f))
             .unwrap()
@@ -755,6 +779,37 @@ fn shipped_specs_plan_the_papers_sets() {
                 p.id
             );
         }
+    }
+    // scripts/paper-campaign.sh runs every set of the paper and of the table's extension
+    // and checks, and each set it names has a spec.
+    let script = std::fs::read_to_string(dir.join("../../scripts/paper-campaign.sh")).unwrap();
+    let line = script
+        .lines()
+        .find(|l| l.starts_with("sets=${PAPER_SETS:-"))
+        .expect("the default set list");
+    let named: Vec<&str> = line
+        .trim_start_matches("sets=${PAPER_SETS:-")
+        .trim_end_matches('}')
+        .split_whitespace()
+        .collect();
+    for set in &named {
+        assert!(dir.join(format!("{set}.toml")).is_file(), "{set}: no spec");
+    }
+    for set in [
+        "thickness",
+        "thickness-thin",
+        "thickness-scaled",
+        "thickness-thick",
+        "thickness-thick-floe",
+        "thickness-scaled-floe",
+        "sheet-length",
+        "friction",
+        "friction-thickness",
+        "modulus",
+        "floe",
+        "speed",
+    ] {
+        assert!(named.contains(&set), "paper-campaign.sh does not run {set}");
     }
     // 100 m of sheet in every run of the speed set.
     let spec = CampaignSpec::read(&dir.join("speed.toml")).unwrap();
