@@ -265,7 +265,7 @@ fn tiny_campaign_is_resumable_and_complete() {
         "## Ridge metrics",
         "pooled",
         "## Rafting",
-        "| sheet.thickness=0.25, sheet.block_width=0.25 | 0 / 2 | – |",
+        "| sheet.thickness=0.25, sheet.block_width=0.25 | 2.0 | 0 / 2 | – |",
     ] {
         assert!(report.contains(want), "report lacks {want}:\n{report}");
     }
@@ -677,6 +677,71 @@ fn shipped_specs_plan_the_papers_sets() {
     assert_eq!(count("sheet-length.toml"), 7);
     assert_eq!(count("thickness-thick-floe.toml"), 3 * 7);
     assert_eq!(count("friction-thickness.toml"), 7 * 2 * 7);
+    assert_eq!(count("thickness-scaled.toml"), 8 * 7);
+    assert_eq!(count("thickness-scaled-floe.toml"), 2 * 7);
+    // thickness-scaled: the Figure 5 scene with its lengths in their ratio to the 0.30 m
+    // sheet (rounded to 0.01 m), the block width 2h/3, the paper's 100 m of sheet pushed,
+    // everything else as the thickness set's scene; the floe no thicker than a scene allows.
+    let fig5 =
+        pressridge::scene::Scene::load(Some(&dir.join("../scenes/figure5.toml")), &[] as &[&str])
+            .unwrap();
+    let spec = CampaignSpec::read(&dir.join("thickness-scaled.toml")).unwrap();
+    for p in spec.plan(&dir).unwrap() {
+        let (sh, f) = (
+            p.scene.sheet.as_ref().unwrap(),
+            p.scene.floe.as_ref().unwrap(),
+        );
+        let (sh0, f0) = (fig5.sheet.as_ref().unwrap(), fig5.floe.as_ref().unwrap());
+        let r = sh.thickness / sh0.thickness;
+        for (what, got, want) in [
+            ("block width", sh.block_width, 2.0 * sh.thickness / 3.0),
+            ("sheet length", sh.length, r * sh0.length),
+            ("floe thickness", f.thickness, r * f0.thickness),
+            ("floe length", f.length, r * f0.length),
+            ("floe block width", f.block_width, r * f0.block_width),
+            ("floe nose bevel", f.nose_bevel, r * f0.nose_bevel),
+        ] {
+            assert!(
+                (got - want).abs() <= 0.005 + 1e-9,
+                "{}: {what} {got} against {want}",
+                p.id
+            );
+        }
+        assert!(f.thickness <= pressridge::limits::THICKNESS.max);
+        assert!((sh.speed * p.scene.duration - 100.0).abs() < 1e-9);
+        let mut same = p.scene.clone();
+        let (s, fl) = (same.sheet.as_mut().unwrap(), same.floe.as_mut().unwrap());
+        (s.thickness, s.block_width, s.length) = (sh0.thickness, sh0.block_width, sh0.length);
+        (fl.thickness, fl.length, fl.block_width, fl.nose_bevel) =
+            (f0.thickness, f0.length, f0.block_width, f0.nose_bevel);
+        (same.seed, same.name) = (fig5.seed, fig5.name.clone());
+        same.numerics.sample_interval = fig5.numerics.sample_interval;
+        same.output.snapshot_interval = fig5.output.snapshot_interval;
+        assert_eq!(same, fig5, "{}: only the scaled lengths differ", p.id);
+    }
+    // thickness-scaled-floe: the same runs against a floe of half the ratio, nothing else.
+    let scaled = CampaignSpec::read(&dir.join("thickness-scaled.toml"))
+        .unwrap()
+        .plan(&dir)
+        .unwrap();
+    for p in CampaignSpec::read(&dir.join("thickness-scaled-floe.toml"))
+        .unwrap()
+        .plan(&dir)
+        .unwrap()
+    {
+        let h = p.scene.sheet.as_ref().unwrap().thickness;
+        let mut q = scaled
+            .iter()
+            .find(|q| q.seed == p.seed && q.scene.sheet.as_ref().unwrap().thickness == h)
+            .unwrap_or_else(|| panic!("{}: no thickness-scaled twin", p.id))
+            .scene
+            .clone();
+        let f = q.floe.as_mut().unwrap();
+        assert!((p.scene.floe.as_ref().unwrap().thickness - f.thickness / 2.0).abs() < 0.01);
+        f.thickness = p.scene.floe.as_ref().unwrap().thickness;
+        q.name.clone_from(&p.scene.name);
+        assert_eq!(q, p.scene, "{}", p.id);
+    }
     let plan = |f: &str| {
         CampaignSpec::read(&dir.join(f))
             .unwrap()
@@ -714,6 +779,37 @@ fn shipped_specs_plan_the_papers_sets() {
                 p.id
             );
         }
+    }
+    // scripts/paper-campaign.sh runs every set of the paper and of the table's extension
+    // and checks, and each set it names has a spec.
+    let script = std::fs::read_to_string(dir.join("../../scripts/paper-campaign.sh")).unwrap();
+    let line = script
+        .lines()
+        .find(|l| l.starts_with("sets=${PAPER_SETS:-"))
+        .expect("the default set list");
+    let named: Vec<&str> = line
+        .trim_start_matches("sets=${PAPER_SETS:-")
+        .trim_end_matches('}')
+        .split_whitespace()
+        .collect();
+    for set in &named {
+        assert!(dir.join(format!("{set}.toml")).is_file(), "{set}: no spec");
+    }
+    for set in [
+        "thickness",
+        "thickness-thin",
+        "thickness-scaled",
+        "thickness-thick",
+        "thickness-thick-floe",
+        "thickness-scaled-floe",
+        "sheet-length",
+        "friction",
+        "friction-thickness",
+        "modulus",
+        "floe",
+        "speed",
+    ] {
+        assert!(named.contains(&set), "paper-campaign.sh does not run {set}");
     }
     // 100 m of sheet in every run of the speed set.
     let spec = CampaignSpec::read(&dir.join("speed.toml")).unwrap();
@@ -878,5 +974,133 @@ values = [0.6, 1.0]
         "a malformed --friction is a usage error"
     );
     assert!(String::from_utf8_lossy(&res.stderr).contains("MU,MU_W"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A thickness set whose floe is scaled with the sheet above the thicknesses of another
+/// campaign (issue 14: the table's thick end, data/campaigns/thickness-scaled.toml) makes
+/// one set only when tabulate is told which keys scale with the thickness; the table then
+/// records their value per thickness, keeps its friction grid, and two campaigns whose runs
+/// disagree at one thickness are refused rather than counted once.
+#[test]
+fn keys_scaled_with_the_thickness_join_two_campaigns_into_one_set() {
+    let dir = common::scratch("scaled-keys");
+    let plain = dir.join("plain.toml");
+    std::fs::write(&plain, SPEC.replace("seeds = 2", "seeds = 1")).unwrap();
+    let scaled_spec = |thickness: &str| {
+        format!(
+            r#"
+name = "tinyscaled"
+seeds = 1
+sample_interval = 1.0
+set = ["duration=3.0", "sheet.length=8.0"]
+
+[[axis]]
+keys = ["sheet.thickness", "sheet.block_width", "floe.thickness", "floe.length"]
+values = [[{thickness}, 0.30, 3.0, 30.0]]
+"#
+        )
+    };
+    let scaled = dir.join("scaled.toml");
+    std::fs::write(&scaled, scaled_spec("0.45")).unwrap();
+    let clash = dir.join("clash.toml");
+    std::fs::write(&clash, scaled_spec("0.35")).unwrap();
+    for (spec, out) in [(&plain, "a"), (&scaled, "b"), (&clash, "c")] {
+        common::succeeds(
+            &bin()
+                .args(["campaign", "--threads", "2", "--quiet", "--spec"])
+                .arg(spec)
+                .arg("--out")
+                .arg(dir.join(out))
+                .output()
+                .unwrap(),
+        );
+    }
+    let tabulate = |campaigns: &[&str], extra: &[&str], out: &str| {
+        let mut c = bin();
+        c.arg("tabulate");
+        for k in campaigns {
+            c.arg("--campaign").arg(dir.join(k));
+        }
+        c.arg("--out")
+            .arg(dir.join(out))
+            .args(["--points", "5"])
+            .args(extra)
+            .output()
+            .unwrap()
+    };
+    let global = |nc: &netcdf::File, a: &str| match nc.attribute(a).map(|x| x.value().unwrap()) {
+        Some(netcdf::AttributeValue::Str(s)) => Some(s),
+        None => None,
+        Some(other) => panic!("{a}: {other:?}"),
+    };
+    // Without the keys: the 3 m floe is another set (the set layout, two sets at one pair).
+    common::succeeds(&tabulate(&["a", "b"], &[], "two.nc"));
+    let nc = netcdf::open(dir.join("two.nc")).unwrap();
+    assert!(
+        nc.dimension("set").is_some(),
+        "two sets at one friction pair"
+    );
+    assert!(global(&nc, "scaled_keys").is_none());
+    drop(nc);
+    // With them: one set over 0.25-0.45 m, a friction grid, the values per thickness.
+    let report = dir.join("one.md");
+    common::succeeds(&tabulate(
+        &["a", "b"],
+        &[
+            "--scaled-with-thickness",
+            "floe.thickness,floe.length",
+            "--report",
+            report.to_str().unwrap(),
+        ],
+        "one.nc",
+    ));
+    let nc = netcdf::open(dir.join("one.nc")).unwrap();
+    assert!(nc.dimension("set").is_none(), "one set: the friction grid");
+    let h: Vec<f64> = nc.variable("thickness").unwrap().get_values(..).unwrap();
+    assert_eq!(h, vec![0.25, 0.35, 0.45]);
+    let cf: Vec<f64> = nc.variable("cf").unwrap().get_values(..).unwrap();
+    assert!(cf.iter().all(|c| c.is_finite()), "{cf:?}");
+    assert_eq!(
+        global(&nc, "scaled_keys").as_deref(),
+        Some("floe.thickness floe.length")
+    );
+    let values = global(&nc, "scaled_values").unwrap();
+    for want in [
+        "at 0.25 m: floe.thickness=2.0, floe.length=20.0",
+        "at 0.45 m: floe.thickness=3.0, floe.length=30.0",
+    ] {
+        assert!(values.contains(want), "{values}");
+    }
+    drop(nc);
+    let text = std::fs::read_to_string(&report).unwrap();
+    assert!(
+        text.contains("## Scene keys scaled with the thickness"),
+        "{text}"
+    );
+    assert!(
+        text.contains("| mu=1, mu_w=0.6 | 0.45 | 3.0 | 30.0 |"),
+        "{text}"
+    );
+    // Runs of one set and thickness must agree in the scaled keys: the 0.35 m runs of `a`
+    // (2 m floe) and `c` (3 m floe) are refused together, naming both.
+    common::fails_with(
+        &tabulate(
+            &["a", "c"],
+            &["--scaled-with-thickness", "floe.thickness,floe.length"],
+            "clash.nc",
+        ),
+        &["one set at one thickness", "thickness=0.35"],
+    );
+    // Keys that are not scene keys, or that may not vary within a set, are refused.
+    for (key, want) in [
+        ("floe.thicknes", "no run's scene has this key"),
+        ("contact.mu", "may not vary within a set"),
+    ] {
+        common::fails_with(
+            &tabulate(&["a"], &["--scaled-with-thickness", key], "bad.nc"),
+            &[key, want],
+        );
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }

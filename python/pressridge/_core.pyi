@@ -187,6 +187,7 @@ def tabulate(
     allow_partial: bool = False,
     rafting_reach: float = 2.0,
     exclude_rafted: bool = False,
+    scaled_keys: List[str] = ...,
 ) -> Tuple[List[Tuple[str, float, float]], List[str]]:
     """([(set, thickness (m), C_f)], [warning]) (``campaign::tabulation::tabulate_campaigns``)."""
 

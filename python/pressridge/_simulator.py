@@ -251,6 +251,7 @@ def tabulate(
     allow_partial: bool = False,
     rafting_reach: float = RAFTING_REACH,
     exclude_rafted: bool = False,
+    scaled_with_thickness: Sequence[str] = (),
 ) -> Table:
     """Tabulates campaign directories into a NetCDF lookup table, as ``pressridge
     tabulate`` (the same library pipeline, ``campaign::tabulation::tabulate_campaigns``):
@@ -267,8 +268,15 @@ def tabulate(
     then the complete runs are tabulated and the table's attributes ``runs_planned``,
     ``runs_tabulated`` and ``partial`` say what was left out (docs/failure.md).
 
+    ``scaled_with_thickness`` (``--scaled-with-thickness``) names scene keys that vary with
+    the sheet thickness within a set, e.g. ``["floe.thickness", "floe.length"]`` for a
+    campaign that scales the floe with the sheet: runs that differ only in these make one
+    set, and the table records their values per thickness (attributes ``scaled_keys``,
+    ``scaled_values``).
+
     A run counts as rafted when its intact lead sheet passed the floe's nose by more than
-    ``rafting_reach`` (m, ``--rafting-reach``; default :data:`RAFTING_REACH`, 2 m).
+    ``rafting_reach`` (m, ``--rafting-reach``; default :data:`RAFTING_REACH`, 2 m) against
+    a 20-m floe, by the same fraction of its floe's length against another.
     ``exclude_rafted`` (``--exclude-rafted``) leaves rafted runs out of the table (listed in
     its ``excluded_runs`` attribute). Runs left out, partial campaigns and missing fits are
     reported as ``UserWarning``, as the command line prints them."""
@@ -287,6 +295,7 @@ def tabulate(
             ", allow_partial=True" if allow_partial else "",
             f", rafting_reach={float(rafting_reach)!r}" if float(rafting_reach) != RAFTING_REACH else "",
             ", exclude_rafted=True" if exclude_rafted else "",
+            f", scaled_with_thickness={list(scaled_with_thickness)!r}" if scaled_with_thickness else "",
         ]
     )
     command = f"pressridge.tabulate({shown!r}, {outp!r}, points={int(points)}{extra}) (Python)"
@@ -300,6 +309,7 @@ def tabulate(
         bool(allow_partial),
         float(rafting_reach),
         bool(exclude_rafted),
+        [str(k) for k in scaled_with_thickness],
     )
     for w in warnings:
         _warnings.warn(w, UserWarning, stacklevel=2)

@@ -172,7 +172,7 @@ type TabulateOut = (Vec<(String, f64, f64)>, Vec<String>);
 /// (`campaign::tabulation::tabulate_campaigns`); returns one line per set and thickness with
 /// its C_f, and the warnings and notes the command line prints.
 #[pyfunction]
-#[pyo3(signature = (campaign_dirs, out, points, command, date, allow_partial=false, rafting_reach=pressridge::table::rafting::RAFTING_REACH, exclude_rafted=false))]
+#[pyo3(signature = (campaign_dirs, out, points, command, date, allow_partial=false, rafting_reach=pressridge::table::rafting::RAFTING_REACH, exclude_rafted=false, scaled_keys=Vec::new()))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn tabulate(
     py: Python<'_>,
@@ -184,6 +184,7 @@ pub(crate) fn tabulate(
     allow_partial: bool,
     rafting_reach: f64,
     exclude_rafted: bool,
+    scaled_keys: Vec<String>,
 ) -> PyResult<TabulateOut> {
     detached(py, || {
         for d in &campaign_dirs {
@@ -194,6 +195,7 @@ pub(crate) fn tabulate(
             allow_partial,
             rafting_reach,
             exclude_rafted,
+            scaled_keys,
         };
         let t =
             tabulate_campaigns(&campaign_dirs, &opts, &command, &date).map_err(|e| match e {

@@ -224,3 +224,26 @@ def test_resume_from_an_archive_runs_only_what_it_lacks(cli_campaign, tiny_spec,
             d["summary"]["wall_seconds"] = 0
             d["digest"] = None
         assert a == b, i
+
+
+def test_tabulate_takes_the_keys_scaled_with_the_thickness_of_the_command_line(
+    cli, cli_campaign, tmp_path
+):
+    """``scaled_with_thickness`` is ``--scaled-with-thickness``: the same table, with the
+    keys and their values per thickness in its attributes; a key no scene has is a
+    ``ValueError`` naming it."""
+    src, _ = cli_campaign
+    cli_nc, py_nc = tmp_path / "cli.nc", tmp_path / "py.nc"
+    keys = ["floe.thickness", "sheet.length"]
+    cli(
+        "tabulate", "--campaign", src, "--out", cli_nc, "--points", "11",
+        "--scaled-with-thickness", ",".join(keys),
+    )
+    pr.tabulate(src, py_nc, points=11, scaled_with_thickness=keys)
+    assert_same_table(cli_nc, py_nc)
+    attrs = xr.load_dataset(py_nc).attrs
+    assert attrs["scaled_keys"] == "floe.thickness sheet.length"
+    assert "floe.thickness=2.0" in attrs["scaled_values"]
+    assert "scaled_with_thickness=['floe.thickness', 'sheet.length']" in attrs["history"]
+    with pytest.raises(ValueError, match="floe.thicknes"):
+        pr.tabulate(src, tmp_path / "bad.nc", points=11, scaled_with_thickness=["floe.thicknes"])

@@ -10,7 +10,7 @@
 use crate::campaign::{CampaignError, CampaignSpec, read_campaign};
 use crate::io::table_netcdf::Provenance;
 use crate::record::RunRecord;
-use crate::table::tabulate::{RidgeTable, TabulateError, tabulate};
+use crate::table::tabulate::{RidgeTable, TabulateError, tabulate_scaled};
 use std::path::PathBuf;
 
 /// The choices of a tabulation; `Default` is the command line's.
@@ -22,10 +22,15 @@ pub struct TabulateOptions {
     /// Default false.
     pub allow_partial: bool,
     /// A run counts as rafted when its intact lead sheet passed the floe's nose by more than
-    /// this (m). Default [`crate::table::rafting::RAFTING_REACH`].
+    /// this (m) for the paper's 20-m floe, in proportion to the floe's length for another
+    /// ([`crate::table::rafting::reach_of`]). Default
+    /// [`crate::table::rafting::RAFTING_REACH`].
     pub rafting_reach: f64,
     /// Leave rafted runs out of the table. Default false.
     pub exclude_rafted: bool,
+    /// Scene keys scaled with the sheet thickness within a set
+    /// ([`crate::table::tabulate::tabulate_scaled`]), e.g. `floe.thickness`. Default none.
+    pub scaled_keys: Vec<String>,
 }
 
 impl Default for TabulateOptions {
@@ -35,6 +40,7 @@ impl Default for TabulateOptions {
             allow_partial: false,
             rafting_reach: crate::table::rafting::RAFTING_REACH,
             exclude_rafted: false,
+            scaled_keys: Vec::new(),
         }
     }
 }
@@ -109,14 +115,14 @@ pub fn tabulate_campaigns(
     let all_records = records.clone();
     let mut rafted_out: Vec<(String, String)> = Vec::new();
     if opts.exclude_rafted {
-        use crate::table::rafting::{Outcome, outcome};
+        use crate::table::rafting::{Outcome, outcome, reach_of};
         records.retain(|r| match outcome(r, opts.rafting_reach) {
             Outcome::Rafted(over) => {
                 rafted_out.push((
                     r.id.clone(),
                     format!(
                         "sheet rafted {over:.1} m past the floe's nose (--exclude-rafted, reach {} m)",
-                        opts.rafting_reach
+                        reach_of(r, opts.rafting_reach)
                     ),
                 ));
                 false
@@ -124,7 +130,7 @@ pub fn tabulate_campaigns(
             Outcome::Ridged | Outcome::Unknown => true,
         });
     }
-    let mut table = tabulate(&records, opts.points)?;
+    let mut table = tabulate_scaled(&records, opts.points, &opts.scaled_keys)?;
     let gate_excluded = table.excluded.clone();
     table.excluded.extend(rafted_out.iter().cloned());
     let mut spec_text = String::new();

@@ -53,6 +53,30 @@ pub fn campaign_report(
         "Means ± sample standard deviations over the seeds of each grid point, at the end of \
          the runs. Energies per metre of ridge.\n"
     );
+    if !table.scaled_keys.is_empty() {
+        let _ = writeln!(
+            o,
+            "## Scene keys scaled with the thickness\n\nWithin a set these vary with the sheet \
+             thickness (`tabulate --scaled-with-thickness`); their values per set and \
+             thickness:\n\n| set | thickness (m) | {} |\n|---|---|{}",
+            table.scaled_keys.join(" | "),
+            "---|".repeat(table.scaled_keys.len())
+        );
+        for (si, set) in table.sets.iter().enumerate() {
+            for (hi, h) in table.thickness.iter().enumerate() {
+                let v = &table.scaled_values[[si, hi]];
+                if v.is_empty() {
+                    continue;
+                }
+                let cells: Vec<&str> = v
+                    .split(", ")
+                    .map(|kv| kv.split_once('=').map_or(kv, |(_, x)| x))
+                    .collect();
+                let _ = writeln!(o, "| {set} | {h} | {} |", cells.join(" | "));
+            }
+        }
+        let _ = writeln!(o);
+    }
     if !table.excluded.is_empty() {
         let _ = writeln!(
             o,
@@ -126,15 +150,18 @@ pub fn campaign_report(
     let _ = writeln!(
         o,
         "\n## Rafting\n\nA run *rafted* when the leading edge of its intact lead sheet passed the \
-         floe's nose by more than {reach} m at some step (`sheet_overrun_max`; docs/tables.md, \
-         \"Rafting\"): it slid over or under the floe instead of breaking against it. Runs made \
-         before the diagnostic existed are unknown. The statistics above include rafted runs.\n"
+         floe's nose by more than the rafting reach at some step (`sheet_overrun_max`; \
+         docs/tables.md, \"Rafting\"): it slid over or under the floe instead of breaking \
+         against it. The reach is {reach} m against the paper's 20-m floe and the same \
+         fraction of the floe's length against another (a scene scaled with the sheet). Runs \
+         made before the diagnostic existed are unknown. The statistics above include rafted \
+         runs.\n"
     );
     let _ = writeln!(
         o,
-        "| point | rafted / known | rafted runs (overrun, W/ΔPE) | largest overrun of the others (m) | W/ΔPE of the others |"
+        "| point | reach (m) | rafted / known | rafted runs (overrun, W/ΔPE) | largest overrun of the others (m) | W/ΔPE of the others |"
     );
-    let _ = writeln!(o, "|---|---|---|---|---|");
+    let _ = writeln!(o, "|---|---|---|---|---|---|");
     for p in rafting {
         let runs: Vec<String> = p
             .rafted
@@ -143,8 +170,9 @@ pub fn campaign_report(
             .collect();
         let _ = writeln!(
             o,
-            "| {} | {} / {} | {} | {} | {} |",
+            "| {} | {:.1} | {} / {} | {} | {} | {} |",
             p.label,
+            p.reach,
             p.rafted.len(),
             p.known,
             if runs.is_empty() {

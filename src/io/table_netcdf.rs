@@ -161,6 +161,23 @@ fn write_ridge_table_at(
         .collect();
     f.add_attribute("excluded_runs", excluded.join("; ").as_str())
         .map_err(&e)?;
+    if !t.scaled_keys.is_empty() {
+        // Scene keys that vary with the thickness within a set, and their values per set and
+        // thickness: "<set> at <h> m: key=value, ...", joined by "; ".
+        f.add_attribute("scaled_keys", t.scaled_keys.join(" ").as_str())
+            .map_err(&e)?;
+        let mut values = Vec::new();
+        for (si, set) in t.sets.iter().enumerate() {
+            for (hi, h) in t.thickness.iter().enumerate() {
+                let v = &t.scaled_values[[si, hi]];
+                if !v.is_empty() {
+                    values.push(format!("{set} at {h} m: {v}"));
+                }
+            }
+        }
+        f.add_attribute("scaled_values", values.join("; ").as_str())
+            .map_err(&e)?;
+    }
     f.add_attribute("campaign_spec", prov.campaign_spec.as_str())
         .map_err(&e)?;
     f.add_attribute("scene", prov.scene.as_str()).map_err(&e)?;

@@ -11,8 +11,9 @@
 //! floe's nose ([`crate::dem::World::sheet_overrun`]). A sheet that breaks against the floe
 //! keeps it within a block or so of zero: the tip block may ride onto the nose before it
 //! breaks off. A rafting sheet drives it up by the length it overrides. A run **rafted**
-//! when that distance exceeds [`RAFTING_REACH`]; runs recorded before the diagnostic existed
-//! are **unknown**, never counted as ridged.
+//! when that distance exceeds [`RAFTING_REACH`] for the paper's 20-m floe, or the same
+//! fraction of its own floe's length in a scene scaled with the sheet ([`reach_of`]); runs
+//! recorded before the diagnostic existed are **unknown**, never counted as ridged.
 
 use crate::record::RunRecord;
 use crate::table::ensemble::{Stat, group_by_point};
@@ -22,6 +23,22 @@ use crate::table::ensemble::{Stat, group_by_point};
 /// it breaks, and a tenth of the paper's 20-m floe. The paper gives no criterion; this one
 /// is a definition, reported with every count and adjustable (`tabulate --rafting-reach`).
 pub const RAFTING_REACH: f64 = 2.0;
+
+/// The floe length the reach is given for (m): the default scene's 20-m floe.
+pub const REACH_FLOE_LENGTH: f64 = 20.0;
+
+/// The reach (m) that classifies run `r`, given the reach `reach` (m) for a floe of
+/// [`REACH_FLOE_LENGTH`]: in proportion to the run's floe length, so that a scene whose
+/// lengths are scaled with the sheet (`data/campaigns/thickness-scaled.toml`: blocks of 2h/3,
+/// a floe 66.7h long) gets the same reach in block widths and sheet thicknesses, and a
+/// thick sheet's tip block riding up the floe's scaled nose bevel is not taken for a raft.
+/// Every 20-m floe (all the paper's sets) keeps `reach` itself; a scene without a floe too.
+pub fn reach_of(r: &RunRecord, reach: f64) -> f64 {
+    match &r.scene.floe {
+        Some(f) if f.length != REACH_FLOE_LENGTH => reach * f.length / REACH_FLOE_LENGTH,
+        _ => reach,
+    }
+}
 
 /// What a run did at the floe.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -34,10 +51,10 @@ pub enum Outcome {
     Unknown,
 }
 
-/// Classifies one run with rafting reach `reach` (m).
+/// Classifies one run with rafting reach `reach` (m, for a 20-m floe; [`reach_of`]).
 pub fn outcome(r: &RunRecord, reach: f64) -> Outcome {
     match r.summary.sheet_overrun_max {
-        Some(x) if x > reach => Outcome::Rafted(x),
+        Some(x) if x > reach_of(r, reach) => Outcome::Rafted(x),
         Some(_) => Outcome::Ridged,
         None => Outcome::Unknown,
     }
@@ -48,6 +65,9 @@ pub fn outcome(r: &RunRecord, reach: f64) -> Outcome {
 pub struct PointRafting {
     /// The grid point's label ([`group_by_point`]).
     pub label: String,
+    /// The rafting reach of its runs (m; [`reach_of`]: the reach given for a 20-m floe, in
+    /// proportion to the floe's length), the largest if they differ.
+    pub reach: f64,
     /// Runs with a known outcome.
     pub known: usize,
     /// Rafted runs: (run id, overrun (m), final W/ΔPE).
@@ -58,13 +78,15 @@ pub struct PointRafting {
     pub ridged_ratio: Stat,
 }
 
-/// Rafting per grid point of `records` with reach `reach` (m).
+/// Rafting per grid point of `records` with reach `reach` (m, for a 20-m floe;
+/// [`reach_of`]).
 pub fn by_point(records: &[RunRecord], reach: f64) -> Vec<PointRafting> {
     group_by_point(records)
         .into_iter()
         .map(|(label, rs)| {
             let mut p = PointRafting {
                 label,
+                reach: rs.iter().map(|r| reach_of(r, reach)).fold(0.0, f64::max),
                 known: 0,
                 rafted: Vec::new(),
                 ridged_overrun: Stat::of(&[]),
@@ -90,4 +112,53 @@ pub fn by_point(records: &[RunRecord], reach: f64) -> Vec<PointRafting> {
             p
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn record(floe_length: Option<f64>, overrun: f64) -> RunRecord {
+        let mut json = crate::simulation::summary_without_ledger();
+        for t in crate::dem::ledger::LEDGER_TERMS {
+            json[t.name] = 0.0.into();
+        }
+        json["sheet_overrun_max"] = overrun.into();
+        let mut scene = crate::scene::Scene::default();
+        match floe_length {
+            Some(l) => scene.floe.as_mut().expect("a floe").length = l,
+            None => scene.floe = None,
+        }
+        RunRecord {
+            id: "x".into(),
+            settings: vec![],
+            seed: 1,
+            scene,
+            summary: serde_json::from_value(json).unwrap(),
+            samples: vec![],
+            profile: Default::default(),
+            metrics: Default::default(),
+            digest: None,
+        }
+    }
+
+    /// The reach is the given one against the paper's 20-m floe (and without a floe), and
+    /// in proportion to the floe's length against another.
+    #[test]
+    fn the_reach_scales_with_the_floe_length() {
+        assert_eq!(reach_of(&record(Some(20.0), 0.0), RAFTING_REACH), 2.0);
+        assert_eq!(reach_of(&record(None, 0.0), RAFTING_REACH), 2.0);
+        assert_eq!(reach_of(&record(Some(200.0), 0.0), RAFTING_REACH), 20.0);
+        assert_eq!(reach_of(&record(Some(40.0), 0.0), 3.0), 6.0);
+        // A 3.8 m overrun (a 3 m sheet's 2-m tip block riding up the 5-m nose bevel of its
+        // 200-m floe) is no raft there, but would be against a 20-m floe.
+        assert_eq!(
+            outcome(&record(Some(200.0), 3.8), RAFTING_REACH),
+            Outcome::Ridged
+        );
+        assert_eq!(
+            outcome(&record(Some(20.0), 3.8), RAFTING_REACH),
+            Outcome::Rafted(3.8)
+        );
+    }
 }

@@ -2,10 +2,15 @@
 //!
 //! Runs are grouped into *sets* by their resolved scenes: two runs are in one set when their
 //! scenes agree in everything but the sheet thickness, the block width tied to it, the seed
-//! and the name — e.g. one set per friction pair. Runs of several campaigns can be tabulated
-//! together (the thickness set and the friction set share their μ = 1.0, μ_w = 0.6 runs at
-//! 0.30 m); a run met twice (same set, thickness and seed, hence the same scene and, by
-//! determinism, the same result) is counted once. Each set carries its friction pair
+//! and the name — e.g. one set per friction pair. [`tabulate_scaled`] names further scene
+//! keys that vary with the thickness within a set (the floe and sheet lengths of a scene
+//! scaled with the sheet, `data/campaigns/thickness-scaled.toml`): they too are left out of
+//! the comparison, the runs of one set and thickness must agree in them, and the table
+//! records their values per set and thickness ([`RidgeTable::scaled_values`]). Runs of
+//! several campaigns can be tabulated together (the thickness set and the friction set share
+//! their μ = 1.0, μ_w = 0.6 runs at 0.30 m); a run met twice (same set, thickness and seed)
+//! must have the same scene, and is then (by determinism, the same result) counted once; two
+//! different scenes there are an error. Each set carries its friction pair
 //! ([`RidgeTable::mu`], [`RidgeTable::mu_w`]), the coordinates by which host models choose
 //! a set. Within a set:
 //!
@@ -106,6 +111,13 @@ pub struct RidgeTable {
     /// Runs met twice (another campaign's record of the same set, thickness and seed),
     /// counted once: (id left out, id kept).
     pub duplicates: Vec<(String, String)>,
+    /// The scene keys scaled with the thickness within a set ([`tabulate_scaled`]; empty for
+    /// [`tabulate`]), e.g. `floe.thickness`.
+    pub scaled_keys: Vec<String>,
+    /// Their values per set and thickness, `(set, thickness)`: `key=value` joined by `, `
+    /// in the order of [`RidgeTable::scaled_keys`]; empty where the set has no run of that
+    /// thickness, or when no key is scaled.
+    pub scaled_values: Array2<String>,
 }
 
 /// The friction pair of Hopkins (1994)'s thickness set and of CICE's ridging energetics
@@ -142,7 +154,54 @@ pub enum TabulateError {
     /// A fit failed.
     #[error("fit: {0}")]
     Fit(#[from] FitError),
+    /// A key given as scaled with the thickness is not a scene key, or is one that may not
+    /// vary within a set.
+    #[error("scaled key `{0}`: {1}")]
+    ScaledKey(String, String),
+    /// Two runs of one set and thickness disagree: the same seed with different scenes, or
+    /// different values of a key scaled with the thickness.
+    #[error(
+        "runs `{0}` and `{1}` are in one set at one thickness but {2}: tabulate them into separate tables"
+    )]
+    Conflict(String, String, String),
 }
+
+/// The value of the dotted scene key `key` (e.g. `floe.thickness`) in a scene as TOML, as
+/// TOML text; `None` when the scene has no such key (e.g. no floe).
+fn scene_value(doc: &toml::Table, key: &str) -> Option<String> {
+    let mut parts = key.split('.');
+    let mut v = doc.get(parts.next()?)?;
+    for p in parts {
+        v = v.as_table()?.get(p)?;
+    }
+    Some(v.to_string())
+}
+
+/// Removes the dotted key `key` from a scene as TOML, if present.
+fn remove_key(doc: &mut toml::Table, key: &str) {
+    match key.split_once('.') {
+        None => {
+            doc.remove(key);
+        }
+        Some((head, rest)) => {
+            if let Some(toml::Value::Table(t)) = doc.get_mut(head) {
+                remove_key(t, rest);
+            }
+        }
+    }
+}
+
+/// The scene keys that may not be scaled with the thickness: the thickness and block width
+/// (always part of the thickness coordinate), the friction pair (it defines the sets), the
+/// seed and the name.
+const NOT_SCALABLE: [&str; 6] = [
+    "sheet.thickness",
+    "sheet.block_width",
+    "contact.mu",
+    "contact.mu_water",
+    "seed",
+    "name",
+];
 
 fn is_thickness_key(s: &str) -> bool {
     s.starts_with("sheet.thickness=") || s.starts_with("sheet.block_width=")
@@ -218,6 +277,41 @@ pub fn fit_warnings(t: &RidgeTable) -> Vec<String> {
 /// volume reached. Runs whose dissipation went negative (a numerical energy source, see
 /// [`dissipation_violation`]) are left out and listed in [`RidgeTable::excluded`].
 pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, TabulateError> {
+    tabulate_scaled(records, points, &[])
+}
+
+/// [`tabulate`] with scene keys `scaled` (dotted, e.g. `floe.thickness`) that vary with the
+/// thickness within a set: left out of the comparison that groups runs into sets (as the
+/// thickness and block width are), so that runs whose scenes scale these with the sheet (and
+/// runs that hold them fixed) make one set. The runs of one set and thickness must agree in
+/// them ([`TabulateError::Conflict`] otherwise); their values are recorded per set and
+/// thickness in [`RidgeTable::scaled_values`]. A key no run's scene has, or one of the
+/// thickness, block width, friction pair, seed or name, is refused.
+pub fn tabulate_scaled(
+    records: &[RunRecord],
+    points: usize,
+    scaled: &[String],
+) -> Result<RidgeTable, TabulateError> {
+    for k in scaled {
+        if NOT_SCALABLE.contains(&k.as_str()) {
+            return Err(TabulateError::ScaledKey(
+                k.clone(),
+                "the thickness and block width always go with the thickness, and the friction pair, seed and name may not vary within a set".into(),
+            ));
+        }
+        let known = records.iter().any(|r| {
+            toml::from_str::<toml::Table>(&r.scene.to_toml())
+                .ok()
+                .and_then(|d| scene_value(&d, k))
+                .is_some()
+        });
+        if !known {
+            return Err(TabulateError::ScaledKey(
+                k.clone(),
+                "no run's scene has this key".into(),
+            ));
+        }
+    }
     let mut excluded = Vec::new();
     let recs: Vec<&RunRecord> = records
         .iter()
@@ -234,7 +328,7 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
         return Err(TabulateError::Empty);
     }
     // A set is what the scene is apart from the thickness (and the block width tied to it),
-    // the seed and the name.
+    // the keys scaled with it, the seed and the name.
     let set_key = |r: &RunRecord| {
         let mut sc = r.scene.clone();
         sc.seed = 0;
@@ -243,7 +337,36 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
             sh.thickness = 0.0;
             sh.block_width = 0.0;
         }
+        if scaled.is_empty() {
+            return sc.to_toml();
+        }
+        let mut doc: toml::Table = toml::from_str(&sc.to_toml()).expect("a scene's own TOML");
+        for k in scaled {
+            remove_key(&mut doc, k);
+        }
+        doc.to_string()
+    };
+    // The values of the scaled keys of a run, `key=value` joined by `, `.
+    let scaled_of = |r: &RunRecord| -> String {
+        if scaled.is_empty() {
+            return String::new();
+        }
+        let doc: toml::Table = toml::from_str(&r.scene.to_toml()).expect("a scene's own TOML");
+        scaled
+            .iter()
+            .map(|k| format!("{k}={}", scene_value(&doc, k).unwrap_or_else(|| "-".into())))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    // The whole scene but its name: two records of one run must agree in it.
+    let whole = |r: &RunRecord| {
+        let mut sc = r.scene.clone();
+        sc.name.clear();
         sc.to_toml()
+    };
+    let is_scaled_setting = |s: &str| {
+        s.split_once('=')
+            .is_some_and(|(k, _)| scaled.iter().any(|x| x == k))
     };
     let h_of = |r: &RunRecord| r.scene.sheet.as_ref().expect("filtered").thickness;
     let mut keys: Vec<String> = Vec::new();
@@ -252,7 +375,9 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
     let mut thickness: Vec<f64> = Vec::new();
     let mut seeds: Vec<u64> = Vec::new();
     let mut duplicates = Vec::new();
-    let mut seen: Vec<(usize, u64, u64, &str)> = Vec::new();
+    let mut seen: Vec<(usize, u64, u64, &RunRecord)> = Vec::new();
+    // The scaled values of each (set, thickness) met, with the run that set them.
+    let mut scaled_seen: Vec<(usize, u64, String, &RunRecord)> = Vec::new();
     let mut set_index = Vec::with_capacity(recs.len());
     let mut kept = Vec::with_capacity(recs.len());
     for r in recs {
@@ -266,7 +391,9 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
                 label.extend(
                     r.settings
                         .iter()
-                        .filter(|s| !is_thickness_key(s) && !is_friction_key(s))
+                        .filter(|s| {
+                            !is_thickness_key(s) && !is_friction_key(s) && !is_scaled_setting(s)
+                        })
                         .cloned(),
                 );
                 sets.push(label.join(", "));
@@ -280,10 +407,32 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
             .iter()
             .find(|&&(s, hb, seed, _)| s == si && hb == h.to_bits() && seed == r.seed)
         {
-            duplicates.push((r.id.clone(), first.to_string()));
+            if whole(first) != whole(r) {
+                return Err(TabulateError::Conflict(
+                    first.id.clone(),
+                    r.id.clone(),
+                    format!("have the same seed {} and different scenes", r.seed),
+                ));
+            }
+            duplicates.push((r.id.clone(), first.id.clone()));
             continue;
         }
-        seen.push((si, h.to_bits(), r.seed, &r.id));
+        seen.push((si, h.to_bits(), r.seed, r));
+        let values = scaled_of(r);
+        match scaled_seen
+            .iter()
+            .find(|&&(s, hb, ..)| s == si && hb == h.to_bits())
+        {
+            Some((.., v, first)) if *v != values => {
+                return Err(TabulateError::Conflict(
+                    first.id.clone(),
+                    r.id.clone(),
+                    format!("differ in the keys scaled with the thickness ({v} against {values})"),
+                ));
+            }
+            Some(_) => {}
+            None => scaled_seen.push((si, h.to_bits(), values, r)),
+        }
         if !thickness.contains(&h) {
             thickness.push(h);
         }
@@ -337,7 +486,16 @@ pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, Tabu
         seeds,
         excluded,
         duplicates,
+        scaled_keys: scaled.to_vec(),
+        scaled_values: Array2::from_elem((ns, nh), String::new()),
     };
+    for (si, hb, v, _) in &scaled_seen {
+        let hi = thickness
+            .iter()
+            .position(|h| h.to_bits() == *hb)
+            .expect("a thickness met");
+        t.scaled_values[[*si, hi]] = v.clone();
+    }
     let mean_std = |xs: &[f64]| -> (f64, f64) {
         let s = Stat::of(xs);
         (s.mean, s.std)

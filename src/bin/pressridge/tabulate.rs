@@ -42,9 +42,19 @@ pub struct Args {
     #[arg(long)]
     allow_partial: bool,
     /// A run counts as rafted when its intact lead sheet passed the floe's nose by more than
-    /// this (m); the report gives the rafting frequency per grid point.
+    /// this (m) against the paper's 20-m floe, and by the same fraction of its floe's length
+    /// against another (a scene scaled with the sheet); the report gives the rafting
+    /// frequency per grid point.
     #[arg(long, default_value_t = pressridge::table::rafting::RAFTING_REACH)]
     rafting_reach: f64,
+    /// Scene keys that vary with the sheet thickness within a set (comma-separated or
+    /// repeated), e.g. `floe.thickness,floe.length` for campaigns that scale the floe with
+    /// the sheet (data/campaigns/thickness-scaled.toml): runs that differ only in these
+    /// (besides thickness, block width and seed) make one set, the runs of one set and
+    /// thickness must agree in them, and the table records their values per thickness
+    /// (global attributes `scaled_keys`, `scaled_values`).
+    #[arg(long, value_delimiter = ',')]
+    scaled_with_thickness: Vec<String>,
     /// Leave rafted runs (see --rafting-reach) out of the table, as the consistency gate
     /// leaves out unstable ones: a table of ridging alone. They are listed in the table's
     /// `excluded_runs` attribute and on stderr; the report's rafting section still counts
@@ -64,6 +74,7 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         allow_partial: a.allow_partial,
         rafting_reach: a.rafting_reach,
         exclude_rafted: a.exclude_rafted,
+        scaled_keys: a.scaled_with_thickness.clone(),
     };
     let command = std::env::args().collect::<Vec<_>>().join(" ");
     let t =
@@ -209,7 +220,7 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         .iter()
         .fold((0, 0), |(r, k), p| (r + p.rafted.len(), k + p.known));
     println!(
-        "rafting: {rafted} of {known} runs with the diagnostic rafted (intact sheet more than {} m past the floe's nose)",
+        "rafting: {rafted} of {known} runs with the diagnostic rafted (intact sheet more than {} m past the floe's nose, against a 20-m floe; in proportion to the floe's length against another)",
         a.rafting_reach
     );
     if !table.duplicates.is_empty() {
