@@ -3,7 +3,7 @@
 # built-in default scene (the paper's Figure 5 experiment, 400 s), without figures, on one
 # core. Prints the machine, the load before and after, the wall and CPU time and the steps.
 #   scripts/bench-default.sh [EXTRA simulate ARGS, e.g. --set numerics.time_step_safety=0.5]
-#   PRESSRIDGE_BIN=target/pgo/release/pressridge scripts/bench-default.sh   # another binary
+#   PRESSRIDGE_BIN=path/to/pressridge scripts/bench-default.sh   # another binary, not rebuilt
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=${PRESSRIDGE_BIN:-./target/release/pressridge}

@@ -12,8 +12,6 @@
 # 2026-11-23 (docs/tables.md); run it under nohup:
 #   nohup scripts/paper-campaign.sh [THREADS] [OUT_ROOT] > runs/paper.log 2>&1 &
 # PAPER_SETS="friction modulus" runs only those sets (in that order).
-# PRESSRIDGE_BIN=target/pgo/release/pressridge uses the profile-guided build of
-# scripts/build-pgo.sh (same results bit for bit, about 9 % fewer instructions per step).
 # Then tabulate a set with `pressridge tabulate --campaign runs/paper/<set> ...`
 # (data/README.md gives the commands behind each committed table and report).
 set -euo pipefail
