@@ -824,6 +824,19 @@ fn shipped_specs_plan_the_papers_sets() {
 /// both campaigns made is counted once, each set carries its friction pair as coordinates,
 /// and the strength command takes C_f at the friction asked for — or refuses, naming the
 /// pairs the table has.
+/// Runs the campaign of `spec` into `out` on two threads, quietly, and checks it succeeded.
+fn run_campaign(spec: &std::path::Path, out: &std::path::Path) {
+    common::succeeds(
+        &bin()
+            .args(["campaign", "--threads", "2", "--quiet", "--spec"])
+            .arg(spec)
+            .arg("--out")
+            .arg(out)
+            .output()
+            .unwrap(),
+    );
+}
+
 #[test]
 fn friction_is_chosen_by_its_value_across_campaigns() {
     let dir = common::scratch("friction-table");
@@ -845,15 +858,7 @@ values = [0.6, 1.0]
     )
     .unwrap();
     for (spec, out) in [(&thick, "a"), (&fric, "b")] {
-        common::succeeds(
-            &bin()
-                .args(["campaign", "--threads", "2", "--quiet", "--spec"])
-                .arg(spec)
-                .arg("--out")
-                .arg(dir.join(out))
-                .output()
-                .unwrap(),
-        );
+        run_campaign(spec, &dir.join(out));
     }
     let table = dir.join("t.nc");
     let res = bin()
@@ -1006,15 +1011,7 @@ values = [[{thickness}, 0.30, 3.0, 30.0]]
     let clash = dir.join("clash.toml");
     std::fs::write(&clash, scaled_spec("0.35")).unwrap();
     for (spec, out) in [(&plain, "a"), (&scaled, "b"), (&clash, "c")] {
-        common::succeeds(
-            &bin()
-                .args(["campaign", "--threads", "2", "--quiet", "--spec"])
-                .arg(spec)
-                .arg("--out")
-                .arg(dir.join(out))
-                .output()
-                .unwrap(),
-        );
+        run_campaign(spec, &dir.join(out));
     }
     let tabulate = |campaigns: &[&str], extra: &[&str], out: &str| {
         let mut c = bin();
