@@ -351,6 +351,26 @@ fn cli_strength_ridge_step_and_plot() {
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(String::from_utf8_lossy(&o.stderr).contains("clamped"));
+    // How many columns were clamped, in how many the clamp is material (≥ 1 % of P), and
+    // the largest share of P from clamped C_f.
+    let attr = |name: &str| -> f64 {
+        let f = netcdf::open(&out3).unwrap();
+        let v: String = f
+            .attribute(name)
+            .unwrap()
+            .value()
+            .unwrap()
+            .try_into()
+            .unwrap();
+        v.parse().unwrap()
+    };
+    let (all, material, share) = (
+        attr("cf_clamped_columns"),
+        attr("cf_clamped_material_columns"),
+        attr("cf_clamped_share_max"),
+    );
+    assert!(all > 0.0 && material <= all && (0.0..=1.0).contains(&share));
+    assert_eq!(material > 0.0, share >= 0.01);
     let (_, pt) = read_field(&out3, "strength").unwrap();
     for (a, b) in pt.iter().zip(&p17) {
         assert_relative_eq!(*a, *b, max_relative = 1e-12, epsilon = 1e-9);

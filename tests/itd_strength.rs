@@ -475,6 +475,36 @@ fn cf_table_interpolates_clamps_and_flags() {
         CP * sum / 0.901_326_203_115_903_5,
         max_relative = 1e-11
     );
+    // Every category lies outside that table: all of P comes from clamped C_f.
+    assert_relative_eq!(s.cf_clamped_share, 1.0, max_relative = 1e-15);
+
+    // A table over 0.1–2.0 m (C_f 10 → 30) holds categories 0–2 (h = 0.3, 1.0, 1.8 m) and
+    // clamps 3–4 (h = 3.0, 4.5 m) at 30: their share of P is their part of the sum.
+    let o = StrengthOptions {
+        cf: Cf::Table(Arc::new(
+            CfTable::new(vec![0.1, 2.0], vec![10.0, 30.0]).unwrap(),
+        )),
+        ..Default::default()
+    };
+    let s = strength_column(&a, &v, Some(0.02), &o, &mut ws).unwrap();
+    let h = [0.3, 1.0, 1.8, 3.0, 4.5];
+    let cf: Vec<f64> = h
+        .iter()
+        .map(|&h| (10.0 + 20.0 * (h - 0.1) / 1.9_f64).min(30.0))
+        .collect();
+    let part = |n: usize| cf[n] * ap[n] * term[n];
+    let sum: f64 = (0..5).map(part).sum();
+    assert!(s.cf_clamped);
+    assert_relative_eq!(
+        s.cf_clamped_share,
+        (part(3) + part(4)) / sum,
+        max_relative = 1e-10
+    );
+    assert!(s.cf_clamped_share > 0.0 && s.cf_clamped_share < 1e-3);
+    // Nothing clamped, nothing shared; and a batch counts a material clamp only at ≥ 1 %.
+    let s = strength_column(&a, &v, Some(0.02), &flat, &mut ws).unwrap();
+    assert!(!s.cf_clamped && s.cf_clamped_share == 0.0);
+    assert_eq!(pressridge::itd::CF_CLAMPED_MATERIAL_SHARE, 0.01);
 }
 
 #[test]

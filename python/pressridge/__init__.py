@@ -65,6 +65,7 @@ __all__ = [
     "CF_PRESETS",
     "DEFAULT_FRICTION",
     "RAFTING_REACH",
+    "CF_CLAMPED_MATERIAL_SHARE",
     "Run",
     "State",
     "load_run",
@@ -93,6 +94,12 @@ CF_PRESETS: dict = dict(_core.cf_presets())
 
 PathLike = Union[str, "_os.PathLike[str]"]
 CfLike = Union[None, float, str, "_os.PathLike[str]", Table, Tuple[Any, Any]]
+
+
+#: Share of a column's strength (dimensionless, 0.01) from C_f held at a table's end value at
+#: or above which :class:`CfClampedWarning` counts the clamp as material: below it, even a
+#: C_f wrong by a factor of two moves P by under 1 %.
+CF_CLAMPED_MATERIAL_SHARE: float = float(_core.CF_CLAMPED_MATERIAL_SHARE)
 
 
 class CfClampedWarning(UserWarning):
@@ -323,7 +330,7 @@ def strength(
         options, participation, redistribution, law, cf, friction, params
     )
     value, nodes, path = _cf_args(cf, friction)
-    out, clamped = _core.strength(
+    out, clamped, material, share_max = _core.strength(
         a,
         v,
         a0,
@@ -344,7 +351,9 @@ def strength(
         # that the warnings filter shows it once per call rather than once per chunk.
         text = (
             f"{clamped} of {ncol} columns had ridging-ice thicknesses outside the C_f "
-            "table; C_f was clamped to the table's end values there"
+            "table; C_f was clamped to the table's end values there; the clamped ice "
+            f"carries >= {CF_CLAMPED_MATERIAL_SHARE:.0%} of the strength in {material} of them "
+            f"(at most {share_max:.1%})"
             if _clamp_note is None
             else "some columns had ridging-ice thicknesses outside the C_f table; C_f was "
             f"clamped to the table's end values there ({_clamp_note})"

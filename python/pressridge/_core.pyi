@@ -36,9 +36,10 @@ def strength(
     aice0: Optional[_F64],
     valid: Optional[_Bool],
     options: _StrengthArgs,
-) -> Tuple[_F64, int]:
-    """Strength P (N/m) of shape ``aicen.shape[1:]`` and the number of columns where a
-    C_f table was clamped."""
+) -> Tuple[_F64, int, int, float]:
+    """Strength P (N/m) of shape ``aicen.shape[1:]``, the number of columns where a C_f
+    table was clamped, of these the columns where the clamped ice carries at least 1 % of
+    P, and the largest share of a column's P from clamped C_f (0-1)."""
 
 def _layout(aicen: _F64) -> Tuple[str, str]:
     """("view" | "copy", "C" | "F"): how ``aicen`` reaches the batch routines."""
@@ -155,6 +156,7 @@ def read_cf_table_at_friction(
 
 DEFAULT_FRICTION: Tuple[float, float]
 RAFTING_REACH: float
+CF_CLAMPED_MATERIAL_SHARE: float
 def default_params() -> dict[str, float]: ...
 def param_meta() -> List[Tuple[str, str, str, float]]:
     """Every ITD parameter: (name, units, description, CICE default)."""

@@ -21,7 +21,8 @@ use crate::errors::{detached, value_err};
 use crate::options::{StrengthArgs, itd_params, participation, redistribution};
 
 /// Ice strength P (N/m); see `pressridge.strength`. `options` is a dict (`StrengthArgs`).
-/// Returns (P, columns with a clamped C_f).
+/// Returns (P, columns with a clamped C_f, of these the columns where the clamp carries ≥ 1 %
+/// of P, the largest share of a column's P from clamped C_f).
 #[pyfunction]
 #[pyo3(signature = (aicen, vicen, aice0, valid, options))]
 pub(crate) fn strength<'py>(
@@ -31,7 +32,7 @@ pub(crate) fn strength<'py>(
     aice0: Option<PyReadonlyArrayDyn<'py, f64>>,
     valid: Option<PyReadonlyArrayDyn<'py, bool>>,
     options: StrengthArgs,
-) -> PyResult<(Bound<'py, PyArrayDyn<f64>>, usize)> {
+) -> PyResult<(Bound<'py, PyArrayDyn<f64>>, usize, usize, f64)> {
     let spatial = category_shapes(&aicen, &vicen)?;
     if let Some(a0) = &aice0 {
         check_array("aice0", a0, &spatial, "the spatial shape of aicen")?;
@@ -62,7 +63,12 @@ pub(crate) fn strength<'py>(
         .map_err(|e| itd_err(e, &spatial, order))
     })?;
     drop(out_rw);
-    Ok((out, summary.cf_clamped_columns))
+    Ok((
+        out,
+        summary.cf_clamped_columns,
+        summary.cf_clamped_material_columns,
+        summary.cf_clamped_share_max,
+    ))
 }
 
 /// Whether `aicen` passes to the batch routines as a view ("view") or is copied ("copy"),

@@ -3,6 +3,7 @@ sample distribution, for every layout, with clear errors."""
 
 from __future__ import annotations
 
+import re
 
 import numpy as np
 import pytest
@@ -59,9 +60,21 @@ def test_cf_table_file_equals_command_line(cli, sample, itd, tmp_path):
     table = tmp_path / "cf.nc"
     write_cf_table(table, [0.5, 1.5, 3.0], [12.0, 15.0, 20.0])
     want = cli_strength(cli, sample, tmp_path, "--cf-table", table)
-    with pytest.warns(pr.CfClampedWarning, match="outside the C_f table"):
+    with pytest.warns(pr.CfClampedWarning, match="outside the C_f table") as rec:
         got = pr.strength(itd.aicen.values, itd.vicen.values, itd.aice0.values, cf=table)
     np.testing.assert_array_equal(got, want)
+    # The warning says how many columns were clamped and in how many the clamp carries a
+    # material share (>= 1 %) of the strength, as the command line's attributes do.
+    assert pr.CF_CLAMPED_MATERIAL_SHARE == 0.01
+    m = re.search(
+        r"(\d+) of (\d+) columns .* carries >= 1% of the strength in (\d+) of them "
+        r"\(at most ([0-9.]+)%\)",
+        str(rec[0].message),
+    )
+    assert m, str(rec[0].message)
+    clamped, ncol, material, share = int(m[1]), int(m[2]), int(m[3]), float(m[4])
+    assert 0 < clamped <= ncol and material <= clamped and 0.0 <= share <= 100.0
+    assert (material > 0) == (share >= 1.0)
     nodes = ([0.5, 1.5, 3.0], [12.0, 15.0, 20.0])
     with pytest.warns(pr.CfClampedWarning):
         by_nodes = pr.strength(itd.aicen.values, itd.vicen.values, itd.aice0.values, cf=nodes)

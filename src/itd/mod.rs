@@ -45,8 +45,8 @@ pub use ridging::{
     ridge_column,
 };
 pub use strength::{
-    BatchSummary, ColumnStrength, StrengthOptions, strength_batch, strength_batch_masked,
-    strength_column,
+    BatchSummary, CF_CLAMPED_MATERIAL_SHARE, ColumnStrength, StrengthOptions, strength_batch,
+    strength_batch_masked, strength_column,
 };
 pub use tracers::{
     CiceTracerFlags, LayoutDetectError, TracerBase, TracerField, TracerLayout, TracerRole,

@@ -48,6 +48,30 @@ pub struct ColumnStrength {
     pub strength: f64,
     /// True when a C_f table was queried outside its thickness range (value clamped).
     pub cf_clamped: bool,
+    /// The share of P (dimensionless, 0–1) carried by the categories whose C_f was held at
+    /// the table's end value: how much the clamp can matter. Every ice column of a
+    /// realistic distribution has some participation, however small, of its thickest
+    /// category, so `cf_clamped` alone flags nearly every column beyond a table's thick
+    /// end; this says whether the flag is material ([`CF_CLAMPED_MATERIAL_SHARE`]). 0 when
+    /// nothing was clamped.
+    pub cf_clamped_share: f64,
+}
+
+/// The share of a column's strength from clamped C_f lookups
+/// ([`ColumnStrength::cf_clamped_share`]) at or above which the clamp counts as material in
+/// [`BatchSummary::cf_clamped_material_columns`]: 1 %. Below it, even a C_f wrong by a
+/// factor of two moves P by under 1 %, less than the table's own seed spread.
+pub const CF_CLAMPED_MATERIAL_SHARE: f64 = 0.01;
+
+impl ColumnStrength {
+    /// A strength with nothing clamped.
+    const fn unclamped(strength: f64) -> ColumnStrength {
+        ColumnStrength {
+            strength,
+            cf_clamped: false,
+            cf_clamped_share: 0.0,
+        }
+    }
 }
 
 /// Strength P (N/m) of one column.
@@ -91,19 +115,13 @@ pub fn strength_column(
     let p = &opts.params;
     let Some((aice0, sum)) = column_prelude(aicen, vicen, aice0, p)? else {
         // Empty column (land, or no data): defined as zero strength (CICE: 0/0).
-        return Ok(ColumnStrength {
-            strength: 0.0,
-            cf_clamped: false,
-        });
+        return Ok(ColumnStrength::unclamped(0.0));
     };
 
     if opts.formula == StrengthFormula::Hibler1979 {
         let vice: f64 = vicen.iter().sum();
         let strength = p.pstar * vice * (-p.cstar * (1.0 - sum)).exp();
-        return Ok(ColumnStrength {
-            strength,
-            cf_clamped: false,
-        });
+        return Ok(ColumnStrength::unclamped(strength));
     }
 
     let aksum = ws.prepare_ridging(
@@ -116,14 +134,13 @@ pub fn strength_column(
     );
     if aksum <= 0.0 {
         // Nothing participates (no area above puny): defined as zero strength.
-        return Ok(ColumnStrength {
-            strength: 0.0,
-            cf_clamped: false,
-        });
+        return Ok(ColumnStrength::unclamped(0.0));
     }
 
     let mut total = 0.0;
     let mut clamped = false;
+    // The part of `total` from categories whose C_f was clamped.
+    let mut clamped_part = 0.0;
     let term = |ws: &Workspace, n: usize| {
         let g = super::redistribution::RidgeGeometry {
             hi: ws.hi[n],
@@ -153,8 +170,12 @@ pub fn strength_column(
                         Cf::Custom(c) => c.lookup(ws.hi[n]),
                         Cf::Constant(_) => unreachable!(),
                     };
-                    clamped |= l.clamped;
-                    total += l.value * ap * term(ws, n);
+                    let part = l.value * ap * term(ws, n);
+                    if l.clamped {
+                        clamped = true;
+                        clamped_part += part;
+                    }
+                    total += part;
                 }
             }
         }
@@ -166,6 +187,12 @@ pub fn strength_column(
     Ok(ColumnStrength {
         strength,
         cf_clamped: clamped,
+        // The share in P of the clamped categories: P is proportional to `total`.
+        cf_clamped_share: if clamped && total > 0.0 {
+            (clamped_part / total).clamp(0.0, 1.0)
+        } else {
+            0.0
+        },
     })
 }
 
@@ -336,10 +363,7 @@ pub(crate) fn strength_column_constant_cf(
     opts: &StrengthOptions,
     k: &StrengthConsts,
 ) -> Result<ColumnStrength, ColumnError> {
-    const ZERO: ColumnStrength = ColumnStrength {
-        strength: 0.0,
-        cf_clamped: false,
-    };
+    const ZERO: ColumnStrength = ColumnStrength::unclamped(0.0);
     let ncat = aicen.len();
     assert!(
         vicen.len() == ncat && ncat <= lanes::MAX_NCAT,
@@ -379,19 +403,31 @@ pub(crate) fn strength_column_constant_cf(
         // Nothing participates (no area above puny): defined as zero strength.
         return Ok(ZERO);
     }
-    Ok(ColumnStrength {
-        strength: k.cfcp * total / aksum,
-        cf_clamped: false,
-    })
+    Ok(ColumnStrength::unclamped(k.cfcp * total / aksum))
 }
 
 /// Summary of a batched call.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct BatchSummary {
     /// Columns computed.
     pub columns: usize,
     /// Columns where a C_f table was queried outside its range (values clamped).
     pub cf_clamped_columns: usize,
+    /// Of these, the columns where the clamped categories carry at least
+    /// [`CF_CLAMPED_MATERIAL_SHARE`] of P ([`ColumnStrength::cf_clamped_share`]).
+    pub cf_clamped_material_columns: usize,
+    /// The largest [`ColumnStrength::cf_clamped_share`] of any column (dimensionless, 0–1).
+    pub cf_clamped_share_max: f64,
+}
+
+impl BatchSummary {
+    /// Counts one column's result.
+    fn add(&mut self, r: &ColumnStrength) {
+        self.cf_clamped_columns += usize::from(r.cf_clamped);
+        self.cf_clamped_material_columns +=
+            usize::from(r.cf_clamped_share >= CF_CLAMPED_MATERIAL_SHARE);
+        self.cf_clamped_share_max = self.cf_clamped_share_max.max(r.cf_clamped_share);
+    }
 }
 
 /// Strength P (N/m) of `ncol` columns into `out` (length `ncol`).
@@ -438,7 +474,7 @@ pub fn strength_batch_masked(
     let mut vbuf = vec![0.0; ncat];
     let mut summary = BatchSummary {
         columns: ncol,
-        cf_clamped_columns: 0,
+        ..BatchSummary::default()
     };
     let mut scalar = |c: usize, out: &mut ArrayViewMut1<f64>| -> Result<(), ItdError> {
         if let Some(m) = &valid
@@ -468,7 +504,7 @@ pub fn strength_batch_masked(
         let r = strength_column(a, v, a0, opts, &mut ws)
             .map_err(|source| ItdError::Column { column: c, source })?;
         out[c] = r.strength;
-        summary.cf_clamped_columns += usize::from(r.cf_clamped);
+        summary.add(&r);
         Ok(())
     };
 

@@ -11,8 +11,8 @@ use pressridge::io::itd_netcdf::{
 };
 use pressridge::io::refuse_output_over_input;
 use pressridge::itd::{
-    Cf, CfPreset, ItdParams, Participation, Redistribution, StrengthFormula, StrengthOptions,
-    strength_batch_masked,
+    CF_CLAMPED_MATERIAL_SHARE, Cf, CfPreset, ItdParams, Participation, Redistribution,
+    StrengthFormula, StrengthOptions, strength_batch_masked,
 };
 
 use crate::BoxError;
@@ -265,8 +265,14 @@ pub fn run(args: Args) -> Result<(), BoxError> {
     )?;
     if summary.cf_clamped_columns > 0 {
         eprintln!(
-            "pressridge: note: {} of {} columns had ridging-ice thicknesses outside the C_f table; values were clamped",
-            summary.cf_clamped_columns, summary.columns
+            "pressridge: note: {} of {} columns had ridging-ice thicknesses outside the C_f table; \
+             values were clamped; the clamped ice carries >= {} % of the strength in {} of them \
+             (at most {:.1} %)",
+            summary.cf_clamped_columns,
+            summary.columns,
+            CF_CLAMPED_MATERIAL_SHARE * 100.0,
+            summary.cf_clamped_material_columns,
+            summary.cf_clamped_share_max * 100.0
         );
     }
     let mut global = describe(&o);
@@ -276,6 +282,14 @@ pub fn run(args: Args) -> Result<(), BoxError> {
     global.push((
         "cf_clamped_columns".into(),
         summary.cf_clamped_columns.to_string(),
+    ));
+    global.push((
+        "cf_clamped_material_columns".into(),
+        summary.cf_clamped_material_columns.to_string(),
+    ));
+    global.push((
+        "cf_clamped_share_max".into(),
+        format!("{}", summary.cf_clamped_share_max),
     ));
     write_output(
         &args.output,
