@@ -1,9 +1,10 @@
 //! Campaign directories to a lookup table: the pipeline of `pressridge tabulate` and
 //! Python's `pressridge.tabulate`, written once. It reads each campaign's records
 //! ([`read_campaign`], refusing an incomplete one unless partial campaigns are allowed),
-//! pools them (a run two campaigns share is counted once, by [`crate::table::tabulate::tabulate`]), leaves rafted
-//! runs out on request ([`crate::table::rafting`]), tabulates them (the dissipation gate leaves
-//! numerically unstable runs out) and gathers the table's provenance. Writing the table,
+//! pools them (a run two campaigns share is counted once, by
+//! [`crate::table::tabulate::tabulate`]), leaves rafted runs out on request
+//! ([`crate::table::rafting`]), tabulates them (the dissipation gate leaves numerically
+//! unstable runs out) and gathers the table's provenance. Writing the table,
 //! figures and the report, and telling the user, are the faces' business. It sits in the
 //! campaign layer, above `table` and `io`, whose pieces it joins.
 
