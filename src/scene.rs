@@ -571,6 +571,40 @@ impl Scene {
         toml::to_string_pretty(self).expect("a scene always serialises")
     }
 
+    /// The value of the dotted key `key` (e.g. `floe.thickness`), as TOML text; `None` when
+    /// the scene has no such key (e.g. no floe).
+    pub(crate) fn value_at(&self, key: &str) -> Option<String> {
+        let doc: toml::Table = toml::from_str(&self.to_toml()).expect("a scene's own TOML");
+        let mut parts = key.split('.');
+        let mut v = doc.get(parts.next()?)?;
+        for p in parts {
+            v = v.as_table()?.get(p)?;
+        }
+        Some(v.to_string())
+    }
+
+    /// The scene as TOML without the dotted keys `keys` (those it lacks are ignored): what
+    /// two scenes must share when they may differ in these keys.
+    pub(crate) fn toml_without(&self, keys: &[String]) -> String {
+        fn remove(doc: &mut toml::Table, key: &str) {
+            match key.split_once('.') {
+                None => {
+                    doc.remove(key);
+                }
+                Some((head, rest)) => {
+                    if let Some(toml::Value::Table(t)) = doc.get_mut(head) {
+                        remove(t, rest);
+                    }
+                }
+            }
+        }
+        let mut doc: toml::Table = toml::from_str(&self.to_toml()).expect("a scene's own TOML");
+        for k in keys {
+            remove(&mut doc, k);
+        }
+        doc.to_string()
+    }
+
     /// Applies `key=value` overrides with dotted keys (`contact.mu=0.4`, `pile.blocks=50`,
     /// `duration=20`). The value is parsed as a TOML value.
     pub fn with_overrides<S: AsRef<str>>(&self, sets: &[S]) -> Result<Scene, SceneError> {
@@ -616,6 +650,22 @@ impl Scene {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn dotted_keys_are_read_and_left_out() {
+        let s = Scene::default()
+            .with_overrides(&["contact.mu=0.4", "floe.thickness=3.5"])
+            .unwrap();
+        assert_eq!(s.value_at("contact.mu").as_deref(), Some("0.4"));
+        assert_eq!(s.value_at("floe.thickness").as_deref(), Some("3.5"));
+        assert_eq!(s.value_at("floe.nosuch"), None);
+        assert_eq!(s.value_at("nosuch.key"), None);
+        // Two scenes that differ only in the keys left out give the same text.
+        let t = s.with_overrides(&["floe.thickness=7.0"]).unwrap();
+        let keys = ["floe.thickness".to_string(), "absent.key".to_string()];
+        assert_eq!(s.toml_without(&keys), t.toml_without(&keys));
+        assert_ne!(s.toml_without(&keys[1..]), t.toml_without(&keys[1..]));
+    }
 
     #[test]
     fn default_scene_round_trips_through_toml() {

@@ -166,31 +166,6 @@ pub enum TabulateError {
     Conflict(String, String, String),
 }
 
-/// The value of the dotted scene key `key` (e.g. `floe.thickness`) in a scene as TOML, as
-/// TOML text; `None` when the scene has no such key (e.g. no floe).
-fn scene_value(doc: &toml::Table, key: &str) -> Option<String> {
-    let mut parts = key.split('.');
-    let mut v = doc.get(parts.next()?)?;
-    for p in parts {
-        v = v.as_table()?.get(p)?;
-    }
-    Some(v.to_string())
-}
-
-/// Removes the dotted key `key` from a scene as TOML, if present.
-fn remove_key(doc: &mut toml::Table, key: &str) {
-    match key.split_once('.') {
-        None => {
-            doc.remove(key);
-        }
-        Some((head, rest)) => {
-            if let Some(toml::Value::Table(t)) = doc.get_mut(head) {
-                remove_key(t, rest);
-            }
-        }
-    }
-}
-
 /// The scene keys that may not be scaled with the thickness: the thickness and block width
 /// (always part of the thickness coordinate), the friction pair (it defines the sets), the
 /// seed and the name.
@@ -299,12 +274,7 @@ pub fn tabulate_scaled(
                 "the thickness and block width always go with the thickness, and the friction pair, seed and name may not vary within a set".into(),
             ));
         }
-        let known = records.iter().any(|r| {
-            toml::from_str::<toml::Table>(&r.scene.to_toml())
-                .ok()
-                .and_then(|d| scene_value(&d, k))
-                .is_some()
-        });
+        let known = records.iter().any(|r| r.scene.value_at(k).is_some());
         if !known {
             return Err(TabulateError::ScaledKey(
                 k.clone(),
@@ -340,21 +310,13 @@ pub fn tabulate_scaled(
         if scaled.is_empty() {
             return sc.to_toml();
         }
-        let mut doc: toml::Table = toml::from_str(&sc.to_toml()).expect("a scene's own TOML");
-        for k in scaled {
-            remove_key(&mut doc, k);
-        }
-        doc.to_string()
+        sc.toml_without(scaled)
     };
     // The values of the scaled keys of a run, `key=value` joined by `, `.
     let scaled_of = |r: &RunRecord| -> String {
-        if scaled.is_empty() {
-            return String::new();
-        }
-        let doc: toml::Table = toml::from_str(&r.scene.to_toml()).expect("a scene's own TOML");
         scaled
             .iter()
-            .map(|k| format!("{k}={}", scene_value(&doc, k).unwrap_or_else(|| "-".into())))
+            .map(|k| format!("{k}={}", r.scene.value_at(k).unwrap_or_else(|| "-".into())))
             .collect::<Vec<_>>()
             .join(", ")
     };
