@@ -65,14 +65,9 @@ pub fn campaign_report(
         for (si, set) in table.sets.iter().enumerate() {
             for (hi, h) in table.thickness.iter().enumerate() {
                 let v = &table.scaled_values[[si, hi]];
-                if v.is_empty() {
-                    continue;
+                if !v.is_empty() {
+                    let _ = writeln!(o, "| {set} | {h} | {} |", v.join(" | "));
                 }
-                let cells: Vec<&str> = v
-                    .split(", ")
-                    .map(|kv| kv.split_once('=').map_or(kv, |(_, x)| x))
-                    .collect();
-                let _ = writeln!(o, "| {set} | {h} | {} |", cells.join(" | "));
             }
         }
         let _ = writeln!(o);

@@ -169,9 +169,8 @@ fn write_ridge_table_at(
         let mut values = Vec::new();
         for (si, set) in t.sets.iter().enumerate() {
             for (hi, h) in t.thickness.iter().enumerate() {
-                let v = &t.scaled_values[[si, hi]];
-                if !v.is_empty() {
-                    values.push(format!("{set} at {h} m: {v}"));
+                if !t.scaled_values[[si, hi]].is_empty() {
+                    values.push(format!("{set} at {h} m: {}", t.scaled_label(si, hi)));
                 }
             }
         }

@@ -114,10 +114,27 @@ pub struct RidgeTable {
     /// The scene keys scaled with the thickness within a set ([`tabulate_scaled`]; empty for
     /// [`tabulate`]), e.g. `floe.thickness`.
     pub scaled_keys: Vec<String>,
-    /// Their values per set and thickness, `(set, thickness)`: `key=value` joined by `, `
-    /// in the order of [`RidgeTable::scaled_keys`]; empty where the set has no run of that
-    /// thickness, or when no key is scaled.
-    pub scaled_values: Array2<String>,
+    /// Their values per set and thickness, `(set, thickness)`: one TOML value per key of
+    /// [`RidgeTable::scaled_keys`], in its order (`-` where a run's scene lacks the key);
+    /// empty where the set has no run of that thickness, or when no key is scaled.
+    pub scaled_values: Array2<Vec<String>>,
+}
+
+impl RidgeTable {
+    /// The scaled keys' values at set `s` and thickness index `h` as `key=value` joined by
+    /// `, ` ([`RidgeTable::scaled_values`]); empty where there are none.
+    pub fn scaled_label(&self, s: usize, h: usize) -> String {
+        key_values(&self.scaled_keys, &self.scaled_values[[s, h]])
+    }
+}
+
+/// `key=value` pairs joined by `, `.
+fn key_values(keys: &[String], values: &[String]) -> String {
+    keys.iter()
+        .zip(values)
+        .map(|(k, v)| format!("{k}={v}"))
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 /// The friction pair of Hopkins (1994)'s thickness set and of CICE's ridging energetics
@@ -312,13 +329,12 @@ pub fn tabulate_scaled(
         }
         sc.toml_without(scaled)
     };
-    // The values of the scaled keys of a run, `key=value` joined by `, `.
-    let scaled_of = |r: &RunRecord| -> String {
+    // The values of the scaled keys of a run, in their order.
+    let scaled_of = |r: &RunRecord| -> Vec<String> {
         scaled
             .iter()
-            .map(|k| format!("{k}={}", r.scene.value_at(k).unwrap_or_else(|| "-".into())))
-            .collect::<Vec<_>>()
-            .join(", ")
+            .map(|k| r.scene.value_at(k).unwrap_or_else(|| "-".into()))
+            .collect()
     };
     // The whole scene but its name: two records of one run must agree in it.
     let whole = |r: &RunRecord| {
@@ -339,7 +355,7 @@ pub fn tabulate_scaled(
     let mut duplicates = Vec::new();
     let mut seen: Vec<(usize, u64, u64, &RunRecord)> = Vec::new();
     // The scaled values of each (set, thickness) met, with the run that set them.
-    let mut scaled_seen: Vec<(usize, u64, String, &RunRecord)> = Vec::new();
+    let mut scaled_seen: Vec<(usize, u64, Vec<String>, &RunRecord)> = Vec::new();
     let mut set_index = Vec::with_capacity(recs.len());
     let mut kept = Vec::with_capacity(recs.len());
     for r in recs {
@@ -389,7 +405,11 @@ pub fn tabulate_scaled(
                 return Err(TabulateError::Conflict(
                     first.id.clone(),
                     r.id.clone(),
-                    format!("differ in the keys scaled with the thickness ({v} against {values})"),
+                    format!(
+                        "differ in the keys scaled with the thickness ({} against {})",
+                        key_values(scaled, v),
+                        key_values(scaled, &values)
+                    ),
                 ));
             }
             Some(_) => {}
@@ -449,7 +469,7 @@ pub fn tabulate_scaled(
         excluded,
         duplicates,
         scaled_keys: scaled.to_vec(),
-        scaled_values: Array2::from_elem((ns, nh), String::new()),
+        scaled_values: Array2::from_elem((ns, nh), Vec::new()),
     };
     for (si, hb, v, _) in &scaled_seen {
         let hi = thickness
