@@ -431,6 +431,35 @@ impl Bodies {
         V2::new(ax, ay) + (p - self.pos[i]).perp() * alpha
     }
 
+    /// Inverse masses of body `i` for its three degrees of freedom (1/(kg/m) for x and y,
+    /// 1/(kg·m²/m) for the rotation), zero for a prescribed one.
+    #[inline]
+    pub(crate) fn inverse_masses(&self, i: usize) -> [f64; 3] {
+        let d = self.drive[i];
+        let im = 1.0 / self.mass[i];
+        [
+            if d.u.is_none() { im } else { 0.0 },
+            if d.v.is_none() { im } else { 0.0 },
+            if d.omega.is_none() {
+                1.0 / self.inertia[i]
+            } else {
+                0.0
+            },
+        ]
+    }
+
+    /// Acceleration of body `i` (m/s², m/s², rad/s²) under the force and moment
+    /// accumulated so far, zero along a prescribed degree of freedom.
+    #[inline]
+    pub(crate) fn acceleration(&self, i: usize) -> [f64; 3] {
+        let [ix, iy, iw] = self.inverse_masses(i);
+        [
+            self.force[i].x * ix,
+            self.force[i].y * iy,
+            self.torque[i] * iw,
+        ]
+    }
+
     /// Adds force `f` (N/m) acting at point `p` (m) to body `i`.
     #[inline]
     pub(crate) fn apply(&mut self, i: usize, f: V2, p: V2) {

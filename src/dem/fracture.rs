@@ -16,6 +16,7 @@ use super::body::Bodies;
 use super::broadphase::pair_key;
 use super::geometry::V2;
 use super::joint::Joint;
+use super::world::Dashpot;
 use serde::{Deserialize, Serialize};
 
 /// All joints of a world, with the index of intact pairs for the contact exclusion.
@@ -147,10 +148,19 @@ impl JointSet {
         self.joints.is_empty()
     }
 
-    /// Applies every intact joint's forces to the bodies.
-    pub fn apply(&mut self, bodies: &mut Bodies, rho_i: f64) {
+    /// Applies every intact joint's forces to the bodies: all of them for the explicit
+    /// dashpot, the elastic ones for the implicit one (then [`JointSet::apply_viscous`]).
+    pub fn apply(&mut self, bodies: &mut Bodies, rho_i: f64, dashpot: Dashpot) {
         for j in self.joints.iter_mut() {
-            j.apply(bodies, rho_i);
+            j.apply(bodies, rho_i, dashpot);
+        }
+    }
+
+    /// Applies every intact joint's viscous force at the mid-step velocities, once every
+    /// other force of the step is in the bodies ([`Dashpot::Implicit`] for joints).
+    pub fn apply_viscous(&mut self, bodies: &mut Bodies, dt: f64) {
+        for j in self.joints.iter_mut() {
+            j.apply_viscous(bodies, dt);
         }
     }
 

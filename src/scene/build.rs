@@ -28,6 +28,7 @@ impl Scene {
             time_step_safety: self.numerics.time_step_safety,
             time_step: (self.numerics.time_step > 0.0).then_some(self.numerics.time_step),
             contact_dashpot: self.numerics.contact_dashpot,
+            joint_dashpot: self.numerics.joint_dashpot,
             ..WorldParams::default()
         }
     }

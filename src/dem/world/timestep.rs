@@ -109,6 +109,12 @@ impl World {
                 scale(j.a as usize),
                 scale(j.b as usize),
             );
+            // The implicit joint dashpot is stable at any damping, like the contacts'.
+            let m = if self.params.joint_dashpot == Dashpot::Implicit {
+                0.0
+            } else {
+                m
+            };
             for i in [j.a as usize, j.b as usize] {
                 rate[i].0 += l;
                 rate[i].1 += m;
