@@ -70,7 +70,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             let a = 1.0 - (-w.dt() / SMOOTHING).exp();
             smooth.resize(w.joints().len(), [f64::NAN; 2]);
             for (j, m) in w.joints().iter().zip(smooth.iter_mut()) {
-                for (x, y) in [j.stress.top, j.stress.bottom].into_iter().zip(m.iter_mut()) {
+                for (x, y) in [j.stress.top, j.stress.bottom]
+                    .into_iter()
+                    .zip(m.iter_mut())
+                {
                     *y = if y.is_nan() { x } else { *y + a * (x - *y) };
                     if w.time() > release - 0.1 && j.is_intact() {
                         vibration = vibration.max((x - *y).abs());
