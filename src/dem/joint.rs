@@ -460,9 +460,10 @@ impl Joint {
     }
 }
 
-/// Solves the 4 × 4 system a·x = b by Gaussian elimination with partial pivoting (the
-/// joint dashpot's system is diagonally dominant for any realistic step; written here rather
-/// than through faer, whose dense solvers allocate, for a system this small).
+/// Solves the 4 × 4 system a·x = b by Gaussian elimination with partial pivoting. The joint
+/// dashpot's matrix I + ½·Δt·K·D is never singular (K·D is similar to the positive
+/// semi-definite D^½·K·D^½, so its eigenvalues are at least 1). Written here rather than
+/// through faer, whose dense solvers allocate, for a system this small.
 fn solve4(mut a: [[f64; 4]; 4], mut b: [f64; 4]) -> [f64; 4] {
     for c in 0..4 {
         let p = (c..4)
