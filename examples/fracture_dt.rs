@@ -1,11 +1,13 @@
 //! Joints broken against the time step (docs/speed-vs-error.md, "Fracture and the time
-//! step"): reads a campaign over `numerics.time_step_safety` or `numerics.time_step` (the
-//! fracture-dt campaigns of `data/campaigns/speed-vs-error/`) and prints, per step, the joints
-//! broken by each seed, their mean with its 95 % Student-t interval, and the mean's difference
-//! from the smallest step's with its 95 % Welch interval (`table::ensemble::Stat`).
+//! step"): reads a campaign of the fracture-dt kind (`data/campaigns/speed-vs-error/`) and
+//! prints, per step (`numerics.time_step_safety` or a fixed `numerics.time_step`) and per
+//! setting of its other axes, the joints broken by each seed, their mean with its 95 %
+//! Student-t interval, and the mean's difference from the first row's with its 95 % Welch
+//! interval (`table::ensemble::Stat`). With a second directory, the first row of that one is
+//! the baseline instead (e.g. the finest step of fracture-dt for fracture-strength).
 //!
 //! ```sh
-//! cargo run --release --example fracture_dt -- [DIR]   # default data/speed-vs-error/fracture-dt
+//! cargo run --release --example fracture_dt -- [DIR [BASE_DIR]]   # default data/speed-vs-error/fracture-dt
 //! ```
 
 use pressridge::campaign::read_campaign;
@@ -14,15 +16,15 @@ use std::collections::BTreeMap;
 
 /// The first run's Δt (s) and every run's (seed, joints broken).
 type Point = (f64, Vec<(u64, u64)>);
+/// A row: fixed Δt or not, the Δt or safety factor (as its bits, ordered like the value),
+/// the settings of the other axes.
+type Row = (bool, u64, String);
 
-fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let dir = std::env::args()
-        .nth(1)
-        .unwrap_or_else(|| "data/speed-vs-error/fracture-dt".into());
-    let c = read_campaign(std::path::Path::new(&dir), true)?;
-    // Fixed Δt or safety factor (as its bits, ordered like the value) -> (the first run's Δt,
-    // [(seed, joints broken)]). A safety factor gives each seed a slightly different Δt.
-    let mut points: BTreeMap<(bool, u64), Point> = BTreeMap::new();
+/// The rows of a campaign directory, in order.
+fn rows(dir: &str) -> Result<BTreeMap<Row, Point>, Box<dyn std::error::Error>> {
+    let c = read_campaign(std::path::Path::new(dir), true)?;
+    // A safety factor gives each seed a slightly different Δt: the row keeps the first.
+    let mut points: BTreeMap<Row, Point> = BTreeMap::new();
     for r in &c.records {
         let n = &r.scene.numerics;
         let fixed = n.time_step > 0.0;
@@ -31,28 +33,55 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         } else {
             n.time_step_safety
         };
+        let others: Vec<&str> = r
+            .settings
+            .iter()
+            .map(String::as_str)
+            .filter(|s| !s.starts_with("numerics.time_step"))
+            .collect();
         let p = points
-            .entry((fixed, key.to_bits()))
+            .entry((fixed, key.to_bits(), others.join(", ")))
             .or_insert((r.summary.dt, vec![]));
         p.1.push((r.seed, r.summary.blocks_broken));
     }
     if points.is_empty() {
         return Err(format!("no run records in {dir}").into());
     }
+    Ok(points)
+}
+
+/// The mean and interval of a row's joints broken, and its runs sorted by seed.
+fn stat(runs: &mut [(u64, u64)]) -> Stat {
+    runs.sort();
+    let xs: Vec<f64> = runs.iter().map(|r| r.1 as f64).collect();
+    Stat::of(&xs)
+}
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let dir = args
+        .first()
+        .cloned()
+        .unwrap_or_else(|| "data/speed-vs-error/fracture-dt".into());
+    let points = rows(&dir)?;
+    let mut base: Option<Stat> = match args.get(1) {
+        Some(b) => {
+            let (_, (_, mut runs)) = rows(b)?.into_iter().next().expect("rows() is not empty");
+            Some(stat(&mut runs))
+        }
+        None => None,
+    };
     println!(
-        "| Δt / stable limit | Δt (s) | runs | joints broken per seed | mean ± 95 % | vs smallest Δt |"
+        "| Δt / stable limit | Δt (s) | other settings | runs | joints broken per seed | mean ± 95 % | vs baseline |"
     );
-    println!("|---|---|---|---|---|---|");
-    let mut base: Option<Stat> = None;
-    for ((fixed, bits), (dt, mut runs)) in points {
+    println!("|---|---|---|---|---|---|---|");
+    for ((fixed, bits, others), (dt, mut runs)) in points {
         let how = if fixed {
             "fixed".to_string()
         } else {
             f64::from_bits(bits).to_string()
         };
-        runs.sort();
-        let xs: Vec<f64> = runs.iter().map(|r| r.1 as f64).collect();
-        let s = Stat::of(&xs);
+        let s = stat(&mut runs);
         let diff = match &base {
             None => "—".to_string(),
             Some(b) => {
@@ -63,7 +92,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         };
         let seeds: Vec<String> = runs.iter().map(|r| r.1.to_string()).collect();
         println!(
-            "| {how} | {dt:.3e} | {} | {} | {:.1} ± {:.1} | {diff} |",
+            "| {how} | {dt:.3e} | {} | {} | {} | {:.1} ± {:.1} | {diff} |",
+            if others.is_empty() { "—" } else { &others },
             s.n,
             seeds.join(", "),
             s.mean,
