@@ -12,8 +12,8 @@
 
 use crate::dem::boundary::{FloeSupport, SheetBoundary};
 use crate::dem::{
-    Block, ContactParams, Dashpot, Drive, JointMaterial, Role, Shape, V2, WaterParams, World,
-    WorldError, WorldParams,
+    Block, ContactOnset, ContactParams, Dashpot, Drive, JointMaterial, Role, Shape, V2,
+    WaterParams, World, WorldError, WorldParams,
 };
 use rand_xoshiro::Xoshiro256PlusPlus;
 use rand_xoshiro::rand_core::{Rng, SeedableRng};
@@ -136,6 +136,10 @@ pub struct NumericsSection {
         skip_serializing_if = "Dashpot::is_explicit"
     )]
     pub joint_dashpot: Dashpot,
+    /// How a new contact reads its first overlap rate in eq (3): "area" (default, the
+    /// paper's) or "velocity" (experimental). See [`crate::dem::ContactOnset`].
+    #[serde(default, skip_serializing_if = "ContactOnset::is_area")]
+    pub contact_onset: ContactOnset,
     /// Interval between samples of the energy budget and the ridging force (s).
     /// Default 0.2 s, the paper's force sampling interval (Figure 6).
     pub sample_interval: f64,
@@ -148,6 +152,7 @@ impl Default for NumericsSection {
             time_step: 0.0,
             contact_dashpot: Dashpot::default(),
             joint_dashpot: Dashpot::Explicit,
+            contact_onset: ContactOnset::Area,
             sample_interval: 0.2,
         }
     }
@@ -767,5 +772,19 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(e.contains("joint_dashpot"), "{e}");
+    }
+
+    /// The contact onset is eq (3)'s own unless set, and then absent from the scene's TOML;
+    /// "velocity" reaches the world.
+    #[test]
+    fn contact_onset_is_the_area_rate_unless_set_and_not_written_then() {
+        let s = Scene::default();
+        assert_eq!(s.numerics.contact_onset, ContactOnset::Area);
+        assert!(!s.to_toml().contains("contact_onset"));
+        let s = s
+            .with_overrides(&["numerics.contact_onset=velocity"])
+            .unwrap();
+        assert_eq!(s.world_params().contact_onset, ContactOnset::Velocity);
+        assert_eq!(Scene::from_toml(&s.to_toml()).unwrap(), s);
     }
 }

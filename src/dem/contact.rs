@@ -18,8 +18,8 @@
 
 use super::body::Bodies;
 use super::broadphase::{pair_key, unpack};
-use super::geometry::{OverlapScratch, V2, overlap_with};
-use super::world::Dashpot;
+use super::geometry::{Overlap, OverlapScratch, V2, overlap_with};
+use super::world::{ContactOnset, Dashpot};
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the contact law. Defaults follow Hopkins (1994), Table 1 and the text of
@@ -227,6 +227,7 @@ impl ContactSet {
         dt: f64,
         water_level: Option<f64>,
         dashpot: Dashpot,
+        onset: ContactOnset,
         work: &mut ContactWork,
     ) {
         std::mem::swap(&mut self.cur, &mut self.prev);
@@ -267,10 +268,14 @@ impl ContactSet {
             let t = n.perp();
             // Eq (2), less any forgiven overlap, and eq (3); the sum never pulls.
             let fe = k_ne * (ov.area - forgiven);
-            let rate = k_nv * (ov.area - area0) / dt;
             // Eq (4) with the relative velocity at the overlap centroid at n − ½.
             let vrel =
                 bodies.point_velocity(b, ov.centroid) - bodies.point_velocity(a, ov.centroid);
+            let rate = if old.is_none() && onset == ContactOnset::Velocity {
+                k_nv * contact_length(&ov, bodies, a, b) * (-vrel.dot(n)).max(0.0)
+            } else {
+                k_nv * (ov.area - area0) / dt
+            };
             let mu = match water_level {
                 Some(l) if ov.centroid.y < l => p.mu_water,
                 _ => p.mu,
@@ -298,11 +303,7 @@ impl ContactSet {
                 Dashpot::Implicit => {
                     // The dashpot c = k_nv·L; its viscous and friction forces wait for
                     // every other force of the step (pass 2 below).
-                    let chord = if ov.chord > 0.0 {
-                        ov.chord
-                    } else {
-                        2.0 * bodies.shape[a].radius().min(bodies.shape[b].radius())
-                    };
+                    let chord = contact_length(&ov, bodies, a, b);
                     bodies.apply(b, n * fe, ov.centroid);
                     bodies.apply(a, -(n * fe), ov.centroid);
                     self.pending.push(Pending {
@@ -383,5 +384,14 @@ impl ContactSet {
             et += c.stored_t;
         }
         (en, et)
+    }
+}
+/// The length L of a contact surface (m) for the dashpot c = k_nv·L: the chord, or, where
+/// the chord is undefined (one block inside the other), the smaller block's diameter.
+fn contact_length(ov: &Overlap, bodies: &Bodies, a: usize, b: usize) -> f64 {
+    if ov.chord > 0.0 {
+        ov.chord
+    } else {
+        2.0 * bodies.shape[a].radius().min(bodies.shape[b].radius())
     }
 }

@@ -30,4 +30,4 @@ pub use geometry::V2;
 pub use joint::{Joint, JointMaterial};
 pub use ledger::EnergyBudget;
 pub use water::WaterParams;
-pub use world::{Dashpot, Snapshot, World, WorldError, WorldParams};
+pub use world::{ContactOnset, Dashpot, Snapshot, World, WorldError, WorldParams};

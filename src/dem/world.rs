@@ -62,6 +62,10 @@ pub struct WorldParams {
         skip_serializing_if = "Dashpot::is_explicit"
     )]
     pub joint_dashpot: Dashpot,
+    /// How a new contact reads its first overlap rate in eq (3). Default
+    /// [`ContactOnset::Area`] (the paper's). Absent from states and scenes when the default.
+    #[serde(default, skip_serializing_if = "ContactOnset::is_area")]
+    pub contact_onset: ContactOnset,
     /// Speed at which a crack crosses a joint (m/s). Default 50 m/s; see
     /// docs/model.md ("Fracture").
     pub crack_speed: f64,
@@ -85,6 +89,7 @@ impl Default for WorldParams {
             time_step: None,
             contact_dashpot: Dashpot::default(),
             joint_dashpot: Dashpot::Explicit,
+            contact_onset: ContactOnset::Area,
             crack_speed: 50.0,
             incubation_time: None,
             global_damping: 0.0,
@@ -118,6 +123,32 @@ pub enum Dashpot {
     /// isolated pair is stable for ω·Δt < 2 whatever ζ.
     #[default]
     Implicit,
+}
+
+/// How a new contact's viscous force of eq (3) reads its first rate of overlap.
+///
+/// Eq (3) takes the rate as (Aⁿ − Aⁿ⁻¹)/Δt. A contact begins somewhere within the step, so in
+/// its first step Aⁿ⁻¹ = 0 and Aⁿ/Δt is on average half the rate at which the overlap grows
+/// by then: the first step of every impact is under-damped, an error of first order in Δt
+/// that makes impacts more elastic at larger steps (`docs/speed-vs-error.md`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ContactOnset {
+    /// Eq (3) as written, from the change of area (the paper's).
+    #[default]
+    Area,
+    /// In a contact's first step, the rate L·v_n from the chord L and the two blocks'
+    /// approach speed v_n along the normal at the overlap centroid (at n − ½, as the
+    /// friction law reads the tangential speed); from the second step on, eq (3) as written.
+    /// Experimental.
+    Velocity,
+}
+
+impl ContactOnset {
+    /// True for [`ContactOnset::Area`] (a serde skip test).
+    pub fn is_area(&self) -> bool {
+        *self == ContactOnset::Area
+    }
 }
 
 impl Dashpot {
@@ -599,6 +630,7 @@ impl World {
             dt,
             level,
             self.params.contact_dashpot,
+            self.params.contact_onset,
             &mut self.acc.contact,
         );
         if self.params.joint_dashpot == Dashpot::Implicit {

@@ -29,6 +29,7 @@ impl Scene {
             time_step: (self.numerics.time_step > 0.0).then_some(self.numerics.time_step),
             contact_dashpot: self.numerics.contact_dashpot,
             joint_dashpot: self.numerics.joint_dashpot,
+            contact_onset: self.numerics.contact_onset,
             ..WorldParams::default()
         }
     }
