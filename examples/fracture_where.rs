@@ -1,7 +1,9 @@
 //! Where the joints break in the first seconds of the Figure 5 scene, at several time steps
 //! (docs/speed-vs-error.md, "Fracture and the time step"): in the pushed sheet (both blocks
 //! still of the sheet when the joint severs), in the floe, or in rubble (a piece already broken
-//! off). Prints, per time-step safety factor, the joints severed in each, summed over seeds.
+//! off). Prints, per time-step safety factor, the joints severed in each, summed over seeds,
+//! and the contacts born overlapping (handed over from a severed joint or landing on a block
+//! they already overlap; `World::handovers`).
 //!
 //! ```sh
 //! cargo run --release --example fracture_where -- [DURATION_S] [SEEDS] [KEY=VALUE ...]
@@ -20,11 +22,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let extra = args.get(2..).unwrap_or_default();
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data/scenes/figure5.toml");
     println!(
-        "| Δt / limit | seeds | in the sheet | in the floe | in rubble | per seed (sheet/floe/rubble) |"
+        "| Δt / limit | seeds | in the sheet | in the floe | in rubble | contacts born overlapping | per seed (sheet/floe/rubble) |"
     );
-    println!("|---|---|---|---|---|---|");
+    println!("|---|---|---|---|---|---|---|");
     for safety in SAFETIES {
-        let (mut sheet, mut floe, mut rubble) = (0, 0, 0);
+        let (mut sheet, mut floe, mut rubble, mut born) = (0, 0, 0, 0);
         let mut per = vec![];
         for seed in 1..=seeds {
             let mut sets = vec![
@@ -52,13 +54,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     }
                 }
             }
+            born += w.handovers().count;
             sheet += s;
             floe += f;
             rubble += r;
             per.push(format!("{s}/{f}/{r}"));
         }
         println!(
-            "| {safety} | {seeds} | {sheet} | {floe} | {rubble} | {} |",
+            "| {safety} | {seeds} | {sheet} | {floe} | {rubble} | {born} | {} |",
             per.join(", ")
         );
     }
