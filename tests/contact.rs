@@ -97,6 +97,38 @@ fn sliding_block_dissipates_mu_n_distance() {
     assert!(e.residual.abs() < 1e-9 * e.largest_term());
 }
 
+/// Two 1 m × 0.3 m blocks 2 cm apart face to face (the left one set back a further `shift`,
+/// m), closing at 0.5 m/s each, in a world without gravity or water and with μ = μ_w = 0.5;
+/// the rest of the parameters from `params`.
+fn face_on_pair(params: WorldParams, shift: f64) -> World {
+    let mut w = World::new(WorldParams {
+        gravity: 0.0,
+        water: None,
+        contact: ContactParams {
+            mu: 0.5,
+            mu_water: 0.5,
+            ..ContactParams::default()
+        },
+        ..params
+    })
+    .unwrap();
+    let a = w.add_block(
+        Shape::rectangle(1.0, 0.3).unwrap(),
+        V2::new(-0.51 - shift, 0.0),
+        0.0,
+        Drive::FREE,
+    );
+    let b = w.add_block(
+        Shape::rectangle(1.0, 0.3).unwrap(),
+        V2::new(0.51, 0.0),
+        0.0,
+        Drive::FREE,
+    );
+    w.set_velocity(a, V2::new(0.5, 0.0), 0.0);
+    w.set_velocity(b, V2::new(-0.5, 0.0), 0.0);
+    w
+}
+
 /// No-tension linear spring–dashpot: restitution coefficient for damping ratio ζ.
 /// The contact ends when the force k·δ + c·δ̇ reaches zero, at ω_d·t_c = π − atan(2ζ√(1−ζ²)/
 /// (1−2ζ²)) for ζ < 1/√2; then e = −δ̇(t_c)/δ̇(0)
@@ -137,36 +169,16 @@ fn collision_restitution_matches_damped_oscillator() {
     ] {
         let mut errs = Vec::new();
         for (refine, tol) in [(1.0, tol_default), (0.25, tol_quarter)] {
-            let mut w = World::new(WorldParams {
-                gravity: 0.0,
-                water: None,
-                contact: ContactParams {
-                    mu: 0.5,
-                    mu_water: 0.5,
-                    ..ContactParams::default()
+            let mut w = face_on_pair(
+                WorldParams {
+                    contact_dashpot: scheme,
+                    time_step_safety: safety,
+                    ..WorldParams::default()
                 },
-                contact_dashpot: scheme,
-                time_step_safety: safety,
-                ..WorldParams::default()
-            })
-            .unwrap();
-            let (wid, h) = (1.0, 0.3);
-            let a = w.add_block(
-                Shape::rectangle(wid, h).unwrap(),
-                V2::new(-0.51, 0.0),
                 0.0,
-                Drive::FREE,
             );
-            let b = w.add_block(
-                Shape::rectangle(wid, h).unwrap(),
-                V2::new(0.51, 0.0),
-                0.0,
-                Drive::FREE,
-            );
+            let (wid, h, v0) = (1.0, 0.3, 0.5);
             w.set_time_step(w.dt() * refine).unwrap();
-            let v0 = 0.5;
-            w.set_velocity(a, V2::new(v0, 0.0), 0.0);
-            w.set_velocity(b, V2::new(-v0, 0.0), 0.0);
             let ke0 = w.bodies().kinetic_energy();
             run_to(&mut w, 0.2);
             assert!(w.contacts().is_empty(), "still in contact");
@@ -218,33 +230,13 @@ fn collision_restitution_matches_damped_oscillator() {
 fn contact_onset_from_the_approach_speed_removes_the_restitution_bias() {
     let e_theory = restitution_no_tension(0.387_298);
     let world = |onset: ContactOnset, shift: f64| {
-        let mut w = World::new(WorldParams {
-            gravity: 0.0,
-            water: None,
-            contact: ContactParams {
-                mu: 0.5,
-                mu_water: 0.5,
-                ..ContactParams::default()
+        face_on_pair(
+            WorldParams {
+                contact_onset: onset,
+                ..WorldParams::default()
             },
-            contact_onset: onset,
-            ..WorldParams::default()
-        })
-        .unwrap();
-        let a = w.add_block(
-            Shape::rectangle(1.0, 0.3).unwrap(),
-            V2::new(-0.51 - shift, 0.0),
-            0.0,
-            Drive::FREE,
-        );
-        let b = w.add_block(
-            Shape::rectangle(1.0, 0.3).unwrap(),
-            V2::new(0.51, 0.0),
-            0.0,
-            Drive::FREE,
-        );
-        w.set_velocity(a, V2::new(0.5, 0.0), 0.0);
-        w.set_velocity(b, V2::new(-0.5, 0.0), 0.0);
-        w
+            shift,
+        )
     };
     // The default step (0.8 × the stable limit) of this pair.
     let dt_default = world(ContactOnset::Area, 0.0).dt();
