@@ -129,6 +129,18 @@ fn face_on_pair(params: WorldParams, shift: f64) -> World {
     w
 }
 
+/// The kinetic energy the collision lost (from `ke0`, J/m) is the booked viscous dissipation
+/// plus the area law's elastic hysteresis, to 1e-9 of `ke0`.
+fn assert_loss_is_booked(w: &World, ke0: f64) {
+    let en = w.energy();
+    let lost = ke0 - w.bodies().kinetic_energy();
+    let booked = en.viscous_dissipation + en.other_dissipation;
+    assert!(
+        (lost - booked).abs() < 1e-9 * ke0,
+        "lost {lost}, booked {booked}"
+    );
+}
+
 /// No-tension linear spring–dashpot: restitution coefficient for damping ratio ζ.
 /// The contact ends when the force k·δ + c·δ̇ reaches zero, at ω_d·t_c = π − atan(2ζ√(1−ζ²)/
 /// (1−2ζ²)) for ζ < 1/√2; then e = −δ̇(t_c)/δ̇(0)
@@ -199,12 +211,7 @@ fn collision_restitution_matches_damped_oscillator() {
             // The kinetic energy lost is the viscous dissipation Φ_i (plus the tiny elastic
             // hysteresis of the area law).
             let en = w.energy();
-            let lost = ke0 - w.bodies().kinetic_energy();
-            let booked = en.viscous_dissipation + en.other_dissipation;
-            assert!(
-                (lost - booked).abs() < 1e-9 * ke0,
-                "lost {lost}, booked {booked}"
-            );
+            assert_loss_is_booked(&w, ke0);
             assert!(en.other_dissipation.abs() < hysteresis * en.viscous_dissipation);
             // Head-on: no rotation, no vertical motion, no friction.
             assert!(w.bodies().omega[0].abs() < 1e-9 && w.bodies().vel[0].y.abs() < 1e-9);
@@ -250,13 +257,7 @@ fn contact_onset_from_the_approach_speed_removes_the_restitution_bias() {
             let ke0 = w.bodies().kinetic_energy();
             run_to(&mut w, 0.2);
             assert!(w.contacts().is_empty(), "still in contact");
-            let en = w.energy();
-            let lost = ke0 - w.bodies().kinetic_energy();
-            let booked = en.viscous_dissipation + en.other_dissipation;
-            assert!(
-                (lost - booked).abs() < 1e-9 * ke0,
-                "lost {lost}, booked {booked}"
-            );
+            assert_loss_is_booked(&w, ke0);
             let e = w.bodies().vel[1].x - w.bodies().vel[0].x;
             sum += (e - e_theory) / e_theory;
         }
