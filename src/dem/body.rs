@@ -449,7 +449,10 @@ impl Bodies {
     }
 
     /// Acceleration of body `i` (m/s², m/s², rad/s²) under the force and moment
-    /// accumulated so far, zero along a prescribed degree of freedom.
+    /// accumulated so far, zero along a prescribed degree of freedom: force times the
+    /// inverse masses the joint dashpot's solve also uses. [`Bodies::point_acceleration`]
+    /// divides by the mass instead and is not built on this, which would change the default
+    /// contact dashpot's last bits.
     #[inline]
     pub(crate) fn acceleration(&self, i: usize) -> [f64; 3] {
         let [ix, iy, iw] = self.inverse_masses(i);
