@@ -314,37 +314,35 @@ impl Joint {
         if self.gauss.span != (self.s_lo, self.s_hi) || self.gauss.rho != rho_i {
             self.gauss = self.gauss_points(rho_i);
         }
-        // The implicit dashpot's viscous stress follows once every other force is known
-        // (`apply_viscous`).
-        let explicit = dashpot == Dashpot::Explicit;
         let mut el = JointForces::default();
         let mut vi = JointForces::default();
         for &[s, w, e, g, eta_e, eta_g] in &self.gauss.point {
             let pa = oa + ua * s;
             let pb = ob + ub * s;
             let d = d0 + d1 * s;
+            let ddot = (vb + (pb - xb).perp() * wb) - (va + (pa - xa).perp() * wa);
             // Stresses (Pa) times the Gauss weight (m): force per metre of depth.
             let sig_e = e * d.dot(n) / self.gauge;
             let tau_e = g * d.dot(t) / self.gauge;
+            let sig_v = eta_e * ddot.dot(n);
+            let tau_v = eta_g * ddot.dot(t);
             // Tension (δ_n > 0) pulls b back towards a.
             let fe = (n * sig_e + t * tau_e) * (-w);
+            let fv = (n * sig_v + t * tau_v) * (-w);
             el.fb = el.fb + fe;
             el.mb += (pb - xb).cross(fe);
             el.fa = el.fa - fe;
             el.ma -= (pa - xa).cross(fe);
-            if explicit {
-                let ddot = (vb + (pb - xb).perp() * wb) - (va + (pa - xa).perp() * wa);
-                let sig_v = eta_e * ddot.dot(n);
-                let tau_v = eta_g * ddot.dot(t);
-                let fv = (n * sig_v + t * tau_v) * (-w);
-                vi.fb = vi.fb + fv;
-                vi.mb += (pb - xb).cross(fv);
-                vi.fa = vi.fa - fv;
-                vi.ma -= (pa - xa).cross(fv);
-            }
+            vi.fb = vi.fb + fv;
+            vi.mb += (pb - xb).cross(fv);
+            vi.fa = vi.fa - fv;
+            vi.ma -= (pa - xa).cross(fv);
         }
-        let applied: &[&JointForces] = if explicit { &[&el, &vi] } else { &[&el] };
-        for f in applied {
+        if dashpot == Dashpot::Implicit {
+            // The viscous stress follows once every other force is known (`apply_viscous`).
+            vi = JointForces::default();
+        }
+        for f in [&el, &vi] {
             bodies.force[ia] = bodies.force[ia] + f.fa;
             bodies.torque[ia] += f.ma;
             bodies.force[ib] = bodies.force[ib] + f.fb;
