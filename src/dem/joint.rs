@@ -340,6 +340,8 @@ impl Joint {
         }
         if dashpot == Dashpot::Implicit {
             // The viscous stress follows once every other force is known (`apply_viscous`).
+            // (Computed above all the same: behind a branch in the Gauss loop it cost the
+            // default path 0.7 % of its instructions, callgrind.)
             vi = JointForces::default();
         }
         for f in [&el, &vi] {
