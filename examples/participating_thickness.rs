@@ -89,7 +89,7 @@ fn looked_up(aicen: &[f64], vicen: &[f64], aice0: f64, opts_base: &StrengthOptio
         .collect()
 }
 
-const UPPER: [f64; 6] = [1.0, 1.5, 2.0, 3.0, 4.0, 5.0];
+const UPPER: [f64; 7] = [1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0];
 
 /// Counts, for one selection rule, the columns with selected ice outside [0.10, H].
 struct Tally {

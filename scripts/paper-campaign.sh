@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The paper's whole experiment campaign (issue 14; Hopkins 1994, Table 1): every set of
 # data/campaigns/ — thickness, friction, modulus, floe, speed, the lookup table's
-# extension to 0.10-3.00 m (thickness-scaled: the scene scaled with the sheet above the
-# paper's range, thickness-thin) and the checks of rafting and of the floe (thickness-thick
+# extension to 0.10-6.00 m (thickness-scaled: the scene scaled with the sheet above the
+# paper's range, thickness-scaled-thick its 4-6 m with the floe at half the ratio,
+# thickness-thin) and the checks of rafting and of the floe (thickness-thick
 # with the 2 m floe, sheet-length, thickness-thick-floe, thickness-scaled-floe), the
 # friction pairs at 0.20 and 0.45 m (friction-thickness) — seven seeds each, one after
 # the other on all cores, into runs/paper/<set>/. Resumable: finished runs are kept and
@@ -23,11 +24,12 @@ bin=${PRESSRIDGE_BIN:-./target/release/pressridge}
 mkdir -p "$root"
 echo "paper campaign: $("$bin" --version 2>/dev/null || echo pressridge), commit $(git rev-parse --short HEAD), $threads threads, $(date -u +%FT%TZ)"
 # Thickness first (it feeds the default lookup table), then the table's thick end (cheap:
-# few, heavy blocks; thickness-scaled, 56 runs in about an hour on one core), the 2 m floe
+# few, heavy blocks; thickness-scaled, 56 runs in about an hour on one core, and
+# thickness-scaled-thick, 21 runs in minutes), the 2 m floe
 # thick end, the sheet-length and floe checks of rafting, the friction set (the
 # table's friction coordinates) and its pairs at 0.20 and 0.45 m, the other sets, the long
 # slow-speed runs, and last the thin end (many small blocks: the costliest runs).
-sets=${PAPER_SETS:-thickness thickness-scaled thickness-thick sheet-length thickness-thick-floe thickness-scaled-floe friction friction-thickness modulus floe speed thickness-thin}
+sets=${PAPER_SETS:-thickness thickness-scaled thickness-scaled-thick thickness-thick sheet-length thickness-thick-floe thickness-scaled-floe friction friction-thickness modulus floe speed thickness-thin}
 for set in $sets; do
   echo "== $set ($(date -u +%T))"
   # Runs committed under data/paper/<set> (a finished or interrupted campaign's records)

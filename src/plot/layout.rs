@@ -136,6 +136,9 @@ pub struct Axis {
     pub desc: String,
     /// Tick-label format.
     pub format: TickFormat,
+    /// Logarithmic: `lo`, `hi` and the data drawn on it are log10 of the quantity, and the
+    /// ticks are the quantity's 1, 2, 5 × 10^k ([`log_ticks`]).
+    pub log: bool,
 }
 
 impl Axis {
@@ -146,16 +149,63 @@ impl Axis {
             hi,
             desc: desc.to_string(),
             format: TickFormat::of(lo, hi),
+            log: false,
+        }
+    }
+
+    /// A logarithmic axis from `lo` to `hi` (> 0, in the quantity's units) described by
+    /// `desc`: its coordinate is log10 of the quantity ([`Axis::at`]).
+    pub fn log10(lo: f64, hi: f64, desc: &str) -> Axis {
+        let (lo, hi) = (lo.log10(), hi.log10());
+        Axis {
+            lo,
+            hi,
+            desc: desc.to_string(),
+            format: TickFormat::of(lo, hi),
+            log: true,
+        }
+    }
+
+    /// The coordinate of the quantity `v` on this axis: `v`, or log10 `v` on a log axis.
+    pub fn at(&self, v: f64) -> f64 {
+        if self.log {
+            v.log10()
+        } else {
+            v
         }
     }
 
     /// The tick labels it will carry.
     pub fn labels(&self) -> Vec<String> {
+        if self.log {
+            return log_ticks(self.lo, self.hi)
+                .into_iter()
+                .map(log_label)
+                .collect();
+        }
         ticks(self.lo, self.hi)
             .into_iter()
             .map(|v| self.format.label(v))
             .collect()
     }
+}
+
+/// The ticks of a log axis from 10^`lo` to 10^`hi` (values of the quantity, not their logs):
+/// 1, 2 and 5 × 10^k within the range.
+pub fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
+    if !(lo.is_finite() && hi.is_finite()) || hi <= lo {
+        return Vec::new();
+    }
+    let eps = 1e-9 * (hi - lo);
+    (lo.floor() as i32..=hi.ceil() as i32)
+        .flat_map(|k| [1.0, 2.0, 5.0].map(|m| m * 10f64.powi(k)))
+        .filter(|v| (lo - eps..=hi + eps).contains(&v.log10()))
+        .collect()
+}
+
+/// A log-axis tick's label: the value with the decimals it needs (`0.1`, `2`, `50`).
+fn log_label(v: f64) -> String {
+    format!("{v:.*}", decimals(v))
 }
 
 /// Width and height (px) of `text` in the sans-serif font at `size` px (an estimate of
@@ -307,7 +357,8 @@ impl Layout {
         let xf = move |v: &f64| fx.label(*v);
         let yf = move |v: &f64| fy.label(*v);
         let mut mesh = chart.configure_mesh();
-        mesh.x_labels(TICKS)
+        // A log x axis gets its ticks, labels and grid lines from `draw_log_x` instead.
+        mesh.x_labels(if x.log { 0 } else { TICKS })
             .y_labels(TICKS)
             .x_label_formatter(&xf)
             .y_label_formatter(&yf)
@@ -321,8 +372,48 @@ impl Layout {
             mesh.disable_mesh();
         }
         mesh.draw().map_err(draw_err)?;
+        if x.log {
+            self.draw_log_x(root, &chart, x, y, grid)?;
+        }
         self.draw_text(root, title, &x.desc, &y.desc)?;
         Ok(chart)
+    }
+
+    /// The ticks, labels and (with `grid`) grid lines of a log x axis, in the style plotters
+    /// gives a linear one: a mark below the axis and the label two marks from it.
+    fn draw_log_x<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        chart: &Chart<'_, DB>,
+        x: &Axis,
+        y: &Axis,
+        grid: bool,
+    ) -> Result<(), PlotError>
+    where
+        DB::ErrorType: 'static,
+    {
+        let style = TextStyle::from(("sans-serif", self.fonts.tick).into_font())
+            .pos(Pos::new(HPos::Center, VPos::Top));
+        for v in log_ticks(x.lo, x.hi) {
+            let (px, bottom) = chart.backend_coord(&(v.log10(), y.lo));
+            let (_, top) = chart.backend_coord(&(v.log10(), y.hi));
+            if grid {
+                root.draw(&PathElement::new(
+                    [(px, top), (px, bottom - 1)],
+                    RGBColor(215, 215, 215),
+                ))
+                .map_err(draw_err)?;
+            }
+            let mark = self.tick_mark as i32;
+            root.draw(&PathElement::new(
+                [(px, bottom), (px, bottom + mark)],
+                BLACK.stroke_width(self.fonts.px(1.0)),
+            ))
+            .map_err(draw_err)?;
+            root.draw_text(&log_label(v), &style, (px, bottom + 2 * mark))
+                .map_err(draw_err)?;
+        }
+        Ok(())
     }
 
     /// The layout of the whole canvas `root` (its size, axes `x` and `y`, `title`) and its
@@ -426,6 +517,15 @@ mod tests {
         assert_eq!(f.label(0.0), "0.0");
         assert_eq!(f.label(-0.0), "0.0");
         assert_eq!(TickFormat { decimals: 0 }.label(-0.2), "0");
+    }
+
+    #[test]
+    fn log_axis_ticks_are_one_two_five_per_decade() {
+        let a = Axis::log10(0.08, 7.0, "h (m)");
+        assert_eq!(a.at(1.0), 0.0);
+        assert_eq!(a.labels(), ["0.1", "0.2", "0.5", "1", "2", "5"]);
+        assert_eq!(log_ticks(0.0, 2.0), [1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0]);
+        assert!(log_ticks(1.0, 0.0).is_empty());
     }
 
     #[test]

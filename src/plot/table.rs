@@ -393,11 +393,17 @@ where
 
 /// C_f (the final W/ΔPE) against sheet thickness: per set,
 /// each run's value as a dot, the ensemble mean joined by a line with ± one standard
-/// deviation over the seeds as whiskers, and CICE's default C_f = 17 dashed. PNG, or SVG by
-/// the extension.
+/// deviation over the seeds as whiskers, and CICE's default C_f = 17 dashed. The thickness
+/// axis is logarithmic when the table spans a factor of [`CF_LOG_SPAN`] or more (the default
+/// table's 0.10–6.00 m), so that the paper's range is not squeezed into its corner. PNG, or
+/// SVG by the extension.
 pub fn plot_cf(t: &RidgeTable, path: &Path) -> Result<(), PlotError> {
     write_figure(path, |tmp| to_file!(tmp, (900, 560), draw_cf(t)))
 }
+
+/// Ratio of the largest to the smallest thickness from which [`plot_cf`] draws thickness on
+/// a log axis (dimensionless).
+pub const CF_LOG_SPAN: f64 = 10.0;
 
 fn draw_cf<DB: DrawingBackend>(
     root: DrawingArea<DB, Shift>,
@@ -410,7 +416,6 @@ where
     let stat = |xs: &[f64]| crate::table::ensemble::Stat::of(xs);
     let hmin = t.thickness.first().copied().unwrap_or(0.0);
     let hmax = t.thickness.last().copied().unwrap_or(1.0);
-    let pad = 0.1 * (hmax - hmin).max(0.1);
     let cmax = finite_max(
         t.cf_finals
             .iter()
@@ -424,10 +429,15 @@ where
     );
     let title =
         "C_f = W/ΔPE at the end of the runs against sheet thickness (× dashed: pooled fits)";
-    let (x, y) = (
-        Axis::new((hmin - pad).max(0.0), hmax + pad, "sheet thickness h (m)"),
-        Axis::new(0.0, cmax * 1.15, "C_f = W/ΔPE"),
-    );
+    let desc = "sheet thickness h (m)";
+    let x = if hmin > 0.0 && hmax >= CF_LOG_SPAN * hmin {
+        let pad = 0.1 * (hmax / hmin).log10();
+        Axis::log10(hmin / 10f64.powf(pad), hmax * 10f64.powf(pad), desc)
+    } else {
+        let pad = 0.1 * (hmax - hmin).max(0.1);
+        Axis::new((hmin - pad).max(0.0), hmax + pad, desc)
+    };
+    let y = Axis::new(0.0, cmax * 1.15, "C_f = W/ΔPE");
     let (layout, mut chart) = Layout::canvas_chart(&root, &x, &y, title)?;
     let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
     let dot = layout.fonts.px(3.0);
@@ -460,17 +470,17 @@ where
         };
         chart
             .draw_series(LineSeries::new(
-                stats.iter().map(|(h, s)| (*h, s.mean)),
+                stats.iter().map(|(h, s)| (x.at(*h), s.mean)),
                 c.stroke_width(line),
             ))
             .map_err(draw_err)?
             .label(format!("{name} ± 1 s.d. {}", seeds(n)))
             .legend(move |(x, y)| PathElement::new([(x, y), (x + key, y)], c.stroke_width(line)));
         for (h, s) in &stats {
-            let (lo, hi) = (s.mean - s.std, s.mean + s.std);
+            let (h, lo, hi) = (x.at(*h), s.mean - s.std, s.mean + s.std);
             chart
                 .draw_series([
-                    PathElement::new([(*h, lo), (*h, hi)], c.stroke_width(line)),
+                    PathElement::new([(h, lo), (h, hi)], c.stroke_width(line)),
                     PathElement::new([(h - whisker, lo), (h + whisker, lo)], c.stroke_width(line)),
                     PathElement::new([(h - whisker, hi), (h + whisker, hi)], c.stroke_width(line)),
                 ])
@@ -482,8 +492,9 @@ where
                     .iter()
                     .zip(&t.cf_finals.row(si))
                     .flat_map(|(h, r)| {
+                        let h = x.at(*h);
                         r.iter().map(move |v| {
-                            Circle::new((*h + 2.0 * whisker, *v), dot, c.mix(0.6).filled())
+                            Circle::new((h + 2.0 * whisker, *v), dot, c.mix(0.6).filled())
                         })
                     }),
             )
@@ -504,7 +515,7 @@ where
                         .rposition(|&n| n > 0)
                         .map(|k| t.volume[k])?;
                     let r = f.work.eval(v_end) / f.potential_energy.eval(v_end);
-                    (v_end > 0.0 && r.is_finite()).then_some((h, r))
+                    (v_end > 0.0 && r.is_finite()).then_some((x.at(h), r))
                 })
                 .collect();
             let dash = c.stroke_width(layout.fonts.px(1.5));
