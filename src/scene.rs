@@ -140,6 +140,11 @@ pub struct NumericsSection {
     /// paper's) or "velocity" (experimental). See [`crate::dem::ContactOnset`].
     #[serde(default, skip_serializing_if = "ContactOnset::is_area")]
     pub contact_onset: ContactOnset,
+    /// Gauss–Seidel sweeps of the implicit contact dashpot over the contacts (count, 0–50):
+    /// 0 (default) solves each contact alone; experimental. See
+    /// [`crate::dem::WorldParams::contact_dashpot_sweeps`].
+    #[serde(default, skip_serializing_if = "crate::dem::world::is_zero")]
+    pub contact_dashpot_sweeps: u32,
     /// Interval between samples of the energy budget and the ridging force (s).
     /// Default 0.2 s, the paper's force sampling interval (Figure 6).
     pub sample_interval: f64,
@@ -153,6 +158,7 @@ impl Default for NumericsSection {
             contact_dashpot: Dashpot::default(),
             joint_dashpot: Dashpot::Explicit,
             contact_onset: ContactOnset::Area,
+            contact_dashpot_sweeps: 0,
             sample_interval: 0.2,
         }
     }

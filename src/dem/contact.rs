@@ -127,6 +127,13 @@ impl Contact {
     /// caps the tangential trial force `slip` (N/m) at `mu` times the normal force, and
     /// books the slip that cap dissipates ([`ContactWork::slip`]).
     fn close(&mut self, fv: f64, mu: f64, slip: f64, k_te: f64, work: &mut ContactWork) {
+        self.settle(fv, mu, slip);
+        self.book_slip(slip, k_te, work);
+    }
+
+    /// The viscous force `fv` (N/m), cut so that the normal force does not pull, and the
+    /// tangential force: the spring force `slip` (N/m) capped at `mu` times the normal force.
+    fn settle(&mut self, fv: f64, mu: f64, slip: f64) {
         self.fn_viscous = if self.fn_elastic + fv < 0.0 {
             -self.fn_elastic
         } else {
@@ -134,6 +141,11 @@ impl Contact {
         };
         let cap = mu * (self.fn_elastic + self.fn_viscous);
         self.ft = slip.clamp(-cap, cap);
+    }
+
+    /// Books the Coulomb cap's slip dissipation of the settled tangential force against the
+    /// spring force `slip` (N/m), for tangential stiffness `k_te`.
+    fn book_slip(&mut self, slip: f64, k_te: f64, work: &mut ContactWork) {
         let lost = (self.ft * (slip - self.ft)).abs() / k_te;
         self.stored_t -= lost;
         work.slip += lost;
@@ -228,6 +240,7 @@ impl ContactSet {
         water_level: Option<f64>,
         dashpot: Dashpot,
         onset: ContactOnset,
+        sweeps: u32,
         work: &mut ContactWork,
     ) {
         std::mem::swap(&mut self.cur, &mut self.prev);
@@ -316,7 +329,9 @@ impl ContactSet {
             }
             self.cur.push(c);
         }
-        if dashpot == Dashpot::Implicit {
+        if dashpot == Dashpot::Implicit && sweeps > 0 {
+            self.sweep_dashpots(bodies, dt, k_te, sweeps, work);
+        } else if dashpot == Dashpot::Implicit {
             // Pass 2: every force but the contacts' viscous and friction forces is in
             // `bodies.force`. The pair's mid-step approach speed is
             // ū = u⁻ − ½·Δt·(aₙ + κ·F_v), aₙ the relative acceleration along n of the
@@ -341,6 +356,51 @@ impl ContactSet {
                 bodies.apply(b as usize, f, c.point);
                 bodies.apply(a as usize, -f, c.point);
             }
+        }
+    }
+
+    /// The implicit dashpot by `sweeps` Gauss–Seidel sweeps over the contacts
+    /// ([`crate::dem::WorldParams::contact_dashpot_sweeps`]): in order, each contact's
+    /// viscous force is solved as in pass 2 of [`ContactSet::update`] but with the forces of
+    /// the contacts before it (this sweep) and after it (the last sweep) already in
+    /// `bodies`, and its own force is applied at once, replacing its last one. The system
+    /// (C⁻¹ + ½·Δt·K)·F = C⁻¹·rate − ½·Δt·a (C the dashpots, K the contacts' coupling
+    /// through the bodies' inverse masses) is symmetric positive definite, so the sweeps
+    /// converge to the coupled solution (for the viscous force; friction follows each
+    /// iterate). The Coulomb slip of the final forces is booked once.
+    fn sweep_dashpots(
+        &mut self,
+        bodies: &mut Bodies,
+        dt: f64,
+        k_te: f64,
+        sweeps: u32,
+        work: &mut ContactWork,
+    ) {
+        for sweep in 0..sweeps {
+            for (c, q) in self.cur.iter_mut().zip(&self.pending) {
+                let (a, b) = unpack(c.key);
+                let (a, b) = (a as usize, b as usize);
+                let n = c.normal;
+                if sweep > 0 {
+                    let f = n * c.fn_viscous + n.perp() * c.ft;
+                    bodies.apply(b, -f, c.point);
+                    bodies.apply(a, f, c.point);
+                }
+                let kappa = bodies.inverse_mass_along(a, c.point, n)
+                    + bodies.inverse_mass_along(b, c.point, n);
+                let an = (bodies.point_acceleration(b, c.point)
+                    - bodies.point_acceleration(a, c.point))
+                .dot(n);
+                let x = 0.5 * q.damping * dt * kappa;
+                let fv = (q.rate - 0.5 * q.damping * dt * an) / (1.0 + x);
+                c.settle(fv, q.mu, q.slip);
+                let f = n * c.fn_viscous + n.perp() * c.ft;
+                bodies.apply(b, f, c.point);
+                bodies.apply(a, -f, c.point);
+            }
+        }
+        for (c, q) in self.cur.iter_mut().zip(&self.pending) {
+            c.book_slip(q.slip, k_te, work);
         }
     }
 

@@ -66,6 +66,15 @@ pub struct WorldParams {
     /// [`ContactOnset::Area`] (the paper's). Absent from states and scenes when the default.
     #[serde(default, skip_serializing_if = "ContactOnset::is_area")]
     pub contact_onset: ContactOnset,
+    /// Gauss–Seidel sweeps of the implicit contact dashpot (dimensionless count, at most
+    /// [`MAX_CONTACT_DASHPOT_SWEEPS`]). Default 0: each contact's viscous force is solved
+    /// with the other contacts' viscous and friction forces left out (a Jacobi step, as
+    /// [`Dashpot::Implicit`] describes); n ≥ 1 sweeps the contacts n times in order, each
+    /// seeing the others' latest viscous and friction forces, towards the coupled solution
+    /// for a block with several contacts. Experimental (docs/speed-vs-error.md, "Fracture
+    /// and the time step"); absent from states and scenes when 0.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub contact_dashpot_sweeps: u32,
     /// Speed at which a crack crosses a joint (m/s). Default 50 m/s; see
     /// docs/model.md ("Fracture").
     pub crack_speed: f64,
@@ -90,11 +99,21 @@ impl Default for WorldParams {
             contact_dashpot: Dashpot::default(),
             joint_dashpot: Dashpot::Explicit,
             contact_onset: ContactOnset::Area,
+            contact_dashpot_sweeps: 0,
             crack_speed: 50.0,
             incubation_time: None,
             global_damping: 0.0,
         }
     }
+}
+
+/// Largest number of Gauss–Seidel sweeps of the contact dashpot a scene may ask for
+/// ([`WorldParams::contact_dashpot_sweeps`]): more is a mistake, not accuracy.
+pub const MAX_CONTACT_DASHPOT_SWEEPS: u32 = 50;
+
+/// A serde skip test for counts that are absent when zero.
+pub(crate) fn is_zero(n: &u32) -> bool {
+    *n == 0
 }
 
 /// Default safety factor on the stable time step (dimensionless): see docs/model.md ("Time
@@ -269,6 +288,13 @@ impl WorldParams {
             pos("incubation_time", t)?;
         }
         nonneg("global_damping", self.global_damping)?;
+        if self.contact_dashpot_sweeps > MAX_CONTACT_DASHPOT_SWEEPS {
+            return Err(WorldError::Param {
+                name: "contact_dashpot_sweeps",
+                value: f64::from(self.contact_dashpot_sweeps),
+                why: "must lie in 0..=50 (0: each contact solved alone, the default)",
+            });
+        }
         if let Some(dt) = self.time_step {
             pos("time_step", dt)?;
         }
@@ -631,6 +657,7 @@ impl World {
             level,
             self.params.contact_dashpot,
             self.params.contact_onset,
+            self.params.contact_dashpot_sweeps,
             &mut self.acc.contact,
         );
         if self.params.joint_dashpot == Dashpot::Implicit {

@@ -168,11 +168,7 @@ impl Axis {
 
     /// The coordinate of the quantity `v` on this axis: `v`, or log10 `v` on a log axis.
     pub fn at(&self, v: f64) -> f64 {
-        if self.log {
-            v.log10()
-        } else {
-            v
-        }
+        if self.log { v.log10() } else { v }
     }
 
     /// The tick labels it will carry.
@@ -524,7 +520,10 @@ mod tests {
         let a = Axis::log10(0.08, 7.0, "h (m)");
         assert_eq!(a.at(1.0), 0.0);
         assert_eq!(a.labels(), ["0.1", "0.2", "0.5", "1", "2", "5"]);
-        assert_eq!(log_ticks(0.0, 2.0), [1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0]);
+        assert_eq!(
+            log_ticks(0.0, 2.0),
+            [1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0]
+        );
         assert!(log_ticks(1.0, 0.0).is_empty());
     }
 

@@ -30,6 +30,7 @@ impl Scene {
             contact_dashpot: self.numerics.contact_dashpot,
             joint_dashpot: self.numerics.joint_dashpot,
             contact_onset: self.numerics.contact_onset,
+            contact_dashpot_sweeps: self.numerics.contact_dashpot_sweeps,
             ..WorldParams::default()
         }
     }
