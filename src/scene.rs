@@ -793,4 +793,29 @@ mod tests {
         assert_eq!(s.world_params().contact_onset, ContactOnset::Velocity);
         assert_eq!(Scene::from_toml(&s.to_toml()).unwrap(), s);
     }
+
+    /// The contact dashpot's sweeps are 0 (each contact alone) unless set, and then absent
+    /// from the scene's TOML; a count reaches the world, and too many are refused by name.
+    #[test]
+    fn contact_dashpot_sweeps_are_off_unless_set() {
+        let s = Scene::default();
+        assert_eq!(s.numerics.contact_dashpot_sweeps, 0);
+        assert!(!s.to_toml().contains("contact_dashpot_sweeps"));
+        let s = s
+            .with_overrides(&["numerics.contact_dashpot_sweeps=4"])
+            .unwrap();
+        assert_eq!(s.world_params().contact_dashpot_sweeps, 4);
+        assert_eq!(Scene::from_toml(&s.to_toml()).unwrap(), s);
+        for bad in [
+            "numerics.contact_dashpot_sweeps=51",
+            "numerics.contact_dashpot_sweeps=-1",
+        ] {
+            let e = Scene::default()
+                .with_overrides(&[bad])
+                .and_then(|s| s.build().map(|_| ()))
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains("contact_dashpot_sweeps"), "{bad}: {e}");
+        }
+    }
 }
