@@ -337,16 +337,7 @@ impl ContactSet {
             // ū = u⁻ − ½·Δt·(aₙ + κ·F_v), aₙ the relative acceleration along n of the
             // contact points from those forces; F_v = c·ū, solved for F_v.
             for (c, q) in self.cur.iter_mut().zip(&self.pending) {
-                let (a, b) = unpack(c.key);
-                let (a, b) = (a as usize, b as usize);
-                let n = c.normal;
-                let kappa = bodies.inverse_mass_along(a, c.point, n)
-                    + bodies.inverse_mass_along(b, c.point, n);
-                let an = (bodies.point_acceleration(b, c.point)
-                    - bodies.point_acceleration(a, c.point))
-                .dot(n);
-                let x = 0.5 * q.damping * dt * kappa;
-                let fv = (q.rate - 0.5 * q.damping * dt * an) / (1.0 + x);
+                let fv = centred_viscous(bodies, c, q, dt);
                 c.close(fv, q.mu, q.slip, k_te, work);
             }
             // Pass 3: apply them.
@@ -386,13 +377,7 @@ impl ContactSet {
                     bodies.apply(b, -f, c.point);
                     bodies.apply(a, f, c.point);
                 }
-                let kappa = bodies.inverse_mass_along(a, c.point, n)
-                    + bodies.inverse_mass_along(b, c.point, n);
-                let an = (bodies.point_acceleration(b, c.point)
-                    - bodies.point_acceleration(a, c.point))
-                .dot(n);
-                let x = 0.5 * q.damping * dt * kappa;
-                let fv = (q.rate - 0.5 * q.damping * dt * an) / (1.0 + x);
+                let fv = centred_viscous(bodies, c, q, dt);
                 c.settle(fv, q.mu, q.slip);
                 let f = n * c.fn_viscous + n.perp() * c.ft;
                 bodies.apply(b, f, c.point);
@@ -446,6 +431,20 @@ impl ContactSet {
         (en, et)
     }
 }
+/// The viscous force (N/m) of contact `c` centred at its mid-step approach speed, with
+/// every force now in `bodies` other than its own viscous and friction forces:
+/// F_v = (k_nv·(Aⁿ − Aⁿ⁻¹)/Δt − ½·c·Δt·aₙ)/(1 + ½·c·Δt·κ) ([`Dashpot::Implicit`]).
+#[inline]
+fn centred_viscous(bodies: &Bodies, c: &Contact, q: &Pending, dt: f64) -> f64 {
+    let (a, b) = unpack(c.key);
+    let (a, b) = (a as usize, b as usize);
+    let n = c.normal;
+    let kappa = bodies.inverse_mass_along(a, c.point, n) + bodies.inverse_mass_along(b, c.point, n);
+    let an = (bodies.point_acceleration(b, c.point) - bodies.point_acceleration(a, c.point)).dot(n);
+    let x = 0.5 * q.damping * dt * kappa;
+    (q.rate - 0.5 * q.damping * dt * an) / (1.0 + x)
+}
+
 /// The length L of a contact surface (m) for the dashpot c = k_nv·L: the chord, or, where
 /// the chord is undefined (one block inside the other), the smaller block's diameter.
 fn contact_length(ov: &Overlap, bodies: &Bodies, a: usize, b: usize) -> f64 {
