@@ -7,7 +7,9 @@
 //! degrees of freedom), and per block the Gershgorin-type bound sqrt(Σ (ω·Δt)²) over the
 //! block's contacts, an upper estimate of ω·Δt of the modes it takes part in; the leapfrog is
 //! stable below 2 and overstates the amplitude of a mode's answer to a kick by
-//! 1/sqrt(1 − (ω·Δt/2)²). Prints the distribution of both.
+//! 1/sqrt(1 − (ω·Δt/2)²). Prints the distribution of both, and the same for the contacts'
+//! tangential springs of eq (4), ω_t·Δt = Δt·sqrt(k_te·(κ_a + κ_b)) with κ along the
+//! tangent: k_te does not scale with the chord, and the stable step does not count it.
 //!
 //! ```sh
 //! cargo run --release --example contact_modes -- STATE.json [DT_S]
@@ -26,6 +28,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let dt: f64 = args.get(1).map_or(Ok(w.dt()), |s| s.parse())?;
     let b = w.bodies();
     let k_ne = w.params().contact.normal_stiffness;
+    let k_te = w.params().contact.tangential_stiffness();
     let kappa = |i: usize, p: V2, n: V2| {
         let d = b.drive[i];
         let mut k = 0.0;
@@ -44,6 +47,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let outline = |i: usize| snap.bodies[i].world_outline();
     let mut per_body = vec![0.0f64; b.len()];
     let mut per_contact = vec![];
+    let mut per_body_t = vec![0.0f64; b.len()];
+    let mut per_contact_t = vec![];
     for c in w.contacts() {
         let (ia, ib) = ((c.key >> 32) as usize, (c.key & 0xffff_ffff) as usize);
         let Some(ov) = overlap(&outline(ia), &outline(ib), b.pos[ia], b.pos[ib]) else {
@@ -57,12 +62,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         per_contact.push(z2.sqrt());
         per_body[ia] += z2;
         per_body[ib] += z2;
+        let t = ov.normal.perp();
+        let z2 = dt * dt * k_te * (kappa(ia, ov.centroid, t) + kappa(ib, ov.centroid, t));
+        per_contact_t.push(z2.sqrt());
+        per_body_t[ia] += z2;
+        per_body_t[ib] += z2;
     }
-    let mut bodies: Vec<f64> = per_body
-        .iter()
-        .filter(|&&x| x > 0.0)
-        .map(|x| x.sqrt())
-        .collect();
+    let root =
+        |v: &[f64]| -> Vec<f64> { v.iter().filter(|&&x| x > 0.0).map(|x| x.sqrt()).collect() };
+    let (mut bodies, mut bodies_t) = (root(&per_body), root(&per_body_t));
     let show = |name: &str, v: &mut Vec<f64>| {
         v.sort_by(f64::total_cmp);
         let q = |f: f64| v[((v.len() - 1) as f64 * f).round() as usize];
@@ -78,8 +86,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             over(2.0)
         );
     };
-    println!("Δt = {dt:.3e} s, k_ne = {k_ne:e} N/m³");
+    println!("Δt = {dt:.3e} s, k_ne = {k_ne:e} N/m³, k_te = {k_te:e} N/m²");
     show("contacts, ω·Δt", &mut per_contact);
     show("blocks in contact, sqrt(Σ (ω·Δt)²)", &mut bodies);
+    show("contacts' tangential springs, ω_t·Δt", &mut per_contact_t);
+    show("blocks in contact, sqrt(Σ (ω_t·Δt)²)", &mut bodies_t);
     Ok(())
 }

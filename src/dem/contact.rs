@@ -84,7 +84,7 @@ impl ContactParams {
     /// eq (4). The paper gives k_te as "60% of the normal value"; the normal value is read
     /// as the normal stiffness of a contact along a face of the parent sheet's thickness,
     /// k_ne·h — the same product the paper uses in its critical damping 2·sqrt(k_ne·h·ρ_i).
-    pub(crate) fn tangential_stiffness(&self) -> f64 {
+    pub fn tangential_stiffness(&self) -> f64 {
         self.tangential_fraction * self.normal_stiffness * self.thickness()
     }
 }
