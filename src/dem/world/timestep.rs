@@ -46,7 +46,11 @@ impl World {
     /// L ≤ min(dₐ, d_b) (d a body's diameter), ω² ≤ 2·k_ne·max(d·κ) and the damping ratio
     /// ζ ≤ ½·k_nv·sqrt(2·max(d·κ)/k_ne). With the explicit dashpot the step is stable for
     /// Δt < (2/ω)·(sqrt(1 + ζ²) − ζ); with the implicit one ([`Dashpot::Implicit`]) for
-    /// Δt < √2/ω whatever ζ.
+    /// Δt < √2/ω whatever ζ. The contact's tangential spring k_te of eq (4), which does not
+    /// scale with L, has ω_t² ≤ 2·k_te·max κ; ω² is the larger of the two bounds. (With the
+    /// paper's k_te = 0.6·k_ne·h and blocks at least h across, the normal one; a scene with a
+    /// stiffer tangential spring gets the tangential one. The √2 of the implicit limit
+    /// covers both springs of a contact acting at once: ω_n² + ω_t² ≤ 2·max.)
     ///
     /// Joints. Each joint's mass-scaled stiffness and damping have largest eigenvalues λ
     /// (1/s²) and μ (1/s) (`Joint::modal_bounds`); ω² of the joined blocks is at most the
@@ -70,14 +74,16 @@ impl World {
         // give a safe limit.
         let limit = |w2: f64, d: f64| 2.0 / ((w2 + 0.25 * d * d).sqrt() + 0.5 * d);
         let mut dt = f64::INFINITY;
-        let mut dc: f64 = 0.0;
+        let (mut dc, mut kc): (f64, f64) = (0.0, 0.0);
         for i in 0..b.len() {
             dc = dc.max(b.shape[i].diameter() * inv(i));
+            kc = kc.max(inv(i));
         }
-        // One contact: ω_c² and its damping rate in the explicit form (the implicit form is
-        // stable at any damping).
+        // One contact: ω_c² of its stiffer spring, normal or tangential, and its damping rate
+        // in the explicit form (the implicit form is stable at any damping).
         let k_ne = self.params.contact.normal_stiffness;
-        let contact_w2 = 2.0 * k_ne * dc;
+        let k_te = self.params.contact.tangential_stiffness();
+        let contact_w2 = 2.0 * (k_ne * dc).max(k_te * kc);
         let contact_d = match self.params.contact_dashpot {
             Dashpot::Implicit => 0.0,
             Dashpot::Explicit => 2.0 * self.k_nv * dc,
