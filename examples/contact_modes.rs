@@ -9,7 +9,7 @@
 //! stable below 2 and overstates the amplitude of a mode's answer to a kick by
 //! 1/sqrt(1 − (ω·Δt/2)²). Prints the distribution of both, and the same for the contacts'
 //! tangential springs of eq (4), ω_t·Δt = Δt·sqrt(k_te·(κ_a + κ_b)) with κ along the
-//! tangent: k_te does not scale with the chord, and the stable step does not count it.
+//! tangent (k_te does not scale with the chord), and the distribution of the chords.
 //!
 //! ```sh
 //! cargo run --release --example contact_modes -- STATE.json [DT_S]
@@ -49,6 +49,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut per_contact = vec![];
     let mut per_body_t = vec![0.0f64; b.len()];
     let mut per_contact_t = vec![];
+    let mut chords = vec![];
     for c in w.contacts() {
         let (ia, ib) = ((c.key >> 32) as usize, (c.key & 0xffff_ffff) as usize);
         let Some(ov) = overlap(&outline(ia), &outline(ib), b.pos[ia], b.pos[ib]) else {
@@ -60,6 +61,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             * ov.chord
             * (kappa(ia, ov.centroid, ov.normal) + kappa(ib, ov.centroid, ov.normal));
         per_contact.push(z2.sqrt());
+        chords.push(ov.chord);
         per_body[ia] += z2;
         per_body[ib] += z2;
         let t = ov.normal.perp();
@@ -90,6 +92,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     show("contacts, ω·Δt", &mut per_contact);
     show("blocks in contact, sqrt(Σ (ω·Δt)²)", &mut bodies);
     show("contacts' tangential springs, ω_t·Δt", &mut per_contact_t);
+    show("contacts' chords L (m)", &mut chords);
     show("blocks in contact, sqrt(Σ (ω_t·Δt)²)", &mut bodies_t);
     Ok(())
 }
