@@ -794,6 +794,32 @@ mod tests {
         assert_eq!(Scene::from_toml(&s.to_toml()).unwrap(), s);
     }
 
+    /// The tangential stiffness is a fraction of k_ne·h unless set, and then absent from the
+    /// scene's TOML; "chord" reaches the world, and an unknown reading is refused by name.
+    #[test]
+    fn tangential_reference_is_the_thickness_unless_set() {
+        use crate::dem::TangentialReference;
+        let s = Scene::default();
+        assert_eq!(
+            s.contact.tangential_reference,
+            TangentialReference::Thickness
+        );
+        assert!(!s.to_toml().contains("tangential_reference"));
+        let s = s
+            .with_overrides(&["contact.tangential_reference=chord"])
+            .unwrap();
+        assert_eq!(
+            s.world_params().contact.tangential_reference,
+            TangentialReference::Chord
+        );
+        assert_eq!(Scene::from_toml(&s.to_toml()).unwrap(), s);
+        let e = Scene::default()
+            .with_overrides(&["contact.tangential_reference=area"])
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("tangential_reference"), "{e}");
+    }
+
     /// The contact dashpot's sweeps are 0 (each contact alone) unless set, and then absent
     /// from the scene's TOML; a count reaches the world, and too many are refused by name.
     #[test]

@@ -1,6 +1,8 @@
 //! Verification of the contact law, eqs (2)–(4), against rigid-body mechanics.
 
-use pressridge::dem::{ContactOnset, ContactParams, Dashpot, Drive, Shape, V2, World, WorldParams};
+use pressridge::dem::{
+    ContactOnset, ContactParams, Dashpot, Drive, Shape, TangentialReference, V2, World, WorldParams,
+};
 
 fn dry(mu: f64, gravity: f64) -> World {
     World::new(WorldParams {
@@ -355,4 +357,67 @@ fn contact_dashpot_sweeps_reach_the_coupled_solution() {
         "Jacobi {jacobi}, 1 and 3 sweeps {residuals:?}"
     );
     assert!(residuals[2] < 1e-6, "30 sweeps: residual {}", residuals[2]);
+}
+
+/// Static creep of a 0.5 m × 0.3 m block on a fixed plank under a horizontal load below the
+/// friction limit, applied once the block has settled, relaxed by numerical damping: the tangential spring of eq (4) holds the
+/// load at a slip x = F/k_te. With the default reading k_te = 0.6·k_ne·h (h = 0.30 m, the
+/// reference thickness of a world without a sheet); with `TangentialReference::Chord`,
+/// k_te = 0.6·k_ne·L per contact, L the chord (the block's 0.5 m face).
+fn creep_under_load(reference: TangentialReference) -> (f64, f64) {
+    let mut w = World::new(WorldParams {
+        gravity: 9.81,
+        water: None,
+        global_damping: 40.0,
+        contact: ContactParams {
+            mu: 1.0,
+            mu_water: 1.0,
+            tangential_reference: reference,
+            ..ContactParams::default()
+        },
+        ..WorldParams::default()
+    })
+    .unwrap();
+    w.add_block(
+        Shape::rectangle(20.0, 1.0).unwrap(),
+        V2::default(),
+        0.0,
+        Drive::FIXED,
+    );
+    let b = w.add_block(
+        Shape::rectangle(0.5, 0.3).unwrap(),
+        V2::new(0.0, 0.5 + 0.15 - 1e-4),
+        0.0,
+        Drive::FREE,
+    );
+    // Settle under gravity first, so that the contact holds the full weight.
+    run_to(&mut w, 1.0);
+    // The slip is that of the bottom face's centre, 0.15 m below the centroid: the load
+    // at the centroid also tilts the block (by ~6e-5 rad against the normal springs).
+    let bottom = |w: &World| w.bodies().pos[b as usize].x + 0.15 * w.bodies().theta[b as usize];
+    let x0 = bottom(&w);
+    let weight = w.bodies().mass[b as usize] * 9.81;
+    let load = 0.3 * weight;
+    w.set_load(b, V2::new(load, 0.0));
+    run_to(&mut w, 3.0);
+    (bottom(&w) - x0, load)
+}
+
+#[test]
+fn the_tangential_spring_holds_a_static_load_at_f_over_k_te() {
+    let p = ContactParams::default();
+    // Within 3 %: the default reading agrees to 3e-5, the chord reading comes out 1.5 % softer
+    // (not traced further; the tilt correction of the slip is first order). The two readings
+    // differ by 0.5/0.30: 67 %.
+    for (reference, length) in [
+        (TangentialReference::Thickness, 0.30),
+        (TangentialReference::Chord, 0.5),
+    ] {
+        let (x, f) = creep_under_load(reference);
+        let expected = f / (p.tangential_fraction * p.normal_stiffness * length);
+        assert!(
+            (x - expected).abs() < 0.03 * expected,
+            "{reference:?}: slip {x} m, F/k_te {expected} m"
+        );
+    }
 }

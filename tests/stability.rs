@@ -84,6 +84,19 @@ fn a_stiff_tangential_spring_lowers_the_stable_limit() {
     let (a, b) = (limit(32.0), limit(128.0));
     assert!((a / b - 2.0).abs() < 1e-12, "{a} s and {b} s");
     assert!(a < 0.5 * limit(0.6), "{a} s");
+    // Read per contact (k_te = f·k_ne·L, L ≤ the block's diameter), likewise where f > 1.
+    let chord = |f: f64| {
+        scene(&[
+            "contact.tangential_reference=chord",
+            &format!("contact.tangential_fraction={f}"),
+        ])
+        .build()
+        .unwrap()
+        .stable_time_step()
+    };
+    assert_eq!(chord(0.6), limit(0.6));
+    let (a, b) = (chord(16.0), chord(64.0));
+    assert!((a / b - 2.0).abs() < 1e-12, "{a} s and {b} s");
     let out = simulation::run(
         &scene(&[
             "duration=10",

@@ -47,6 +47,33 @@ pub struct ContactParams {
     /// Friction coefficient μ_w for contacts whose overlap centroid is below the water line
     /// (dimensionless). Default 0.6.
     pub mu_water: f64,
+    /// Which normal stiffness the tangential one is a fraction of ([`TangentialReference`]).
+    /// Default `thickness` (k_ne·h); `chord` is experimental. Absent from scenes and states
+    /// when the default.
+    #[serde(skip_serializing_if = "TangentialReference::is_thickness")]
+    pub tangential_reference: TangentialReference,
+}
+
+/// The "normal value" of which eq (4)'s tangential stiffness k_te is a fraction (the paper:
+/// "60% of the normal value"; which normal stiffness it means, the paper leaves open).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum TangentialReference {
+    /// k_ne·h, a contact along a face of the parent sheet's thickness h: one k_te for every
+    /// contact (the default, as the paper's critical damping 2·sqrt(k_ne·h·ρ_i) uses h).
+    #[default]
+    Thickness,
+    /// k_ne·L, each contact's own normal stiffness per unit overlap depth (L its chord, as
+    /// in the dashpot c = k_nv·L): k_te scales with the contact's size. Experimental
+    /// (docs/speed-vs-error.md, "Fracture and the time step").
+    Chord,
+}
+
+impl TangentialReference {
+    /// True for [`TangentialReference::Thickness`] (a serde skip test).
+    pub fn is_thickness(&self) -> bool {
+        *self == TangentialReference::Thickness
+    }
 }
 
 impl Default for ContactParams {
@@ -58,6 +85,7 @@ impl Default for ContactParams {
             reference_thickness: None,
             mu: 1.0,
             mu_water: 0.6,
+            tangential_reference: TangentialReference::Thickness,
         }
     }
 }
@@ -86,6 +114,15 @@ impl ContactParams {
     /// k_ne·h — the same product the paper uses in its critical damping 2·sqrt(k_ne·h·ρ_i).
     pub fn tangential_stiffness(&self) -> f64 {
         self.tangential_fraction * self.normal_stiffness * self.thickness()
+    }
+    /// Tangential stiffness k_te (N/m²) of a contact along a chord `chord` (m): the
+    /// [`ContactParams::tangential_stiffness`] `k_te` for every contact, or
+    /// `tangential_fraction`·k_ne·L with [`TangentialReference::Chord`].
+    pub(crate) fn tangential_stiffness_along(&self, k_te: f64, chord: f64) -> f64 {
+        match self.tangential_reference {
+            TangentialReference::Thickness => k_te,
+            TangentialReference::Chord => self.tangential_fraction * self.normal_stiffness * chord,
+        }
     }
 }
 
@@ -193,6 +230,8 @@ struct Pending {
     mu: f64,
     /// Tangential spring force before the Coulomb cap (N/m).
     slip: f64,
+    /// The contact's tangential stiffness k_te (N/m²).
+    k_te: f64,
 }
 
 impl ContactSet {
@@ -293,6 +332,11 @@ impl ContactSet {
                 Some(l) if ov.centroid.y < l => p.mu_water,
                 _ => p.mu,
             };
+            let k_te = if p.tangential_reference.is_thickness() {
+                k_te
+            } else {
+                p.tangential_stiffness_along(k_te, contact_length(&ov, bodies, a, b))
+            };
             let slip = ft0 - k_te * dt * vrel.dot(t);
             let mut c = Contact {
                 key: pair_key(a as u32, b as u32),
@@ -324,13 +368,14 @@ impl ContactSet {
                         damping: k_nv * chord,
                         mu,
                         slip,
+                        k_te,
                     });
                 }
             }
             self.cur.push(c);
         }
         if dashpot == Dashpot::Implicit && sweeps > 0 {
-            self.sweep_dashpots(bodies, dt, k_te, sweeps, work);
+            self.sweep_dashpots(bodies, dt, sweeps, work);
         } else if dashpot == Dashpot::Implicit {
             // Pass 2: every force but the contacts' viscous and friction forces is in
             // `bodies.force`. The pair's mid-step approach speed is
@@ -338,7 +383,7 @@ impl ContactSet {
             // contact points from those forces; F_v = c·ū, solved for F_v.
             for (c, q) in self.cur.iter_mut().zip(&self.pending) {
                 let fv = centred_viscous(bodies, c, q, dt);
-                c.close(fv, q.mu, q.slip, k_te, work);
+                c.close(fv, q.mu, q.slip, q.k_te, work);
             }
             // Pass 3: apply them.
             for c in &self.cur {
@@ -363,7 +408,6 @@ impl ContactSet {
         &mut self,
         bodies: &mut Bodies,
         dt: f64,
-        k_te: f64,
         sweeps: u32,
         work: &mut ContactWork,
     ) {
@@ -385,7 +429,7 @@ impl ContactSet {
             }
         }
         for (c, q) in self.cur.iter_mut().zip(&self.pending) {
-            c.book_slip(q.slip, k_te, work);
+            c.book_slip(q.slip, q.k_te, work);
         }
     }
 

@@ -82,8 +82,13 @@ impl World {
         // One contact: ω_c² of its stiffer spring, normal or tangential, and its damping rate
         // in the explicit form (the implicit form is stable at any damping).
         let k_ne = self.params.contact.normal_stiffness;
-        let k_te = self.params.contact.tangential_stiffness();
-        let contact_w2 = 2.0 * (k_ne * dc).max(k_te * kc);
+        let c = &self.params.contact;
+        let tangential = match c.tangential_reference {
+            TangentialReference::Thickness => c.tangential_stiffness() * kc,
+            // k_te = f·k_ne·L with L ≤ d, like the normal spring's.
+            TangentialReference::Chord => c.tangential_fraction * k_ne * dc,
+        };
+        let contact_w2 = 2.0 * (k_ne * dc).max(tangential);
         let contact_d = match self.params.contact_dashpot {
             Dashpot::Implicit => 0.0,
             Dashpot::Explicit => 2.0 * self.k_nv * dc,
