@@ -34,8 +34,9 @@ pub struct ContactParams {
     /// Default 0.5 ("50% of the critical damping value").
     pub damping_fraction: f64,
     /// Tangential stiffness k_te as a fraction of the normal stiffness k_ne·h (k_te =
-    /// `tangential_fraction`·k_ne·h, eq 4, with h the reference thickness). Default 0.6
-    /// ("60% of the normal value").
+    /// `tangential_fraction`·k_ne·h, eq 4, with h the reference thickness; k_ne·L per
+    /// contact with [`TangentialReference::Chord`]). Default 0.6 ("60% of the normal
+    /// value").
     pub tangential_fraction: f64,
     /// Thickness h of the parent sheet (m) in k_nv = f·2·sqrt(k_ne·h·ρ_i) and in the normal
     /// stiffness k_ne·h. Unset (the default), scenes take their sheet's thickness, or
@@ -115,14 +116,10 @@ impl ContactParams {
     pub fn tangential_stiffness(&self) -> f64 {
         self.tangential_fraction * self.normal_stiffness * self.thickness()
     }
-    /// Tangential stiffness k_te (N/m²) of a contact along a chord `chord` (m): the
-    /// [`ContactParams::tangential_stiffness`] `k_te` for every contact, or
-    /// `tangential_fraction`·k_ne·L with [`TangentialReference::Chord`].
-    pub(crate) fn tangential_stiffness_along(&self, k_te: f64, chord: f64) -> f64 {
-        match self.tangential_reference {
-            TangentialReference::Thickness => k_te,
-            TangentialReference::Chord => self.tangential_fraction * self.normal_stiffness * chord,
-        }
+    /// With [`TangentialReference::Chord`], a contact's k_te per metre of its chord L
+    /// (N/m³): k_te = `tangential_fraction`·k_ne·L.
+    pub(crate) fn tangential_stiffness_per_chord(&self) -> f64 {
+        self.tangential_fraction * self.normal_stiffness
     }
 }
 
@@ -335,7 +332,7 @@ impl ContactSet {
             let k_te = if p.tangential_reference.is_thickness() {
                 k_te
             } else {
-                p.tangential_stiffness_along(k_te, contact_length(&ov, bodies, a, b))
+                p.tangential_stiffness_per_chord() * contact_length(&ov, bodies, a, b)
             };
             let slip = ft0 - k_te * dt * vrel.dot(t);
             let mut c = Contact {

@@ -86,7 +86,7 @@ impl World {
         let tangential = match c.tangential_reference {
             TangentialReference::Thickness => c.tangential_stiffness() * kc,
             // k_te = f·k_ne·L with L ≤ d, like the normal spring's.
-            TangentialReference::Chord => c.tangential_fraction * k_ne * dc,
+            TangentialReference::Chord => c.tangential_stiffness_per_chord() * dc,
         };
         let contact_w2 = 2.0 * (k_ne * dc).max(tangential);
         let contact_d = match self.params.contact_dashpot {
