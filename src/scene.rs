@@ -761,37 +761,43 @@ mod tests {
         assert_eq!(Scene::from_toml(&s.to_toml()).unwrap(), s);
     }
 
+    /// An experimental scene option: absent from the default scene's TOML (`key` not in it);
+    /// `key=value` set gives a scene that round-trips through TOML (returned), and each of
+    /// `bad` values is refused, at parsing or at building, with a message naming `key`.
+    fn option_absent_unless_set(key: &str, value: &str, bad: &[&str]) -> Scene {
+        let name = key.rsplit('.').next().unwrap();
+        assert!(!Scene::default().to_toml().contains(name));
+        let s = Scene::default()
+            .with_overrides(&[format!("{key}={value}")])
+            .unwrap();
+        assert_eq!(Scene::from_toml(&s.to_toml()).unwrap(), s);
+        for b in bad {
+            let e = Scene::default()
+                .with_overrides(&[format!("{key}={b}")])
+                .and_then(|s| s.build().map(|_| ()))
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains(name), "{key}={b}: {e}");
+        }
+        s
+    }
+
     /// The joint dashpot is explicit unless set and then absent from the scene's TOML;
     /// "implicit" reaches the world; a misspelt value is refused naming the key.
     #[test]
     fn joint_dashpot_is_explicit_unless_set_and_not_written_then() {
-        let s = Scene::default();
-        assert_eq!(s.numerics.joint_dashpot, Dashpot::Explicit);
-        assert!(!s.to_toml().contains("joint_dashpot"));
-        let s = s
-            .with_overrides(&["numerics.joint_dashpot=implicit"])
-            .unwrap();
+        assert_eq!(Scene::default().numerics.joint_dashpot, Dashpot::Explicit);
+        let s = option_absent_unless_set("numerics.joint_dashpot", "implicit", &["centered"]);
         assert_eq!(s.world_params().joint_dashpot, Dashpot::Implicit);
-        assert_eq!(Scene::from_toml(&s.to_toml()).unwrap(), s);
-        let e = Scene::default()
-            .with_overrides(&["numerics.joint_dashpot=centered"])
-            .unwrap_err()
-            .to_string();
-        assert!(e.contains("joint_dashpot"), "{e}");
     }
 
     /// The contact onset is eq (3)'s own unless set, and then absent from the scene's TOML;
     /// "velocity" reaches the world.
     #[test]
     fn contact_onset_is_the_area_rate_unless_set_and_not_written_then() {
-        let s = Scene::default();
-        assert_eq!(s.numerics.contact_onset, ContactOnset::Area);
-        assert!(!s.to_toml().contains("contact_onset"));
-        let s = s
-            .with_overrides(&["numerics.contact_onset=velocity"])
-            .unwrap();
+        assert_eq!(Scene::default().numerics.contact_onset, ContactOnset::Area);
+        let s = option_absent_unless_set("numerics.contact_onset", "velocity", &["speed"]);
         assert_eq!(s.world_params().contact_onset, ContactOnset::Velocity);
-        assert_eq!(Scene::from_toml(&s.to_toml()).unwrap(), s);
     }
 
     /// The tangential stiffness is a fraction of k_ne·h unless set, and then absent from the
@@ -799,49 +805,19 @@ mod tests {
     #[test]
     fn tangential_reference_is_the_thickness_unless_set() {
         use crate::dem::TangentialReference;
-        let s = Scene::default();
-        assert_eq!(
-            s.contact.tangential_reference,
-            TangentialReference::Thickness
-        );
-        assert!(!s.to_toml().contains("tangential_reference"));
-        let s = s
-            .with_overrides(&["contact.tangential_reference=chord"])
-            .unwrap();
-        assert_eq!(
-            s.world_params().contact.tangential_reference,
-            TangentialReference::Chord
-        );
-        assert_eq!(Scene::from_toml(&s.to_toml()).unwrap(), s);
-        let e = Scene::default()
-            .with_overrides(&["contact.tangential_reference=area"])
-            .unwrap_err()
-            .to_string();
-        assert!(e.contains("tangential_reference"), "{e}");
+        let d = Scene::default().contact.tangential_reference;
+        assert_eq!(d, TangentialReference::Thickness);
+        let s = option_absent_unless_set("contact.tangential_reference", "chord", &["area"]);
+        let r = s.world_params().contact.tangential_reference;
+        assert_eq!(r, TangentialReference::Chord);
     }
 
     /// The contact dashpot's sweeps are 0 (each contact alone) unless set, and then absent
     /// from the scene's TOML; a count reaches the world, and too many are refused by name.
     #[test]
     fn contact_dashpot_sweeps_are_off_unless_set() {
-        let s = Scene::default();
-        assert_eq!(s.numerics.contact_dashpot_sweeps, 0);
-        assert!(!s.to_toml().contains("contact_dashpot_sweeps"));
-        let s = s
-            .with_overrides(&["numerics.contact_dashpot_sweeps=4"])
-            .unwrap();
+        assert_eq!(Scene::default().numerics.contact_dashpot_sweeps, 0);
+        let s = option_absent_unless_set("numerics.contact_dashpot_sweeps", "4", &["51", "-1"]);
         assert_eq!(s.world_params().contact_dashpot_sweeps, 4);
-        assert_eq!(Scene::from_toml(&s.to_toml()).unwrap(), s);
-        for bad in [
-            "numerics.contact_dashpot_sweeps=51",
-            "numerics.contact_dashpot_sweeps=-1",
-        ] {
-            let e = Scene::default()
-                .with_overrides(&[bad])
-                .and_then(|s| s.build().map(|_| ()))
-                .unwrap_err()
-                .to_string();
-            assert!(e.contains("contact_dashpot_sweeps"), "{bad}: {e}");
-        }
     }
 }

@@ -74,29 +74,25 @@ fn a_time_step_above_the_stable_limit_is_refused_with_the_limit() {
 /// of work. At its own limit friction stays below the work and every sign holds.
 #[test]
 fn a_stiff_tangential_spring_lowers_the_stable_limit() {
-    let limit = |f: f64| {
-        scene(&[&format!("contact.tangential_fraction={f}")])
-            .build()
-            .unwrap()
-            .stable_time_step()
-    };
-    assert_eq!(limit(0.6), limit(1.0));
-    let (a, b) = (limit(32.0), limit(128.0));
-    assert!((a / b - 2.0).abs() < 1e-12, "{a} s and {b} s");
-    assert!(a < 0.5 * limit(0.6), "{a} s");
-    // Read per contact (k_te = f·k_ne·L, L ≤ the block's diameter), likewise where f > 1.
-    let chord = |f: f64| {
+    // The limit with k_te = f·k_ne·h, or read per contact (k_te = f·k_ne·L, L ≤ the
+    // block's diameter) with `chord`.
+    let limit = |f: f64, chord: bool| {
+        let reading = if chord { "chord" } else { "thickness" };
         scene(&[
-            "contact.tangential_reference=chord",
             &format!("contact.tangential_fraction={f}"),
+            &format!("contact.tangential_reference={reading}"),
         ])
         .build()
         .unwrap()
         .stable_time_step()
     };
-    assert_eq!(chord(0.6), limit(0.6));
-    let (a, b) = (chord(16.0), chord(64.0));
-    assert!((a / b - 2.0).abs() < 1e-12, "{a} s and {b} s");
+    assert_eq!(limit(0.6, false), limit(1.0, false));
+    assert_eq!(limit(0.6, true), limit(0.6, false));
+    for (chord, f) in [(false, 32.0), (true, 16.0)] {
+        let (a, b) = (limit(f, chord), limit(4.0 * f, chord));
+        assert!((a / b - 2.0).abs() < 1e-12, "{a} s and {b} s");
+        assert!(a < 0.5 * limit(0.6, false), "{a} s");
+    }
     let out = simulation::run(
         &scene(&[
             "duration=10",
