@@ -177,6 +177,12 @@ impl Contact {
         self.ft = slip.clamp(-cap, cap);
     }
 
+    /// The viscous and friction force of the step on `b` (N/m), along n and t.
+    #[inline]
+    fn viscous_and_friction(&self) -> V2 {
+        self.normal * self.fn_viscous + self.normal.perp() * self.ft
+    }
+
     /// Books the Coulomb cap's slip dissipation of the settled tangential force against the
     /// spring force `slip` (N/m), for tangential stiffness `k_te`.
     fn book_slip(&mut self, slip: f64, k_te: f64, work: &mut ContactWork) {
@@ -351,15 +357,13 @@ impl ContactSet {
                 Dashpot::Explicit => {
                     c.close(rate, mu, slip, k_te, work);
                     let f = n * (fe + c.fn_viscous) + t * c.ft;
-                    bodies.apply(b, f, ov.centroid);
-                    bodies.apply(a, -f, ov.centroid);
+                    apply_pair(bodies, key, f, ov.centroid);
                 }
                 Dashpot::Implicit => {
                     // The dashpot c = k_nv·L; its viscous and friction forces wait for
                     // every other force of the step (pass 2 below).
                     let chord = contact_length(&ov, bodies, a, b);
-                    bodies.apply(b, n * fe, ov.centroid);
-                    bodies.apply(a, -(n * fe), ov.centroid);
+                    apply_pair(bodies, key, n * fe, ov.centroid);
                     self.pending.push(Pending {
                         rate,
                         damping: k_nv * chord,
@@ -384,10 +388,7 @@ impl ContactSet {
             }
             // Pass 3: apply them.
             for c in &self.cur {
-                let (a, b) = unpack(c.key);
-                let f = c.normal * c.fn_viscous + c.normal.perp() * c.ft;
-                bodies.apply(b as usize, f, c.point);
-                bodies.apply(a as usize, -f, c.point);
+                apply_pair(bodies, c.key, c.viscous_and_friction(), c.point);
             }
         }
     }
@@ -410,19 +411,12 @@ impl ContactSet {
     ) {
         for sweep in 0..sweeps {
             for (c, q) in self.cur.iter_mut().zip(&self.pending) {
-                let (a, b) = unpack(c.key);
-                let (a, b) = (a as usize, b as usize);
-                let n = c.normal;
                 if sweep > 0 {
-                    let f = n * c.fn_viscous + n.perp() * c.ft;
-                    bodies.apply(b, -f, c.point);
-                    bodies.apply(a, f, c.point);
+                    apply_pair(bodies, c.key, -c.viscous_and_friction(), c.point);
                 }
                 let fv = centred_viscous(bodies, c, q, dt);
                 c.settle(fv, q.mu, q.slip);
-                let f = n * c.fn_viscous + n.perp() * c.ft;
-                bodies.apply(b, f, c.point);
-                bodies.apply(a, -f, c.point);
+                apply_pair(bodies, c.key, c.viscous_and_friction(), c.point);
             }
         }
         for (c, q) in self.cur.iter_mut().zip(&self.pending) {
@@ -472,6 +466,14 @@ impl ContactSet {
         (en, et)
     }
 }
+/// Adds the force `f` (N/m) on the pair `key`'s body b and −`f` on its body a, at `at` (m).
+#[inline]
+fn apply_pair(bodies: &mut Bodies, key: u64, f: V2, at: V2) {
+    let (a, b) = unpack(key);
+    bodies.apply(b as usize, f, at);
+    bodies.apply(a as usize, -f, at);
+}
+
 /// The viscous force (N/m) of contact `c` centred at its mid-step approach speed, with
 /// every force now in `bodies` other than its own viscous and friction forces:
 /// F_v = (k_nv·(Aⁿ − Aⁿ⁻¹)/Δt − ½·c·Δt·aₙ)/(1 + ½·c·Δt·κ) ([`Dashpot::Implicit`]).

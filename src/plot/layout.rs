@@ -24,6 +24,8 @@ pub type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, Ranged
 pub const REFERENCE_WIDTH: f64 = 900.0;
 /// Smallest tick-label font (px): below it text stops being legible on screen.
 pub const MIN_TICK_PX: f64 = 9.0;
+/// Colour of the grid lines at the ticks.
+const GRID: RGBColor = RGBColor(215, 215, 215);
 /// Number of ticks asked of an axis (plotters takes it as an upper bound).
 pub const TICKS: usize = 8;
 
@@ -363,7 +365,7 @@ impl Layout {
             .label_style(("sans-serif", self.fonts.tick));
         if grid {
             mesh.light_line_style(RGBColor(240, 240, 240))
-                .bold_line_style(RGBColor(215, 215, 215));
+                .bold_line_style(GRID);
         } else {
             mesh.disable_mesh();
         }
@@ -394,11 +396,8 @@ impl Layout {
             let (px, bottom) = chart.backend_coord(&(v.log10(), y.lo));
             let (_, top) = chart.backend_coord(&(v.log10(), y.hi));
             if grid {
-                root.draw(&PathElement::new(
-                    [(px, top), (px, bottom - 1)],
-                    RGBColor(215, 215, 215),
-                ))
-                .map_err(draw_err)?;
+                root.draw(&PathElement::new([(px, top), (px, bottom - 1)], GRID))
+                    .map_err(draw_err)?;
             }
             let mark = self.tick_mark as i32;
             root.draw(&PathElement::new(

@@ -81,8 +81,8 @@ impl World {
         }
         // One contact: ω_c² of its stiffer spring, normal or tangential, and its damping rate
         // in the explicit form (the implicit form is stable at any damping).
-        let k_ne = self.params.contact.normal_stiffness;
         let c = &self.params.contact;
+        let k_ne = c.normal_stiffness;
         let tangential = match c.tangential_reference {
             TangentialReference::Thickness => c.tangential_stiffness() * kc,
             // k_te = f·k_ne·L with L ≤ d, like the normal spring's.
