@@ -11,6 +11,7 @@ use std::cmp::Ordering;
 
 use super::params::{ItdParams, Participation, Redistribution};
 use super::participation::ExpCache;
+use super::vexp::exp_in_place;
 
 /// Columns per block.
 pub(crate) const L: usize = 8;
@@ -121,17 +122,19 @@ fn kernel<const T: bool, const U: bool>(
         }
         false => {
             let (astari, xtmp) = (e.astari, e.xtmp);
+            // Every boundary's exponential at once (`vexp`: the same bits as one `exp`
+            // each; at G = 1 it is e^{−1/a*}, so `at_one` is not needed here).
+            let mut ex = [[0.0; L]; MAX_NCAT + 1];
+            for n in 0..=ncat {
+                for l in 0..L {
+                    ex[n][l] = -g[n + 1][l] * astari;
+                }
+            }
+            exp_in_place(ex[..=ncat].as_flattened_mut());
             let mut prev = [xtmp; L];
             for n in 0..=ncat {
                 for l in 0..L {
-                    // G = 1 (the last category, when the normalisation gives exactly 1):
-                    // the same exponential, computed once.
-                    let gn = g[n + 1][l];
-                    let cur = if gn == 1.0 {
-                        e.at_one
-                    } else {
-                        (-gn * astari).exp() * xtmp
-                    };
+                    let cur = ex[n][l] * xtmp;
                     ap[n][l] = prev[l] - cur;
                     prev[l] = cur;
                 }
@@ -221,8 +224,27 @@ unsafe fn dispatch_avx2(
     dispatch(b, ncat, aice0_given, part, redist, p, cf, e)
 }
 
-/// Strength of one block (dispatching to AVX2 where the CPU has it; no FMA, so rounding is
-/// the same as the scalar path).
+/// [`dispatch_avx2`] with FMA as well, where `vexp` uses it: the exponentials of the
+/// participation are evaluated in registers. Rust never fuses a multiply and an add on its
+/// own, so every other operation rounds as in the scalar path.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+#[allow(clippy::too_many_arguments)]
+unsafe fn dispatch_avx2_fma(
+    b: &Block,
+    ncat: usize,
+    aice0_given: bool,
+    part: Participation,
+    redist: Redistribution,
+    p: &ItdParams,
+    cf: f64,
+    e: &ExpCache,
+) -> Option<[f64; L]> {
+    dispatch(b, ncat, aice0_given, part, redist, p, cf, e)
+}
+
+/// Strength of one block (dispatching to AVX2, with FMA for the exponentials only, where the
+/// CPU has them; the rounding is the same as the scalar path's).
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn strength_block(
     b: &Block,
@@ -236,6 +258,10 @@ pub(crate) fn strength_block(
 ) -> Option<[f64; L]> {
     #[cfg(target_arch = "x86_64")]
     {
+        if super::vexp::fused() {
+            // SAFETY: `fused()` holds only on a CPU with AVX2 and FMA.
+            return unsafe { dispatch_avx2_fma(b, ncat, aice0_given, part, redist, p, cf, e) };
+        }
         if std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: the CPU supports AVX2 (checked just above).
             return unsafe { dispatch_avx2(b, ncat, aice0_given, part, redist, p, cf, e) };

@@ -26,6 +26,7 @@ pub mod ridge_step_batch;
 pub mod ridging;
 pub mod strength;
 pub mod tracers;
+mod vexp;
 
 pub use bounds::{CategoryBounds, category_bounds};
 pub use cf::{Cf, CfLookup, CfPreset, CfProvider, CfTable};
