@@ -18,11 +18,19 @@ pub(crate) const L: usize = 8;
 /// Largest number of categories the block kernel handles.
 pub(crate) const MAX_NCAT: usize = 16;
 
-/// One block of `L` columns gathered from the batch arrays.
+/// One block of `L` columns gathered from the batch arrays, and the kernel's scratch (kept
+/// between blocks, so that it is not zeroed for each; the kernel writes every entry it
+/// reads).
 pub(crate) struct Block {
     pub a: [[f64; L]; MAX_NCAT],
     pub v: [[f64; L]; MAX_NCAT],
     pub a0: [f64; L],
+    /// G(k) at index k + 1, k = −1..=ncat.
+    g: [[f64; L]; MAX_NCAT + 2],
+    /// a_Pn, n = 0..=ncat.
+    ap: [[f64; L]; MAX_NCAT + 1],
+    /// The exponentials of the participation.
+    ex: [[f64; L]; MAX_NCAT + 1],
 }
 
 impl Block {
@@ -31,6 +39,9 @@ impl Block {
             a: [[0.0; L]; MAX_NCAT],
             v: [[0.0; L]; MAX_NCAT],
             a0: [0.0; L],
+            g: [[0.0; L]; MAX_NCAT + 2],
+            ap: [[0.0; L]; MAX_NCAT + 1],
+            ex: [[0.0; L]; MAX_NCAT + 1],
         }
     }
 }
@@ -41,7 +52,7 @@ impl Block {
 /// exponential). Monomorphised so that each option pair is a straight-line loop.
 #[inline(always)]
 fn kernel<const T: bool, const U: bool>(
-    b: &Block,
+    b: &mut Block,
     ncat: usize,
     aice0_given: bool,
     p: &ItdParams,
@@ -77,8 +88,9 @@ fn kernel<const T: bool, const U: bool>(
         return None;
     }
 
+    let Block { g, ap, ex, .. } = b;
     // Cumulative areas G(k), k = -1..=ncat, at index k + 1.
-    let mut g = [[0.0; L]; MAX_NCAT + 2];
+    g[0] = [0.0; L];
     for l in 0..L {
         g[1][l] = if a0[l] > puny { a0[l] } else { 0.0 };
     }
@@ -104,7 +116,6 @@ fn kernel<const T: bool, const U: bool>(
     }
 
     // Participation a_Pn, n = 0..=ncat.
-    let mut ap = [[0.0; L]; MAX_NCAT + 1];
     match T {
         true => {
             let gstar = p.gstar;
@@ -124,7 +135,6 @@ fn kernel<const T: bool, const U: bool>(
             let (astari, xtmp) = (e.astari, e.xtmp);
             // Every boundary's exponential at once (`vexp`: the same bits as one `exp`
             // each; at G = 1 it is e^{−1/a*}, so `at_one` is not needed here).
-            let mut ex = [[0.0; L]; MAX_NCAT + 1];
             for n in 0..=ncat {
                 for l in 0..L {
                     ex[n][l] = -g[n + 1][l] * astari;
@@ -189,7 +199,7 @@ fn kernel<const T: bool, const U: bool>(
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 fn dispatch(
-    b: &Block,
+    b: &mut Block,
     ncat: usize,
     aice0_given: bool,
     part: Participation,
@@ -212,7 +222,7 @@ fn dispatch(
 #[target_feature(enable = "avx2")]
 #[allow(clippy::too_many_arguments)]
 unsafe fn dispatch_avx2(
-    b: &Block,
+    b: &mut Block,
     ncat: usize,
     aice0_given: bool,
     part: Participation,
@@ -231,7 +241,7 @@ unsafe fn dispatch_avx2(
 #[target_feature(enable = "avx2,fma")]
 #[allow(clippy::too_many_arguments)]
 unsafe fn dispatch_avx2_fma(
-    b: &Block,
+    b: &mut Block,
     ncat: usize,
     aice0_given: bool,
     part: Participation,
@@ -247,7 +257,7 @@ unsafe fn dispatch_avx2_fma(
 /// CPU has them; the rounding is the same as the scalar path's).
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn strength_block(
-    b: &Block,
+    b: &mut Block,
     ncat: usize,
     aice0_given: bool,
     part: Participation,
