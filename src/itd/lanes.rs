@@ -46,19 +46,35 @@ impl Block {
     }
 }
 
+/// What every block of a batched call is computed with.
+#[derive(Clone, Copy)]
+pub(crate) struct BlockCall<'a> {
+    /// Number of categories (≤ [`MAX_NCAT`]).
+    pub ncat: usize,
+    /// Whether the block's `a0` holds aice0 (else it is 1 − Σ aicen).
+    pub aice0_given: bool,
+    pub part: Participation,
+    pub redist: Redistribution,
+    pub p: &'a ItdParams,
+    /// C_f (dimensionless).
+    pub cf: f64,
+    /// The exponential participation's constants for `p.astar`.
+    pub e: &'a ExpCache,
+}
+
 /// Strength of a block; `None` when any column needs the scalar path.
-/// `aice0_given`: whether `a0` holds aice0 or must be 1 − Σ aicen.
 /// `T`: Thorndike participation (else exponential); `U`: uniform redistribution (else
 /// exponential). Monomorphised so that each option pair is a straight-line loop.
 #[inline(always)]
-fn kernel<const T: bool, const U: bool>(
-    b: &mut Block,
-    ncat: usize,
-    aice0_given: bool,
-    p: &ItdParams,
-    cf: f64,
-    e: &ExpCache,
-) -> Option<[f64; L]> {
+fn kernel<const T: bool, const U: bool>(b: &mut Block, call: &BlockCall) -> Option<[f64; L]> {
+    let BlockCall {
+        ncat,
+        aice0_given,
+        p,
+        cf,
+        e,
+        ..
+    } = *call;
     let puny = p.puny;
     let thick_max = crate::limits::CATEGORY_THICKNESS.max;
     // Validation (the scalar path reports the errors).
@@ -197,85 +213,56 @@ fn kernel<const T: bool, const U: bool>(
 }
 
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
-fn dispatch(
-    b: &mut Block,
-    ncat: usize,
-    aice0_given: bool,
-    part: Participation,
-    redist: Redistribution,
-    p: &ItdParams,
-    cf: f64,
-    e: &ExpCache,
-) -> Option<[f64; L]> {
-    let thorndike = part == Participation::Thorndike;
-    let uniform = redist == Redistribution::Uniform;
+fn dispatch(b: &mut Block, call: &BlockCall) -> Option<[f64; L]> {
+    let thorndike = call.part == Participation::Thorndike;
+    let uniform = call.redist == Redistribution::Uniform;
     match (thorndike, uniform) {
-        (true, true) => kernel::<true, true>(b, ncat, aice0_given, p, cf, e),
-        (true, false) => kernel::<true, false>(b, ncat, aice0_given, p, cf, e),
-        (false, true) => kernel::<false, true>(b, ncat, aice0_given, p, cf, e),
-        (false, false) => kernel::<false, false>(b, ncat, aice0_given, p, cf, e),
+        (true, true) => kernel::<true, true>(b, call),
+        (true, false) => kernel::<true, false>(b, call),
+        (false, true) => kernel::<false, true>(b, call),
+        (false, false) => kernel::<false, false>(b, call),
     }
 }
 
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-#[allow(clippy::too_many_arguments)]
-unsafe fn dispatch_avx2(
-    b: &mut Block,
-    ncat: usize,
-    aice0_given: bool,
-    part: Participation,
-    redist: Redistribution,
-    p: &ItdParams,
-    cf: f64,
-    e: &ExpCache,
-) -> Option<[f64; L]> {
-    dispatch(b, ncat, aice0_given, part, redist, p, cf, e)
+/// [`dispatch`] compiled for the target features `$features` (x86-64 only); the caller
+/// checks that the CPU has them.
+macro_rules! dispatch_for {
+    ($(#[$doc:meta])* $name:ident, $features:literal) => {
+        $(#[$doc])*
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = $features)]
+        unsafe fn $name(b: &mut Block, call: &BlockCall) -> Option<[f64; L]> {
+            dispatch(b, call)
+        }
+    };
 }
 
-/// [`dispatch_avx2`] with FMA as well, where `vexp` uses it: the exponentials of the
-/// participation are evaluated in registers. Rust never fuses a multiply and an add on its
-/// own, so every other operation rounds as in the scalar path.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-#[allow(clippy::too_many_arguments)]
-unsafe fn dispatch_avx2_fma(
-    b: &mut Block,
-    ncat: usize,
-    aice0_given: bool,
-    part: Participation,
-    redist: Redistribution,
-    p: &ItdParams,
-    cf: f64,
-    e: &ExpCache,
-) -> Option<[f64; L]> {
-    dispatch(b, ncat, aice0_given, part, redist, p, cf, e)
-}
+dispatch_for!(
+    /// With AVX2: SIMD across the block's columns, no FMA (the rounding of the scalar path).
+    dispatch_avx2,
+    "avx2"
+);
+dispatch_for!(
+    /// With AVX2 and FMA, where `vexp` uses them: the participation's exponentials are
+    /// evaluated in registers. Rust never fuses a multiply and an add on its own, so every
+    /// other operation rounds as in the scalar path.
+    dispatch_avx2_fma,
+    "avx2,fma"
+);
 
 /// Strength of one block (dispatching to AVX2, with FMA for the exponentials only, where the
 /// CPU has them; the rounding is the same as the scalar path's).
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn strength_block(
-    b: &mut Block,
-    ncat: usize,
-    aice0_given: bool,
-    part: Participation,
-    redist: Redistribution,
-    p: &ItdParams,
-    cf: f64,
-    e: &ExpCache,
-) -> Option<[f64; L]> {
+pub(crate) fn strength_block(b: &mut Block, call: &BlockCall) -> Option<[f64; L]> {
     #[cfg(target_arch = "x86_64")]
     {
         if super::vexp::fused() {
             // SAFETY: `fused()` holds only on a CPU with AVX2 and FMA.
-            return unsafe { dispatch_avx2_fma(b, ncat, aice0_given, part, redist, p, cf, e) };
+            return unsafe { dispatch_avx2_fma(b, call) };
         }
         if std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: the CPU supports AVX2 (checked just above).
-            return unsafe { dispatch_avx2(b, ncat, aice0_given, part, redist, p, cf, e) };
+            return unsafe { dispatch_avx2(b, call) };
         }
     }
-    dispatch(b, ncat, aice0_given, part, redist, p, cf, e)
+    dispatch(b, call)
 }

@@ -516,6 +516,15 @@ pub fn strength_batch_masked(
         let p = &opts.params;
         let e = ExpCache::new(p.astar);
         let mut b = lanes::Block::new();
+        let call = lanes::BlockCall {
+            ncat,
+            aice0_given: aice0.is_some(),
+            part: opts.participation,
+            redist: opts.redistribution,
+            p,
+            cf: *cf,
+            e: &e,
+        };
         while c + lanes::L <= ncol {
             let masked = valid
                 .as_ref()
@@ -539,16 +548,7 @@ pub fn strength_batch_masked(
                         b.a0[l] = a0[c + l];
                     }
                 }
-                lanes::strength_block(
-                    &mut b,
-                    ncat,
-                    aice0.is_some(),
-                    opts.participation,
-                    opts.redistribution,
-                    p,
-                    *cf,
-                    &e,
-                )
+                lanes::strength_block(&mut b, &call)
             };
             match r {
                 Some(vals) => {
