@@ -21,7 +21,16 @@
 //! ```
 //!
 //! `NAME=DIR1+DIR2` pools the runs of several campaign directories into one configuration
-//! (e.g. seeds 13–26 run later under a spec of their own).
+//! (e.g. seeds 13–26 run later under a spec of their own). `NAME=DIR@SETTING` takes only
+//! the runs of one point of a campaign's axis (`SETTING` as the run's settings write it,
+//! e.g. `numerics.time_step_safety=1.0`) and leaves that setting out of the point, so that two
+//! points of one campaign can be compared:
+//!
+//! ```sh
+//! cargo run --release --example speed_vs_error -- \
+//!     quarter=data/speed-vs-error/chord-steps@numerics.time_step_safety=0.25 \
+//!     full=data/speed-vs-error/chord-steps@numerics.time_step_safety=1.0
+//! ```
 
 use pressridge::campaign::{RunRecord, read_campaign};
 use pressridge::table::ensemble::{Stat, quantity};
@@ -43,7 +52,9 @@ const QUANTITIES: [(&str, &str, Option<f64>); 8] = [
 
 type Groups = BTreeMap<String, Vec<RunRecord>>;
 
-fn groups(dir: &Path) -> Result<Groups, Box<dyn std::error::Error>> {
+/// The runs of campaign `dir` by point; with `only`, just the runs whose settings hold it,
+/// keyed without it.
+fn groups(dir: &Path, only: Option<&str>) -> Result<Groups, Box<dyn std::error::Error>> {
     // A campaign still running is read as far as it got: the table gives n per row.
     let c = read_campaign(dir, true)?;
     if !c.missing.is_empty() {
@@ -57,7 +68,19 @@ fn groups(dir: &Path) -> Result<Groups, Box<dyn std::error::Error>> {
     let records = c.records;
     let mut g = Groups::new();
     for r in records {
-        g.entry(r.settings.join(", ")).or_default().push(r);
+        let mut point = r.settings.clone();
+        if let Some(only) = only {
+            let Some(k) = point.iter().position(|s| s == only) else {
+                continue;
+            };
+            point.remove(k);
+        }
+        g.entry(point.join(", ")).or_default().push(r);
+    }
+    if let Some(only) = only
+        && g.is_empty()
+    {
+        return Err(format!("{}: no run has the setting {only}", dir.display()).into());
     }
     Ok(g)
 }
@@ -73,12 +96,16 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .map(|a| {
             let (name, dir) = a
                 .split_once('=')
-                .ok_or("arguments are NAME=CAMPAIGN_DIR[+DIR...], the reference first")?;
+                .ok_or("arguments are NAME=CAMPAIGN_DIR[+DIR...][@SETTING], the reference first")?;
+            let (dir, only) = match dir.split_once('@') {
+                Some((d, s)) => (d, Some(s)),
+                None => (dir, None),
+            };
             // One configuration may be spread over several archives (extra seeds run
             // later under their own spec): `NAME=DIR1+DIR2` pools their runs per point.
             let mut pooled = Groups::new();
             for d in dir.split('+') {
-                for (point, runs) in groups(Path::new(d))? {
+                for (point, runs) in groups(Path::new(d), only)? {
                     let all = pooled.entry(point.clone()).or_default();
                     for r in runs {
                         if all.iter().any(|o| o.seed == r.seed) {
@@ -97,7 +124,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .collect::<Result<_, Box<dyn std::error::Error>>>()?;
     let Some((ref_name, reference)) = configs.first() else {
         return Err(
-            "usage: speed_vs_error NAME=CAMPAIGN_DIR[+DIR...] ... (the reference first)".into(),
+            "usage: speed_vs_error NAME=CAMPAIGN_DIR[+DIR...][@SETTING] ... (the reference first)"
+                .into(),
         );
     };
     for (point, ref_runs) in reference {
