@@ -7,7 +7,8 @@ algorithm of ARM's optimized-routines) stores it, computed here from its definit
     T[k]  = (2^(k/N) - H[k]) / H[k] rounded to the nearest double,
     tab[2k] = bits(T[k]),  tab[2k+1] = bits(H[k]) - (k << 45)   (45 = 52 - log2 N).
 
-Usage: scripts/exp-table.py > /tmp/table.rs (then paste over the table in src/itd/vexp.rs).
+Usage: scripts/exp-table.py > /tmp/table.rs; its output is the table of src/itd/vexp.rs as it
+stands there, line for line (kept out of rustfmt).
 The test `vexp_is_the_platform_exp_bit_for_bit` checks the result against libm's exp.
 """
 import struct
