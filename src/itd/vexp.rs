@@ -18,6 +18,9 @@
 //! other CPUs every argument goes to `f64::exp`. Arguments outside the algorithm's main range
 //! (|x| ≥ 512, NaN, ±∞) always do; |x| < 2⁻⁵⁴ gives 1 + x, as glibc does.
 
+// Elsewhere than x86-64 only the scalar path is compiled in.
+#![cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
+
 use std::sync::atomic::{AtomicU8, Ordering};
 
 /// log2 of the table size N.
