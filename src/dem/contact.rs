@@ -61,7 +61,8 @@ pub struct ContactParams {
 #[serde(rename_all = "lowercase")]
 pub enum TangentialReference {
     /// k_ne·h, a contact along a face of the parent sheet's thickness h: one k_te for every
-    /// contact (the default, as the paper's critical damping 2·sqrt(k_ne·h·ρ_i) uses h).
+    /// contact, as eq (4) has it (no chord in eq (4), unlike eq (2)); h as in the paper's
+    /// critical damping 2·sqrt(k_ne·h·ρ_i). The default (docs/model.md, "Contact law").
     #[default]
     Thickness,
     /// k_ne·L, each contact's own normal stiffness per unit overlap depth (L its chord, as

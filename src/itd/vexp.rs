@@ -108,12 +108,12 @@ fn fused_agrees() -> bool {
 }
 
 /// Four lanes at a time; a lane outside the main range is finished by [`lane_outside`].
-/// Inlined into callers with the same target features (the lanes kernel, the per-cell
-/// strength), so that the lanes stay in registers.
+/// Called through [`exp_in_place`]; the batch kernel's AVX2+FMA build
+/// (`lanes::dispatch_avx2_fma`) is the one caller that may inline it.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
 #[inline]
-pub(crate) unsafe fn exp_fused(x: &mut [f64]) {
+unsafe fn exp_fused(x: &mut [f64]) {
     let mut chunks = x.chunks_exact_mut(4);
     for c in &mut chunks {
         let y = exp4([c[0], c[1], c[2], c[3]]);
