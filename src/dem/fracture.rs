@@ -151,9 +151,7 @@ impl JointSet {
     /// Applies every intact joint's forces to the bodies: all of them for the explicit
     /// dashpot, the elastic ones for the implicit one (then [`JointSet::apply_viscous`]).
     pub fn apply(&mut self, bodies: &mut Bodies, rho_i: f64, dashpot: Dashpot) {
-        for j in self.joints.iter_mut() {
-            j.apply(bodies, rho_i, dashpot);
-        }
+        super::joint::apply_all(&mut self.joints, bodies, rho_i, dashpot);
     }
 
     /// Applies every intact joint's viscous force at the mid-step velocities, once every

@@ -21,7 +21,11 @@
 
 use super::body::{Bodies, BodyId};
 use super::geometry::V2;
+use super::lanes::{Real, Vec2};
 use super::world::Dashpot;
+use lanes::JointLanes;
+
+mod lanes;
 use serde::{Deserialize, Serialize};
 
 /// Gauss–Legendre nodes and weights on [−1, 1], 3 points (exact to degree 5).
@@ -172,8 +176,7 @@ impl Joint {
     /// Young's modulus at face height s (Pa).
     #[inline]
     pub(crate) fn modulus(&self, s: f64) -> f64 {
-        let f = (s + 0.5 * self.h) / self.h;
-        self.mat.e_bottom + (self.mat.e_top - self.mat.e_bottom) * f
+        modulus_at(self.mat.e_top, self.mat.e_bottom, self.h, s)
     }
 
     /// Largest eigenvalues of the joint's stiffness K and damping C, linearised about the
@@ -224,19 +227,21 @@ impl Joint {
         (top(&k), top(&c))
     }
 
-    /// Frame of the joint and the fibre geometry for block axes `ea`, `eb` ((cos θ, sin θ)
-    /// of each block): returns (n, t, face direction of a, face direction of b, face centre
-    /// of a, face centre of b) in world coordinates. n is the bisector of the two axes: the
-    /// direction of the mean angle, found without trigonometry.
+    /// Frame of the joint and the fibre geometry ([`frame_of`]) for block axes `ea`, `eb`
+    /// ((cos θ, sin θ) of each block).
     #[inline]
     fn frame_with(&self, b: &Bodies, ea: V2, eb: V2) -> (V2, V2, V2, V2, V2, V2) {
-        let (ia, ib) = (self.a as usize, self.b as usize);
-        let m = ea + eb;
-        let n = m * (1.0 / m.norm());
-        let t = n.perp();
-        let oa = b.pos[ia] + self.pa.rotate(ea.x, ea.y);
-        let ob = b.pos[ib] + self.pb.rotate(eb.x, eb.y);
-        (n, t, ea.perp(), eb.perp(), oa, ob)
+        let (xa, xb) = (b.pos[self.a as usize], b.pos[self.b as usize]);
+        let v = Vec2::<f64>::from;
+        let [n, t, ua, ub, oa, ob] = frame_of(v(self.pa), v(self.pb), v(xa), v(xb), v(ea), v(eb));
+        (
+            n.into(),
+            t.into(),
+            ua.into(),
+            ub.into(),
+            oa.into(),
+            ob.into(),
+        )
     }
 
     /// [`Joint::frame_with`] from the bodies' present orientations.
@@ -293,57 +298,34 @@ impl Joint {
 
     /// Computes the joint's forces from the current poses (with the block axes cached in
     /// `bodies.axis`) and half-step velocities, adds them to the bodies and keeps them for
-    /// the ledger, with the elastic surface stresses for the fracture test.
+    /// the ledger, with the elastic surface stresses for the fracture test. (One joint of
+    /// [`apply_all`], which evaluates them four at a time.)
+    #[cfg(test)]
     pub(crate) fn apply(&mut self, bodies: &mut Bodies, rho_i: f64, dashpot: Dashpot) {
-        self.forces = [JointForces::default(); 2];
-        if !self.is_intact() {
-            return;
-        }
-        let (ia, ib) = (self.a as usize, self.b as usize);
-        let (n, t, ua, ub, oa, ob) = self.frame_with(bodies, bodies.axis[ia], bodies.axis[ib]);
-        let (xa, xb) = (bodies.pos[ia], bodies.pos[ib]);
-        let (va, vb) = (bodies.vel[ia], bodies.vel[ib]);
-        let (wa, wb) = (bodies.omega[ia], bodies.omega[ib]);
-        let d0 = ob - oa;
-        let d1 = ub - ua;
-        let sig = |s: f64| self.modulus(s) * (d0 + d1 * s).dot(n) / self.gauge;
-        self.stress = SurfaceStress {
-            top: sig(self.s_hi),
-            bottom: sig(self.s_lo),
-        };
+        apply_all(std::slice::from_mut(self), bodies, rho_i, dashpot);
+    }
+
+    /// Readies an intact joint for [`JointLanes::load`]: the Gauss points of its present
+    /// span for ice density `rho_i` (kg/m³).
+    #[inline]
+    fn prepare(&mut self, rho_i: f64) {
         if self.gauss.span != (self.s_lo, self.s_hi) || self.gauss.rho != rho_i {
             self.gauss = self.gauss_points(rho_i);
         }
-        let mut el = JointForces::default();
-        let mut vi = JointForces::default();
-        for &[s, w, e, g, eta_e, eta_g] in &self.gauss.point {
-            let pa = oa + ua * s;
-            let pb = ob + ub * s;
-            let d = d0 + d1 * s;
-            let ddot = (vb + (pb - xb).perp() * wb) - (va + (pa - xa).perp() * wa);
-            // Stresses (Pa) times the Gauss weight (m): force per metre of depth.
-            let sig_e = e * d.dot(n) / self.gauge;
-            let tau_e = g * d.dot(t) / self.gauge;
-            let sig_v = eta_e * ddot.dot(n);
-            let tau_v = eta_g * ddot.dot(t);
-            // Tension (δ_n > 0) pulls b back towards a.
-            let fe = (n * sig_e + t * tau_e) * (-w);
-            let fv = (n * sig_v + t * tau_v) * (-w);
-            el.fb = el.fb + fe;
-            el.mb += (pb - xb).cross(fe);
-            el.fa = el.fa - fe;
-            el.ma -= (pa - xa).cross(fe);
-            vi.fb = vi.fb + fv;
-            vi.mb += (pb - xb).cross(fv);
-            vi.fa = vi.fa - fv;
-            vi.ma -= (pa - xa).cross(fv);
-        }
+    }
+
+    /// Takes lane `l`'s results: keeps the stresses and forces and adds the forces to the
+    /// bodies (the viscous ones later, in [`Joint::apply_viscous`], for the implicit
+    /// dashpot).
+    #[inline]
+    fn finish(&mut self, x: &JointLanes, l: usize, bodies: &mut Bodies, dashpot: Dashpot) {
+        let ((top, bottom), el, mut vi) = x.result(l);
+        self.stress = SurfaceStress { top, bottom };
         if dashpot == Dashpot::Implicit {
             // The viscous stress follows once every other force is known (`apply_viscous`).
-            // (Computed above all the same: behind a branch in the Gauss loop it cost the
-            // default path 0.7 % of its instructions, callgrind.)
             vi = JointForces::default();
         }
+        let (ia, ib) = (self.a as usize, self.b as usize);
         for f in [&el, &vi] {
             bodies.force[ia] = bodies.force[ia] + f.fa;
             bodies.torque[ia] += f.ma;
@@ -460,6 +442,71 @@ impl Joint {
         self.elastic_work += e;
         (e, v)
     }
+}
+
+/// Applies every intact joint of `joints` to the bodies, in order ([`Joint::apply`]): the
+/// joint law is evaluated [`lanes::L`] joints at a time, and the forces are added to the
+/// bodies joint by joint in the order of `joints`, so that the sums are those of one joint
+/// after another.
+pub(crate) fn apply_all(joints: &mut [Joint], bodies: &mut Bodies, rho_i: f64, dashpot: Dashpot) {
+    let mut x = JointLanes::default();
+    let mut group = [0usize; lanes::L];
+    let mut n = 0;
+    let flush = |x: &mut JointLanes, group: &[usize], joints: &mut [Joint], b: &mut Bodies| {
+        x.pad(group.len());
+        x.evaluate();
+        for (l, &i) in group.iter().enumerate() {
+            joints[i].finish(x, l, b, dashpot);
+        }
+    };
+    for i in 0..joints.len() {
+        let j = &mut joints[i];
+        j.forces = [JointForces::default(); 2];
+        if !j.is_intact() {
+            continue;
+        }
+        j.prepare(rho_i);
+        x.load(n, j, bodies);
+        group[n] = i;
+        n += 1;
+        if n == lanes::L {
+            flush(&mut x, &group, joints, bodies);
+            n = 0;
+        }
+    }
+    if n > 0 {
+        flush(&mut x, &group[..n], joints, bodies);
+    }
+}
+
+/// Frame of a joint and its fibre geometry, from the face centres `pa`, `pb` in the blocks'
+/// frames (m), the centroids `xa`, `xb` (m) and the block axes `ea`, `eb` ((cos θ, sin θ)):
+/// [n, t, face direction of a, face direction of b, face centre of a, face centre of b] in
+/// world coordinates. n is the bisector of the two axes: the direction of the mean angle,
+/// found without trigonometry.
+#[inline(always)]
+fn frame_of<F: Real>(
+    pa: Vec2<F>,
+    pb: Vec2<F>,
+    xa: Vec2<F>,
+    xb: Vec2<F>,
+    ea: Vec2<F>,
+    eb: Vec2<F>,
+) -> [Vec2<F>; 6] {
+    let m = ea + eb;
+    let n = m * (F::splat(1.0) / m.norm());
+    let t = n.perp();
+    let oa = xa + pa.rotate(ea.x, ea.y);
+    let ob = xb + pb.rotate(eb.x, eb.y);
+    [n, t, ea.perp(), eb.perp(), oa, ob]
+}
+
+/// Young's modulus (Pa) at face height `s` (m) of a face of height `h` (m), linear from
+/// `e_bottom` at s = −h/2 to `e_top` at s = +h/2 (Pa).
+#[inline(always)]
+fn modulus_at<F: Real>(e_top: F, e_bottom: F, h: F, s: F) -> F {
+    let f = (s + F::splat(0.5) * h) / h;
+    e_bottom + (e_top - e_bottom) * f
 }
 
 /// Solves the 4 × 4 system a·x = b by Gaussian elimination with partial pivoting. The joint

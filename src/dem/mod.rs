@@ -20,6 +20,7 @@ pub mod contact;
 pub(crate) mod fracture;
 pub mod geometry;
 pub mod joint;
+pub(crate) mod lanes;
 pub mod ledger;
 pub mod water;
 pub mod world;
