@@ -24,9 +24,9 @@ use super::geometry::V2;
 use super::lanes::{Real, Vec2};
 use super::world::Dashpot;
 use lanes::JointLanes;
+use serde::{Deserialize, Serialize};
 
 mod lanes;
-use serde::{Deserialize, Serialize};
 
 /// Gauss–Legendre nodes and weights on [−1, 1], 3 points (exact to degree 5).
 const GAUSS_X: [f64; 3] = [-0.774_596_669_241_483_4, 0.0, 0.774_596_669_241_483_4];
@@ -444,8 +444,9 @@ impl Joint {
     }
 }
 
-/// Applies every intact joint of `joints` to the bodies, in order ([`Joint::apply`]): the
-/// joint law is evaluated [`lanes::L`] joints at a time, and the forces are added to the
+/// Applies every intact joint of `joints` to the bodies, in order: the stresses and forces
+/// of eq (1), kept in each joint for the fracture test and the ledger. The joint law is
+/// evaluated [`lanes::L`] joints at a time, and the forces are added to the
 /// bodies joint by joint in the order of `joints`, so that the sums are those of one joint
 /// after another.
 pub(crate) fn apply_all(joints: &mut [Joint], bodies: &mut Bodies, rho_i: f64, dashpot: Dashpot) {

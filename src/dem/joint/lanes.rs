@@ -1,4 +1,4 @@
-//! Eq (1) for [`L`] joints at a time: the joint law of [`Joint::apply`] written once, over
+//! Eq (1) for [`L`] joints at a time: the joint law of [`super::apply_all`], written once, over
 //! lanes of structure-of-arrays data ([`F4`]), so that the compiler evaluates the lanes with
 //! SIMD (AVX2 where the CPU has it, chosen at run time). Each lane performs exactly the
 //! operations of one joint in the same order, with no fused multiply-add (Rust never
@@ -42,7 +42,7 @@ pub(crate) struct JointLanes {
     vi: Forces<F4>,
 }
 
-/// [`JointForces`] of any [`Real`].
+/// [`JointForces`] of any [`Real`](crate::dem::lanes::Real).
 #[derive(Clone, Copy, Default)]
 struct Forces<F> {
     fa: Vec2<F>,
