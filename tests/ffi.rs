@@ -255,6 +255,18 @@ fn single_column_calls_equal_the_batch() {
     assert_eq!(q, 2.0 * p17, "C_f doubled, strength doubled");
     o.cf = f64::NAN;
     assert_eq!(cell(2, a1.as_ptr(), &o, &mut q), PRESSRIDGE_ERR_NOT_FINITE);
+    // The same bad bits again: checked again, never taken from the cache.
+    assert_eq!(cell(2, a1.as_ptr(), &o, &mut q), PRESSRIDGE_ERR_NOT_FINITE);
+    // A parameter deep in the struct changes the cached answer.
+    o.cf = 17.0;
+    assert_eq!(cell(2, a1.as_ptr(), &o, &mut q), PRESSRIDGE_OK);
+    assert_eq!(q, p17);
+    o.params.mu_rdg = 4.0;
+    assert_eq!(cell(2, a1.as_ptr(), &o, &mut q), PRESSRIDGE_OK);
+    assert!(
+        q > p17,
+        "a larger mu_rdg makes thicker ridges: {q} <= {p17}"
+    );
     unsafe { pressridge_cf_table_free(table) };
     // Errors of a single column, and a different ncat afterwards on the same thread.
     let bad = [0.1, -0.2, 0.1];

@@ -520,7 +520,7 @@ struct CellOptions {
 
 thread_local! {
     /// The options of this thread's last [`pressridge_strength_cell`] call with a constant
-    /// C_f (compared bit for bit: NaN never equals, so a bad value is checked again every
+    /// C_f (compared bit for bit, [`same_options`]: options that failed their checks are never kept, so a bad value is checked again every
     /// call).
     static CELL_OPTIONS: RefCell<Option<CellOptions>> = const { RefCell::new(None) };
 }
@@ -612,16 +612,27 @@ pub unsafe extern "C" fn pressridge_strength_cell(
     })
 }
 
-/// Options equal bit for bit (NaN never equal).
+/// Options equal bit for bit, every byte of the C struct compared. Exact for a cache of
+/// options that passed their checks: the same bits pass the same checks and give the same
+/// results (NaN included), and values equal as numbers but not in bits (±0) are checked
+/// again.
 fn same_options(a: &PressridgeOptions, b: &PressridgeOptions) -> bool {
-    a.participation == b.participation
-        && a.redistribution == b.redistribution
-        && a.strength_law == b.strength_law
-        && a.cf_source == b.cf_source
-        && a.cf == b.cf
-        && a.fill.to_bits() == b.fill.to_bits()
-        && a.cf_table == b.cf_table
-        && a.params == b.params
+    /// The struct in 8-byte words.
+    const WORDS: usize = std::mem::size_of::<PressridgeOptions>() / 8;
+    // No padding: the fields' sizes add up to the struct's (four i32, two f64, a pointer
+    // and the parameters, sixteen f64 and an i64), so every byte is a field's.
+    const _: () = assert!(
+        std::mem::size_of::<PressridgeOptions>() == 4 * 4 + 3 * 8 + 17 * 8
+            && std::mem::size_of::<PressridgeParams>() == 17 * 8
+            && std::mem::size_of::<PressridgeOptions>() == 8 * WORDS
+    );
+    // SAFETY: `PressridgeOptions` is `repr(C)`, `Copy`, without padding (checked above), so
+    // its bytes are initialised and may be read as words (`read_unaligned`: no alignment
+    // assumed).
+    let words = |o: &PressridgeOptions| unsafe {
+        std::ptr::read_unaligned(std::ptr::from_ref(o).cast::<[u64; WORDS]>())
+    };
+    words(a) == words(b)
 }
 
 /// Caller-owned outputs of [`pressridge_ridge_step`], one value per column laid out as the
