@@ -520,8 +520,8 @@ struct CellOptions {
 
 thread_local! {
     /// The options of this thread's last [`pressridge_strength_cell`] call with a constant
-    /// C_f (compared bit for bit, [`same_options`]: options that failed their checks are never kept, so a bad value is checked again every
-    /// call).
+    /// C_f, compared bit for bit ([`same_options`]). Options that fail their checks are never
+    /// kept, so a bad value is checked again every call.
     static CELL_OPTIONS: RefCell<Option<CellOptions>> = const { RefCell::new(None) };
 }
 
@@ -612,27 +612,44 @@ pub unsafe extern "C" fn pressridge_strength_cell(
     })
 }
 
-/// Options equal bit for bit, every byte of the C struct compared. Exact for a cache of
-/// options that passed their checks: the same bits pass the same checks and give the same
-/// results (NaN included), and values equal as numbers but not in bits (±0) are checked
-/// again.
+/// Whether [`PressridgeOptions`] has no padding: its fields' sizes (four i32, two f64, a
+/// pointer, the parameters: sixteen f64 and an i64) add up to its own. True on 64-bit
+/// targets (checked there when compiling, so that a field added without counting it stops
+/// the build).
+const OPTIONS_WITHOUT_PADDING: bool = {
+    use std::mem::size_of;
+    size_of::<PressridgeOptions>()
+        == 4 * size_of::<i32>()
+            + 2 * size_of::<f64>()
+            + size_of::<*const PressridgeCfTable>()
+            + size_of::<PressridgeParams>()
+        && size_of::<PressridgeParams>() == 17 * 8
+};
+
+#[cfg(target_pointer_width = "64")]
+const _: () = assert!(
+    OPTIONS_WITHOUT_PADDING,
+    "a field of PressridgeOptions or PressridgeParams is not counted in OPTIONS_WITHOUT_PADDING"
+);
+
+/// Options equal bit for bit, every byte compared. Exact for a cache of options that passed
+/// their checks: the same bits pass the same checks and give the same results (NaN
+/// included), and values equal as numbers but not in bits (±0) are checked again. Never
+/// equal where the struct has padding (its bytes are then not all defined): every call
+/// checks its options again.
 fn same_options(a: &PressridgeOptions, b: &PressridgeOptions) -> bool {
-    /// The struct in 8-byte words.
-    const WORDS: usize = std::mem::size_of::<PressridgeOptions>() / 8;
-    // No padding: the fields' sizes add up to the struct's (four i32, two f64, a pointer
-    // and the parameters, sixteen f64 and an i64), so every byte is a field's.
-    const _: () = assert!(
-        std::mem::size_of::<PressridgeOptions>() == 4 * 4 + 3 * 8 + 17 * 8
-            && std::mem::size_of::<PressridgeParams>() == 17 * 8
-            && std::mem::size_of::<PressridgeOptions>() == 8 * WORDS
-    );
-    // SAFETY: `PressridgeOptions` is `repr(C)`, `Copy`, without padding (checked above), so
-    // its bytes are initialised and may be read as words (`read_unaligned`: no alignment
-    // assumed).
-    let words = |o: &PressridgeOptions| unsafe {
-        std::ptr::read_unaligned(std::ptr::from_ref(o).cast::<[u64; WORDS]>())
+    if !OPTIONS_WITHOUT_PADDING {
+        return false;
+    }
+    // SAFETY: `PressridgeOptions` is `repr(C)` and `Copy`, and has no padding (checked just
+    // above), so all its bytes are initialised.
+    let bytes = |o: &PressridgeOptions| unsafe {
+        std::slice::from_raw_parts(
+            std::ptr::from_ref(o).cast::<u8>(),
+            std::mem::size_of::<PressridgeOptions>(),
+        )
     };
-    words(a) == words(b)
+    bytes(a) == bytes(b)
 }
 
 /// Caller-owned outputs of [`pressridge_ridge_step`], one value per column laid out as the
@@ -820,4 +837,24 @@ pub unsafe extern "C" fn pressridge_ridge_step(
         )?;
         Ok(())
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    #[cfg(target_pointer_width = "64")]
+    fn cached_options_are_compared_as_bytes_on_64_bit_targets() {
+        let a = PressridgeOptions::default();
+        let mut b = a;
+        assert!(same_options(&a, &b));
+        b.params.nitermax += 1;
+        assert!(!same_options(&a, &b));
+        b = a;
+        b.cf = -0.0;
+        let mut c = a;
+        c.cf = 0.0;
+        assert!(!same_options(&b, &c), "equal as numbers, not in bits");
+    }
 }
