@@ -800,16 +800,19 @@ mod tests {
         assert_eq!(s.world_params().contact_onset, ContactOnset::Velocity);
     }
 
-    /// The tangential stiffness is a fraction of k_ne·h unless set, and then absent from the
-    /// scene's TOML; "chord" reaches the world, and an unknown reading is refused by name.
+    /// Eq (4)'s k_te has one reading, per contact (0.6·k_ne·L): the key that chose the
+    /// withdrawn reading (k_ne·h) is refused by name, in a scene and in `--set`.
     #[test]
-    fn tangential_reference_is_the_thickness_unless_set() {
-        use crate::dem::TangentialReference;
-        let d = Scene::default().contact.tangential_reference;
-        assert_eq!(d, TangentialReference::Thickness);
-        let s = option_absent_unless_set("contact.tangential_reference", "chord", &["area"]);
-        let r = s.world_params().contact.tangential_reference;
-        assert_eq!(r, TangentialReference::Chord);
+    fn the_withdrawn_tangential_reference_is_refused_by_name() {
+        let e = Scene::default()
+            .with_overrides(&["contact.tangential_reference=thickness".to_string()])
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("tangential_reference"), "{e}");
+        let e = Scene::from_toml("[contact]\ntangential_reference = \"chord\"\n")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("tangential_reference"), "{e}");
     }
 
     /// The contact dashpot's sweeps are 0 (each contact alone) unless set, and then absent

@@ -67,32 +67,23 @@ fn a_time_step_above_the_stable_limit_is_refused_with_the_limit() {
 
 /// The contacts' tangential spring of eq (4) counts in the stable limit where it is the
 /// stiffer of a contact's two springs (docs/model.md, "Time step"): with the paper's
-/// k_te = 0.6·k_ne·h the limit is the normal spring's, the same as with k_te = k_ne·h, and a
-/// far stiffer k_te lowers it as 1/sqrt(k_te). Before it counted, a scene with k_te = 32·k_ne·h
-/// ran at the normal spring's limit with its tangential springs at ω_t·Δt ≈ 7, held only by
-/// the Coulomb cap: 20 s of the default scene booked 27.5 kJ/m of friction against 16.9 kJ/m
-/// of work. At its own limit friction stays below the work and every sign holds.
+/// k_te = 0.6·k_ne·L the limit is the normal spring's k_ne·L, the same as with k_te = k_ne·L,
+/// and a far stiffer k_te lowers it as 1/sqrt(k_te). Before it counted, a scene with a
+/// tangential spring 32 times the normal one ran its tangential springs at ω_t·Δt ≈ 7, held
+/// only by the Coulomb cap, and booked more friction than work. At its own limit friction
+/// stays below the work and every sign holds.
 #[test]
 fn a_stiff_tangential_spring_lowers_the_stable_limit() {
-    // The limit with k_te = f·k_ne·h, or read per contact (k_te = f·k_ne·L, L ≤ the
-    // block's diameter) with `chord`.
-    let limit = |f: f64, chord: bool| {
-        let reading = if chord { "chord" } else { "thickness" };
-        scene(&[
-            &format!("contact.tangential_fraction={f}"),
-            &format!("contact.tangential_reference={reading}"),
-        ])
-        .build()
-        .unwrap()
-        .stable_time_step()
+    let limit = |f: f64| {
+        scene(&[&format!("contact.tangential_fraction={f}")])
+            .build()
+            .unwrap()
+            .stable_time_step()
     };
-    assert_eq!(limit(0.6, false), limit(1.0, false));
-    assert_eq!(limit(0.6, true), limit(0.6, false));
-    for (chord, f) in [(false, 32.0), (true, 16.0)] {
-        let (a, b) = (limit(f, chord), limit(4.0 * f, chord));
-        assert!((a / b - 2.0).abs() < 1e-12, "{a} s and {b} s");
-        assert!(a < 0.5 * limit(0.6, false), "{a} s");
-    }
+    assert_eq!(limit(0.6), limit(1.0));
+    let (a, b) = (limit(16.0), limit(64.0));
+    assert!((a / b - 2.0).abs() < 1e-12, "{a} s and {b} s");
+    assert!(a < 0.5 * limit(0.6), "{a} s");
     let out = simulation::run(
         &scene(&[
             "duration=10",
@@ -102,7 +93,7 @@ fn a_stiff_tangential_spring_lowers_the_stable_limit() {
         &mut |_| true,
     )
     .unwrap();
-    check_signs(&out, "k_te = 32 k_ne h");
+    check_signs(&out, "k_te = 32 k_ne L");
     let e = out.summary.energy();
     assert!(e.friction_dissipation < e.work, "{e:?}");
 }

@@ -33,13 +33,12 @@ pub struct ContactParams {
     /// Fraction of the critical damping 2·sqrt(k_ne·h·ρ_i) used for k_nv, eq (3).
     /// Default 0.5 ("50% of the critical damping value").
     pub damping_fraction: f64,
-    /// Tangential stiffness k_te as a fraction of the normal stiffness k_ne·h (k_te =
-    /// `tangential_fraction`·k_ne·h, eq 4, with h the reference thickness; k_ne·L per
-    /// contact with [`TangentialReference::Chord`]). Default 0.6 ("60% of the normal
-    /// value").
+    /// Tangential stiffness k_te of eq (4) as a fraction of the contact's own normal
+    /// stiffness: k_te = `tangential_fraction`·k_ne·L (N/m² per metre of slip), L the
+    /// contact's chord, as in every incremental-slip contact law (Cundall–Strack's k_s/k_n).
+    /// Default 0.6 ("60% of the normal value", Hopkins 1994).
     pub tangential_fraction: f64,
-    /// Thickness h of the parent sheet (m) in k_nv = f·2·sqrt(k_ne·h·ρ_i) and in the normal
-    /// stiffness k_ne·h. Unset (the default), scenes take their sheet's thickness, or
+    /// Thickness h of the parent sheet (m) in k_nv = f·2·sqrt(k_ne·h·ρ_i), eq (3). Unset (the default), scenes take their sheet's thickness, or
     /// [`DEFAULT_REFERENCE_THICKNESS`] when they have no sheet.
     pub reference_thickness: Option<f64>,
     /// Friction coefficient μ for contacts whose overlap centroid is above the water line
@@ -48,34 +47,6 @@ pub struct ContactParams {
     /// Friction coefficient μ_w for contacts whose overlap centroid is below the water line
     /// (dimensionless). Default 0.6.
     pub mu_water: f64,
-    /// Which normal stiffness the tangential one is a fraction of ([`TangentialReference`]).
-    /// Default `thickness` (k_ne·h); `chord` is experimental. Absent from scenes and states
-    /// when the default.
-    #[serde(skip_serializing_if = "TangentialReference::is_thickness")]
-    pub tangential_reference: TangentialReference,
-}
-
-/// The "normal value" of which eq (4)'s tangential stiffness k_te is a fraction (the paper:
-/// "60% of the normal value"; which normal stiffness it means, the paper leaves open).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum TangentialReference {
-    /// k_ne·h, a contact along a face of the parent sheet's thickness h: one k_te for every
-    /// contact, as eq (4) has it (no chord in eq (4), unlike eq (2)); h as in the paper's
-    /// critical damping 2·sqrt(k_ne·h·ρ_i). The default (docs/model.md, "Contact law").
-    #[default]
-    Thickness,
-    /// k_ne·L, each contact's own normal stiffness per unit overlap depth (L its chord, as
-    /// in the dashpot c = k_nv·L): k_te scales with the contact's size. Experimental
-    /// (docs/speed-vs-error.md, "Fracture and the time step").
-    Chord,
-}
-
-impl TangentialReference {
-    /// True for [`TangentialReference::Thickness`] (a serde skip test).
-    pub fn is_thickness(&self) -> bool {
-        *self == TangentialReference::Thickness
-    }
 }
 
 impl Default for ContactParams {
@@ -87,7 +58,6 @@ impl Default for ContactParams {
             reference_thickness: None,
             mu: 1.0,
             mu_water: 0.6,
-            tangential_reference: TangentialReference::Thickness,
         }
     }
 }
@@ -110,16 +80,9 @@ impl ContactParams {
     pub(crate) fn viscous_coefficient_for(&self, h: f64, rho_i: f64) -> f64 {
         self.damping_fraction * 2.0 * (self.normal_stiffness * h * rho_i).sqrt()
     }
-    /// Tangential stiffness k_te (N/m² : force per metre of depth per metre of slip),
-    /// eq (4). The paper gives k_te as "60% of the normal value"; the normal value is read
-    /// as the normal stiffness of a contact along a face of the parent sheet's thickness,
-    /// k_ne·h — the same product the paper uses in its critical damping 2·sqrt(k_ne·h·ρ_i).
-    pub fn tangential_stiffness(&self) -> f64 {
-        self.tangential_fraction * self.normal_stiffness * self.thickness()
-    }
-    /// With [`TangentialReference::Chord`], a contact's k_te per metre of its chord L
-    /// (N/m³): k_te = `tangential_fraction`·k_ne·L.
-    pub(crate) fn tangential_stiffness_per_chord(&self) -> f64 {
+    /// Tangential stiffness of eq (4) per metre of a contact's chord L (N/m³): a contact's
+    /// k_te = `tangential_fraction`·k_ne·L (N/m²), 60 % of its normal stiffness k_ne·L.
+    pub fn tangential_stiffness_per_chord(&self) -> f64 {
         self.tangential_fraction * self.normal_stiffness
     }
 }
@@ -290,7 +253,7 @@ impl ContactSet {
         self.cur.clear();
         self.pending.clear();
         let k_ne = p.normal_stiffness;
-        let k_te = p.tangential_stiffness();
+        let k_te_per_chord = p.tangential_stiffness_per_chord();
         let mut j = 0;
         for &key in pairs {
             // Contacts of the last step whose pair is no longer a candidate have separated;
@@ -327,8 +290,11 @@ impl ContactSet {
             // Eq (4) with the relative velocity at the overlap centroid at n − ½.
             let vrel =
                 bodies.point_velocity(b, ov.centroid) - bodies.point_velocity(a, ov.centroid);
+            // The contact's length L: its dashpot is k_nv·L and its tangential spring
+            // k_te = f·k_ne·L (eq 4, "60% of the normal value" k_ne·L).
+            let chord = contact_length(&ov, bodies, a, b);
             let rate = if old.is_none() && onset == ContactOnset::Velocity {
-                k_nv * contact_length(&ov, bodies, a, b) * (-vrel.dot(n)).max(0.0)
+                k_nv * chord * (-vrel.dot(n)).max(0.0)
             } else {
                 k_nv * (ov.area - area0) / dt
             };
@@ -336,11 +302,7 @@ impl ContactSet {
                 Some(l) if ov.centroid.y < l => p.mu_water,
                 _ => p.mu,
             };
-            let k_te = if p.tangential_reference.is_thickness() {
-                k_te
-            } else {
-                p.tangential_stiffness_per_chord() * contact_length(&ov, bodies, a, b)
-            };
+            let k_te = k_te_per_chord * chord;
             let slip = ft0 - k_te * dt * vrel.dot(t);
             let mut c = Contact {
                 key: pair_key(a as u32, b as u32),
@@ -363,7 +325,6 @@ impl ContactSet {
                 Dashpot::Implicit => {
                     // The dashpot c = k_nv·L; its viscous and friction forces wait for
                     // every other force of the step (pass 2 below).
-                    let chord = contact_length(&ov, bodies, a, b);
                     apply_pair(bodies, key, n * fe, ov.centroid);
                     self.pending.push(Pending {
                         rate,

@@ -26,7 +26,7 @@ pub mod water;
 pub mod world;
 
 pub use body::{Block, Bodies, BodyId, Drive, Role, Shape, ShapeError};
-pub use contact::{Contact, ContactParams, TangentialReference};
+pub use contact::{Contact, ContactParams};
 pub use geometry::V2;
 pub use joint::{Joint, JointMaterial};
 pub use ledger::EnergyBudget;

@@ -16,7 +16,7 @@
 use super::body::{Block, Bodies, BodyId, Drive, Role, Shape, ShapeError};
 use super::boundary::Boundary;
 use super::broadphase::{SweepAndPrune, pair_key};
-use super::contact::{Contact, ContactParams, ContactSet, TangentialReference};
+use super::contact::{Contact, ContactParams, ContactSet};
 use super::fracture::JointSet;
 use super::geometry::{V2, below_line, overlap};
 use super::joint::{Joint, JointMaterial};

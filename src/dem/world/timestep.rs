@@ -74,20 +74,16 @@ impl World {
         // give a safe limit.
         let limit = |w2: f64, d: f64| 2.0 / ((w2 + 0.25 * d * d).sqrt() + 0.5 * d);
         let mut dt = f64::INFINITY;
-        let (mut dc, mut kc): (f64, f64) = (0.0, 0.0);
+        let mut dc: f64 = 0.0;
         for i in 0..b.len() {
             dc = dc.max(b.shape[i].diameter() * inv(i));
-            kc = kc.max(inv(i));
         }
         // One contact: ω_c² of its stiffer spring, normal or tangential, and its damping rate
         // in the explicit form (the implicit form is stable at any damping).
         let c = &self.params.contact;
         let k_ne = c.normal_stiffness;
-        let tangential = match c.tangential_reference {
-            TangentialReference::Thickness => c.tangential_stiffness() * kc,
-            // k_te = f·k_ne·L with L ≤ d, like the normal spring's.
-            TangentialReference::Chord => c.tangential_stiffness_per_chord() * dc,
-        };
+        // Eq (4)'s k_te = f·k_ne·L with L ≤ d, like the normal spring's.
+        let tangential = c.tangential_stiffness_per_chord() * dc;
         let contact_w2 = 2.0 * (k_ne * dc).max(tangential);
         let contact_d = match self.params.contact_dashpot {
             Dashpot::Implicit => 0.0,

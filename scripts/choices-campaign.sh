@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# The register of open modelling choices (issue 30, docs/choices.md): each probe of
+# data/campaigns/choices/ (a choice moved from its default, at mu = 0.4 and mu = 1.0 with
+# mu_w = 0.6, four seeds each), one after the other on all cores, into runs/choices/<probe>/.
+# Resumable like every campaign: re-running continues where it stopped. Run it under nohup:
+#   nohup scripts/choices-campaign.sh [THREADS] [OUT_ROOT] > runs/choices.log 2>&1 &
+# CHOICES="baseline tip-bevel" runs only those probes (in that order). Then
+#   pressridge-findings / scripts/choices-table.sh compare each probe with the baseline.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+threads=${1:-$(nproc)}
+root=${2:-runs/choices}
+bin=${PRESSRIDGE_BIN:-./target/release/pressridge}
+[ -n "${PRESSRIDGE_BIN:-}" ] || cargo build --release --bin pressridge
+mkdir -p "$root"
+echo "choices campaign: commit $(git rev-parse --short HEAD), $threads threads, $(date -u +%FT%TZ)"
+probes=${CHOICES:-baseline tip-bevel nose-bevel drag floe-length floe-damping}
+for p in $probes; do
+  echo "== $p ($(date -u +%T))"
+  "$bin" campaign --spec "data/campaigns/choices/$p.toml" --out "$root/$p" \
+    --threads "$threads" --progress-interval 60 2> "$root/$p.log"
+done
+echo "choices campaign done $(date -u +%FT%TZ)"
