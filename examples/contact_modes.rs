@@ -9,7 +9,7 @@
 //! stable below 2 and overstates the amplitude of a mode's answer to a kick by
 //! 1/sqrt(1 − (ω·Δt/2)²). Prints the distribution of both, and the same for the contacts'
 //! tangential springs of eq (4), ω_t·Δt = Δt·sqrt(k_te·(κ_a + κ_b)) with κ along the
-//! tangent (k_te does not scale with the chord), and the distribution of the chords.
+//! tangent (k_te = 0.6·k_ne·L per contact), and the distribution of the chords.
 //!
 //! ```sh
 //! cargo run --release --example contact_modes -- STATE.json [DT_S]
@@ -28,7 +28,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let dt: f64 = args.get(1).map_or(Ok(w.dt()), |s| s.parse())?;
     let b = w.bodies();
     let k_ne = w.params().contact.normal_stiffness;
-    let k_te = w.params().contact.tangential_stiffness();
+    let k_te_per_chord = w.params().contact.tangential_stiffness_per_chord();
     let kappa = |i: usize, p: V2, n: V2| {
         let d = b.drive[i];
         let mut k = 0.0;
@@ -65,6 +65,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         per_body[ia] += z2;
         per_body[ib] += z2;
         let t = ov.normal.perp();
+        let k_te = k_te_per_chord * ov.chord;
         let z2 = dt * dt * k_te * (kappa(ia, ov.centroid, t) + kappa(ib, ov.centroid, t));
         per_contact_t.push(z2.sqrt());
         per_body_t[ia] += z2;
@@ -88,7 +89,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             over(2.0)
         );
     };
-    println!("Δt = {dt:.3e} s, k_ne = {k_ne:e} N/m³, k_te = {k_te:e} N/m²");
+    println!(
+        "Δt = {dt:.3e} s, k_ne = {k_ne:e} N/m³, k_te = {k_te_per_chord:e} N/m³ times the chord"
+    );
     show("contacts, ω·Δt", &mut per_contact);
     show("blocks in contact, sqrt(Σ (ω·Δt)²)", &mut bodies);
     show("contacts' tangential springs, ω_t·Δt", &mut per_contact_t);

@@ -86,7 +86,7 @@ pub struct EnergyBudget {
     /// Frictional dissipation Φ_f, eq (11): the slip dissipation of the Coulomb cap
     /// (docs/model.md, "Energy ledger").
     pub friction_dissipation: f64,
-    /// Viscous (inelastic) contact dissipation Φ_i, eq (12).
+    /// Viscous (inelastic) contact dissipation: the viscous part of Φ_i, eq (12).
     pub viscous_dissipation: f64,
     /// Dissipation by water drag.
     pub drag_dissipation: f64,
@@ -109,6 +109,14 @@ pub struct EnergyBudget {
     /// Everything not in Φ_f, Φ_i or drag: joint, boundary and fracture dissipation,
     /// contact hysteresis and cut-away kinetic energy.
     pub other_dissipation: f64,
+    /// Φ_i as eq (12) defines it: the net work of the normal contact forces, viscous
+    /// (`viscous_dissipation`) plus elastic (`normal_elastic_work`) (J/m). A part of the
+    /// sinks above, not a sink of its own.
+    pub normal_contact_work: f64,
+    /// The elastic part of eq (12): the work of the elastic normal contact forces, held by
+    /// active contacts (in `elastic_energy`) or left at separation (in
+    /// `contact_hysteresis`) (J/m).
+    pub normal_elastic_work: f64,
     /// `work` minus all sinks: zero to round-off when the books are complete.
     pub residual: f64,
 }
@@ -156,6 +164,8 @@ impl EnergyBudget {
             cut_away: acc.cut_away,
             elastic_energy,
             other_dissipation,
+            normal_contact_work: c.normal_viscous + c.normal_elastic,
+            normal_elastic_work: c.normal_elastic,
             residual: work - sinks,
         }
     }
@@ -178,6 +188,8 @@ impl EnergyBudget {
             &mut self.cut_away,
             &mut self.elastic_energy,
             &mut self.other_dissipation,
+            &mut self.normal_contact_work,
+            &mut self.normal_elastic_work,
             &mut self.residual,
         ]
     }

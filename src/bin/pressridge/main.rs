@@ -8,6 +8,7 @@ use clap::{Parser, Subcommand};
 
 mod animate;
 mod campaign;
+mod findings;
 mod params;
 mod plot_strength;
 mod progress;
@@ -52,6 +53,8 @@ enum Command {
     Campaign(campaign::Args),
     /// Tabulate a campaign into a NetCDF lookup table (fits, bands, C_f).
     Tabulate(tabulate::Args),
+    /// The paper's stated findings tested on campaign records (a Markdown table).
+    Findings(findings::Args),
     /// Ice strength P (N/m) of a gridded thickness distribution (NetCDF in and out).
     Strength(strength::Args),
     /// One ridging step on a gridded thickness distribution (NetCDF in and out).
@@ -80,6 +83,7 @@ fn main() {
         Command::Animate(a) => animate::run(a),
         Command::Campaign(a) => campaign::run(a),
         Command::Tabulate(a) => tabulate::run(a),
+        Command::Findings(a) => findings::run(a),
         Command::Strength(a) => strength::run(a),
         Command::RidgeStep(a) => ridge_step::run(a),
         Command::PlotStrength(a) => plot_strength::run(a),

@@ -103,7 +103,7 @@ const BASE: LedgerTerm = LedgerTerm {
 
 /// Every term of an [`EnergyBudget`] but its time, in the order of [`EnergyBudget::values`]
 /// and of every file that keeps them (docs/model.md, "Energy ledger").
-pub const LEDGER_TERMS: [LedgerTerm; 15] = [
+pub const LEDGER_TERMS: [LedgerTerm; 17] = [
     LedgerTerm {
         name: "work",
         sign: Sign::Input,
@@ -158,7 +158,7 @@ pub const LEDGER_TERMS: [LedgerTerm; 15] = [
         sign: Sign::Dissipation,
         label: "viscous contact dissipation",
         equation: Some("eq (12)"),
-        description: "work of the viscous normal contact forces",
+        description: "work of the viscous normal contact forces: the viscous part of eq (12)",
         scale: true,
         sample: Keep::Required,
         ..BASE
@@ -228,6 +228,27 @@ pub const LEDGER_TERMS: [LedgerTerm; 15] = [
         description: "joint, boundary and fracture dissipation, contact hysteresis and \
                       cut-away kinetic energy",
         scale: true,
+        ..BASE
+    },
+    LedgerTerm {
+        name: "normal_contact_work",
+        label: "net normal contact work",
+        equation: Some("eq (12)"),
+        description: "Phi_i as eq (12) defines it: the net work of the normal contact forces, \
+                      viscous (viscous_dissipation) and elastic (normal_elastic_work); a \
+                      part of other terms, not a sink of its own",
+        summary: Keep::Added,
+        sample: Keep::Added,
+        ..BASE
+    },
+    LedgerTerm {
+        name: "normal_elastic_work",
+        label: "elastic normal contact work",
+        equation: Some("eq (12)"),
+        description: "the elastic part of eq (12): work of the elastic normal contact forces, \
+                      held by active contacts or left as hysteresis at separation",
+        summary: Keep::Added,
+        sample: Keep::Added,
         ..BASE
     },
     LedgerTerm {

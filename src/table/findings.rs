@@ -1,0 +1,715 @@
+//! The paper's stated findings, tested on ensembles (issue 30): each statement Hopkins (1994)
+//! makes in words about the model's behaviour away from and at the Figure 5 point, our
+//! ensemble's answer with its 95 % interval, and a verdict.
+//!
+//! The runs are chosen by their scenes, not by the directory that holds them: the Figure 5
+//! point is every run with h = 0.30 m, U = 0.25 m/s, E_top = 0.1 GPa, a 2-m floe, μ = 1.0 and
+//! μ_w = 0.6; the friction set is the same scene at other (μ, μ_w); the modulus and speed sets
+//! move E and U alone. So the same table reads the paper campaign's records
+//! (`data/paper/`) or any other set of campaigns of the same scenes.
+//!
+//! Verdicts: **agree** when the 95 % interval lies on the paper's side of the statement's
+//! bound, **disagree** when it lies on the other side, **unresolved** when it straddles it
+//! (more seeds would decide). Where the paper says "small", "nearly identical" or "nearly
+//! constant" without a number, the bound is ours and is written in the row
+//! ([`SMALL_SPREAD`], [`NEARLY_IDENTICAL`], [`NEARLY_CONSTANT`], [`OTHER_SINKS_BOUND`]).
+//! Intervals: Student's t for one ensemble's mean, Welch's t for a difference of two
+//! ensembles' means, the ordinary least-squares slope's t interval for a trend.
+
+use crate::record::RunRecord;
+use crate::table::choices::{other_sinks_fraction, phi_i};
+use crate::table::ensemble::Stat;
+use crate::table::fit::student_t_quantile;
+use crate::table::rafting::{Outcome, RAFTING_REACH, outcome};
+use std::fmt::Write as _;
+
+/// The paper's bound on the sinks other than Φ_f, Φ_i, ΔPE and kinetic energy, as a fraction
+/// of the work: "in total, typically amount to less than 5% of the energy consumed".
+pub const OTHER_SINKS_BOUND: f64 = 0.05;
+/// Our bound for "small" (the spread of W over μ at one μ_w): the difference of the mean W at
+/// μ = 0.4 and μ = 1.0, as a fraction of the mean at μ = 1.0. The paper's number is
+/// withheld; its words set the spread against the "strong" dependence on thickness (W more
+/// than doubles from 0.20 to 0.45 m), so a quarter is taken as the largest "small" spread.
+pub const SMALL_SPREAD: f64 = 0.25;
+/// Our bound for "nearly identical" (6.25 against 25 cm/s): a difference of means within this
+/// fraction of the 25 cm/s mean.
+pub const NEARLY_IDENTICAL: f64 = 0.15;
+/// Our bound for "nearly constant" (W/ΔPE over primary ridge growth): the ratio at the end of
+/// a run over the ratio at a quarter of its duration within 1 ± this fraction.
+pub const NEARLY_CONSTANT: f64 = 0.25;
+/// The share of the work breakage may take to count as "little energy" ("a few per cent").
+pub const BREAKAGE_BOUND: f64 = 0.05;
+
+/// A statement's verdict.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Verdict {
+    /// The 95 % interval lies on the paper's side.
+    Agree,
+    /// The 95 % interval lies on the other side.
+    Disagree,
+    /// The interval straddles the bound.
+    Unresolved,
+}
+
+impl Verdict {
+    /// As the table writes it.
+    pub fn as_str(&self) -> &'static str {
+        match self {
+            Verdict::Agree => "agree",
+            Verdict::Disagree => "disagree",
+            Verdict::Unresolved => "unresolved",
+        }
+    }
+    /// The verdict of an interval `[lo, hi]` against the statement "the value is above
+    /// `bound`" (`above = true`) or "below `bound`".
+    fn of(lo: f64, hi: f64, bound: f64, above: bool) -> Verdict {
+        let (lo, hi) = if above { (lo, hi) } else { (-hi, -lo) };
+        let bound = if above { bound } else { -bound };
+        if !(lo.is_finite() && hi.is_finite()) {
+            Verdict::Unresolved
+        } else if lo > bound {
+            Verdict::Agree
+        } else if hi < bound {
+            Verdict::Disagree
+        } else {
+            Verdict::Unresolved
+        }
+    }
+    /// The verdict of an interval `[lo, hi]` against "the value lies within ±`bound`".
+    fn within(lo: f64, hi: f64, bound: f64) -> Verdict {
+        if !(lo.is_finite() && hi.is_finite()) {
+            Verdict::Unresolved
+        } else if lo > -bound && hi < bound {
+            Verdict::Agree
+        } else if lo > bound || hi < -bound {
+            Verdict::Disagree
+        } else {
+            Verdict::Unresolved
+        }
+    }
+}
+
+/// One row of the statement table.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Finding {
+    /// The item of issue 30 it tests (`a`, `c1`, …).
+    pub item: &'static str,
+    /// The paper's words (section in brackets).
+    pub paper: &'static str,
+    /// Our answer: the measured quantity with its 95 % interval and the runs behind it.
+    pub ours: String,
+    /// The verdict.
+    pub verdict: Verdict,
+}
+
+/// A set of runs the table needs and did not find.
+#[derive(Debug, thiserror::Error)]
+#[error("findings: {what}: {have} runs, {need} needed")]
+pub struct MissingRuns {
+    /// Which runs (the scene that selects them).
+    pub what: String,
+    /// How many were found.
+    pub have: usize,
+    /// How many are needed.
+    pub need: usize,
+}
+
+/// A scene of the paper's experiments: the Figure 5 scene with some parameters moved.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Point {
+    mu: f64,
+    mu_w: f64,
+    h: f64,
+    e_top: f64,
+    speed: f64,
+}
+
+const FIGURE5: Point = Point {
+    mu: 1.0,
+    mu_w: 0.6,
+    h: 0.30,
+    e_top: 1.0e8,
+    speed: 0.25,
+};
+
+impl Point {
+    fn friction(mu: f64, mu_w: f64) -> Point {
+        Point {
+            mu,
+            mu_w,
+            ..FIGURE5
+        }
+    }
+    fn matches(&self, r: &RunRecord) -> bool {
+        let s = &r.scene;
+        let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * b.abs().max(1.0);
+        let (Some(sh), Some(fl)) = (&s.sheet, &s.floe) else {
+            return false;
+        };
+        close(s.contact.mu, self.mu)
+            && close(s.contact.mu_water, self.mu_w)
+            && close(sh.thickness, self.h)
+            && close(sh.e_top, self.e_top)
+            && close(sh.speed, self.speed)
+            && close(fl.thickness, 2.0)
+            && close(s.duration * sh.speed, 100.0)
+    }
+    fn describe(&self) -> String {
+        format!(
+            "h = {} m, μ = {}, μ_w = {}, E_top = {} GPa, U = {} m/s",
+            self.h,
+            self.mu,
+            self.mu_w,
+            self.e_top / 1e9,
+            self.speed
+        )
+    }
+}
+
+/// The runs of `records` at `p`; an error when fewer than `need`.
+fn select(records: &[RunRecord], p: Point, need: usize) -> Result<Vec<&RunRecord>, MissingRuns> {
+    let v: Vec<&RunRecord> = records.iter().filter(|r| p.matches(r)).collect();
+    if v.len() < need {
+        return Err(MissingRuns {
+            what: p.describe(),
+            have: v.len(),
+            need,
+        });
+    }
+    Ok(v)
+}
+
+fn sail_to_keel(r: &RunRecord) -> f64 {
+    r.metrics.sail_ice_area / r.metrics.keel_ice_area
+}
+
+/// W/ΔPE of run `r` at its sample nearest to `t` (s).
+fn ratio_at(r: &RunRecord, t: f64) -> Option<f64> {
+    let s = r
+        .samples
+        .iter()
+        .min_by(|a, b| (a.time - t).abs().total_cmp(&(b.time - t).abs()))?;
+    let e = s.energy();
+    (e.potential_energy > 0.0).then(|| e.work / e.potential_energy)
+}
+
+fn stat(runs: &[&RunRecord], f: impl Fn(&RunRecord) -> Option<f64>) -> Stat {
+    let xs: Vec<f64> = runs.iter().filter_map(|r| f(r)).collect();
+    Stat::of(&xs)
+}
+
+/// `mean unit [lo, hi] (n = …)` with `digits` decimals, values scaled by `scale`.
+fn interval(s: &Stat, scale: f64, digits: usize, unit: &str) -> String {
+    let h = s.half_width_95();
+    format!(
+        "{:.d$}{unit} [{:.d$}, {:.d$}] (n = {})",
+        s.mean * scale,
+        (s.mean - h) * scale,
+        (s.mean + h) * scale,
+        s.n,
+        d = digits
+    )
+}
+
+/// The Welch difference `b − a` as `(diff, lo, hi)`.
+fn difference(a: &Stat, b: &Stat) -> (f64, f64, f64) {
+    let (d, h) = a.welch_difference(b);
+    (d, d - h, d + h)
+}
+
+/// Least-squares slope of `y` on `x` with its 95 % interval `(slope, lo, hi)`.
+fn slope(x: &[f64], y: &[f64]) -> (f64, f64, f64) {
+    let n = x.len() as f64;
+    let (mx, my) = (x.iter().sum::<f64>() / n, y.iter().sum::<f64>() / n);
+    let sxx: f64 = x.iter().map(|a| (a - mx).powi(2)).sum();
+    let sxy: f64 = x.iter().zip(y).map(|(a, b)| (a - mx) * (b - my)).sum();
+    let b = sxy / sxx;
+    let a = my - b * mx;
+    let sse: f64 = x.iter().zip(y).map(|(u, v)| (v - a - b * u).powi(2)).sum();
+    let se = (sse / (n - 2.0) / sxx).sqrt();
+    let h = student_t_quantile(0.975, n - 2.0) * se;
+    (b, b - h, b + h)
+}
+
+/// The statement table of `records` (every run of the paper's scenes among them), needing at
+/// least `min_seeds` runs of each ensemble it reads.
+pub fn findings(records: &[RunRecord], min_seeds: usize) -> Result<Vec<Finding>, MissingRuns> {
+    let need = min_seeds.max(2);
+    let mut out = Vec::new();
+    let fig5 = select(records, FIGURE5, need)?;
+    let work = |r: &RunRecord| Some(r.summary.energy().work);
+    let pe = |r: &RunRecord| Some(r.summary.energy().potential_energy);
+    let ratio = |r: &RunRecord| {
+        let e = r.summary.energy();
+        (e.potential_energy > 0.0).then(|| e.work / e.potential_energy)
+    };
+
+    // (a) Sinks other than Φ_f, Φ_i, ΔPE and kinetic energy.
+    let s = stat(&fig5, |r| Some(other_sinks_fraction(r)));
+    let h = s.half_width_95();
+    out.push(Finding {
+        item: "a",
+        paper: "water drag, kinetic energy and viscous boundary forces \"in total, typically \
+                amount to less than 5% of the energy consumed\" (Energetics; Figure 5 point)",
+        ours: format!(
+            "(W − Φ_f − Φ_i − ΔPE − ΔKE)/W = {}; drag {:.1} %, boundary {:.1} %, joints \
+             {:.1} %, fracture {:.1} %",
+            interval(&s, 100.0, 1, " %"),
+            100.0
+                * stat(&fig5, |r| Some(
+                    r.summary.energy().drag_dissipation / r.summary.energy().work
+                ))
+                .mean,
+            100.0
+                * stat(&fig5, |r| Some(
+                    r.summary.energy().boundary_dissipation / r.summary.energy().work
+                ))
+                .mean,
+            100.0
+                * stat(&fig5, |r| Some(
+                    r.summary.energy().joint_dissipation / r.summary.energy().work
+                ))
+                .mean,
+            100.0
+                * stat(&fig5, |r| Some(
+                    r.summary.energy().fracture_dissipation / r.summary.energy().work
+                ))
+                .mean,
+        ),
+        verdict: Verdict::of(s.mean - h, s.mean + h, OTHER_SINKS_BOUND, false),
+    });
+
+    // (b) Φ_i as eq (12) defines it, with its parts.
+    let recorded = fig5
+        .iter()
+        .all(|r| r.summary.energy().normal_contact_work != 0.0);
+    let total = stat(&fig5, |r| Some(phi_i(r) / r.summary.energy().work));
+    let visc = stat(&fig5, |r| {
+        let e = r.summary.energy();
+        Some(e.viscous_dissipation / e.work)
+    });
+    out.push(Finding {
+        item: "b",
+        paper: "Φ_i \"is the net work performed by the normal contact forces at each point of \
+                contact\" (eq 12)",
+        ours: format!(
+            "Φ_i/W = {}: viscous {:.2} %, elastic {:.2} %{}",
+            interval(&total, 100.0, 2, " %"),
+            100.0 * visc.mean,
+            100.0 * (total.mean - visc.mean),
+            if recorded {
+                ""
+            } else {
+                " (records without `normal_contact_work`: elastic part read as the contact hysteresis)"
+            }
+        ),
+        verdict: if recorded {
+            Verdict::Agree
+        } else {
+            Verdict::Unresolved
+        },
+    });
+
+    // (c) Low friction ridges; sail relative to keel; ΔPE.
+    let mut low = Vec::new();
+    for mu_w in [0.6, 0.3] {
+        low.extend(select(records, Point::friction(0.4, mu_w), need)?);
+    }
+    // The measure's threshold, RAFTING_REACH, against the runs at the Figure 5 point, which
+    // ridge against the floe as the paper's Figure 5 shows.
+    let reach_high = fig5
+        .iter()
+        .filter_map(|r| r.summary.sheet_overrun_max)
+        .fold(f64::NEG_INFINITY, f64::max);
+    let rafted: Vec<f64> = low
+        .iter()
+        .filter_map(|r| match outcome(r, RAFTING_REACH) {
+            Outcome::Rafted(x) => Some(x),
+            _ => None,
+        })
+        .collect();
+    let unknown = low
+        .iter()
+        .filter(|r| outcome(r, RAFTING_REACH) == Outcome::Unknown)
+        .count();
+    out.push(Finding {
+        item: "c1",
+        paper: "at μ = 0.4 the sheet fails against the floe and builds a ridge (Figure 6a: \
+                keel building, then sail building; \"experiments with μ less than 0.4 resulted \
+                in sails of enormous widths\")",
+        ours: format!(
+            "{} of {} runs at μ = 0.4 (μ_w = 0.6 and 0.3) rode over the floe: the intact sheet \
+             passed its nose by more than {RAFTING_REACH} m{} (at most {reach_high:.2} m in the {} \
+             runs at the Figure 5 point){}",
+            rafted.len(),
+            low.len(),
+            if rafted.is_empty() {
+                String::new()
+            } else {
+                format!(
+                    ", by {:.1}–{:.1} m",
+                    rafted.iter().copied().fold(f64::INFINITY, f64::min),
+                    rafted.iter().copied().fold(f64::NEG_INFINITY, f64::max)
+                )
+            },
+            fig5.len(),
+            if unknown > 0 {
+                format!("; {unknown} without the diagnostic")
+            } else {
+                String::new()
+            }
+        ),
+        verdict: if !rafted.is_empty() {
+            Verdict::Disagree
+        } else if unknown > 0 {
+            Verdict::Unresolved
+        } else {
+            Verdict::Agree
+        },
+    });
+    for (item, paper, f, unit, scale) in [
+        (
+            "c2",
+            "\"increasing the above-water coefficient of friction μ results in a smaller, more \
+             compact sail and a larger keel\" (Effects of Friction)",
+            &sail_to_keel as &dyn Fn(&RunRecord) -> f64,
+            "sail/keel ice area",
+            1.0,
+        ),
+        (
+            "c3",
+            "the results show a decrease in potential energy as μ is increased (Effects of \
+             Friction)",
+            &|r: &RunRecord| r.summary.energy().potential_energy,
+            "ΔPE (kJ/m)",
+            1e-3,
+        ),
+    ] {
+        for mu_w in [0.6, 0.3] {
+            let a = stat(&select(records, Point::friction(1.0, mu_w), need)?, |r| {
+                Some(f(r))
+            });
+            let b = stat(&select(records, Point::friction(0.4, mu_w), need)?, |r| {
+                Some(f(r))
+            });
+            let (d, lo, hi) = difference(&a, &b);
+            out.push(Finding {
+                item,
+                paper,
+                ours: format!(
+                    "μ_w = {mu_w}: {unit} at μ = 0.4 minus at μ = 1.0: {:.3} [{:.3}, {:.3}] \
+                     ({:.3} against {:.3}; n = {}, {})",
+                    d * scale,
+                    lo * scale,
+                    hi * scale,
+                    b.mean * scale,
+                    a.mean * scale,
+                    b.n,
+                    a.n
+                ),
+                verdict: Verdict::of(lo, hi, 0.0, true),
+            });
+        }
+    }
+
+    // (d) Trends with μ at each μ_w; the spread of W; μ_w and the keel slope.
+    for mu_w in [0.6, 0.3] {
+        let mut runs = Vec::new();
+        for mu in [0.4, 0.6, 0.8, 1.0] {
+            runs.extend(select(records, Point::friction(mu, mu_w), need)?);
+        }
+        let x: Vec<f64> = runs.iter().map(|r| r.scene.contact.mu).collect();
+        for (name, paper, f, rising, scale, unit) in [
+            (
+                "W",
+                "\"a decrease in work ... as μ is increased\"; \"energy consumption is inversely \
+                 related to μ\" (Effects of Friction, Figure 9)",
+                &work as &dyn Fn(&RunRecord) -> Option<f64>,
+                false,
+                1e-3,
+                "kJ/m per unit μ",
+            ),
+            (
+                "ΔPE",
+                "\"a decrease in ... potential energy as μ is increased\" (Effects of Friction)",
+                &pe,
+                false,
+                1e-3,
+                "kJ/m per unit μ",
+            ),
+            (
+                "W/ΔPE",
+                "increasing friction \"increases the ratio of work to potential energy\" \
+                 (Effects of Friction)",
+                &ratio,
+                true,
+                1.0,
+                "per unit μ",
+            ),
+        ] {
+            let (xs, ys): (Vec<f64>, Vec<f64>) = x
+                .iter()
+                .zip(&runs)
+                .filter_map(|(&a, r)| f(r).map(|y| (a, y)))
+                .unzip();
+            let (b, lo, hi) = slope(&xs, &ys);
+            out.push(Finding {
+                item: "d1",
+                paper,
+                ours: format!(
+                    "μ_w = {mu_w}: slope of {name} over μ = 0.4–1.0: {:.1} [{:.1}, {:.1}] {unit} \
+                     (n = {})",
+                    b * scale,
+                    lo * scale,
+                    hi * scale,
+                    xs.len()
+                ),
+                verdict: Verdict::of(lo, hi, 0.0, rising),
+            });
+        }
+        let a = stat(&select(records, Point::friction(1.0, mu_w), need)?, work);
+        let b = stat(&select(records, Point::friction(0.4, mu_w), need)?, work);
+        let (d, lo, hi) = difference(&a, &b);
+        out.push(Finding {
+            item: "d2",
+            paper: "\"the difference in energy consumption between the high- and low-friction \
+                    experiments for a given value of μ_w was small\" (Effects of Friction; ours: \
+                    within ±25 % of W at μ = 1.0)",
+            ours: format!(
+                "μ_w = {mu_w}: W(μ = 0.4) − W(μ = 1.0) = {:+.0} % [{:+.0}, {:+.0}] of W(μ = 1.0)",
+                100.0 * d / a.mean,
+                100.0 * lo / a.mean,
+                100.0 * hi / a.mean
+            ),
+            verdict: Verdict::within(lo / a.mean, hi / a.mean, SMALL_SPREAD),
+        });
+    }
+    for (side, f) in [
+        (
+            "lead-side φ₁",
+            (|r: &RunRecord| r.metrics.keel_slope_lead) as fn(&RunRecord) -> Option<f64>,
+        ),
+        ("floe-side φ₂", |r: &RunRecord| r.metrics.keel_slope_floe),
+    ] {
+        let (mut a, mut b) = (Vec::new(), Vec::new());
+        for mu in [0.4, 0.6, 0.8, 1.0] {
+            a.extend(select(records, Point::friction(mu, 0.6), need)?);
+            b.extend(select(records, Point::friction(mu, 0.3), need)?);
+        }
+        let (sa, sb) = (stat(&a, f), stat(&b, f));
+        let (d, lo, hi) = difference(&sa, &sb);
+        out.push(Finding {
+            item: "d3",
+            paper: "\"the underwater coefficient affected the slope of the keel\" (Conclusions)",
+            ours: format!(
+                "keel slope {side} at μ_w = 0.3 minus at 0.6, all μ pooled: {d:+.1}° [{lo:+.1}, \
+                 {hi:+.1}] (n = {}, {})",
+                sb.n, sa.n
+            ),
+            verdict: if lo > 0.0 || hi < 0.0 {
+                Verdict::Agree
+            } else {
+                Verdict::Unresolved
+            },
+        });
+    }
+
+    // (e) The modulus ×10.
+    let stiff = select(
+        records,
+        Point {
+            e_top: 1.0e9,
+            ..FIGURE5
+        },
+        need,
+    )?;
+    for (name, paper, f, lower) in [
+        (
+            "L/h",
+            "with the higher modulus \"the blocks were somewhat smaller\" (Effects of modulus)",
+            (|r: &RunRecord| Some(r.metrics.length_to_thickness)) as fn(&RunRecord) -> Option<f64>,
+            Some(true),
+        ),
+        (
+            "W (kJ/m)",
+            "\"the average energy consumed using the highest modulus was lower\"",
+            |r: &RunRecord| Some(r.summary.energy().work / 1e3),
+            Some(true),
+        ),
+        (
+            "max sail height (m)",
+            "\"there were no significant differences between the final profiles\"",
+            |r: &RunRecord| Some(r.metrics.max_sail_height),
+            None,
+        ),
+        (
+            "max keel depth (m)",
+            "\"there were no significant differences between the final profiles\"",
+            |r: &RunRecord| Some(r.metrics.max_keel_depth),
+            None,
+        ),
+    ] {
+        let (a, b) = (stat(&fig5, f), stat(&stiff, f));
+        let (d, lo, hi) = difference(&a, &b);
+        out.push(Finding {
+            item: "e",
+            paper,
+            ours: format!(
+                "{name} at E = 1 GPa minus 0.1 GPa: {d:+.2} [{lo:+.2}, {hi:+.2}] ({:.2} against \
+                 {:.2}; n = {}, {})",
+                b.mean, a.mean, b.n, a.n
+            ),
+            verdict: match lower {
+                Some(_) => Verdict::of(lo, hi, 0.0, false),
+                None if lo > 0.0 || hi < 0.0 => Verdict::Disagree,
+                None => Verdict::Agree,
+            },
+        });
+    }
+    let s = stat(&stiff, |r| {
+        let e = r.summary.energy();
+        Some(e.fracture_dissipation / e.work)
+    });
+    let h = s.half_width_95();
+    out.push(Finding {
+        item: "e",
+        paper: "\"breakage, per se, consumed little energy\" (ours: below 5 % of W at 1 GPa)",
+        ours: format!("fracture/W at E = 1 GPa: {}", interval(&s, 100.0, 2, " %")),
+        verdict: Verdict::of(s.mean - h, s.mean + h, BREAKAGE_BOUND, false),
+    });
+
+    // (f) The speed.
+    let slow = select(
+        records,
+        Point {
+            speed: 0.0625,
+            ..FIGURE5
+        },
+        need,
+    )?;
+    for (name, f) in [
+        (
+            "W",
+            (|r: &RunRecord| Some(r.summary.energy().work)) as fn(&RunRecord) -> Option<f64>,
+        ),
+        ("ΔPE", |r: &RunRecord| {
+            Some(r.summary.energy().potential_energy)
+        }),
+        ("max keel depth", |r: &RunRecord| {
+            Some(r.metrics.max_keel_depth)
+        }),
+        ("max sail height", |r: &RunRecord| {
+            Some(r.metrics.max_sail_height)
+        }),
+    ] {
+        let (a, b) = (stat(&fig5, f), stat(&slow, f));
+        let (d, lo, hi) = difference(&a, &b);
+        out.push(Finding {
+            item: "f",
+            paper: "at 6.25 and 25 cm/s \"the average final ridge profiles and energetics in the \
+                    two sets of experiments were nearly identical\" (ours: within ±15 %)",
+            ours: format!(
+                "{name} at 6.25 cm/s minus 25 cm/s: {:+.0} % [{:+.0}, {:+.0}] (n = {}, {})",
+                100.0 * d / a.mean,
+                100.0 * lo / a.mean,
+                100.0 * hi / a.mean,
+                b.n,
+                a.n
+            ),
+            verdict: Verdict::within(lo / a.mean, hi / a.mean, NEARLY_IDENTICAL),
+        });
+    }
+    let fi = |r: &RunRecord| Some(phi_i(r) / r.summary.energy().work);
+    let (a, b) = (stat(&slow, fi), stat(&fig5, fi));
+    let (d, lo, hi) = difference(&a, &b);
+    out.push(Finding {
+        item: "f",
+        paper: "\"the inelastic dissipation increased slightly at 25 cm/s\"",
+        ours: format!(
+            "Φ_i/W at 25 cm/s minus 6.25 cm/s: {:+.2} [{:+.2}, {:+.2}] points of % (n = {}, {})",
+            100.0 * d,
+            100.0 * lo,
+            100.0 * hi,
+            b.n,
+            a.n
+        ),
+        verdict: Verdict::of(lo, hi, 0.0, true),
+    });
+
+    // (g) W/ΔPE over primary ridge growth, at the Figure 5 point.
+    let s = stat(&fig5, |r| {
+        let t = r.scene.duration;
+        Some(ratio_at(r, t)? / ratio_at(r, 0.25 * t)? - 1.0)
+    });
+    let h = s.half_width_95();
+    out.push(Finding {
+        item: "g",
+        paper: "\"for a given ice thickness and set of friction coefficients the ratio remains \
+                nearly constant over the period of primary ridge growth\" (Conclusions; ours: \
+                within ±25 % from a quarter of the run to its end)",
+        ours: format!(
+            "W/ΔPE at the end over W/ΔPE at a quarter of the run, less 1: {}",
+            interval(&s, 100.0, 0, " %")
+        ),
+        verdict: Verdict::within(s.mean - h, s.mean + h, NEARLY_CONSTANT),
+    });
+    Ok(out)
+}
+
+/// The statement table as Markdown: one row per finding and a count of the verdicts.
+pub fn markdown(rows: &[Finding]) -> String {
+    let mut s = String::from(
+        "| item | the paper | ours (mean [95 % interval]) | verdict |\n|---|---|---|---|\n",
+    );
+    for r in rows {
+        let _ = writeln!(
+            s,
+            "| {} | {} | {} | {} |",
+            r.item,
+            r.paper,
+            r.ours,
+            r.verdict.as_str()
+        );
+    }
+    let count = |v: Verdict| rows.iter().filter(|r| r.verdict == v).count();
+    let _ = writeln!(
+        s,
+        "\n{} agree, {} disagree, {} unresolved.",
+        count(Verdict::Agree),
+        count(Verdict::Disagree),
+        count(Verdict::Unresolved)
+    );
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The verdicts of an interval against a one-sided and a two-sided bound.
+    #[test]
+    fn verdicts_follow_the_interval() {
+        assert_eq!(Verdict::of(0.1, 0.2, 0.0, true), Verdict::Agree);
+        assert_eq!(Verdict::of(-0.2, -0.1, 0.0, true), Verdict::Disagree);
+        assert_eq!(Verdict::of(-0.1, 0.1, 0.0, true), Verdict::Unresolved);
+        assert_eq!(Verdict::of(0.01, 0.04, 0.05, false), Verdict::Agree);
+        assert_eq!(Verdict::of(0.06, 0.09, 0.05, false), Verdict::Disagree);
+        assert_eq!(Verdict::within(-0.1, 0.2, 0.25), Verdict::Agree);
+        assert_eq!(Verdict::within(0.3, 0.5, 0.25), Verdict::Disagree);
+        assert_eq!(Verdict::within(0.1, 0.3, 0.25), Verdict::Unresolved);
+        assert_eq!(Verdict::of(f64::NAN, 1.0, 0.0, true), Verdict::Unresolved);
+    }
+
+    /// The slope interval of exact data is the slope itself; of y = 2x + noise it covers 2.
+    #[test]
+    fn slope_and_its_interval() {
+        let x = [0.4, 0.6, 0.8, 1.0, 0.4, 0.6, 0.8, 1.0];
+        let y: Vec<f64> = x.iter().map(|v| 3.0 - 2.0 * v).collect();
+        let (b, lo, hi) = slope(&x, &y);
+        assert!((b + 2.0).abs() < 1e-12 && (hi - lo).abs() < 1e-9);
+        let noise = [0.1, -0.1, 0.05, -0.05, -0.1, 0.1, -0.05, 0.05];
+        let y: Vec<f64> = x.iter().zip(noise).map(|(v, e)| 2.0 * v + e).collect();
+        let (b, lo, hi) = slope(&x, &y);
+        assert!(lo < 2.0 && 2.0 < hi && lo < b && b < hi, "{lo} {b} {hi}");
+    }
+}

@@ -1,0 +1,69 @@
+//! The statement table of the paper's findings (issue 30, `pressridge findings`) on the
+//! committed records: it runs in seconds, names every item, and fails when the runs an item
+//! needs are missing.
+
+mod common;
+
+use std::path::Path;
+
+fn findings(args: &[&str]) -> std::process::Output {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    common::bin()
+        .current_dir(root)
+        .arg("findings")
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+/// The committed records of the paper campaign give a row for every item of the issue
+/// (a–g), each with a verdict, and the count of verdicts; the table committed under
+/// `docs/findings.md` is what the command prints.
+#[test]
+fn the_statement_table_is_made_from_the_committed_records() {
+    let o = findings(&[]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    for item in ["a", "b", "c1", "c2", "c3", "d1", "d2", "d3", "e", "f", "g"] {
+        assert!(
+            text.contains(&format!("\n| {item} |")),
+            "item {item}:\n{text}"
+        );
+    }
+    let rows = text
+        .lines()
+        .filter(|l| l.starts_with("| ") && !l.starts_with("| item"))
+        .count();
+    let verdicts = ["| agree |", "| disagree |", "| unresolved |"];
+    let judged = text
+        .lines()
+        .filter(|l| verdicts.iter().any(|v| l.ends_with(v)))
+        .count();
+    assert_eq!(rows, judged, "every row has a verdict");
+    assert!(
+        text.contains(" agree, ") && text.contains(" unresolved."),
+        "{text}"
+    );
+    let committed =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/findings.md"))
+            .unwrap();
+    assert!(
+        committed.contains(text.trim()),
+        "docs/findings.md is not the command's output: regenerate it with `pressridge findings --out docs/findings.md`"
+    );
+}
+
+/// Without the runs an item needs, the command fails and names the scene it looked for.
+#[test]
+fn missing_records_fail_naming_the_scene() {
+    let o = findings(&["--records", "data/paper/friction"]);
+    assert!(!o.status.success());
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        e.contains("μ = 1, μ_w = 0.6") && e.contains("0 runs, 7 needed"),
+        "{e}"
+    );
+    let o = findings(&["--records", "data/no-such-dir"]);
+    assert!(!o.status.success());
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--records data/no-such-dir"));
+}
