@@ -257,6 +257,13 @@ pub struct SheetSection {
     /// a long sheet under compression can tilt and sink its far end (a fully submerged
     /// block has only (ρ_w − ρ_i)·g·A of buoyancy left to pull it back).
     pub clamp_driven_end: bool,
+    /// The length L_v (m) that turns eq (3)'s k_nv (kg/(m²·s)) into eq (8)'s coefficient
+    /// k′ = k_nv·L_v·e^(−4(x_i − x_1)/(x_n − x_1)) (kg/(m·s)): eq (8) writes k′ = k_nv·e^(…)
+    /// with no length. Unset (the default), the sheet thickness h, the height of the face a
+    /// contact's dashpot acts on; 1 m reads eq (8) literally in the paper's 1-m depth
+    /// (docs/choices.md). Absent from scenes and states when unset.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub viscous_length: Option<f64>,
 }
 
 impl Default for SheetSection {
@@ -279,6 +286,7 @@ impl Default for SheetSection {
             viscous_decay: 4.0,
             gap: 0.05,
             clamp_driven_end: true,
+            viscous_length: None,
         }
     }
 }
@@ -798,6 +806,14 @@ mod tests {
         assert_eq!(Scene::default().numerics.contact_onset, ContactOnset::Area);
         let s = option_absent_unless_set("numerics.contact_onset", "velocity", &["speed"]);
         assert_eq!(s.world_params().contact_onset, ContactOnset::Velocity);
+    }
+
+    /// Eq (8)'s length is the sheet thickness unless set, and then absent from the scene's
+    /// TOML; a set length reaches the sheet's k′, and a non-positive one is refused by name.
+    #[test]
+    fn eq8_length_is_the_thickness_unless_set() {
+        let s = option_absent_unless_set("sheet.viscous_length", "1.0", &["0", "-1", "nan"]);
+        assert_eq!(s.sheet.as_ref().unwrap().viscous_length, Some(1.0));
     }
 
     /// Eq (4)'s k_te has one reading, per contact (0.6·k_ne·L): the key that chose the

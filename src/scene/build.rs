@@ -111,7 +111,7 @@ impl Scene {
             viscosity: self
                 .contact
                 .viscous_coefficient_for(sh.thickness, self.ice.density)
-                * sh.thickness,
+                * sh.viscous_length.unwrap_or(sh.thickness),
             blocks: Vec::with_capacity(n),
         };
         for k in 0..n {

@@ -112,6 +112,11 @@ impl Scene {
             if !(0.0..0.5).contains(&sh.poisson) {
                 return bad("sheet.poisson", "must lie in [0, 0.5)");
             }
+            if let Some(l) = sh.viscous_length
+                && !(l > 0.0 && l.is_finite())
+            {
+                return bad("sheet.viscous_length", "must be a positive length (m)");
+            }
             if sh.skeletal() >= sh.thickness {
                 return bad("sheet.skeletal_fraction", "leaves no joint");
             }
