@@ -67,3 +67,29 @@ fn missing_records_fail_naming_the_scene() {
     assert!(!o.status.success());
     assert!(String::from_utf8_lossy(&o.stderr).contains("--records data/no-such-dir"));
 }
+
+/// The register's effect table (`--choices`) from the committed probe records: the
+/// baseline's row and a row per probe setting at each friction pair, every probe difference
+/// with its interval, as `docs/choices.md` shows it.
+#[test]
+fn the_register_is_made_from_the_committed_probe_records() {
+    let o = findings(&["--choices", "data/choices"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8_lossy(&o.stdout);
+    for f in ["**μ = 0.4, μ_w = 0.6**", "**μ = 1, μ_w = 0.6**"] {
+        assert!(text.contains(f), "{f}:\n{text}");
+    }
+    assert_eq!(text.matches("| baseline (n = ").count(), 2, "{text}");
+    for probe in ["tip_bevel_fraction=", "nose_bevel=", "viscous_length="] {
+        assert!(text.contains(probe), "{probe}:\n{text}");
+    }
+    let committed = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("data/choices/register.md"),
+    )
+    .unwrap();
+    assert!(
+        committed.contains(text.trim()),
+        "data/choices/register.md is not the command's output: regenerate it with \
+         `pressridge findings --choices data/choices --out data/choices/register.md`"
+    );
+}
