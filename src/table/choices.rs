@@ -82,6 +82,16 @@ fn friction(r: &RunRecord) -> (f64, f64) {
     (r.scene.contact.mu, r.scene.contact.mu_water)
 }
 
+/// A probe run's own axis settings, without its friction (e.g. `floe.nose_bevel=0.25`).
+fn probe_setting(r: &RunRecord) -> String {
+    r.settings
+        .iter()
+        .filter(|x| !x.starts_with("contact.mu"))
+        .cloned()
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
 /// The runs of `records` at friction `f`.
 fn at(records: &[RunRecord], f: (f64, f64)) -> Vec<&RunRecord> {
     records.iter().filter(|r| friction(r) == f).collect()
@@ -136,32 +146,13 @@ pub fn effects(baseline: &[RunRecord], probes: &[(String, Vec<RunRecord>)]) -> S
         }
         let _ = writeln!(s, "{row}");
         for (name, runs) in probes {
-            let mut settings: Vec<String> = runs
-                .iter()
-                .filter(|r| friction(r) == f)
-                .map(|r| {
-                    r.settings
-                        .iter()
-                        .filter(|x| !x.starts_with("contact.mu"))
-                        .cloned()
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                })
-                .collect();
+            let mut settings: Vec<String> = at(runs, f).into_iter().map(probe_setting).collect();
             settings.sort();
             settings.dedup();
             for setting in settings {
                 let these: Vec<&RunRecord> = at(runs, f)
                     .into_iter()
-                    .filter(|r| {
-                        r.settings
-                            .iter()
-                            .filter(|x| !x.starts_with("contact.mu"))
-                            .cloned()
-                            .collect::<Vec<_>>()
-                            .join(", ")
-                            == setting
-                    })
+                    .filter(|r| probe_setting(r) == setting)
                     .collect();
                 let label = if setting.is_empty() {
                     name.clone()

@@ -16,6 +16,7 @@
 //! Intervals: Student's t for one ensemble's mean, Welch's t for a difference of two
 //! ensembles' means, the ordinary least-squares slope's t interval for a trend.
 
+use crate::dem::ledger::EnergyBudget;
 use crate::record::RunRecord;
 use crate::scene::Scene;
 use crate::table::choices::{other_sinks_fraction, phi_i};
@@ -266,6 +267,13 @@ pub fn findings(records: &[RunRecord], min_seeds: usize) -> Result<Vec<Finding>,
     };
 
     // (a) Sinks other than Φ_f, Φ_i, ΔPE and kinetic energy.
+    let share = |term: fn(&EnergyBudget) -> f64| {
+        let s = stat(&fig5, |r| {
+            let e = r.summary.energy();
+            Some(term(&e) / e.work)
+        });
+        100.0 * s.mean
+    };
     let s = stat(&fig5, |r| Some(other_sinks_fraction(r)));
     let h = s.half_width_95();
     out.push(Finding {
@@ -276,26 +284,10 @@ pub fn findings(records: &[RunRecord], min_seeds: usize) -> Result<Vec<Finding>,
             "(W − Φ_f − Φ_i − ΔPE − ΔKE)/W = {}; drag {:.1} %, boundary {:.1} %, joints \
              {:.1} %, fracture {:.1} %",
             interval(&s, 100.0, 1, " %"),
-            100.0
-                * stat(&fig5, |r| Some(
-                    r.summary.energy().drag_dissipation / r.summary.energy().work
-                ))
-                .mean,
-            100.0
-                * stat(&fig5, |r| Some(
-                    r.summary.energy().boundary_dissipation / r.summary.energy().work
-                ))
-                .mean,
-            100.0
-                * stat(&fig5, |r| Some(
-                    r.summary.energy().joint_dissipation / r.summary.energy().work
-                ))
-                .mean,
-            100.0
-                * stat(&fig5, |r| Some(
-                    r.summary.energy().fracture_dissipation / r.summary.energy().work
-                ))
-                .mean,
+            share(|e| e.drag_dissipation),
+            share(|e| e.boundary_dissipation),
+            share(|e| e.joint_dissipation),
+            share(|e| e.fracture_dissipation),
         ),
         verdict: Verdict::of(s.mean - h, s.mean + h, OTHER_SINKS_BOUND, false),
     });
