@@ -38,8 +38,9 @@ pub struct ContactParams {
     /// contact's chord, as in every incremental-slip contact law (Cundall–Strack's k_s/k_n).
     /// Default 0.6 ("60% of the normal value", Hopkins 1994).
     pub tangential_fraction: f64,
-    /// Thickness h of the parent sheet (m) in k_nv = f·2·sqrt(k_ne·h·ρ_i), eq (3). Unset (the default), scenes take their sheet's thickness, or
-    /// [`DEFAULT_REFERENCE_THICKNESS`] when they have no sheet.
+    /// Thickness h of the parent sheet (m) in k_nv = f·2·sqrt(k_ne·h·ρ_i), eq (3). Unset (the
+    /// default), scenes take their sheet's thickness, or [`DEFAULT_REFERENCE_THICKNESS`] when
+    /// they have no sheet.
     pub reference_thickness: Option<f64>,
     /// Friction coefficient μ for contacts whose overlap centroid is above the water line
     /// (dimensionless). Default 1.0 (the value the paper adopts after its friction study).
@@ -450,7 +451,8 @@ fn centred_viscous(bodies: &Bodies, c: &Contact, q: &Pending, dt: f64) -> f64 {
     (q.rate - 0.5 * q.damping * dt * an) / (1.0 + x)
 }
 
-/// The length L of a contact surface (m) for the dashpot c = k_nv·L: the chord, or, where
+/// The length L of a contact surface (m) for the dashpot c = k_nv·L and the tangential
+/// spring k_te = f·k_ne·L of eq (4): the chord, or, where
 /// the chord is undefined (one block inside the other), the smaller block's diameter.
 fn contact_length(ov: &Overlap, bodies: &Bodies, a: usize, b: usize) -> f64 {
     if ov.chord > 0.0 {
