@@ -5,7 +5,9 @@
 # Resumable like every campaign: re-running continues where it stopped. Run it under nohup:
 #   nohup scripts/choices-campaign.sh [THREADS] [OUT_ROOT] > runs/choices.log 2>&1 &
 # CHOICES="baseline tip-bevel" runs only those probes (in that order). Then
-#   pressridge-findings / scripts/choices-table.sh compare each probe with the baseline.
+#   pressridge findings --choices runs/choices
+# compares each probe with the baseline (docs/choices.md); scripts/archive-records.sh keeps
+# the records for the repository (data/choices/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 threads=${1:-$(nproc)}
