@@ -145,40 +145,40 @@ pub fn effects(baseline: &[RunRecord], probes: &[(String, Vec<RunRecord>)]) -> S
             );
         }
         let _ = writeln!(s, "{row}");
+        // Each probe setting, its runs pooled over the probe campaigns that hold it.
+        let mut by_setting: std::collections::BTreeMap<String, Vec<&RunRecord>> =
+            std::collections::BTreeMap::new();
         for (name, runs) in probes {
-            let mut settings: Vec<String> = at(runs, f).into_iter().map(probe_setting).collect();
-            settings.sort();
-            settings.dedup();
-            for setting in settings {
-                let these: Vec<&RunRecord> = at(runs, f)
-                    .into_iter()
-                    .filter(|r| probe_setting(r) == setting)
-                    .collect();
+            for r in at(runs, f) {
+                let setting = probe_setting(r);
                 let label = if setting.is_empty() {
                     name.clone()
                 } else {
                     setting
                 };
-                let mut row = format!("| {label} (n = {}) | {} |", these.len(), rafted(&these));
-                for (_, q, scale, d) in QUANTITIES {
-                    let (a, b) = (stat(&base, q), stat(&these, q));
-                    let (diff, h) = a.welch_difference(&b);
-                    let mark = if (diff - h) * (diff + h) > 0.0 {
-                        "**"
-                    } else {
-                        ""
-                    };
-                    let _ = write!(
-                        row,
-                        " {mark}{:+.d$} [{:+.d$}, {:+.d$}]{mark} |",
-                        diff * scale,
-                        (diff - h) * scale,
-                        (diff + h) * scale,
-                        d = d
-                    );
-                }
-                let _ = writeln!(s, "{row}");
+                by_setting.entry(label).or_default().push(r);
             }
+        }
+        for (label, these) in by_setting {
+            let mut row = format!("| {label} (n = {}) | {} |", these.len(), rafted(&these));
+            for (_, q, scale, d) in QUANTITIES {
+                let (a, b) = (stat(&base, q), stat(&these, q));
+                let (diff, h) = a.welch_difference(&b);
+                let mark = if (diff - h) * (diff + h) > 0.0 {
+                    "**"
+                } else {
+                    ""
+                };
+                let _ = write!(
+                    row,
+                    " {mark}{:+.d$} [{:+.d$}, {:+.d$}]{mark} |",
+                    diff * scale,
+                    (diff - h) * scale,
+                    (diff + h) * scale,
+                    d = d
+                );
+            }
+            let _ = writeln!(s, "{row}");
         }
     }
     s.push_str(

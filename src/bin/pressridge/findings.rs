@@ -18,8 +18,9 @@ pub struct Args {
     #[arg(long, default_value_t = 7)]
     min_seeds: usize,
     /// Instead of the findings, the register of open choices: the effect of each probe
-    /// campaign in this directory (every campaign directory in it but `baseline`) against
-    /// its `baseline` campaign, at each friction pair (docs/choices.md).
+    /// campaign in this directory against its baseline (the campaigns named `baseline*`), at
+    /// each friction pair; probe runs of one setting are pooled across campaigns (a probe's
+    /// later seeds in a campaign of their own) (docs/choices.md).
     #[arg(long, value_name = "DIR", conflicts_with = "records")]
     choices: Option<PathBuf>,
     /// Write the table here (Markdown) instead of to standard output.
@@ -44,14 +45,20 @@ fn campaigns(dir: &Path) -> Result<Vec<PathBuf>, BoxError> {
     Ok(v)
 }
 
-/// The register of open choices from the probe campaigns under `dir`.
+/// The register of open choices from the probe campaigns under `dir`: the baseline is every
+/// campaign whose name starts with `baseline` (e.g. `baseline-more` with later seeds), the
+/// probes all others.
 fn register(dir: &Path) -> Result<String, BoxError> {
-    let base = read_campaign(&dir.join("baseline"), true)?.records;
-    let mut probes = Vec::new();
+    let (mut base, mut probes) = (Vec::new(), Vec::new());
     for c in campaigns(dir)? {
-        let name = c.file_name().map(|n| n.to_string_lossy().into_owned());
-        if let Some(name) = name.filter(|n| n != "baseline") {
-            probes.push((name, read_campaign(&c, true)?.records));
+        let name = c
+            .file_name()
+            .map_or_else(String::new, |n| n.to_string_lossy().into_owned());
+        let records = read_campaign(&c, true)?.records;
+        if name.starts_with("baseline") {
+            base.extend(records);
+        } else {
+            probes.push((name, records));
         }
     }
     Ok(effects(&base, &probes))
