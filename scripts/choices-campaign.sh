@@ -16,7 +16,7 @@ bin=${PRESSRIDGE_BIN:-./target/release/pressridge}
 [ -n "${PRESSRIDGE_BIN:-}" ] || cargo build --release --bin pressridge
 mkdir -p "$root"
 echo "choices campaign: commit $(git rev-parse --short HEAD), $threads threads, $(date -u +%FT%TZ)"
-probes=${CHOICES:-baseline tip-bevel nose-bevel drag floe-length floe-damping eq8-length crack-speed floe-stiffness floe-pin gap floe-blocks}
+probes=${CHOICES:-baseline baseline-more tip-bevel nose-bevel drag floe-length floe-length-more floe-length-80 floe-damping eq8-length crack-speed floe-stiffness floe-pin gap floe-blocks}
 for p in $probes; do
   echo "== $p ($(date -u +%T))"
   "$bin" campaign --spec "data/campaigns/choices/$p.toml" --out "$root/$p" \
