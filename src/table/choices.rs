@@ -77,6 +77,61 @@ pub const QUANTITIES: [Quantity; 10] = [
     ("overrun (m)", |r| r.summary.sheet_overrun_max, 1.0, 1),
 ];
 
+/// The table of the paper's friction statements for the baseline and each probe setting: the
+/// difference of the means at μ = 1.0 and μ = 0.4 (same μ_w) with its 95 % Welch interval, in
+/// bold where the interval excludes zero; `agrees` counts the resolved differences of the
+/// paper's sign.
+fn friction_contrast(s: &mut String, baseline: &[RunRecord], probes: &[(String, Vec<RunRecord>)]) {
+    let mut waters: Vec<f64> = baseline.iter().map(|r| friction(r).1).collect();
+    waters.sort_by(f64::total_cmp);
+    waters.dedup();
+    for mu_w in waters {
+        let (lo, hi) = ((0.4, mu_w), (1.0, mu_w));
+        let _ = writeln!(
+            s,
+            "\n**The paper's friction statements at μ_w = {mu_w}: μ = 1.0 minus μ = 0.4**\n"
+        );
+        let mut head = String::from("| choice |");
+        for (label, ..) in FRICTION_STATEMENTS {
+            let _ = write!(head, " {label} |");
+        }
+        let _ = writeln!(
+            s,
+            "{head} resolved with the paper's sign |\n|---|---|---|---|---|---|"
+        );
+        let mut rows: Vec<(String, Vec<&RunRecord>, Vec<&RunRecord>)> =
+            vec![("baseline".into(), at(baseline, lo), at(baseline, hi))];
+        let (pl, ph) = (by_setting(probes, lo), by_setting(probes, hi));
+        for (label, runs) in pl {
+            if let Some(h) = ph.get(&label) {
+                rows.push((label, runs, h.clone()));
+            }
+        }
+        for (label, a, b) in rows {
+            let mut row = format!("| {label} (n = {}, {}) |", a.len(), b.len());
+            let mut agree = 0;
+            for (_, k, sign) in FRICTION_STATEMENTS {
+                let (_, q, scale, d) = QUANTITIES[k];
+                let (diff, h) = stat(&a, q).welch_difference(&stat(&b, q));
+                let resolved = (diff - h) * (diff + h) > 0.0;
+                if resolved && diff * sign > 0.0 {
+                    agree += 1;
+                }
+                let mark = if resolved { "**" } else { "" };
+                let _ = write!(
+                    row,
+                    " {mark}{:+.d$} [{:+.d$}, {:+.d$}]{mark} |",
+                    diff * scale,
+                    (diff - h) * scale,
+                    (diff + h) * scale,
+                    d = d
+                );
+            }
+            let _ = writeln!(s, "{row} {agree} of {} |", FRICTION_STATEMENTS.len());
+        }
+    }
+}
+
 /// The friction pair of a run.
 fn friction(r: &RunRecord) -> (f64, f64) {
     (r.scene.contact.mu, r.scene.contact.mu_water)
@@ -91,6 +146,37 @@ fn probe_setting(r: &RunRecord) -> String {
         .collect::<Vec<_>>()
         .join(", ")
 }
+
+/// Each probe setting's runs at friction `f`, pooled over the probe campaigns that hold it
+/// (a probe's later seeds in a campaign of their own), by the setting's label.
+fn by_setting(
+    probes: &[(String, Vec<RunRecord>)],
+    f: (f64, f64),
+) -> std::collections::BTreeMap<String, Vec<&RunRecord>> {
+    let mut m: std::collections::BTreeMap<String, Vec<&RunRecord>> = Default::default();
+    for (name, runs) in probes {
+        for r in at(runs, f) {
+            let setting = probe_setting(r);
+            let label = if setting.is_empty() {
+                name.clone()
+            } else {
+                setting
+            };
+            m.entry(label).or_default().push(r);
+        }
+    }
+    m
+}
+
+/// The paper's friction statements, as signs of the change from μ = 0.4 to μ = 1.0 at one
+/// μ_w: W falls, ΔPE falls, W/ΔPE rises, the sail shrinks against the keel (Hopkins 1994,
+/// "Effects of Friction"). (column label, quantity index in [`QUANTITIES`], sign.)
+const FRICTION_STATEMENTS: [(&str, usize, f64); 4] = [
+    ("W (kJ/m), falls", 0, -1.0),
+    ("ΔPE (kJ/m), falls", 1, -1.0),
+    ("W/ΔPE, rises", 2, 1.0),
+    ("sail/keel, falls", 7, -1.0),
+];
 
 /// The runs of `records` at friction `f`.
 fn at(records: &[RunRecord], f: (f64, f64)) -> Vec<&RunRecord> {
@@ -145,21 +231,7 @@ pub fn effects(baseline: &[RunRecord], probes: &[(String, Vec<RunRecord>)]) -> S
             );
         }
         let _ = writeln!(s, "{row}");
-        // Each probe setting, its runs pooled over the probe campaigns that hold it.
-        let mut by_setting: std::collections::BTreeMap<String, Vec<&RunRecord>> =
-            std::collections::BTreeMap::new();
-        for (name, runs) in probes {
-            for r in at(runs, f) {
-                let setting = probe_setting(r);
-                let label = if setting.is_empty() {
-                    name.clone()
-                } else {
-                    setting
-                };
-                by_setting.entry(label).or_default().push(r);
-            }
-        }
-        for (label, these) in by_setting {
+        for (label, these) in by_setting(probes, f) {
             let mut row = format!("| {label} (n = {}) | {} |", these.len(), rafted(&these));
             for (_, q, scale, d) in QUANTITIES {
                 let (a, b) = (stat(&base, q), stat(&these, q));
@@ -181,13 +253,16 @@ pub fn effects(baseline: &[RunRecord], probes: &[(String, Vec<RunRecord>)]) -> S
             let _ = writeln!(s, "{row}");
         }
     }
+    friction_contrast(&mut s, baseline, probes);
     s.push_str(
         "\nBaseline: mean ± 95 % half-width (Student's t). Probes: difference of means from the \
          baseline with its 95 % Welch interval; in bold where the interval excludes zero. \
          Φ_i is eq (12)'s net normal contact work; other = W − Φ_f − Φ_i − ΔPE − ΔKE; \
          sail/keel is the rubble ice area above over below the water line; overrun is the \
          farthest the intact sheet passed the floe's nose; rafted counts the runs whose overrun \
-         passed 2 m.\n",
+         passed 2 m. The friction tables test the paper's statements within each setting: the \
+         change of each mean from μ = 0.4 to μ = 1.0 at one μ_w, with the paper's sign in the \
+         column's name.\n",
     );
     s
 }
