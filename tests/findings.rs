@@ -70,7 +70,8 @@ fn missing_records_fail_naming_the_scene() {
 
 /// The register's effect table (`--choices`) from the committed probe records: the
 /// baseline's row and a row per probe setting at each friction pair, every probe difference
-/// with its interval, as `docs/choices.md` shows it.
+/// with its interval, and the paper's friction statements per setting (a probe's later seeds
+/// pooled with its first), as `data/choices/register.md` holds it.
 #[test]
 fn the_register_is_made_from_the_committed_probe_records() {
     let o = findings(&["--choices", "data/choices"]);
@@ -79,7 +80,10 @@ fn the_register_is_made_from_the_committed_probe_records() {
     for f in ["**μ = 0.4, μ_w = 0.6**", "**μ = 1, μ_w = 0.6**"] {
         assert!(text.contains(f), "{f}:\n{text}");
     }
-    assert_eq!(text.matches("| baseline (n = ").count(), 2, "{text}");
+    // The baseline's row at each friction pair, and in the table of the friction statements.
+    assert_eq!(text.matches("| baseline (n = ").count(), 3, "{text}");
+    assert!(text.contains("friction statements at μ_w = 0.6"), "{text}");
+    assert!(text.contains("| floe.length=40.0 (n = 8, 8) |"), "{text}");
     for probe in ["tip_bevel_fraction=", "nose_bevel=", "viscous_length="] {
         assert!(text.contains(probe), "{probe}:\n{text}");
     }
