@@ -112,24 +112,31 @@ fn friction_contrast(s: &mut String, baseline: &[RunRecord], probes: &[(String, 
             let mut agree = 0;
             for (_, k, sign) in FRICTION_STATEMENTS {
                 let (_, q, scale, d) = QUANTITIES[k];
-                let (diff, h) = stat(&a, q).welch_difference(&stat(&b, q));
-                let resolved = (diff - h) * (diff + h) > 0.0;
+                let (cell, diff, resolved) = difference_cell(&stat(&a, q), &stat(&b, q), scale, d);
                 if resolved && diff * sign > 0.0 {
                     agree += 1;
                 }
-                let mark = if resolved { "**" } else { "" };
-                let _ = write!(
-                    row,
-                    " {mark}{:+.d$} [{:+.d$}, {:+.d$}]{mark} |",
-                    diff * scale,
-                    (diff - h) * scale,
-                    (diff + h) * scale,
-                    d = d
-                );
+                let _ = write!(row, " {cell} |");
             }
             let _ = writeln!(s, "{row} {agree} of {} |", FRICTION_STATEMENTS.len());
         }
     }
+}
+
+/// The difference of means `b − a` as a table cell, `diff [lo, hi]` with its 95 % Welch
+/// interval (scaled by `scale`, `d` decimals), in bold where the interval excludes zero;
+/// with the difference (unscaled) and whether it is resolved.
+fn difference_cell(a: &Stat, b: &Stat, scale: f64, d: usize) -> (String, f64, bool) {
+    let (diff, h) = a.welch_difference(b);
+    let resolved = (diff - h) * (diff + h) > 0.0;
+    let mark = if resolved { "**" } else { "" };
+    let cell = format!(
+        "{mark}{:+.d$} [{:+.d$}, {:+.d$}]{mark}",
+        diff * scale,
+        (diff - h) * scale,
+        (diff + h) * scale,
+    );
+    (cell, diff, resolved)
 }
 
 /// The friction pair of a run.
@@ -234,21 +241,8 @@ pub fn effects(baseline: &[RunRecord], probes: &[(String, Vec<RunRecord>)]) -> S
         for (label, these) in by_setting(probes, f) {
             let mut row = format!("| {label} (n = {}) | {} |", these.len(), rafted(&these));
             for (_, q, scale, d) in QUANTITIES {
-                let (a, b) = (stat(&base, q), stat(&these, q));
-                let (diff, h) = a.welch_difference(&b);
-                let mark = if (diff - h) * (diff + h) > 0.0 {
-                    "**"
-                } else {
-                    ""
-                };
-                let _ = write!(
-                    row,
-                    " {mark}{:+.d$} [{:+.d$}, {:+.d$}]{mark} |",
-                    diff * scale,
-                    (diff - h) * scale,
-                    (diff + h) * scale,
-                    d = d
-                );
+                let (cell, ..) = difference_cell(&stat(&base, q), &stat(&these, q), scale, d);
+                let _ = write!(row, " {cell} |");
             }
             let _ = writeln!(s, "{row}");
         }
