@@ -66,7 +66,9 @@ fn register(dir: &Path) -> Result<String, BoxError> {
 
 fn write(text: &str, out: Option<PathBuf>) -> Result<(), BoxError> {
     match out {
-        Some(p) => std::fs::write(&p, text).map_err(|e| format!("--out {}: {e}", p.display()))?,
+        // Through a temporary file and a rename: an interrupted write leaves the old file.
+        Some(p) => pressridge::io::write_atomic(&p, text.as_bytes())
+            .map_err(|e| format!("--out {}: {e}", p.display()))?,
         None => print!("{text}"),
     }
     Ok(())
