@@ -6,19 +6,22 @@
 # thickness-thin) and the checks of rafting and of the floe (thickness-thick
 # with the 2 m floe, sheet-length, thickness-thick-floe, thickness-scaled-floe), the
 # friction pairs at 0.20 and 0.45 m (friction-thickness) — seven seeds each, one after
-# the other on all cores, into runs/paper/<set>/. Resumable: finished runs are kept and
+# the other on all cores, into runs/paper2/<set>/. Resumable: finished runs are kept and
 # re-running continues where it stopped (a run cut off mid-way starts again), also on another
-# machine from the records committed under data/paper/<set>. Each set's
-# progress goes to runs/paper/<set>.log. Most of a day on two cores with the binary of
+# machine from the records committed under data/paper2/<set> (the decided model of issue 30:
+# k_te per contact, the 40-m floe; data/paper/ holds the former model's records, which no
+# longer match the scenes and would be refused). Each set's
+# progress goes to runs/paper2/<set>.log. Most of a day on two cores with the binary of
 # 2026-11-23 (docs/tables.md); run it under nohup:
-#   nohup scripts/paper-campaign.sh [THREADS] [OUT_ROOT] > runs/paper.log 2>&1 &
+#   nohup scripts/paper-campaign.sh [THREADS] [OUT_ROOT] > runs/paper2.log 2>&1 &
 # PAPER_SETS="friction modulus" runs only those sets (in that order).
-# Then tabulate a set with `pressridge tabulate --campaign runs/paper/<set> ...`
+# Then tabulate a set with `pressridge tabulate --campaign runs/paper2/<set> ...`
 # (data/README.md gives the commands behind each committed table and report).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 threads=${1:-$(nproc)}
-root=${2:-runs/paper}
+root=${2:-runs/paper2}
+records=${PAPER_RECORDS:-data/paper2}
 bin=${PRESSRIDGE_BIN:-./target/release/pressridge}
 [ -n "${PRESSRIDGE_BIN:-}" ] || cargo build --release --bin pressridge
 mkdir -p "$root"
@@ -32,10 +35,10 @@ echo "paper campaign: $("$bin" --version 2>/dev/null || echo pressridge), commit
 sets=${PAPER_SETS:-thickness thickness-scaled thickness-scaled-thick thickness-thick sheet-length thickness-thick-floe thickness-scaled-floe friction friction-thickness modulus floe speed thickness-thin}
 for set in $sets; do
   echo "== $set ($(date -u +%T))"
-  # Runs committed under data/paper/<set> (a finished or interrupted campaign's records)
+  # Runs committed under $records/<set> (a finished or interrupted campaign's records)
   # are taken, not run again.
   resume=()
-  [ -d "data/paper/$set" ] && resume=(--resume-from "data/paper/$set")
+  [ -d "$records/$set" ] && resume=(--resume-from "$records/$set")
   "$bin" campaign --spec "data/campaigns/$set.toml" --out "$root/$set" "${resume[@]}" \
     --threads "$threads" --progress-interval 60 2> "$root/$set.log"
 done

@@ -665,9 +665,10 @@ fn shipped_specs_plan_the_papers_sets() {
     };
     assert_eq!(count("thickness.toml"), 6 * 7);
     assert_eq!(count("default-table.toml"), 6 * 3);
-    // Friction, speed, modulus and floe list every point of the paper's set but the Figure 5
-    // scene itself, which is the thickness set's 0.30 m point (checked below).
-    assert_eq!(count("friction.toml"), 7 * 7);
+    // Speed, modulus and floe list every point of the paper's set but the Figure 5 scene
+    // itself, which is the thickness set's 0.30 m point (checked below); friction lists all
+    // eight pairs, twelve seeds each (issue 30).
+    assert_eq!(count("friction.toml"), 8 * 12);
     assert_eq!(count("speed.toml"), 7);
     assert_eq!(count("modulus.toml"), 2 * 7);
     assert_eq!(count("floe.toml"), 7);
@@ -1067,7 +1068,7 @@ values = [[{thickness}, 0.30, 3.0, 30.0]]
     );
     let values = global(&nc, "scaled_values").unwrap();
     for want in [
-        "at 0.25 m: floe.thickness=2.0, floe.length=20.0",
+        "at 0.25 m: floe.thickness=2.0, floe.length=40.0",
         "at 0.45 m: floe.thickness=3.0, floe.length=30.0",
     ] {
         assert!(values.contains(want), "{values}");

@@ -21,7 +21,7 @@ fn findings(args: &[&str]) -> std::process::Output {
 /// `docs/findings.md` is what the command prints.
 #[test]
 fn the_statement_table_is_made_from_the_committed_records() {
-    let o = findings(&[]);
+    let o = findings(&["--set", "floe.length=20"]);
     let text = String::from_utf8_lossy(&o.stdout);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     for item in ["a", "b", "c1", "c2", "c3", "d1", "d2", "d3", "e", "f", "g"] {
@@ -49,7 +49,7 @@ fn the_statement_table_is_made_from_the_committed_records() {
             .unwrap();
     assert!(
         committed.contains(text.trim()),
-        "docs/findings.md is not the command's output: regenerate it with `pressridge findings --out docs/findings.md`"
+        "docs/findings.md is not the command's output: regenerate it with `pressridge findings --set floe.length=20 --out docs/findings.md`"
     );
 }
 

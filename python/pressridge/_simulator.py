@@ -275,8 +275,8 @@ def tabulate(
     ``scaled_values``).
 
     A run counts as rafted when its intact lead sheet passed the floe's nose by more than
-    ``rafting_reach`` (m, ``--rafting-reach``; default :data:`RAFTING_REACH`, 2 m) against
-    a 20-m floe, by the same fraction of its floe's length against another.
+    ``rafting_reach`` (m, ``--rafting-reach``; default :data:`RAFTING_REACH`, 2 m) in a
+    scene of the paper's size, scaled with a scene scaled with the sheet (docs/tables.md).
     ``exclude_rafted`` (``--exclude-rafted``) leaves rafted runs out of the table (listed in
     its ``excluded_runs`` attribute). Runs left out, partial campaigns and missing fits are
     reported as ``UserWarning``, as the command line prints them."""

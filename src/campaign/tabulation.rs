@@ -23,7 +23,7 @@ pub struct TabulateOptions {
     /// Default false.
     pub allow_partial: bool,
     /// A run counts as rafted when its intact lead sheet passed the floe's nose by more than
-    /// this (m) for the paper's 20-m floe, in proportion to the floe's length for another
+    /// this (m) in a scene of the paper's size, scaled with a scene scaled with the sheet
     /// ([`crate::table::rafting::reach_of`]). Default
     /// [`crate::table::rafting::RAFTING_REACH`].
     pub rafting_reach: f64,

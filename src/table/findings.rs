@@ -158,8 +158,9 @@ impl Point {
             ..FIGURE5
         }
     }
-    /// The point's scene, as JSON ([`physics`]).
-    fn scene(&self) -> serde_json::Value {
+    /// The point's scene, `base` with the point's friction, modulus and speed, as JSON
+    /// ([`physics`]).
+    fn scene(&self, base: &Scene) -> serde_json::Value {
         let sets = [
             format!("contact.mu={}", self.mu),
             format!("contact.mu_water={}", self.mu_w),
@@ -168,7 +169,8 @@ impl Point {
             format!("sheet.speed={}", self.speed),
             format!("duration={}", 100.0 / self.speed),
         ];
-        let s = Scene::default()
+        let s = base
+            .clone()
             .with_overrides(&sets)
             .expect("the paper's points are valid scenes");
         physics(&s)
@@ -184,9 +186,14 @@ impl Point {
     }
 }
 
-/// The runs of `records` at `p`; an error when fewer than `need`.
-fn select(records: &[RunRecord], p: Point, need: usize) -> Result<Vec<&RunRecord>, MissingRuns> {
-    let want = p.scene();
+/// The runs of `records` at `p` of scene `base`; an error when fewer than `need`.
+fn select<'a>(
+    records: &'a [RunRecord],
+    base: &Scene,
+    p: Point,
+    need: usize,
+) -> Result<Vec<&'a RunRecord>, MissingRuns> {
+    let want = p.scene(base);
     let v: Vec<&RunRecord> = records
         .iter()
         .filter(|r| physics(&r.scene) == want)
@@ -254,11 +261,19 @@ fn slope(x: &[f64], y: &[f64]) -> (f64, f64, f64) {
 }
 
 /// The statement table of `records` (every run of the paper's scenes among them), needing at
-/// least `min_seeds` runs of each ensemble it reads.
-pub fn findings(records: &[RunRecord], min_seeds: usize) -> Result<Vec<Finding>, MissingRuns> {
+/// least `min_seeds` runs of each ensemble it reads. `base` is the model whose findings are
+/// tested: the Figure 5 scene (the default scene, `data/scenes/figure5.toml`) or a variant of
+/// it, e.g. with the former 20-m floe; each of the paper's points moves only its friction,
+/// modulus or speed from it.
+pub fn findings(
+    records: &[RunRecord],
+    min_seeds: usize,
+    base: &Scene,
+) -> Result<Vec<Finding>, MissingRuns> {
     let need = min_seeds.max(2);
+    let sel = |p: Point| select(records, base, p, need);
     let mut out = Vec::new();
-    let fig5 = select(records, FIGURE5, need)?;
+    let fig5 = sel(FIGURE5)?;
     let work = |r: &RunRecord| Some(r.summary.energy().work);
     let pe = |r: &RunRecord| Some(r.summary.energy().potential_energy);
     let ratio = |r: &RunRecord| {
@@ -326,7 +341,7 @@ pub fn findings(records: &[RunRecord], min_seeds: usize) -> Result<Vec<Finding>,
     // (c) Low friction ridges; sail relative to keel; ΔPE.
     let mut low = Vec::new();
     for mu_w in [0.6, 0.3] {
-        low.extend(select(records, Point::friction(0.4, mu_w), need)?);
+        low.extend(sel(Point::friction(0.4, mu_w))?);
     }
     // The measure's threshold, RAFTING_REACH, against the runs at the Figure 5 point, which
     // ridge against the floe as the paper's Figure 5 shows.
@@ -399,12 +414,8 @@ pub fn findings(records: &[RunRecord], min_seeds: usize) -> Result<Vec<Finding>,
         ),
     ] {
         for mu_w in [0.6, 0.3] {
-            let a = stat(&select(records, Point::friction(1.0, mu_w), need)?, |r| {
-                Some(f(r))
-            });
-            let b = stat(&select(records, Point::friction(0.4, mu_w), need)?, |r| {
-                Some(f(r))
-            });
+            let a = stat(&sel(Point::friction(1.0, mu_w))?, |r| Some(f(r)));
+            let b = stat(&sel(Point::friction(0.4, mu_w))?, |r| Some(f(r)));
             let (d, lo, hi) = difference(&a, &b);
             out.push(Finding {
                 item,
@@ -429,7 +440,7 @@ pub fn findings(records: &[RunRecord], min_seeds: usize) -> Result<Vec<Finding>,
     for mu_w in [0.6, 0.3] {
         let mut runs = Vec::new();
         for mu in [0.4, 0.6, 0.8, 1.0] {
-            runs.extend(select(records, Point::friction(mu, mu_w), need)?);
+            runs.extend(sel(Point::friction(mu, mu_w))?);
         }
         let x: Vec<f64> = runs.iter().map(|r| r.scene.contact.mu).collect();
         for (name, paper, f, rising, scale, unit) in [
@@ -480,8 +491,8 @@ pub fn findings(records: &[RunRecord], min_seeds: usize) -> Result<Vec<Finding>,
                 verdict: Verdict::of(lo, hi, 0.0, rising),
             });
         }
-        let a = stat(&select(records, Point::friction(1.0, mu_w), need)?, work);
-        let b = stat(&select(records, Point::friction(0.4, mu_w), need)?, work);
+        let a = stat(&sel(Point::friction(1.0, mu_w))?, work);
+        let b = stat(&sel(Point::friction(0.4, mu_w))?, work);
         let (d, lo, hi) = difference(&a, &b);
         out.push(Finding {
             item: "d2",
@@ -506,8 +517,8 @@ pub fn findings(records: &[RunRecord], min_seeds: usize) -> Result<Vec<Finding>,
     ] {
         let (mut a, mut b) = (Vec::new(), Vec::new());
         for mu in [0.4, 0.6, 0.8, 1.0] {
-            a.extend(select(records, Point::friction(mu, 0.6), need)?);
-            b.extend(select(records, Point::friction(mu, 0.3), need)?);
+            a.extend(sel(Point::friction(mu, 0.6))?);
+            b.extend(sel(Point::friction(mu, 0.3))?);
         }
         let (sa, sb) = (stat(&a, f), stat(&b, f));
         let (d, lo, hi) = difference(&sa, &sb);
@@ -528,15 +539,11 @@ pub fn findings(records: &[RunRecord], min_seeds: usize) -> Result<Vec<Finding>,
     }
 
     // (e) The modulus ×10.
-    let stiff = select(
-        records,
-        Point {
-            e_top: 1.0e9,
-            e_bottom: 6.7e8,
-            ..FIGURE5
-        },
-        need,
-    )?;
+    let stiff = sel(Point {
+        e_top: 1.0e9,
+        e_bottom: 6.7e8,
+        ..FIGURE5
+    })?;
     for (name, paper, f, lower) in [
         (
             "L/h",
@@ -593,14 +600,10 @@ pub fn findings(records: &[RunRecord], min_seeds: usize) -> Result<Vec<Finding>,
     });
 
     // (f) The speed.
-    let slow = select(
-        records,
-        Point {
-            speed: 0.0625,
-            ..FIGURE5
-        },
-        need,
-    )?;
+    let slow = sel(Point {
+        speed: 0.0625,
+        ..FIGURE5
+    })?;
     for (name, f) in [
         (
             "W",

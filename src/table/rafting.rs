@@ -11,8 +11,8 @@
 //! floe's nose ([`crate::dem::World::sheet_overrun`]). A sheet that breaks against the floe
 //! keeps it within a block or so of zero: the tip block may ride onto the nose before it
 //! breaks off. A rafting sheet drives it up by the length it overrides. A run **rafted**
-//! when that distance exceeds [`RAFTING_REACH`] for the paper's 20-m floe, or the same
-//! fraction of its own floe's length in a scene scaled with the sheet ([`reach_of`]); runs
+//! when that distance exceeds [`RAFTING_REACH`] in a scene of the paper's size, or that reach
+//! scaled with the scene in a scene scaled with the sheet ([`reach_of`]); runs
 //! recorded before the diagnostic existed are **unknown**, never counted as ridged.
 
 use crate::record::RunRecord;
@@ -24,18 +24,34 @@ use crate::table::ensemble::{Stat, group_by_point};
 /// is a definition, reported with every count and adjustable (`tabulate --rafting-reach`).
 pub const RAFTING_REACH: f64 = 2.0;
 
-/// The floe length the reach is given for (m): the default scene's 20-m floe.
+/// The floe length the reach is given for (m): the 20-m floe of the paper's sets as first
+/// run (`floe.length` is 40 m by default now).
 pub const REACH_FLOE_LENGTH: f64 = 20.0;
 
-/// The reach (m) that classifies run `r`, given the reach `reach` (m) for a floe of
-/// [`REACH_FLOE_LENGTH`]: in proportion to the run's floe length, so that a scene whose
-/// lengths are scaled with the sheet (`data/campaigns/thickness-scaled.toml`: blocks of 2h/3,
-/// a floe 66.7h long) gets the same reach in block widths and sheet thicknesses, and a
-/// thick sheet's tip block riding up the floe's scaled nose bevel is not taken for a raft.
-/// Every 20-m floe (all the paper's sets) keeps `reach` itself; a scene without a floe too.
+/// The sheet thickness the reach is given for (m): the paper's Figure 5 sheet.
+pub const REACH_THICKNESS: f64 = 0.30;
+
+/// The floe thickness the reach is given for (m): the paper's 2-m floe.
+pub const REACH_FLOE_THICKNESS: f64 = 2.0;
+
+/// The reach (m) that classifies run `r`, given the reach `reach` (m) for the paper's scene
+/// (a 0.30-m sheet, [`REACH_THICKNESS`], against a 2-m floe, [`REACH_FLOE_THICKNESS`], of
+/// [`REACH_FLOE_LENGTH`]): multiplied by the scene's scale, the smallest of sheet thickness /
+/// 0.30 m, floe thickness / 2 m and floe length / 20 m, and never below one. A scene scaled
+/// with the sheet is larger in all three (`data/campaigns/thickness-scaled.toml`: blocks of
+/// 2h/3, a floe 6.67h thick and 133h long), and so gets the same reach in block widths and
+/// sheet thicknesses: a thick sheet's tip block riding up the floe's scaled nose bevel is not
+/// taken for a raft. A scene larger in one or two only is not a larger scene: a longer floe
+/// (the 40-m default) or a thicker sheet against the paper's floe keeps `reach`, as does a
+/// scene without a floe.
 pub fn reach_of(r: &RunRecord, reach: f64) -> f64 {
-    match &r.scene.floe {
-        Some(f) if f.length != REACH_FLOE_LENGTH => reach * f.length / REACH_FLOE_LENGTH,
+    match (&r.scene.floe, &r.scene.sheet) {
+        (Some(f), Some(s)) => {
+            let scale = (s.thickness / REACH_THICKNESS)
+                .min(f.thickness / REACH_FLOE_THICKNESS)
+                .min(f.length / REACH_FLOE_LENGTH);
+            reach * scale.max(1.0)
+        }
         _ => reach,
     }
 }
@@ -118,15 +134,23 @@ pub fn by_point(records: &[RunRecord], reach: f64) -> Vec<PointRafting> {
 mod tests {
     use super::*;
 
-    fn record(floe_length: Option<f64>, overrun: f64) -> RunRecord {
+    /// A record of the default scene with the floe `floe_length` m long (none if `None`),
+    /// the sheet `thickness` m thick and the floe 6.67 times that (at least 2 m), that overran
+    /// the floe by `overrun` m.
+    fn record(floe_length: Option<f64>, thickness: f64, overrun: f64) -> RunRecord {
+        let floe_thickness = (thickness * 20.0 / 3.0).max(2.0);
         let mut json = crate::simulation::summary_without_ledger();
         for t in crate::dem::ledger::LEDGER_TERMS {
             json[t.name] = 0.0.into();
         }
         json["sheet_overrun_max"] = overrun.into();
         let mut scene = crate::scene::Scene::default();
+        scene.sheet.as_mut().expect("a sheet").thickness = thickness;
         match floe_length {
-            Some(l) => scene.floe.as_mut().expect("a floe").length = l,
+            Some(l) => {
+                let f = scene.floe.as_mut().expect("a floe");
+                (f.length, f.thickness) = (l, floe_thickness);
+            }
             None => scene.floe = None,
         }
         RunRecord {
@@ -142,22 +166,34 @@ mod tests {
         }
     }
 
-    /// The reach is the given one against the paper's 20-m floe (and without a floe), and
-    /// in proportion to the floe's length against another.
+    /// The reach is the given one in a scene of the paper's size (a 0.30-m sheet on a 20-m
+    /// or longer floe, and without a floe), and scaled with a scene scaled with the sheet.
     #[test]
-    fn the_reach_scales_with_the_floe_length() {
-        assert_eq!(reach_of(&record(Some(20.0), 0.0), RAFTING_REACH), 2.0);
-        assert_eq!(reach_of(&record(None, 0.0), RAFTING_REACH), 2.0);
-        assert_eq!(reach_of(&record(Some(200.0), 0.0), RAFTING_REACH), 20.0);
-        assert_eq!(reach_of(&record(Some(40.0), 0.0), 3.0), 6.0);
+    fn the_reach_scales_with_the_scene() {
+        let r = RAFTING_REACH;
+        assert_eq!(reach_of(&record(Some(20.0), 0.30, 0.0), r), 2.0);
+        assert_eq!(reach_of(&record(None, 0.30, 0.0), r), 2.0);
+        // A longer floe alone is not a larger scene (the 40-m default, an 80-m probe) ...
+        assert_eq!(reach_of(&record(Some(40.0), 0.30, 0.0), r), 2.0);
+        assert_eq!(reach_of(&record(Some(80.0), 0.30, 0.0), 3.0), 3.0);
+        // ... nor a thicker sheet on the paper's floe length, nor a thinner one on any floe.
+        assert_eq!(reach_of(&record(Some(20.0), 0.45, 0.0), r), 2.0);
+        assert_eq!(reach_of(&record(Some(40.0), 0.10, 0.0), r), 2.0);
+        // The scaled scenes: a 3 m sheet against a 20 m thick floe 400 m (133h) or 200 m
+        // (66.7h, the former ratio) long; a 4 m sheet against a floe 133.3 m long.
+        assert_eq!(reach_of(&record(Some(400.0), 3.0, 0.0), r), 20.0);
+        assert_eq!(reach_of(&record(Some(200.0), 3.0, 0.0), r), 20.0);
+        let q = reach_of(&record(Some(133.3), 4.0, 0.0), r);
+        assert!((q - 13.33).abs() < 1e-9, "{q}");
+        // A 0.45 m sheet against the 2 m floe, 40 m long: the paper's scene, the same reach.
+        let mut thick = record(Some(40.0), 0.45, 0.0);
+        thick.scene.floe.as_mut().unwrap().thickness = 2.0;
+        assert_eq!(reach_of(&thick, r), 2.0);
         // A 3.8 m overrun (a 3 m sheet's 2-m tip block riding up the 5-m nose bevel of its
-        // 200-m floe) is no raft there, but would be against a 20-m floe.
+        // 200-m floe) is no raft there, but would be at the paper's size.
+        assert_eq!(outcome(&record(Some(200.0), 3.0, 3.8), r), Outcome::Ridged);
         assert_eq!(
-            outcome(&record(Some(200.0), 3.8), RAFTING_REACH),
-            Outcome::Ridged
-        );
-        assert_eq!(
-            outcome(&record(Some(20.0), 3.8), RAFTING_REACH),
+            outcome(&record(Some(40.0), 0.30, 3.8), r),
             Outcome::Rafted(3.8)
         );
     }

@@ -14,6 +14,11 @@ pub struct Args {
     /// paper's scenes will do; a run two directories share is counted once.
     #[arg(long, default_value = "data/paper")]
     records: Vec<PathBuf>,
+    /// A key of the Figure 5 scene moved for the model whose findings are tested, e.g.
+    /// `--set floe.length=20` for the records of the former 20-m floe (repeatable; the
+    /// paper's points then move only their friction, modulus or speed from it).
+    #[arg(long = "set", value_name = "KEY=VALUE", conflicts_with = "choices")]
+    set: Vec<String>,
     /// The fewest runs an ensemble may have (the paper's sets have seven).
     #[arg(long, default_value_t = 7)]
     min_seeds: usize,
@@ -94,9 +99,17 @@ pub fn run(a: Args) -> Result<(), BoxError> {
             dirs.push(c.display().to_string());
         }
     }
-    let rows = findings(&records, a.min_seeds)?;
+    let base = pressridge::scene::Scene::default()
+        .with_overrides(&a.set)
+        .map_err(|e| format!("--set: {e}"))?;
+    let rows = findings(&records, a.min_seeds, &base)?;
+    let model = if a.set.is_empty() {
+        String::new()
+    } else {
+        format!(" The model: the Figure 5 scene with {}.", a.set.join(", "))
+    };
     let text = format!(
-        "{}\nFrom {} runs of: {}.\n",
+        "{}\nFrom {} runs of: {}.{model}\n",
         markdown(&rows),
         records.len(),
         dirs.join(", ")
