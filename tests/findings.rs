@@ -21,7 +21,23 @@ fn findings(args: &[&str]) -> std::process::Output {
 /// `docs/findings.md` is what the command prints.
 #[test]
 fn the_statement_table_is_made_from_the_committed_records() {
-    let o = findings(&["--set", "floe.length=20"]);
+    check_table(&[], "docs/findings.md");
+}
+
+/// The former model's table (k_te per thickness, the 20-m floe; data/paper) is kept as a
+/// notes page and stays the command's output.
+#[test]
+fn the_former_models_table_is_made_from_its_records() {
+    check_table(
+        &["--records", "data/paper", "--set", "floe.length=20"],
+        "docs/notes/findings-former-model.md",
+    );
+}
+
+/// The statement table with `args` has a row for every item with a verdict, and `page`
+/// holds it.
+fn check_table(args: &[&str], page: &str) {
+    let o = findings(args);
     let text = String::from_utf8_lossy(&o.stdout);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     for item in ["a", "b", "c1", "c2", "c3", "d1", "d2", "d3", "e", "f", "g"] {
@@ -45,11 +61,11 @@ fn the_statement_table_is_made_from_the_committed_records() {
         "{text}"
     );
     let committed =
-        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/findings.md"))
-            .unwrap();
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(page)).unwrap();
     assert!(
         committed.contains(text.trim()),
-        "docs/findings.md is not the command's output: regenerate it with `pressridge findings --set floe.length=20 --out docs/findings.md`"
+        "{page} is not the output of `pressridge findings {}`: regenerate it",
+        args.join(" ")
     );
 }
 
