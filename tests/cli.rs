@@ -129,6 +129,36 @@ fn shipped_scene_files_load_and_compose() {
     assert!(out.summary.energy().work > 0.0);
 }
 
+/// The run summary says whether the intact sheet broke at the floe or rode over it
+/// (`rafting::verdict`, whose words for a ride-over are tested beside it).
+#[test]
+fn the_summary_says_whether_the_sheet_rode_over_the_floe() {
+    let dir = std::env::temp_dir().join(format!("pressridge-rideover-{}", std::process::id()));
+    let run = |extra: &[&str]| {
+        let o = bin()
+            .args([
+                "simulate",
+                "--no-figures",
+                "--overwrite",
+                "--set",
+                "duration=2",
+            ])
+            .args(extra)
+            .arg("--out")
+            .arg(&dir)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        String::from_utf8_lossy(&o.stdout).into_owned()
+    };
+    let broke = run(&[]);
+    assert!(
+        broke.contains("it broke at the floe (within the 2 m rafting reach)"),
+        "{broke}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn simulate_svg_writes_svg_figures_beside_the_pngs() {
     let dir = common::simulate("cli-svg", &["--svg", "-q", "--set", "duration=0.5"]);

@@ -45,7 +45,13 @@ pub const REACH_FLOE_THICKNESS: f64 = 2.0;
 /// (the 40-m default) or a thicker sheet against the paper's floe keeps `reach`, as does a
 /// scene without a floe.
 pub fn reach_of(r: &RunRecord, reach: f64) -> f64 {
-    match (&r.scene.floe, &r.scene.sheet) {
+    reach_in(&r.scene, reach)
+}
+
+/// The reach (m) in `scene` given the reach `reach` (m) for the paper's scene
+/// ([`reach_of`], for a scene rather than a run's record).
+pub fn reach_in(scene: &crate::scene::Scene, reach: f64) -> f64 {
+    match (&scene.floe, &scene.sheet) {
         (Some(f), Some(s)) => {
             let scale = (s.thickness / REACH_THICKNESS)
                 .min(f.thickness / REACH_FLOE_THICKNESS)
@@ -54,6 +60,17 @@ pub fn reach_of(r: &RunRecord, reach: f64) -> f64 {
         }
         _ => reach,
     }
+}
+
+/// In words, what a run whose intact sheet passed the floe's nose by at most `overrun` (m)
+/// did against rafting reach `reach` (m): it rode over the floe, or it broke at it.
+pub fn verdict(overrun: f64, reach: f64) -> String {
+    let what = if overrun > reach {
+        format!("it rode over the floe (more than the {reach} m rafting reach)")
+    } else {
+        format!("it broke at the floe (within the {reach} m rafting reach)")
+    };
+    format!("the intact sheet passed the floe's nose by at most {overrun:.2} m: {what}")
 }
 
 /// What a run did at the floe.
@@ -164,6 +181,18 @@ mod tests {
             metrics: Default::default(),
             digest: None,
         }
+    }
+
+    /// The run summary's words follow the reach.
+    #[test]
+    fn the_verdict_names_a_ride_over() {
+        let v = verdict(20.46, 2.0);
+        assert!(
+            v.ends_with("it rode over the floe (more than the 2 m rafting reach)"),
+            "{v}"
+        );
+        assert!(v.contains("by at most 20.46 m"), "{v}");
+        assert!(verdict(2.0, 2.0).ends_with("it broke at the floe (within the 2 m rafting reach)"));
     }
 
     /// The reach is the given one in a scene of the paper's size (a 0.30-m sheet on a 20-m

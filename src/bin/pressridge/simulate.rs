@@ -6,6 +6,7 @@ use pressridge::io::{series::write_series_csv, state, write_atomic};
 use pressridge::plot::{render, series};
 use pressridge::scene::Scene;
 use pressridge::simulation;
+use pressridge::table::rafting;
 use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
@@ -258,6 +259,10 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         e.residual,
         sm.max_relative_residual
     );
+    if let Some(x) = sm.sheet_overrun_max {
+        let reach = rafting::reach_in(&scene, rafting::RAFTING_REACH);
+        println!("{}", rafting::verdict(x, reach));
+    }
     println!("wrote {}", a.out.display());
     Ok(())
 }
