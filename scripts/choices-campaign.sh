@@ -4,7 +4,10 @@
 # mu_w = 0.6, four seeds each), one after the other on all cores, into runs/choices/<probe>/.
 # Resumable like every campaign: re-running continues where it stopped. Run it under nohup:
 #   nohup scripts/choices-campaign.sh [THREADS] [OUT_ROOT] > runs/choices.log 2>&1 &
-# CHOICES="baseline tip-bevel" runs only those probes (in that order). Then
+# CHOICES="baseline tip-bevel" runs only those probes (in that order). CHOICES_DIR picks
+# the folder of specs: data/campaigns/choices (the first look, on the 20-m floe; the default)
+# or data/campaigns/choices40 (eight seeds on the decided model, whose baseline is taken from
+# the friction set's records in data/paper2/friction). Then
 #   pressridge findings --choices runs/choices
 # compares each probe with the baseline (docs/choices.md); scripts/archive-records.sh keeps
 # the records for the repository (data/choices/).
@@ -16,10 +19,20 @@ bin=${PRESSRIDGE_BIN:-./target/release/pressridge}
 [ -n "${PRESSRIDGE_BIN:-}" ] || cargo build --release --bin pressridge
 mkdir -p "$root"
 echo "choices campaign: commit $(git rev-parse --short HEAD), $threads threads, $(date -u +%FT%TZ)"
-probes=${CHOICES:-baseline baseline-more tip-bevel nose-bevel drag floe-length floe-length-more floe-length-80 floe-damping eq8-length crack-speed floe-stiffness floe-pin gap floe-blocks}
+dir=${CHOICES_DIR:-data/campaigns/choices}
+if [ "$dir" = data/campaigns/choices ]; then
+  default="baseline baseline-more tip-bevel nose-bevel drag floe-length floe-length-more floe-length-80 floe-damping eq8-length crack-speed floe-stiffness floe-pin gap floe-blocks"
+else
+  default=$(cd "$dir" && ls *.toml | sed 's/\.toml$//' | sort | tr '\n' ' ')
+fi
+probes=${CHOICES:-$default}
 for p in $probes; do
   echo "== $p ($(date -u +%T))"
-  "$bin" campaign --spec "data/campaigns/choices/$p.toml" --out "$root/$p" \
+  resume=()
+  # The decided model's baseline is the friction set's two pairs: taken, not run again.
+  [ "$dir" != data/campaigns/choices ] && [ "$p" = baseline ] && [ -d data/paper2/friction ] &&
+    resume=(--resume-from data/paper2/friction)
+  "$bin" campaign --spec "$dir/$p.toml" --out "$root/$p" "${resume[@]}" \
     --threads "$threads" --progress-interval 60 2> "$root/$p.log"
 done
 echo "choices campaign done $(date -u +%FT%TZ)"
