@@ -69,7 +69,8 @@ fn check_table(args: &[&str], page: &str) {
     );
 }
 
-/// Without the runs an item needs, the command fails and names the scene it looked for.
+/// Without the runs an item needs, the command fails and names the scene it looked for; a
+/// bad `--set` fails naming the key.
 #[test]
 fn missing_records_fail_naming_the_scene() {
     let o = findings(&["--records", "data/paper/friction"]);
@@ -82,6 +83,16 @@ fn missing_records_fail_naming_the_scene() {
     let o = findings(&["--records", "data/no-such-dir"]);
     assert!(!o.status.success());
     assert!(String::from_utf8_lossy(&o.stderr).contains("--records data/no-such-dir"));
+    // A variant of the model with a bad key or value is refused, naming it.
+    for (set, says) in [
+        ("floe.lenght=20", "unknown field `lenght`"),
+        ("floe.length=-1", "`floe.length`: must be positive"),
+    ] {
+        let o = findings(&["--set", set]);
+        assert!(!o.status.success());
+        let e = String::from_utf8_lossy(&o.stderr);
+        assert!(e.contains("--set") && e.contains(says), "{set}: {e}");
+    }
 }
 
 /// The register's effect table (`--choices`) from the committed probe records: the
