@@ -99,9 +99,7 @@ pub fn run(a: Args) -> Result<(), BoxError> {
             dirs.push(c.display().to_string());
         }
     }
-    let base = pressridge::scene::Scene::default()
-        .with_overrides(&a.set)
-        .map_err(|e| format!("--set: {e}"))?;
+    let base = pressridge::scene::Scene::load(None, &a.set).map_err(|e| format!("--set: {e}"))?;
     let rows = findings(&records, a.min_seeds, &base)?;
     let model = if a.set.is_empty() {
         String::new()
