@@ -147,10 +147,9 @@ pub fn campaign_report(
         "\n## Rafting\n\nA run *rafted* when the leading edge of its intact lead sheet passed the \
          floe's nose by more than the rafting reach at some step (`sheet_overrun_max`; \
          docs/tables.md, \"Rafting\"): it slid over or under the floe instead of breaking \
-         against it. The reach is {reach} m in a scene of the paper's size (a 0.30-m sheet, a \
-         floe of 20 m or longer) and scaled with a scene scaled with the sheet. Runs \
-         made before the diagnostic existed are unknown. The statistics above include rafted \
-         runs.\n"
+         against it. The reach is {}. Runs made before the diagnostic existed are unknown. \
+         The statistics above include rafted runs.\n",
+        crate::table::rafting::reach_rule(reach)
     );
     let _ = writeln!(
         o,

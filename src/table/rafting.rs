@@ -62,6 +62,16 @@ pub fn reach_in(scene: &crate::scene::Scene, reach: f64) -> f64 {
     }
 }
 
+/// The rule of [`reach_in`] in words, for reach `reach` (m) in the paper's scene: the one
+/// wording of the report and the command line.
+pub fn reach_rule(reach: f64) -> String {
+    format!(
+        "{reach} m in a scene of the paper's size, and that times the scene's scale in a scene \
+         larger in all of sheet thickness, floe thickness and floe length (the smallest of \
+         h/0.30 m, floe thickness/2 m and floe length/20 m)"
+    )
+}
+
 /// In words, what a run whose intact sheet passed the floe's nose by at most `overrun` (m)
 /// did against rafting reach `reach` (m): it rode over the floe, or it broke at it.
 pub fn verdict(overrun: f64, reach: f64) -> String {

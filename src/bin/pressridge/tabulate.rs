@@ -42,8 +42,8 @@ pub struct Args {
     #[arg(long)]
     allow_partial: bool,
     /// A run counts as rafted when its intact lead sheet passed the floe's nose by more than
-    /// this (m) in a scene of the paper's size (a 0.30-m sheet, a floe of 20 m or longer), and
-    /// by the scene's scale in a scene scaled with the sheet; the report gives the rafting
+    /// this (m) in a scene of the paper's size, and by the scene's scale in a scene scaled
+    /// with the sheet (`rafting::reach_in`); the report gives the rafting
     /// frequency per grid point.
     #[arg(long, default_value_t = pressridge::table::rafting::RAFTING_REACH)]
     rafting_reach: f64,
@@ -220,8 +220,8 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         .iter()
         .fold((0, 0), |(r, k), p| (r + p.rafted.len(), k + p.known));
     println!(
-        "rafting: {rafted} of {known} runs with the diagnostic rafted (intact sheet more than {} m past the floe's nose, in a scene of the paper's size; scaled with a scene scaled with the sheet)",
-        a.rafting_reach
+        "rafting: {rafted} of {known} runs with the diagnostic rafted (intact sheet past the floe's nose by more than the reach: {})",
+        pressridge::table::rafting::reach_rule(a.rafting_reach)
     );
     if !table.duplicates.is_empty() {
         eprintln!(
