@@ -26,6 +26,12 @@ while [[ ${1:-} == --* ]]; do
   esac
 done
 [ $# -gt 0 ] || { echo "device-campaign: no campaign spec given" >&2; exit 2; }
+# The folder is replaced whole: refuse one that is not an earlier package (never wipe
+# another folder given by mistake, e.g. the repository itself).
+if [ -e "$pkg" ] && [ -n "$(ls -A "$pkg" 2>/dev/null)" ] && [ ! -f "$pkg/jobs.txt" ]; then
+  echo "device-campaign: $pkg exists and is not an earlier package (no jobs.txt); give a new folder" >&2
+  exit 2
+fi
 bin=${PRESSRIDGE_BIN:-./target/release/pressridge}
 [ -n "${PRESSRIDGE_BIN:-}" ] || cargo build --release --bin pressridge
 rm -rf "$pkg" && mkdir -p "$pkg/specs" "$pkg/stage/lib"
