@@ -248,7 +248,7 @@ contains
 
   ! ------------------------------------------------------------------ simulator
 
-  !> Runs the scene given as TOML text (the format of data/scenes/*.toml) on this thread.
+  !> Runs the scene given as TOML text (the format of the scene files in data/scenes) on this thread.
   subroutine pressridge_scene_run(toml, run, ierr)
     character(len=*), intent(in) :: toml
     type(pressridge_run), intent(out) :: run
