@@ -341,6 +341,22 @@ fn strength_and_ridge_step_refuse_values_they_cannot_honour() {
         &["divu", "y=1, x=1"],
     );
     assert!(!p.exists(), "nothing may be written on refusal");
+    // A strain rate without `units` is refused by the ridge step, naming it (a %/day field
+    // taken for 1/s would be 8.64e6 times too large); the strength, which does not use it,
+    // is not stopped by it.
+    for k in [4, 5] {
+        let mut vars = good_itd();
+        vars[k].units = None;
+        let f = d.join("nounits.nc");
+        write_nc(&f, &vars);
+        fails_with(
+            &ridge_step(&f, &p, &["--dt", "3600"]),
+            &[vars[k].name.as_str(), "no `units`"],
+        );
+        assert!(!p.exists(), "nothing may be written on refusal");
+        assert!(strength(&f, &p, &[]).status.success());
+        std::fs::remove_file(&p).unwrap();
+    }
     let _ = std::fs::remove_dir_all(&d);
 }
 

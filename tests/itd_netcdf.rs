@@ -122,14 +122,17 @@ fn ridge_step_without_aice0_accepts_full_cover_round_off() {
     let flat = |a: &ndarray::Array2<f64>| a.iter().copied().collect::<Vec<f64>>();
     let (_, divu) = read_field(&sample(), "divu").unwrap();
     let (_, shear) = read_field(&sample(), "shear").unwrap();
-    common::write_f64(
+    let (cat, sp) = (
+        [("nc", ncat), ("nj", ny), ("ni", nx)],
+        [("nj", ny), ("ni", nx)],
+    );
+    common::write_nc(
         &p,
-        &[("nc", ncat), ("nj", ny), ("ni", nx)],
         &[
-            ("aicen", &["nc", "nj", "ni"], flat(&g.aicen)),
-            ("vicen", &["nc", "nj", "ni"], flat(&g.vicen)),
-            ("divu", &["nj", "ni"], divu),
-            ("shear", &["nj", "ni"], shear),
+            common::Var::f64("aicen", &cat, flat(&g.aicen)),
+            common::Var::f64("vicen", &cat, flat(&g.vicen)),
+            common::Var::f64("divu", &sp, divu).with_units("s-1"),
+            common::Var::f64("shear", &sp, shear).with_units("s-1"),
         ],
     );
     let out = tmp("noaice0_out.nc");
@@ -540,7 +543,7 @@ fn cice_like_file_with_time_and_land_fill() {
 }
 
 /// CICE history strain rates (`divu`, `shear` in %/day) are converted to 1/s and the shear
-/// term is formed as Icepack's ridging needs it; an unknown unit is refused by name.
+/// term is formed as Icepack's ridging needs it; an unknown unit, or none, is refused by name.
 #[test]
 fn cice_history_rates_in_percent_per_day_are_converted_or_refused() {
     use pressridge::itd::deformation_terms;
@@ -557,10 +560,17 @@ fn cice_history_rates_in_percent_per_day_are_converted_or_refused() {
         v.put_values(&[0.9, 1.6], ..).unwrap();
         let mut d = f.add_variable::<f64>("divu", &["ni"]).unwrap();
         d.put_values(&[-8.64, 4.32], ..).unwrap();
-        d.put_attribute("units", units).unwrap();
         let mut s = f.add_variable::<f64>("shear", &["ni"]).unwrap();
         s.put_values(&[17.28, 0.0], ..).unwrap();
-        s.put_attribute("units", units).unwrap();
+        // "" writes no attribute at all.
+        if !units.is_empty() {
+            for n in ["divu", "shear"] {
+                f.variable_mut(n)
+                    .unwrap()
+                    .put_attribute("units", units)
+                    .unwrap();
+            }
+        }
         p
     };
     let g = read_itd(&write("pct.nc", "%/day")).unwrap();
@@ -575,6 +585,9 @@ fn cice_history_rates_in_percent_per_day_are_converted_or_refused() {
     );
     let g = read_itd(&write("s.nc", "s-1")).unwrap();
     assert_eq!(g.divu.unwrap()[0], -8.64, "1/s taken as given");
+    // No `units` at all: refused, naming the variable, never taken for 1/s.
+    let err = read_itd(&write("none.nc", "")).unwrap_err().to_string();
+    assert!(err.contains("divu") && err.contains("no `units`"), "{err}");
     std::fs::remove_dir_all(&dir).ok();
 }
 
@@ -611,6 +624,8 @@ fn cice_history(path: &Path, times: &[usize], ncat_bounds: &[f32]) {
     }
     let mut v = f.add_variable::<f32>("NCAT", &["nc"]).unwrap();
     v.put_attribute("units", "m").unwrap();
+    // An integer index coordinate, as Icepack's column driver writes `ni`.
+    f.add_variable::<i32>("ni", &["ni"]).unwrap();
     for n in ["aicen", "vicen"] {
         let mut v = f
             .add_variable::<f32>(n, &["time", "nc", "nj", "ni"])
@@ -654,6 +669,10 @@ fn cice_history(path: &Path, times: &[usize], ncat_bounds: &[f32]) {
         .unwrap()
         .put_values(ncat_bounds, ..)
         .unwrap();
+    f.variable_mut("ni")
+        .unwrap()
+        .put_values(&[1i32, 2, 3], ..)
+        .unwrap();
     let n = times.len();
     f.variable_mut("aicen")
         .unwrap()
@@ -674,7 +693,8 @@ fn str_attr(f: &netcdf::File, var: &str, name: &str) -> String {
 /// Strength and the ridging step of a CICE history file with two times: the category
 /// dimension found by name, time kept, each time equal to the same file holding that time
 /// alone; coordinates (time with its calendar, TLON/TLAT) and CF attributes carried over; land
-/// stays missing; the bounds come from NCAT.
+/// stays missing; the bounds come from NCAT; coordinates keep their type (`int ni`, float
+/// `TLAT`).
 #[test]
 fn cice_history_with_several_times_keeps_time_coordinates_and_land() {
     let both = tmp("hist2.nc");
@@ -754,6 +774,19 @@ fn cice_history_with_several_times_keeps_time_coordinates_and_land() {
         assert_eq!(str_attr(&f, "TLAT", "units"), "degrees_north");
         let t: Vec<f64> = f.variable("time").unwrap().get_values(..).unwrap();
         assert_eq!(t, vec![0.0, 31.0]);
+        // Coordinates keep their type: int stays int, float stays float, fill and all.
+        use netcdf::types::{FloatType, IntType, NcVariableType as T};
+        let ni = f.variable("ni").unwrap();
+        assert_eq!(ni.vartype(), T::Int(IntType::I32));
+        assert_eq!(ni.get_values::<i32, _>(..).unwrap(), vec![1, 2, 3]);
+        let lat = f.variable("TLAT").unwrap();
+        assert_eq!(lat.vartype(), T::Float(FloatType::F32));
+        let fill = lat.attributes().find(|a| a.name() == "_FillValue").unwrap();
+        assert_eq!(f32::try_from(fill.value().unwrap()).unwrap(), 1.0e30f32);
+        assert_eq!(
+            lat.get_values::<f32, _>(..).unwrap(),
+            (0..6).map(|c| 70.0 + 0.5 * c as f32).collect::<Vec<_>>()
+        );
     }
     let f = netcdf::open(&p2).unwrap();
     assert_eq!(str_attr(&f, "strength", "coordinates"), "TLON TLAT");

@@ -334,10 +334,15 @@ def _is_percent_per_day(da: xr.DataArray) -> bool:
 
 
 def _rate_per_second(da: xr.DataArray) -> xr.DataArray:
-    """A strain rate in 1/s: CICE history %/day converted; s-1 (or no units) as given; any
-    other unit refused by name, so that %/day is never taken for 1/s."""
+    """A strain rate in 1/s: CICE history %/day converted; s-1 as given; any other unit, or
+    none, refused by name (as the command line does), so that %/day is never taken for 1/s."""
     u = _units(da)
-    if u is None or u in _PER_SECOND:
+    if u is None:
+        raise ValueError(
+            f"variable `{da.name}` has no `units` attribute; a strain rate must say its unit: "
+            "'s-1' (1/s) or CICE history's '%/day'"
+        )
+    if u in _PER_SECOND:
         return da
     if u in _PERCENT_PER_DAY:
         return da / 100.0 / 86400.0

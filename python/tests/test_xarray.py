@@ -146,7 +146,7 @@ def test_bad_datasets(ds):
 
 def test_cice_history_rates_in_percent_per_day_are_converted_or_refused(ds):
     """CICE history `divu`, `shear` in %/day: converted to 1/s (the shear strain rate turned
-    into Icepack's ridging shear term); an unknown unit is refused by name."""
+    into Icepack's ridging shear term); an unknown unit, or none, is refused by name."""
     divu_s = ds["divu"]
     rate = xr.full_like(divu_s, 2.0e-6)
     delta = np.sqrt(divu_s**2 + 0.25 * rate**2)
@@ -161,3 +161,8 @@ def test_cice_history_rates_in_percent_per_day_are_converted_or_refused(ds):
     np.testing.assert_allclose(got.closing.values, want.closing.values, rtol=1e-9, atol=1e-20)
     with pytest.raises(ValueError, match="m/s"):
         prx.ridge_step(ds.assign(divu=divu_s.assign_attrs(units="m/s")), dt=3600.0)
+    # No units at all: refused by name, as the command line does, never taken for 1/s.
+    bare = divu_s.copy()
+    bare.attrs.pop("units")
+    with pytest.raises(ValueError, match="`divu` has no `units`"):
+        prx.ridge_step(ds.assign(divu=bare), dt=3600.0)

@@ -20,15 +20,16 @@
 //!
 //! Coordinates: the coordinate variables of the column dimensions (e.g. `time` with its
 //! `units` and `calendar`) and the auxiliary coordinates named in the `coordinates` attribute
-//! of `aicen` (e.g. CICE's `TLON TLAT`) are copied to the outputs with their attributes, and
+//! of `aicen` (e.g. CICE's `TLON TLAT`) are copied to the outputs with their type and
+//! attributes (an `int ni` stays `int`), and
 //! the output fields name the auxiliary ones in their own `coordinates` attribute.
 //!
-//! Units of `divu` and `shear`, from their `units` attribute: `s-1` (also `1/s`, `s^-1`, or no
-//! attribute): `divu` is the divergence and `shear` the ridging shear term ½(Δ − |div u|),
-//! both 1/s. `%/day` (CICE history files): `divu` and `shear` are CICE's divergence and shear
+//! Units of `divu` and `shear`, from their `units` attribute, which must be present: `s-1`
+//! (also `1/s`, `s^-1`): `divu` is the divergence and `shear` the ridging shear term
+//! ½(Δ − |div u|), both 1/s. `%/day` (CICE history files): `divu` and `shear` are CICE's divergence and shear
 //! strain rate, converted to 1/s, and the shear term is formed as Icepack's ridging needs it
-//! (`crate::itd::deformation_terms`, which needs `divu`). Any other unit is refused with a
-//! message naming it, so that %/day is never taken for 1/s.
+//! (`crate::itd::deformation_terms`, which needs `divu`). Any other unit, or none, is refused
+//! with a message naming the variable, so that %/day is never taken for 1/s.
 //!
 //! Output: CF-1.8 attributes (`units`, `long_name`, `standard_name` where CF has one), the
 //! options used and the package version as global attributes, and the input's `history`
@@ -53,7 +54,7 @@ mod vars;
 
 pub use cf_table::{read_cf_table, read_cf_table_at_friction, write_cf_table};
 pub use forcing::{CellField, CellUnits, read_cell_field};
-pub use grid::{CoordVar, ItdGrid};
+pub use grid::{CoordValues, CoordVar, ItdGrid};
 pub use output::{FieldMeta, NC_FILL_DOUBLE, Output, STRENGTH_META, history_line, write_output};
 pub use read::{read_itd, read_itd_with};
 pub use tracers::{SnowTracers, read_snow_tracers};
@@ -76,6 +77,9 @@ pub struct ReadOptions {
     /// Name of the category dimension; `None`: the one dimension of `aicen` named as in
     /// [`CATEGORY_DIM_NAMES`].
     pub category_dim: Option<String>,
+    /// Leave `divu` and `shear` unread ([`ItdGrid::divu`] and `shear` stay `None`), their
+    /// units unchecked: for the strength, which does not use them.
+    pub without_deformation: bool,
 }
 
 /// The position of the category dimension among `dims` (the dimensions of `var`): the

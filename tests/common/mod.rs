@@ -61,12 +61,13 @@ pub enum Data {
     Text,
 }
 
-/// A variable of a test file: name, dimensions (name, length), values.
+/// A variable of a test file: name, dimensions (name, length), values, `units` attribute.
 #[derive(Clone, Debug)]
 pub struct Var {
     pub name: String,
     pub dims: Vec<(String, usize)>,
     pub data: Data,
+    pub units: Option<String>,
 }
 
 impl Var {
@@ -75,7 +76,14 @@ impl Var {
             name: name.into(),
             dims: dims.iter().map(|(n, l)| (n.to_string(), *l)).collect(),
             data: Data::F64(v),
+            units: None,
         }
+    }
+
+    /// The same variable with a `units` attribute.
+    pub fn with_units(mut self, units: &str) -> Var {
+        self.units = Some(units.into());
+        self
     }
 }
 
@@ -119,6 +127,12 @@ pub fn write_nc(path: &Path, vars: &[Var]) {
             Data::Text => {
                 f.add_string_variable(&v.name, &dims).unwrap();
             }
+        }
+        if let Some(u) = &v.units {
+            f.variable_mut(&v.name)
+                .unwrap()
+                .put_attribute("units", u.as_str())
+                .unwrap();
         }
     }
     f.enddef().unwrap();
@@ -196,8 +210,8 @@ pub fn good_itd() -> Vec<Var> {
         Var::f64("vicen", &cat, vicen),
         Var::f64("aice0", &sp, vec![0.2; 6]),
         Var::f64("hin_max", &[("nb", 3)], vec![0.0, 1.0, 3.0]),
-        Var::f64("divu", &sp, vec![-1e-6; 6]),
-        Var::f64("shear", &sp, vec![0.0; 6]),
+        Var::f64("divu", &sp, vec![-1e-6; 6]).with_units("s-1"),
+        Var::f64("shear", &sp, vec![0.0; 6]).with_units("s-1"),
     ]
 }
 

@@ -8,7 +8,7 @@
 use std::path::PathBuf;
 
 use ndarray::Array1;
-use pressridge::io::itd_netcdf::{has_variable, read_field, read_fill, read_itd};
+use pressridge::io::itd_netcdf::{ReadOptions, has_variable, read_field, read_fill, read_itd_with};
 use pressridge::io::refuse_output_over_input;
 use pressridge::itd::strength_batch_masked;
 use pressridge::plot::strength_map::{Panel, default_width, draw_strength_maps};
@@ -99,7 +99,13 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         titles.push("strength".to_string());
         fields.push(v);
     } else {
-        let grid = read_itd(&args.input)?;
+        let grid = read_itd_with(
+            &args.input,
+            &ReadOptions {
+                without_deformation: true,
+                ..ReadOptions::default()
+            },
+        )?;
         // Dimensions of length 1 (e.g. the one time of a CICE history file) do not count.
         let map_dims: Vec<&(String, usize)> =
             grid.spatial_dims.iter().filter(|d| d.1 > 1).collect();

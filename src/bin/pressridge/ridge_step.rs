@@ -73,7 +73,7 @@ pub struct Args {
     #[arg(long, allow_negative_numbers = true)]
     pub dt: f64,
     /// Convergence rate (1/s, >= 0) for every column; default: max(-divu, 0) from the file
-    /// (`divu` in s-1, or CICE history %/day, converted; other units are refused).
+    /// (`divu` in s-1, or CICE history %/day, converted; other units or none are refused).
     #[arg(long, allow_negative_numbers = true)]
     pub convergence: Option<f64>,
     /// Shear term (1/s, >= 0) for every column; default: from the file's `shear` (s-1: the
@@ -180,6 +180,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         &args.input,
         &ReadOptions {
             category_dim: args.category_dim.clone(),
+            without_deformation: false,
         },
     )?;
     let ncol = grid.ncol();

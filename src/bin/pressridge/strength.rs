@@ -243,6 +243,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         &args.input,
         &ReadOptions {
             category_dim: args.category_dim.clone(),
+            without_deformation: true,
         },
     )?;
     let mut p = Array1::zeros(grid.ncol());

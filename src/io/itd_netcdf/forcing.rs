@@ -1,5 +1,5 @@
 //! Per-cell forcing read from a file: the deformation (`divu`, `shear`; 1/s or CICE
-//! history's %/day, converted) for the CICE closing, and the unit-checked per-cell fields
+//! history's %/day, converted; a missing `units` refused) for the CICE closing, and the unit-checked per-cell fields
 //! ([`read_cell_field`]: the host's closing and opening rates in 1/s, the freezing
 //! temperature in °C).
 
@@ -25,7 +25,15 @@ fn rate_units(path: &Path, v: &netcdf::Variable<'_>) -> Result<RateUnits, Netcdf
         .and_then(|a| a.value().ok())
         .and_then(|x| String::try_from(x).ok())
     else {
-        return Ok(RateUnits::PerSecond);
+        // Refused, as the host's rates are (`read_cell_field`): a %/day history field
+        // without its attribute taken for 1/s would be wrong by a factor 8.64e6.
+        return Err(NetcdfError::Value {
+            path: path.to_path_buf(),
+            var: v.name(),
+            msg: "has no `units` attribute; a strain rate must say its unit: \"s-1\" (1/s) \
+                  or CICE history's \"%/day\""
+                .into(),
+        });
     };
     if CellUnits::PerSecond.accepts(&units) {
         Ok(RateUnits::PerSecond)

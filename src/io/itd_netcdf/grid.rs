@@ -9,18 +9,57 @@ use ndarray::{Array1, Array2, Array3};
 use super::NetcdfError;
 use crate::itd::ItdError;
 
-/// A coordinate variable copied from the input to the outputs: its values (as f64) and
-/// attributes (`units`, `calendar`, `standard_name`...).
+/// A coordinate variable copied from the input to the outputs: its values, in the type the
+/// input stores them in, and its attributes (`units`, `calendar`, `standard_name`,
+/// `_FillValue`...), so that an output's coordinate is the input's (an `int ni` stays int).
 #[derive(Debug, Clone, PartialEq)]
 pub struct CoordVar {
     /// Variable name (e.g. `time`, `TLON`).
     pub name: String,
     /// Its dimensions, in file order.
     pub dims: Vec<String>,
-    /// Its values in C order.
-    pub values: Vec<f64>,
-    /// Its attributes, `_FillValue`/`missing_value` as f64 (the variable is written as f64).
+    /// Its values in C order, in the input's type.
+    pub values: CoordValues,
+    /// Its attributes as the input has them (the fill value in the variable's own type).
     pub attrs: Vec<(String, netcdf::AttributeValue)>,
+}
+
+/// The values of a [`CoordVar`] in the numeric type of the input's variable.
+#[derive(Debug, Clone, PartialEq)]
+#[allow(missing_docs)]
+pub enum CoordValues {
+    F64(Vec<f64>),
+    F32(Vec<f32>),
+    I8(Vec<i8>),
+    I16(Vec<i16>),
+    I32(Vec<i32>),
+    I64(Vec<i64>),
+    U8(Vec<u8>),
+    U16(Vec<u16>),
+    U32(Vec<u32>),
+    U64(Vec<u64>),
+}
+
+impl CoordValues {
+    /// The values as f64 (exact for every type but 64-bit integers beyond 2^53).
+    pub fn to_f64(&self) -> Vec<f64> {
+        fn conv<T: Copy + Into<f64>>(v: &[T]) -> Vec<f64> {
+            v.iter().map(|&x| x.into()).collect()
+        }
+        match self {
+            CoordValues::F64(v) => v.clone(),
+            CoordValues::F32(v) => conv(v),
+            CoordValues::I8(v) => conv(v),
+            CoordValues::I16(v) => conv(v),
+            CoordValues::I32(v) => conv(v),
+            CoordValues::U8(v) => conv(v),
+            CoordValues::U16(v) => conv(v),
+            CoordValues::U32(v) => conv(v),
+            // Calendar counts and indices; beyond 2^53 the nearest double.
+            CoordValues::I64(v) => v.iter().map(|&x| x as f64).collect(),
+            CoordValues::U64(v) => v.iter().map(|&x| x as f64).collect(),
+        }
+    }
 }
 
 /// A gridded thickness distribution with its column dimensions (every dimension of `aicen`

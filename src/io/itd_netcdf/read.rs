@@ -12,7 +12,7 @@ use super::vars::{
     all_dims, dims_of, fill_of, fmt_dims, is_fill, nc_err, read_f64, read_spatial, required,
     str_attr,
 };
-use super::{CoordVar, ItdGrid, NetcdfError, ReadOptions, category_axis};
+use super::{CoordValues, CoordVar, ItdGrid, NetcdfError, ReadOptions, category_axis};
 
 /// The ocean mask of CICE history files, `tmask` (1 ocean, 0 land), over the column
 /// dimensions: `None` without `tmask`; otherwise per column whether it is ocean. `tmask` may
@@ -67,6 +67,27 @@ pub fn read_itd(path: &Path) -> Result<ItdGrid, NetcdfError> {
     read_itd_with(path, &ReadOptions::default())
 }
 
+/// The values of coordinate `v` in its own numeric type; `None` for a non-numeric one.
+fn coord_values(path: &Path, v: &netcdf::Variable<'_>) -> Result<Option<CoordValues>, NetcdfError> {
+    use netcdf::types::{FloatType as F, IntType as I, NcVariableType as T};
+    // `vartype` panics on a type it does not know: not numeric either.
+    let t = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| v.vartype())).ok();
+    let e = nc_err(path);
+    Ok(Some(match t {
+        Some(T::Float(F::F64)) => CoordValues::F64(v.get_values(..).map_err(e)?),
+        Some(T::Float(F::F32)) => CoordValues::F32(v.get_values(..).map_err(e)?),
+        Some(T::Int(I::I8)) => CoordValues::I8(v.get_values(..).map_err(e)?),
+        Some(T::Int(I::I16)) => CoordValues::I16(v.get_values(..).map_err(e)?),
+        Some(T::Int(I::I32)) => CoordValues::I32(v.get_values(..).map_err(e)?),
+        Some(T::Int(I::I64)) => CoordValues::I64(v.get_values(..).map_err(e)?),
+        Some(T::Int(I::U8)) => CoordValues::U8(v.get_values(..).map_err(e)?),
+        Some(T::Int(I::U16)) => CoordValues::U16(v.get_values(..).map_err(e)?),
+        Some(T::Int(I::U32)) => CoordValues::U32(v.get_values(..).map_err(e)?),
+        Some(T::Int(I::U64)) => CoordValues::U64(v.get_values(..).map_err(e)?),
+        _ => return Ok(None),
+    }))
+}
+
 /// A coordinate variable of `file` to copy, if it is numeric and lies on `allowed` dims.
 fn coord_var(
     path: &Path,
@@ -81,25 +102,19 @@ fn coord_var(
     if dims.is_empty() || !dims.iter().all(|d| allowed.contains(&d.as_str())) {
         return Ok(None);
     }
-    let Ok(values) = read_f64(path, &v) else {
-        return Ok(None); // a text coordinate: not copied
+    let Some(values) = coord_values(path, &v)? else {
+        return Ok(None); // a text (or other non-numeric) coordinate: not copied
     };
     let mut attrs = Vec::new();
     for a in v.attributes() {
         let n = a.name().to_string();
-        // Bounds variables are not copied; fill values are rewritten as f64.
-        if matches!(
-            n.as_str(),
-            "bounds" | "_FillValue" | "missing_value" | "coordinates"
-        ) {
+        // Bounds variables are not copied; the fill value keeps the variable's type.
+        if matches!(n.as_str(), "bounds" | "coordinates") {
             continue;
         }
         if let Ok(x) = a.value() {
             attrs.push((n, x));
         }
-    }
-    if let Some(f) = fill_of(&v) {
-        attrs.push(("_FillValue".into(), f.into()));
     }
     Ok(Some(CoordVar {
         name: name.into(),
@@ -242,7 +257,11 @@ pub fn read_itd_with(path: &Path, opts: &ReadOptions) -> Result<ItdGrid, NetcdfE
                     || aice0.as_ref().is_some_and(|a| is_fill(a[c], a0fill)))
         })
         .collect();
-    let (divu, shear) = read_deformation(path, &file, &spatial)?;
+    let (divu, shear) = if opts.without_deformation {
+        (None, None)
+    } else {
+        read_deformation(path, &file, &spatial)?
+    };
     // Coordinates: those of the column dimensions, and aicen's auxiliary ones.
     let names: Vec<&str> = spatial.iter().map(|d| d.0.as_str()).collect();
     let mut coords = Vec::new();
