@@ -411,9 +411,11 @@ mod tests {
         assert_eq!(rc, PRESSRIDGE_ERR_IO);
         assert_eq!(message(), "x.nc: no such file");
         let m = "shape of vicen";
+        // SAFETY: `m` is 14 bytes of valid UTF-8 that outlive the call.
         let rc = unsafe { pressridge_set_error(PRESSRIDGE_ERR_BAD_SIZE, m.as_ptr().cast(), 14) };
         assert_eq!(rc, PRESSRIDGE_OK);
         assert_eq!(message(), m);
+        // SAFETY: as above.
         let rc = unsafe { pressridge_set_error(PRESSRIDGE_OK, m.as_ptr().cast(), 14) };
         assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
         assert_eq!(message(), m, "unchanged");
@@ -423,6 +425,7 @@ mod tests {
     fn strings_are_cut_at_character_boundaries() {
         let mut buf = [0x55u8; 3];
         let mut need = 0;
+        // SAFETY: `buf` holds the 3 bytes the call is told it may write.
         let r = unsafe { write_string("aé", buf.as_mut_ptr().cast(), 3, &mut need) };
         assert_eq!(r.unwrap_err().code, PRESSRIDGE_ERR_BUFFER_TOO_SMALL);
         assert_eq!(need, 4);

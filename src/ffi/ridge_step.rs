@@ -430,12 +430,17 @@ fn with_step_scratch<T>(ncat: usize, ntrcr: usize, f: impl FnOnce(&mut StepWorks
     })
 }
 
+/// # Safety
+/// A non-null `p` must point to `n` initialised, aligned f64 that nothing else reads or
+/// writes for `'a` (the C caller's promise).
 unsafe fn slice_mut<'a>(p: *mut f64, n: usize, what: &str) -> FfiResult<&'a mut [f64]> {
     check_ptr(p, what)?;
     // SAFETY: non-null, aligned; length is the caller's promise.
     Ok(unsafe { std::slice::from_raw_parts_mut(p, n) })
 }
 
+/// # Safety
+/// A non-null `p` must point to `n` initialised, aligned f64 that nothing writes for `'a`.
 unsafe fn slice<'a>(p: *const f64, n: usize, what: &str) -> FfiResult<&'a [f64]> {
     check_ptr(p, what)?;
     // SAFETY: non-null, aligned; length is the caller's promise.

@@ -224,8 +224,10 @@ fn dispatch(b: &mut Block, call: &BlockCall) -> Option<[f64; L]> {
     }
 }
 
-/// [`dispatch`] compiled for the target features `$features` (x86-64 only); the caller
-/// checks that the CPU has them.
+/// [`dispatch`] compiled for the target features `$features` (x86-64 only).
+///
+/// # Safety
+/// The CPU must have the features `$features`; the caller checks them at run time.
 macro_rules! dispatch_for {
     ($(#[$doc:meta])* $name:ident, $features:literal) => {
         $(#[$doc])*

@@ -110,6 +110,9 @@ fn fused_agrees() -> bool {
 /// Four lanes at a time; a lane outside the main range is finished by [`lane_outside`].
 /// Called through [`exp_in_place`]; the batch kernel's AVX2+FMA build
 /// (`lanes::dispatch_avx2_fma`) is the one caller that may inline it.
+///
+/// # Safety
+/// The CPU must have AVX2 and FMA (callers check with `is_x86_feature_detected!`).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
 #[inline]
