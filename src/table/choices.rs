@@ -66,10 +66,19 @@ pub const QUANTITIES: [Quantity; 10] = [
         1,
     ),
     ("other/W (%)", |r| Some(other_sinks_fraction(r)), 100.0, 1),
-    ("L/h", |r| Some(r.metrics.length_to_thickness), 1.0, 2),
+    (
+        "L/h",
+        // 0 when no block broke off: undefined, not a length.
+        |r| (r.metrics.length_to_thickness > 0.0).then_some(r.metrics.length_to_thickness),
+        1.0,
+        2,
+    ),
     (
         "sail/keel",
-        |r| Some(r.metrics.sail_ice_area / r.metrics.keel_ice_area),
+        |r| {
+            (r.metrics.keel_ice_area > 0.0)
+                .then(|| r.metrics.sail_ice_area / r.metrics.keel_ice_area)
+        },
         1.0,
         2,
     ),
@@ -126,7 +135,17 @@ fn friction_contrast(s: &mut String, baseline: &[RunRecord], probes: &[(String, 
 /// The difference of means `b − a` as a table cell, `diff [lo, hi]` with its 95 % Welch
 /// interval (scaled by `scale`, `d` decimals), in bold where the interval excludes zero;
 /// with the difference (unscaled) and whether it is resolved.
+///
+/// A quantity defined in fewer than two runs of either side (W/ΔPE of runs that built no
+/// ridge, ΔPE = 0) has no interval: the cell says `n/a` and how many runs define it.
 fn difference_cell(a: &Stat, b: &Stat, scale: f64, d: usize) -> (String, f64, bool) {
+    if a.n < 2 || b.n < 2 {
+        return (
+            format!("n/a (defined in {} and {} runs)", a.n, b.n),
+            f64::NAN,
+            false,
+        );
+    }
     let (diff, h) = a.welch_difference(b);
     let resolved = (diff - h) * (diff + h) > 0.0;
     let mark = if resolved { "**" } else { "" };
@@ -259,4 +278,24 @@ pub fn effects(baseline: &[RunRecord], probes: &[(String, Vec<RunRecord>)]) -> S
          column's name.\n",
     );
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A quantity no run defines (W/ΔPE where no ridge was built) is `n/a`, never a NaN
+    /// interval and never resolved; a defined one gets the Welch interval.
+    #[test]
+    fn undefined_quantities_are_not_given_an_interval() {
+        let none = Stat::of(&[]);
+        let some = Stat::of(&[14.0, 16.0, 15.0]);
+        let (cell, diff, resolved) = difference_cell(&some, &none, 1.0, 1);
+        assert_eq!(cell, "n/a (defined in 3 and 0 runs)");
+        assert!(diff.is_nan() && !resolved);
+        let (cell, diff, resolved) = difference_cell(&some, &Stat::of(&[24.0, 26.0, 25.0]), 1.0, 1);
+        assert_eq!(diff, 10.0);
+        assert!(resolved, "{cell}");
+        assert!(cell.starts_with("**+10.0 ["), "{cell}");
+    }
 }
