@@ -120,10 +120,6 @@
 //! ```
 //!
 
-// Every unsafe block states the invariant it relies on (`// SAFETY:`), every unsafe fn its
-// contract (`# Safety`).
-#![deny(clippy::undocumented_unsafe_blocks, clippy::missing_safety_doc)]
-
 pub mod campaign;
 pub mod dem;
 pub mod eta;

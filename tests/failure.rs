@@ -574,8 +574,12 @@ fn fuzz_malformed_scene_files() {
 fn ffi_last_error() -> String {
     use pressridge::ffi::pressridge_last_error;
     let mut need = 0i64;
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     unsafe { pressridge_last_error(std::ptr::null_mut(), 0, &mut need) };
     let mut buf = vec![0u8; need as usize];
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     unsafe { pressridge_last_error(buf.as_mut_ptr().cast(), need, std::ptr::null_mut()) };
     buf.pop();
     String::from_utf8(buf).unwrap()
@@ -593,13 +597,18 @@ fn c_abi_refuses_paths_with_nul_and_runs_of_no_step() {
     // The file exists under the part before the NUL: the old code opened it.
     let p = format!("{}\0.other", path.display());
     let mut h = std::ptr::null_mut();
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe { pressridge_cf_table_open(p.as_ptr().cast(), p.len() as i64, &mut h) };
     assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
     assert!(ffi_last_error().contains("NUL"), "{}", ffi_last_error());
     assert!(h.is_null());
     let p = path.to_str().unwrap();
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe { pressridge_cf_table_open(p.as_ptr().cast(), p.len() as i64, &mut h) };
     assert_eq!(rc, PRESSRIDGE_OK);
+    // SAFETY: a handle from its *_new/*_open (or null), freed once and not used after.
     unsafe { pressridge_cf_table_free(h) };
     for (text, key) in [
         (
@@ -611,6 +620,8 @@ fn c_abi_refuses_paths_with_nul_and_runs_of_no_step() {
         ("duration = 1.0\n", "numerics.time_step"),
     ] {
         let mut run = std::ptr::null_mut();
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         let rc = unsafe { pressridge_scene_run(text.as_ptr().cast(), text.len() as i64, &mut run) };
         assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE, "{text}");
         let e = ffi_last_error();
@@ -618,6 +629,7 @@ fn c_abi_refuses_paths_with_nul_and_runs_of_no_step() {
             e.contains(key) && (e.contains("no step") || e.contains("stable step")),
             "{e}"
         );
+        // SAFETY: a handle from its *_new/*_open (or null), freed once and not used after.
         unsafe { pressridge_run_free(run) };
     }
     let _ = std::fs::remove_dir_all(&d);

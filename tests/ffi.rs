@@ -24,8 +24,12 @@ fn sample() -> (Array2<f64>, Array2<f64>, Array1<f64>) {
 
 fn last_error() -> String {
     let mut need = 0i64;
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     unsafe { pressridge_last_error(null_mut(), 0, &mut need) };
     let mut buf = vec![0u8; need as usize];
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe { pressridge_last_error(buf.as_mut_ptr().cast(), need, null_mut()) };
     assert_eq!(rc, PRESSRIDGE_OK);
     buf.pop();
@@ -34,6 +38,8 @@ fn last_error() -> String {
 
 fn last_column() -> i64 {
     let (mut code, mut col) = (0, 0);
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     unsafe { pressridge_last_error_info(&mut code, &mut col) };
     col
 }
@@ -49,6 +55,8 @@ fn fortran_grid(ncat: usize, ncol: usize) -> PressridgeGrid {
         len_1d: 0,
     };
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_grid_fortran(ncat as i64, ncol as i64, &mut g) },
         PRESSRIDGE_OK
     );
@@ -58,9 +66,12 @@ fn fortran_grid(ncat: usize, ncol: usize) -> PressridgeGrid {
 fn default_options() -> PressridgeOptions {
     let mut o = std::mem::MaybeUninit::<PressridgeOptions>::uninit();
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_options_default(o.as_mut_ptr()) },
         PRESSRIDGE_OK
     );
+    // SAFETY: pressridge_options_default returned OK (asserted above), so every field is written.
     unsafe { o.assume_init() }
 }
 
@@ -77,6 +88,8 @@ fn strength_matches_rust_api_in_every_layout_and_option() {
     let mut handle = null_mut();
     let (h, c) = (table.thickness().to_vec(), table.values().to_vec());
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_cf_table_new(h.as_ptr(), c.as_ptr(), 3, &mut handle) },
         PRESSRIDGE_OK
     );
@@ -114,6 +127,8 @@ fn strength_matches_rust_api_in_every_layout_and_option() {
         let g = fortran_grid(ncat, ncol);
         let mut got = vec![f64::NAN; ncol];
         let mut clamped = -1i64;
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         let rc = unsafe {
             pressridge_strength(
                 &g,
@@ -135,10 +150,15 @@ fn strength_matches_rust_api_in_every_layout_and_option() {
         // C layout, straight from the NetCDF (ncat, nj*ni) arrays.
         let mut gc = g;
         assert_eq!(
+            // SAFETY: every non-null pointer is a live local or buffer of at least the length
+            // passed; the entry point checks nulls, sizes and handles itself (the C ABI's
+            // contract).
             unsafe { pressridge_grid_c(ncat as i64, ncol as i64, &mut gc) },
             PRESSRIDGE_OK
         );
         let mut got_c = vec![f64::NAN; ncol];
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         let rc = unsafe {
             pressridge_strength(
                 &gc,
@@ -154,6 +174,7 @@ fn strength_matches_rust_api_in_every_layout_and_option() {
         assert_eq!(rc, PRESSRIDGE_OK, "{}", last_error());
         assert_eq!(got, got_c);
     }
+    // SAFETY: a handle from its *_new/*_open (or null), freed once and not used after.
     assert_eq!(unsafe { pressridge_cf_table_free(handle) }, PRESSRIDGE_OK);
 }
 
@@ -167,6 +188,8 @@ fn single_column_calls_equal_the_batch() {
     let vf = fortran_order(&v);
     let mut table = null_mut();
     let (h, c) = ([0.5, 2.0], [10.0, 20.0]);
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     unsafe { pressridge_cf_table_new(h.as_ptr(), c.as_ptr(), 2, &mut table) };
     for cf_source in [PRESSRIDGE_CF_SOURCE_CONSTANT, PRESSRIDGE_CF_SOURCE_TABLE] {
         let mut o = default_options();
@@ -174,6 +197,8 @@ fn single_column_calls_equal_the_batch() {
         o.cf_table = table;
         let g = fortran_grid(ncat, ncol);
         let mut batch = vec![0.0; ncol];
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         let rc = unsafe {
             pressridge_strength(
                 &g,
@@ -190,6 +215,9 @@ fn single_column_calls_equal_the_batch() {
         let g1 = fortran_grid(ncat, 1);
         for col in 0..ncol {
             let (mut p, mut clamped) = (f64::NAN, -1i64);
+            // SAFETY: every non-null pointer is a live local or buffer of at least the length
+            // passed; the entry point checks nulls, sizes and handles itself (the C ABI's
+            // contract).
             let rc = unsafe {
                 pressridge_strength(
                     &g1,
@@ -208,6 +236,9 @@ fn single_column_calls_equal_the_batch() {
             // The per-cell entry point, twice (the second call reuses the options).
             for _ in 0..2 {
                 let mut q = f64::NAN;
+                // SAFETY: every non-null pointer is a live local or buffer of at least the length
+                // passed; the entry point checks nulls, sizes and handles itself (the C ABI's
+                // contract).
                 let rc = unsafe {
                     pressridge_strength_cell(
                         ncat as i64,
@@ -227,6 +258,8 @@ fn single_column_calls_equal_the_batch() {
     // option after a cached one is seen.
     let (a1, v1) = ([0.3, 0.4], [0.3, 0.8]);
     let mut q = 0.0;
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let cell = |ncat: i64, a: *const f64, o: *const PressridgeOptions, q: *mut f64| unsafe {
         pressridge_strength_cell(ncat, a, v1.as_ptr(), 0.3, o, q)
     };
@@ -267,10 +300,13 @@ fn single_column_calls_equal_the_batch() {
         q > p17,
         "a larger mu_rdg makes thicker ridges: {q} <= {p17}"
     );
+    // SAFETY: a handle from its *_new/*_open (or null), freed once and not used after.
     unsafe { pressridge_cf_table_free(table) };
     // Errors of a single column, and a different ncat afterwards on the same thread.
     let bad = [0.1, -0.2, 0.1];
     let mut p = 0.0;
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe {
         pressridge_strength(
             &fortran_grid(3, 1),
@@ -286,6 +322,8 @@ fn single_column_calls_equal_the_batch() {
     assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
     assert_eq!(last_column(), 0);
     let one = [0.5];
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe {
         pressridge_strength(
             &fortran_grid(1, 1),
@@ -327,6 +365,8 @@ fn strided_per_column_arrays_and_mask() {
     let mut o = default_options();
     o.fill = -1.0;
     let mut out = vec![f64::NAN; 3 * ncol];
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe {
         pressridge_strength(
             &g,
@@ -366,6 +406,8 @@ fn strength_errors_are_codes_with_messages() {
     let mut out = vec![0.0; ncol];
     let g = fortran_grid(ncat, ncol);
     type P = *const f64;
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let call = |g: &PressridgeGrid, a: P, v: P, a0: P, out: *mut f64| unsafe {
         pressridge_strength(g, a, v, a0, null(), null(), out, null_mut())
     };
@@ -377,6 +419,8 @@ fn strength_errors_are_codes_with_messages() {
 
     // Null pointers.
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe {
             pressridge_strength(
                 null(),
@@ -404,6 +448,8 @@ fn strength_errors_are_codes_with_messages() {
     assert!(last_error().contains("strength"));
     // Misaligned pointer.
     let bytes = a.as_ptr().cast::<u8>();
+    // SAFETY: one byte into the live array `a`, still inside it (only read by the entry point,
+    // which refuses it as misaligned).
     let mis = unsafe { bytes.add(1) }.cast::<f64>();
     assert_eq!(
         call(
@@ -440,6 +486,8 @@ fn strength_errors_are_codes_with_messages() {
         assert!(last_error().contains("grid"), "{}", last_error());
     }
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_grid_fortran(-1, 4, &mut PressridgeGrid { ..g }) },
         PRESSRIDGE_ERR_BAD_SIZE
     );
@@ -480,6 +528,8 @@ fn strength_errors_are_codes_with_messages() {
     // Options.
     let mut o = default_options();
     o.participation = 7;
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe {
         pressridge_strength(
             &g,
@@ -496,6 +546,8 @@ fn strength_errors_are_codes_with_messages() {
     assert!(last_error().contains("participation"));
     let mut o = default_options();
     o.cf = f64::NAN;
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe {
         pressridge_strength(
             &g,
@@ -511,6 +563,8 @@ fn strength_errors_are_codes_with_messages() {
     assert_eq!(rc, PRESSRIDGE_ERR_NOT_FINITE, "{}", last_error());
     let mut o = default_options();
     o.params.rhow = 900.0;
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe {
         pressridge_strength(
             &g,
@@ -527,6 +581,8 @@ fn strength_errors_are_codes_with_messages() {
     assert!(last_error().contains("rhow"), "{}", last_error());
     let mut o = default_options();
     o.cf_source = PRESSRIDGE_CF_SOURCE_TABLE;
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe {
         pressridge_strength(
             &g,
@@ -545,6 +601,8 @@ fn strength_errors_are_codes_with_messages() {
     let mut o = default_options();
     o.params.rhoi = 1100.0;
     o.params.rhow = 1200.0;
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe {
         pressridge_strength(
             &g,
@@ -565,6 +623,8 @@ fn strength_errors_are_codes_with_messages() {
 fn string_outputs_follow_the_required_length_protocol() {
     let mut need = 0i64;
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_version(null_mut(), 0, &mut need) },
         PRESSRIDGE_ERR_BUFFER_TOO_SMALL
     );
@@ -572,6 +632,8 @@ fn string_outputs_follow_the_required_length_protocol() {
     assert_eq!(need, v.len() as i64 + 1);
     let mut buf = [0x55u8; 3];
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_version(buf.as_mut_ptr().cast(), 3, &mut need) },
         PRESSRIDGE_ERR_BUFFER_TOO_SMALL
     );
@@ -583,18 +645,26 @@ fn string_outputs_follow_the_required_length_protocol() {
     assert!(last_error().contains("too small"));
     let mut buf = vec![0u8; need as usize];
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_version(buf.as_mut_ptr().cast(), need, null_mut()) },
         PRESSRIDGE_OK
     );
     assert_eq!(&buf[..v.len()], v.as_bytes());
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_version(buf.as_mut_ptr().cast(), -1, null_mut()) },
         PRESSRIDGE_ERR_BAD_SIZE
     );
     let mut abi = 0;
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     assert_eq!(unsafe { pressridge_abi_version(&mut abi) }, PRESSRIDGE_OK);
     assert_eq!(abi, PRESSRIDGE_ABI_VERSION);
     let mut name = [0u8; 64];
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     unsafe {
         pressridge_status_name(
             PRESSRIDGE_ERR_NOT_FINITE,
@@ -605,6 +675,8 @@ fn string_outputs_follow_the_required_length_protocol() {
     };
     assert!(name.starts_with(b"PRESSRIDGE_ERR_NOT_FINITE\0"));
     // Reading the last error does not clear it.
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     unsafe { pressridge_abi_version(null_mut()) };
     assert!(last_error().contains("version"));
     assert!(last_error().contains("null"));
@@ -657,6 +729,8 @@ fn ridge_step_matches_rust_api_and_conserves() {
         dvirdgdt: dvirdgdt.as_mut_ptr(),
     };
     let grid = fortran_grid(ncat, ncol);
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe {
         pressridge_ridge_step(
             &grid,
@@ -688,6 +762,8 @@ fn ridge_step_matches_rust_api_and_conserves() {
     assert!((vol1 - vol0).abs() <= 1e-12 * vol0);
 
     // Errors: wrong number of bounds, bad dt, output aliasing an input.
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let call = |af: &mut Vec<f64>, hin: *const f64, nb: i64, dt: f64, conv_p: *const f64| unsafe {
         pressridge_ridge_step(
             &grid,
@@ -756,6 +832,8 @@ fn single_column_ridging_equals_the_batch_and_leaves_bad_columns_unchanged() {
         dvirdgdt: null_mut(),
     };
     let (mut a1, mut v1, mut a01) = (ab.clone(), vb.clone(), a0b.clone());
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe {
         pressridge_ridge_step(
             &fortran_grid(ncat, ncol),
@@ -780,6 +858,8 @@ fn single_column_ridging_equals_the_batch_and_leaves_bad_columns_unchanged() {
             closing: &mut closing,
             ..rb
         };
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         let rc = unsafe {
             pressridge_ridge_step(
                 &g1,
@@ -810,6 +890,8 @@ fn single_column_ridging_equals_the_batch_and_leaves_bad_columns_unchanged() {
     let mut a = [0.2, 0.2, f64::NAN, 0.1, 0.1];
     let mut v = [0.1; 5];
     let mut a0 = 0.3;
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe {
         pressridge_ridge_step(
             &fortran_grid(5, 1),
@@ -840,18 +922,26 @@ fn cf_tables_load_query_free() {
     let p = path.to_str().unwrap();
     let mut h = null_mut();
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_cf_table_open(p.as_ptr().cast(), p.len() as i64, &mut h) },
         PRESSRIDGE_OK
     );
     let mut n = 0;
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     assert_eq!(unsafe { pressridge_cf_table_len(h, &mut n) }, PRESSRIDGE_OK);
     assert_eq!(n, 3);
     let (mut th, mut cf) = ([0.0; 3], [0.0; 3]);
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_cf_table_nodes(h, th.as_mut_ptr(), cf.as_mut_ptr(), 2) },
         PRESSRIDGE_ERR_BAD_SIZE
     );
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_cf_table_nodes(h, th.as_mut_ptr(), cf.as_mut_ptr(), 3) },
         PRESSRIDGE_OK
     );
@@ -859,21 +949,29 @@ fn cf_tables_load_query_free() {
     assert_eq!(cf, [5.0, 10.0, 14.0]);
     let (mut c, mut clamped) = (0.0, -1);
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_cf_table_lookup(h, 0.75, &mut c, &mut clamped) },
         PRESSRIDGE_OK
     );
     assert_eq!((c, clamped), (12.0, 0));
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_cf_table_lookup(h, 3.0, &mut c, &mut clamped) },
         PRESSRIDGE_OK
     );
     assert_eq!((c, clamped), (14.0, 1));
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_cf_table_lookup(h, f64::NAN, &mut c, null_mut()) },
         PRESSRIDGE_ERR_NOT_FINITE
     );
+    // SAFETY: a handle from its *_new/*_open (or null), freed once and not used after.
     assert_eq!(unsafe { pressridge_cf_table_free(h) }, PRESSRIDGE_OK);
     assert_eq!(
+        // SAFETY: a handle from its *_new/*_open (or null), freed once and not used after.
         unsafe { pressridge_cf_table_free(null_mut()) },
         PRESSRIDGE_OK
     );
@@ -883,6 +981,8 @@ fn cf_tables_load_query_free() {
     let m = missing.to_str().unwrap();
     let mut h = null_mut();
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_cf_table_open(m.as_ptr().cast(), m.len() as i64, &mut h) },
         PRESSRIDGE_ERR_IO
     );
@@ -890,26 +990,36 @@ fn cf_tables_load_query_free() {
     assert!(h.is_null());
     let sample = concat!(env!("CARGO_MANIFEST_DIR"), "/data/sample_itd.nc");
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_cf_table_open(sample.as_ptr().cast(), sample.len() as i64, &mut h) },
         PRESSRIDGE_ERR_IO
     );
     assert!(last_error().contains("thickness"), "{}", last_error());
     let bad_utf8 = [0xffu8, 0xfe];
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_cf_table_open(bad_utf8.as_ptr().cast(), 2, &mut h) },
         PRESSRIDGE_ERR_PARSE
     );
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_cf_table_open(null(), 2, &mut h) },
         PRESSRIDGE_ERR_NULL_POINTER
     );
     let unsorted = [1.0, 0.5];
     let mut h2 = null_mut();
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_cf_table_new(unsorted.as_ptr(), unsorted.as_ptr(), 2, &mut h2) },
         PRESSRIDGE_ERR_BAD_VALUE
     );
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_cf_table_new(unsorted.as_ptr(), unsorted.as_ptr(), 0, &mut h2) },
         PRESSRIDGE_ERR_BAD_SIZE
     );
@@ -960,6 +1070,8 @@ fn ridge_tables_load_query_and_give_cf_tables() {
     let p = path.to_str().unwrap();
     let mut t = null_mut();
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_ridge_table_open(p.as_ptr().cast(), p.len() as i64, &mut t) },
         PRESSRIDGE_OK,
         "{}",
@@ -967,18 +1079,24 @@ fn ridge_tables_load_query_and_give_cf_tables() {
     );
     let (mut ns, mut nh, mut nv, mut nf) = (0, 0, 0, 0);
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_ridge_table_dims(t, &mut ns, &mut nh, &mut nv, &mut nf) },
         PRESSRIDGE_OK
     );
     assert_eq!((ns, nh, nv, nf), (2, 3, 2, 2));
     let mut th = [0.0; 3];
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_ridge_table_thickness(t, th.as_mut_ptr(), 3) },
         PRESSRIDGE_OK
     );
     assert_eq!(th, [0.2, 0.3, 0.45]);
     let mut vol = [0.0; 2];
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_ridge_table_volume(t, vol.as_mut_ptr(), 2) },
         PRESSRIDGE_OK
     );
@@ -991,16 +1109,22 @@ fn ridge_tables_load_query_and_give_cf_tables() {
         String::from_utf8(b).unwrap()
     };
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         name(&|b, l, r| unsafe { pressridge_ridge_table_set_name(t, 1, b, l, r) }),
         "contact.mu=0.5"
     );
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         name(&|b, l, r| unsafe { pressridge_ridge_table_variable_name(t, 1, b, l, r) }),
         "work_mean"
     );
     let (mut x, mut clamped) = (0.0, -1);
     let key = "work_mean";
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe {
             pressridge_ridge_table_value(
                 t,
@@ -1019,6 +1143,8 @@ fn ridge_tables_load_query_and_give_cf_tables() {
     assert_eq!((x, clamped), (8500.0, 0));
     let bad = "nope";
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe {
             pressridge_ridge_table_value(t, bad.as_ptr().cast(), 4, 0, 0.3, 5.0, &mut x, null_mut())
         },
@@ -1026,12 +1152,16 @@ fn ridge_tables_load_query_and_give_cf_tables() {
     );
     assert!(last_error().contains("work_mean"), "lists the known fields");
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe {
             pressridge_ridge_table_value(t, key.as_ptr().cast(), 9, 2, 0.3, 5.0, &mut x, null_mut())
         },
         PRESSRIDGE_ERR_BAD_VALUE
     );
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe {
             pressridge_ridge_table_value(
                 t,
@@ -1047,6 +1177,8 @@ fn ridge_tables_load_query_and_give_cf_tables() {
         PRESSRIDGE_ERR_BAD_VALUE
     );
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_ridge_table_cf(t, 0, 1.0, &mut x, &mut clamped) },
         PRESSRIDGE_OK
     );
@@ -1055,22 +1187,30 @@ fn ridge_tables_load_query_and_give_cf_tables() {
     // The C_f of a set as a C_f table for the strength call.
     let mut cft = null_mut();
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_ridge_table_cf_table(t, 1, &mut cft) },
         PRESSRIDGE_OK
     );
+    // SAFETY: a handle from its *_new/*_open (or null), freed once and not used after.
     assert_eq!(unsafe { pressridge_ridge_table_free(t) }, PRESSRIDGE_OK);
     let mut c = 0.0;
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_cf_table_lookup(cft, 0.3, &mut c, null_mut()) },
         PRESSRIDGE_OK
     );
     assert_eq!(c, 7.0);
+    // SAFETY: a handle from its *_new/*_open (or null), freed once and not used after.
     assert_eq!(unsafe { pressridge_cf_table_free(cft) }, PRESSRIDGE_OK);
 
     let missing = dir.join("missing.nc");
     let m = missing.to_str().unwrap();
     let mut t = null_mut();
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_ridge_table_open(m.as_ptr().cast(), m.len() as i64, &mut t) },
         PRESSRIDGE_ERR_IO
     );
@@ -1087,6 +1227,8 @@ fn scene_runs_and_returns_its_summary() {
         .summary;
     let mut run = null_mut();
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe {
             pressridge_scene_run(
                 TINY_SCENE.as_ptr().cast(),
@@ -1100,11 +1242,15 @@ fn scene_runs_and_returns_its_summary() {
     );
     let mut need = 0;
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_run_summary_json(run, null_mut(), 0, &mut need) },
         PRESSRIDGE_ERR_BUFFER_TOO_SMALL
     );
     let mut buf = vec![0u8; need as usize];
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_run_summary_json(run, buf.as_mut_ptr().cast(), need, &mut need) },
         PRESSRIDGE_OK
     );
@@ -1116,18 +1262,25 @@ fn scene_runs_and_returns_its_summary() {
     assert_eq!(ge.potential_energy.to_bits(), we.potential_energy.to_bits());
     let mut x = 0.0;
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_run_summary_value(run, "steps".as_ptr().cast(), 5, &mut x) },
         PRESSRIDGE_OK
     );
     assert_eq!(x, want.steps as f64);
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_run_summary_value(run, "scene".as_ptr().cast(), 5, &mut x) },
         PRESSRIDGE_ERR_BAD_VALUE
     );
     assert_eq!(
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_run_summary_value(run, "nope".as_ptr().cast(), 4, &mut x) },
         PRESSRIDGE_ERR_NOT_FOUND
     );
+    // SAFETY: a handle from its *_new/*_open (or null), freed once and not used after.
     assert_eq!(unsafe { pressridge_run_free(run) }, PRESSRIDGE_OK);
 
     for (text, code) in [
@@ -1137,6 +1290,9 @@ fn scene_runs_and_returns_its_summary() {
     ] {
         let mut run = null_mut();
         assert_eq!(
+            // SAFETY: every non-null pointer is a live local or buffer of at least the length
+            // passed; the entry point checks nulls, sizes and handles itself (the C ABI's
+            // contract).
             unsafe { pressridge_scene_run(text.as_ptr().cast(), text.len() as i64, &mut run) },
             code,
             "{text}"
@@ -1173,6 +1329,9 @@ fn calls_from_many_threads_agree_and_keep_their_own_errors() {
                         let bad = [f64::NAN; 5];
                         let g = fortran_grid(5, 1);
                         let mut out = [0.0];
+                        // SAFETY: every non-null pointer is a live local or buffer of at least the
+                        // length passed; the entry point checks nulls, sizes and handles itself
+                        // (the C ABI's contract).
                         let rc = unsafe {
                             pressridge_strength(
                                 &g,
@@ -1190,6 +1349,9 @@ fn calls_from_many_threads_agree_and_keep_their_own_errors() {
                     } else {
                         let g = fortran_grid(ncat, ncol);
                         let mut out = vec![0.0; ncol];
+                        // SAFETY: every non-null pointer is a live local or buffer of at least the
+                        // length passed; the entry point checks nulls, sizes and handles itself
+                        // (the C ABI's contract).
                         let rc = unsafe {
                             pressridge_strength(
                                 &g,
@@ -1240,6 +1402,8 @@ fn ice_thicker_than_any_is_refused_on_every_path() {
     // path refuses it, naming vicen and the category.
     let (a, v) = ([0.5, 0.3], [1e160, 0.6]);
     let mut q = 0.0;
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe { pressridge_strength_cell(2, a.as_ptr(), v.as_ptr(), 0.2, null(), &mut q) };
     assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
     let e = last_error();
@@ -1254,6 +1418,8 @@ fn ice_thicker_than_any_is_refused_on_every_path() {
     }
     let a0 = vec![0.2; ncol];
     let mut out = vec![0.0; ncol];
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe {
         pressridge_strength(
             &fortran_grid(2, ncol),

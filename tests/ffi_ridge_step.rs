@@ -19,6 +19,8 @@ const NCAT: usize = 5;
 fn ridger(cleanup: i32) -> *mut PressridgeRidger {
     let mut r = null_mut();
     let rc =
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_ridger_new(NCAT as i64, 7, 1, 15, null(), null(), cleanup, 1, &mut r) };
     assert_eq!(rc, PRESSRIDGE_OK);
     r
@@ -68,6 +70,8 @@ fn cell_call_is_bitwise_the_rust_step_and_reports_icepack_tracer_tables() {
     let mut base = vec![0.0; nt * 3];
     let mut nstr = vec![0i32; nt];
     let mut str = vec![0i32; nt * 2];
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe {
         pressridge_ridger_tracers(
             r,
@@ -86,6 +90,8 @@ fn cell_call_is_bitwise_the_rust_step_and_reports_icepack_tracer_tables() {
     assert_eq!((base[1], base[1 + nt], base[8 + 2 * nt]), (0.0, 1.0, 1.0));
     let (mut start, mut levels) = (0i64, 0i64);
     let rc =
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe { pressridge_ridger_tracer_field(r, b"sice".as_ptr(), 4, &mut start, &mut levels) };
     assert_eq!((rc, start, levels), (PRESSRIDGE_OK, 9, 7));
 
@@ -143,6 +149,8 @@ fn cell_call_is_bitwise_the_rust_step_and_reports_icepack_tracer_tables() {
         vredistn: null_mut(),
         first_ice: first_ice.as_mut_ptr(),
     };
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe {
         pressridge_ridge_cell(
             r,
@@ -182,6 +190,7 @@ fn cell_call_is_bitwise_the_rust_step_and_reports_icepack_tracer_tables() {
         (rf.fresh, rf.fhocn, rf.fpond)
     );
     assert_eq!(krdgn.to_vec(), ws.krdgn);
+    // SAFETY: a handle from its *_new/*_open (or null), freed once and not used after.
     unsafe { pressridge_ridger_free(r) };
 }
 
@@ -223,6 +232,8 @@ fn batched_cells_equal_cell_calls_and_errors_name_the_cell() {
         dardg2dt: null_mut(),
         dvirdgdt: null_mut(),
     };
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe {
         pressridge_ridge_cells(
             r,
@@ -249,6 +260,8 @@ fn batched_cells_equal_cell_calls_and_errors_name_the_cell() {
         let mut cv = v[sv..sv + NCAT].to_vec();
         let mut cs = s[sv..sv + NCAT].to_vec();
         let mut ct = t[sst..sst + NCAT * nt].to_vec();
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+        // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         let rc = unsafe {
             pressridge_ridge_cell(
                 r,
@@ -284,6 +297,8 @@ fn batched_cells_equal_cell_calls_and_errors_name_the_cell() {
         (a.clone(), v.clone(), s.clone(), t.clone(), a0.clone());
     ev[3 * NCAT + 2] = -1e-3;
     let before = ev.clone();
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe {
         pressridge_ridge_cells(
             r,
@@ -302,8 +317,12 @@ fn batched_cells_equal_cell_calls_and_errors_name_the_cell() {
     };
     assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
     let mut need = 0i64;
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     unsafe { pressridge_last_error(null_mut(), 0, &mut need) };
     let mut buf = vec![0u8; need as usize];
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     unsafe { pressridge_last_error(buf.as_mut_ptr().cast(), need, null_mut()) };
     let msg = String::from_utf8_lossy(&buf).to_string();
     assert!(msg.contains("vicen") && msg.contains("column 3"), "{msg}");
@@ -311,6 +330,8 @@ fn batched_cells_equal_cell_calls_and_errors_name_the_cell() {
     assert_eq!(ea[3 * NCAT..], a[3 * NCAT..]);
     // Bad set-up: ponds without level ice.
     let mut bad = null_mut();
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
+    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe {
         pressridge_ridger_new(
             5,
@@ -325,5 +346,6 @@ fn batched_cells_equal_cell_calls_and_errors_name_the_cell() {
         )
     };
     assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
+    // SAFETY: a handle from its *_new/*_open (or null), freed once and not used after.
     unsafe { pressridge_ridger_free(r) };
 }
