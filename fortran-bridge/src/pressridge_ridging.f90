@@ -146,7 +146,8 @@ contains
 
   !> Initialises a ridging set-up once: ncat categories, the CICE tracer layout with nilyr ice
   !> and nslyr snow layers and the optional tracers (Icepack's flags), the options (default:
-  !> CICE's; participation, redistribution and params are used) and Icepack's docleanup and
+  !> those of pressridge_init_parameters at this call, CICE's if it was never called;
+  !> participation, redistribution and params are used) and Icepack's docleanup and
   !> dorebin (default .true.). Optionally returns the layout as Icepack's arrays (ntrcr and,
   !> of one first size, ntrcr or more, trcr_depend, trcr_base(:, 3), n_trcr_strata,
   !> nt_strata(:, 2)).
@@ -182,8 +183,7 @@ contains
     if (present(dorebin)) then
        if (.not. dorebin) rebin = 0
     end if
-    o = c_null_ptr
-    if (present(options)) o = c_loc(options)
+    o = options_ptr(options)
     rc = c_ridger_new(int(ncat, c_int64_t), int(nilyr, c_int64_t), int(nslyr, c_int64_t), &
          flags, o, c_null_ptr, clean, rebin, ridger%ptr)
     if (rc /= PRESSRIDGE_OK) then

@@ -343,6 +343,41 @@ program test_pressridge
          e == PRESSRIDGE_OK .and. any(an(:, 2) /= a1) .and. all(guard(nk + 1:) == -999) .and. &
          all(abs(a0 + sum(an, 1) - 1) < 1.0e-12_c_double))
     call pressridge_ridger_free(rg)
+    ! A ridger made without options= takes those of pressridge_init_parameters (here Hibler's
+    ! uniform redistribution, krdg_redist = 0), as the per-cell Icepack-style calls do.
+    implicit_options: block
+      type(pressridge_ridger) :: rp, ro, rd
+      type(pressridge_options) :: oh
+      real(c_double), dimension(nc, nk) :: ap, vp, sp, ao, vo, so, ad, vd, sd
+      real(c_double), dimension(nk) :: a0p, a0o, a0d, aip, aio, aid
+      real(c_double), allocatable, dimension(:, :, :) :: tp, to, td
+      integer :: e1, e2, e3
+      call pressridge_init_parameters(krdg_redist=0)
+      call pressridge_ridger_init(rp, nc, 7, 1, .true., .true., .true., .true., ierr=e1)
+      call pressridge_init_parameters(options=d)
+      oh = d
+      oh%redistribution = 0
+      call pressridge_ridger_init(ro, nc, 7, 1, .true., .true., .true., .true., options=oh, &
+           ierr=e2)
+      call pressridge_ridger_init(rd, nc, 7, 1, .true., .true., .true., .true., ierr=e3)
+      call check('ridgers made with and without options= succeed', &
+           e1 == PRESSRIDGE_OK .and. e2 == PRESSRIDGE_OK .and. e3 == PRESSRIDGE_OK)
+      ap = an; vp = vn; sp = sn; a0p = a0; aip = ai; tp = tr
+      ao = an; vo = vn; so = sn; a0o = a0; aio = ai; to = tr
+      ad = an; vd = vn; sd = sn; a0d = a0; aid = ai; td = tr
+      call pressridge_step_ridge_cells(rp, 3600.0_c_double, 1, hb, cv, sh, ap, tp, vp, sp, a0p, &
+           aip, ierr=e1)
+      call pressridge_step_ridge_cells(ro, 3600.0_c_double, 1, hb, cv, sh, ao, to, vo, so, a0o, &
+           aio, ierr=e2)
+      call pressridge_step_ridge_cells(rd, 3600.0_c_double, 1, hb, cv, sh, ad, td, vd, sd, a0d, &
+           aid, ierr=e3)
+      call check('ridger_init without options= takes pressridge_init_parameters'' options', &
+           e1 == PRESSRIDGE_OK .and. e2 == PRESSRIDGE_OK .and. e3 == PRESSRIDGE_OK .and. &
+           all(ap == ao) .and. all(vp == vo) .and. all(tp == to) .and. any(ap /= ad))
+      call pressridge_ridger_free(rp)
+      call pressridge_ridger_free(ro)
+      call pressridge_ridger_free(rd)
+    end block implicit_options
     ! The tracer layout arrays: the library writes ntrcr rows of each, at the first size of
     ! those given; all must have that size, and trcr_base 3 columns, nt_strata 2.
     layout: block
