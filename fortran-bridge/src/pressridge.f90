@@ -43,11 +43,11 @@ module pressridge
        PRESSRIDGE_TRACER_AGE, PRESSRIDGE_TRACER_FIRST_YEAR, PRESSRIDGE_TRACER_LEVEL_ICE, &
        PRESSRIDGE_TRACER_PONDS, &
        pressridge_params, pressridge_options, pressridge_cf_table, pressridge_ridge_table, &
-       pressridge_run, pressridge_ridger
+       pressridge_run, pressridge_ridger, pressridge_step_params
   use pressridge_base_mod, only: pressridge_last_error_message, pressridge_last_error_column, &
        pressridge_version, pressridge_linked_abi_version, &
        pressridge_default_options, pressridge_options_set_cf_table, &
-       pressridge_init_parameters, pressridge_get_parameters
+       pressridge_default_step_params, pressridge_init_parameters, pressridge_get_parameters
   use pressridge_strength_mod, only: pressridge_strength, pressridge_ice_strength
   use pressridge_ridging_mod, only: pressridge_ridge_step, pressridge_ridge_ice, &
        pressridge_ridger_init, pressridge_ridger_free, pressridge_step_ridge, &

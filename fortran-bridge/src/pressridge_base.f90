@@ -20,6 +20,7 @@ module pressridge_base_mod
   public :: pressridge_last_error_message, pressridge_last_error_column
   public :: pressridge_version, pressridge_linked_abi_version
   public :: pressridge_default_options, pressridge_options_set_cf_table
+  public :: pressridge_default_step_params
   public :: pressridge_init_parameters, pressridge_get_parameters
   ! For the other modules of the bridge.
   public :: finish, fail, get_string, options_ptr
@@ -169,6 +170,14 @@ contains
     integer, intent(out), optional :: ierr
     call finish(c_options_default(options), 'pressridge_default_options', ierr)
   end subroutine pressridge_default_options
+
+  !> The library's thermodynamic constants of the ridging step (Icepack's; the initial values
+  !> of type pressridge_step_params equal them, tested).
+  subroutine pressridge_default_step_params(params, ierr)
+    type(pressridge_step_params), intent(out) :: params
+    integer, intent(out), optional :: ierr
+    call finish(c_step_params_default(params), 'pressridge_default_step_params', ierr)
+  end subroutine pressridge_default_step_params
 
   !> Makes `options` look C_f up in `table` (borrowed: keep it alive while in use).
   subroutine pressridge_options_set_cf_table(options, table)

@@ -84,6 +84,23 @@ module pressridge_cabi_mod
      type(pressridge_params) :: params
   end type pressridge_options
 
+  !> Thermodynamic constants and clean-up thresholds of the complete ridging step (the C
+  !> PressridgeStepParams); the initial values are Icepack's, as
+  !> pressridge_default_step_params gives them. Pass to pressridge_ridger_init(step_params=).
+  type, bind(C), public :: pressridge_step_params
+     real(c_double) :: rhos = 330.0_c_double                   !< snow density (kg/m^3)
+     !> latent heat of melting of fresh ice (J/kg), Icepack's Lvap - Lsub difference
+     real(c_double) :: lfresh = 2.835e6_c_double - 2.501e6_c_double
+     real(c_double) :: cp_ice = 2106.0_c_double                !< specific heat of fresh ice (J/(kg K))
+     real(c_double) :: fsnowrdg = 0.5_c_double                 !< snow on ridging ice kept on the ridge (1)
+     real(c_double) :: ice_ref_salinity = 4.0_c_double         !< salinity of zapped ice (ppt)
+     integer(c_int32_t) :: salt_flux_prognostic = 0            !< 1: saltflux_option = 'prognostic'
+     real(c_double) :: itd_area_min = 1.0e-11_c_double         !< area below which ice is zapped (1)
+     real(c_double) :: itd_mass_min = 1.0e-10_c_double         !< mass below which ice is zapped (kg/m^2)
+     real(c_double) :: hs_min = 1.0e-4_c_double                !< snow checked above this thickness (m)
+     real(c_double) :: tmin = -100.0_c_double                  !< lowest snow temperature (degC)
+  end type pressridge_step_params
+
   !> A C_f table handle (free with pressridge_cf_table_free).
   type, public :: pressridge_cf_table
      type(c_ptr) :: ptr = c_null_ptr
@@ -180,6 +197,11 @@ module pressridge_cabi_mod
        import :: c_int32_t
        integer(c_int32_t), intent(out) :: v
      end function c_abi_version
+     integer(c_int32_t) function c_step_params_default(p) &
+          bind(C, name="pressridge_step_params_default")
+       import :: c_int32_t, pressridge_step_params
+       type(pressridge_step_params), intent(out) :: p
+     end function c_step_params_default
      integer(c_int32_t) function c_options_default(o) bind(C, name="pressridge_options_default")
        import :: c_int32_t, pressridge_options
        type(pressridge_options), intent(out) :: o

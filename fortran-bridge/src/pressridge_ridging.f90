@@ -150,15 +150,17 @@ contains
   !> participation, redistribution and params are used) and Icepack's docleanup and
   !> dorebin (default .true.). Optionally returns the layout as Icepack's arrays (ntrcr and,
   !> of one first size, ntrcr or more, trcr_depend, trcr_base(:, 3), n_trcr_strata,
-  !> nt_strata(:, 2)).
+  !> nt_strata(:, 2)). step_params: the thermodynamic constants and clean-up thresholds
+  !> (rhos, Lfresh, cp_ice, fsnowrdg, the salt flux option, ...; default: Icepack's).
   subroutine pressridge_ridger_init(ridger, ncat, nilyr, nslyr, tr_iage, tr_FY, tr_lvl, &
        tr_pond_lvl, options, docleanup, dorebin, ntrcr, trcr_depend, trcr_base, &
-       n_trcr_strata, nt_strata, ierr)
+       n_trcr_strata, nt_strata, step_params, ierr)
     type(pressridge_ridger), intent(out) :: ridger
     integer, intent(in) :: ncat, nilyr, nslyr
     logical, intent(in) :: tr_iage, tr_FY, tr_lvl, tr_pond_lvl
     type(pressridge_options), intent(in), optional, target :: options
     logical, intent(in), optional :: docleanup, dorebin
+    type(pressridge_step_params), intent(in), optional, target :: step_params
     integer, intent(out), optional :: ntrcr
     integer(c_int32_t), intent(out), optional, contiguous, target :: trcr_depend(:), &
          n_trcr_strata(:), nt_strata(:, :)
@@ -167,7 +169,7 @@ contains
     character(len=*), parameter :: where = 'pressridge_ridger_init'
     integer(c_int32_t) :: flags, clean, rebin, rc
     integer(c_int64_t) :: nt, len
-    type(c_ptr) :: o
+    type(c_ptr) :: o, sp
     type(array_arg) :: arrays(4)
     integer :: i
     flags = 0
@@ -184,8 +186,10 @@ contains
        if (.not. dorebin) rebin = 0
     end if
     o = options_ptr(options)
+    sp = c_null_ptr
+    if (present(step_params)) sp = c_loc(step_params)
     rc = c_ridger_new(int(ncat, c_int64_t), int(nilyr, c_int64_t), int(nslyr, c_int64_t), &
-         flags, o, c_null_ptr, clean, rebin, ridger%ptr)
+         flags, o, sp, clean, rebin, ridger%ptr)
     if (rc /= PRESSRIDGE_OK) then
        call finish(rc, where, ierr)
        return

@@ -378,6 +378,40 @@ program test_pressridge
       call pressridge_ridger_free(ro)
       call pressridge_ridger_free(rd)
     end block implicit_options
+    ! The thermodynamic constants from Fortran: the type's initial values are the library's
+    ! defaults, and a ridger given fsnowrdg = 1 keeps all the snow of the ridging ice.
+    step_constants: block
+      type(pressridge_step_params) :: sp0, sp1, spi
+      type(pressridge_ridger) :: ra, rb
+      real(c_double), dimension(nc, nk) :: aa, va, sa, ab, vb, sb
+      real(c_double), dimension(nk) :: a0a, a0b, aia, aib
+      real(c_double), allocatable, dimension(:, :, :) :: ta, tb
+      integer :: e1, e2
+      call pressridge_default_step_params(sp0, e1)
+      call check('Fortran initial step constants equal the library''s (pressridge_step_params)', &
+           e1 == PRESSRIDGE_OK .and. sp0%rhos == spi%rhos .and. sp0%lfresh == spi%lfresh .and. &
+           sp0%cp_ice == spi%cp_ice .and. sp0%fsnowrdg == spi%fsnowrdg .and. &
+           sp0%ice_ref_salinity == spi%ice_ref_salinity .and. &
+           sp0%salt_flux_prognostic == spi%salt_flux_prognostic .and. &
+           sp0%itd_area_min == spi%itd_area_min .and. sp0%itd_mass_min == spi%itd_mass_min .and. &
+           sp0%hs_min == spi%hs_min .and. sp0%tmin == spi%tmin)
+      sp1 = sp0
+      sp1%fsnowrdg = 1.0_c_double
+      call pressridge_ridger_init(ra, nc, 7, 1, .true., .true., .true., .true., ierr=e1)
+      call pressridge_ridger_init(rb, nc, 7, 1, .true., .true., .true., .true., &
+           step_params=sp1, ierr=e2)
+      aa = an; va = vn; sa = sn; a0a = a0; aia = ai; ta = tr
+      ab = an; vb = vn; sb = sn; a0b = a0; aib = ai; tb = tr
+      call pressridge_step_ridge_cells(ra, 3600.0_c_double, 1, hb, cv, sh, aa, ta, va, sa, a0a, &
+           aia, ierr=e1)
+      call pressridge_step_ridge_cells(rb, 3600.0_c_double, 1, hb, cv, sh, ab, tb, vb, sb, a0b, &
+           aib, ierr=e2)
+      call check('ridger_init(step_params=): fsnowrdg = 1 keeps more snow, same ice', &
+           e1 == PRESSRIDGE_OK .and. e2 == PRESSRIDGE_OK .and. sum(sb) > sum(sa) .and. &
+           all(ab == aa) .and. all(vb == va))
+      call pressridge_ridger_free(ra)
+      call pressridge_ridger_free(rb)
+    end block step_constants
     ! The tracer layout arrays: the library writes ntrcr rows of each, at the first size of
     ! those given; all must have that size, and trcr_base 3 columns, nt_strata 2.
     layout: block
