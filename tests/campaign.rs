@@ -1105,3 +1105,39 @@ values = [[{thickness}, 0.30, 3.0, 30.0]]
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The register's probe specs (`data/campaigns/choices*/`) all plan: on the decided model
+/// (`choices40`) eight seeds at the two friction pairs each (the baseline twelve), on the
+/// 40-m floe; the first look (`choices`) pins the 20-m floe it ran on (but its floe-length
+/// probes).
+#[test]
+fn shipped_choice_probes_plan() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data/campaigns");
+    for (dir, floe) in [("choices40", 40.0), ("choices", 20.0)] {
+        let dir = root.join(dir);
+        let mut n = 0;
+        for e in std::fs::read_dir(&dir).unwrap() {
+            let path = e.unwrap().path();
+            if path.extension().is_none_or(|x| x != "toml") {
+                continue;
+            }
+            let spec = CampaignSpec::read(&path).unwrap();
+            let plan = spec.plan(&dir).unwrap();
+            let name = path.file_stem().unwrap().to_string_lossy().into_owned();
+            // The first look's floe-length probes move the floe themselves.
+            if !name.starts_with("floe-length") {
+                assert!(
+                    plan.iter()
+                        .all(|p| p.scene.floe.as_ref().unwrap().length == floe),
+                    "{name}"
+                );
+            }
+            if floe == 40.0 {
+                let seeds = if name == "baseline" { 12 } else { 8 };
+                assert_eq!(plan.len(), 2 * seeds, "{name}");
+            }
+            n += 1;
+        }
+        assert!(n >= 8, "{}", dir.display());
+    }
+}

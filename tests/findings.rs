@@ -124,3 +124,26 @@ fn the_register_is_made_from_the_committed_probe_records() {
          `pressridge findings --choices data/choices --out data/choices/register.md`"
     );
 }
+
+/// The register's follow-up on the decided model (`data/choices40/`: eight seeds per probe
+/// on the 40-m floe, the baseline taken from the friction set of `data/paper2/`) is the
+/// command's output too.
+#[test]
+fn the_decided_models_register_is_made_from_its_committed_records() {
+    let o = findings(&["--choices", "data/choices40"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(text.matches("| baseline (n = 12) |").count(), 2, "{text}");
+    for probe in ["viscous_length=1.0 (n = 8)", "drag_coefficient=0.3 (n = 8)"] {
+        assert!(text.contains(probe), "{probe}:\n{text}");
+    }
+    let committed = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("data/choices40/register.md"),
+    )
+    .unwrap();
+    assert!(
+        committed.contains(text.trim()),
+        "data/choices40/register.md is not the command's output: regenerate it with \
+         `pressridge findings --choices data/choices40 --out data/choices40/register.md`"
+    );
+}
