@@ -20,7 +20,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --release --bin pressridge --example speed_vs_error
-table=./target/release/examples/speed_vs_error
+table=./target/release/research/speed_vs_error
 # A configuration's runs: its archive, plus the archives of its extra seeds where there are
 # any (<config>-more: seeds 13-26 at h = 0.30 m; <config>-more-045: the same at 0.45 m),
 # pooled by the table (`NAME=DIR1+DIR2+...`).
