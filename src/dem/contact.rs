@@ -19,7 +19,7 @@
 use super::body::Bodies;
 use super::broadphase::{pair_key, unpack};
 use super::geometry::{Overlap, OverlapScratch, V2, overlap_with};
-use super::world::{ContactOnset, Dashpot};
+use super::numerics::{ContactOnset, Dashpot};
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the contact law. Defaults follow Hopkins (1994), Table 1 and the text of

@@ -16,7 +16,7 @@ use super::body::Bodies;
 use super::broadphase::pair_key;
 use super::geometry::V2;
 use super::joint::Joint;
-use super::world::Dashpot;
+use super::numerics::Dashpot;
 use serde::{Deserialize, Serialize};
 
 /// All joints of a world, with the index of intact pairs for the contact exclusion.

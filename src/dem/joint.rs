@@ -22,7 +22,7 @@
 use super::body::{Bodies, BodyId};
 use super::geometry::V2;
 use super::lanes::{Real, Vec2};
-use super::world::Dashpot;
+use super::numerics::Dashpot;
 use lanes::JointLanes;
 use serde::{Deserialize, Serialize};
 

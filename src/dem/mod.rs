@@ -22,6 +22,7 @@ pub mod geometry;
 pub mod joint;
 pub(crate) mod lanes;
 pub mod ledger;
+mod numerics;
 pub mod water;
 pub mod world;
 
@@ -30,5 +31,6 @@ pub use contact::{Contact, ContactParams};
 pub use geometry::V2;
 pub use joint::{Joint, JointMaterial};
 pub use ledger::EnergyBudget;
+pub use numerics::{ContactOnset, Dashpot};
 pub use water::WaterParams;
-pub use world::{ContactOnset, Dashpot, Snapshot, World, WorldError, WorldParams};
+pub use world::{Snapshot, World, WorldError, WorldParams};
