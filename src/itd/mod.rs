@@ -15,7 +15,6 @@
 
 pub mod bounds;
 pub mod cf;
-mod cleanup;
 mod lanes;
 pub mod named_params;
 pub mod params;

@@ -28,12 +28,12 @@
 //! output checks.
 
 mod checks;
+mod cleanup;
 mod constants;
 mod passes;
 mod workspace;
 
 pub use constants::{RidgeStepParams, SaltFlux, StepParamMeta};
-pub(crate) use passes::asum_ridging;
 pub use workspace::StepWorkspace;
 
 use super::ColumnError;

@@ -18,7 +18,6 @@ use ndarray::{ArrayView1, ArrayViewMut1, ArrayViewMut2, Axis};
 use super::bounds::validate_bounds;
 use super::params::{ItdParams, Participation, Redistribution};
 use super::redistribution::{RidgeGeometry, category_fractions};
-use super::ridge_step::asum_ridging;
 use super::{ColumnError, ItdError, Workspace, check_column, check_len, check_shape};
 
 /// Options of the ridging step; the default is CICE's (exponential, exponential).
@@ -436,4 +435,14 @@ pub fn ridge_batch_masked(
         dvirdgdt[c] = d.dvirdgdt;
     }
     Ok(())
+}
+
+/// Icepack `asum_ridging`: open water plus the category areas, in that order.
+#[inline]
+pub(crate) fn asum_ridging(aicen: &[f64], aice0: f64) -> f64 {
+    let mut asum = aice0;
+    for &a in aicen {
+        asum += a;
+    }
+    asum
 }

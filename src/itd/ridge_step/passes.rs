@@ -6,14 +6,14 @@
 // Several parallel per-category arrays are indexed by the category number, as in Icepack.
 #![allow(clippy::needless_range_loop)]
 
+use super::cleanup::cleanup_itd;
 use super::{
     Closing, ColumnMut, OceanFluxes, RidgeStepOptions, StepDiagnostics, StepForcing, StepWorkspace,
 };
 use crate::itd::ColumnError;
-use crate::itd::cleanup::cleanup_itd;
 use crate::itd::params::Redistribution;
 use crate::itd::redistribution::{RidgeGeometry, category_fractions_all};
-use crate::itd::ridging::close_and_open;
+use crate::itd::ridging::{asum_ridging, close_and_open};
 use crate::itd::tracers::TracerLayout;
 
 /// Sums of one ridging pass and of the whole step (Icepack `ridge_ice` locals).
@@ -131,16 +131,6 @@ pub(super) fn step(
         d.snow_to_ocean += vsno;
     }
     Ok(d)
-}
-
-/// Icepack `asum_ridging`: open water plus the category areas, in that order.
-#[inline]
-pub(crate) fn asum_ridging(aicen: &[f64], aice0: f64) -> f64 {
-    let mut asum = aice0;
-    for &a in aicen {
-        asum += a;
-    }
-    asum
 }
 
 /// Icepack `ridge_itd`: participation, ridge geometry, rafting mask; returns `aksum`.

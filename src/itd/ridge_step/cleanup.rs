@@ -11,9 +11,9 @@
 // Several parallel per-category arrays are indexed by the category number, as in Icepack.
 #![allow(clippy::needless_range_loop)]
 
-use super::ColumnError;
-use super::ridge_step::{ColumnMut, OceanFluxes, RidgeStepParams, SaltFlux, StepWorkspace};
-use super::tracers::TracerLayout;
+use super::{ColumnMut, OceanFluxes, RidgeStepParams, SaltFlux, StepWorkspace};
+use crate::itd::ColumnError;
+use crate::itd::tracers::TracerLayout;
 
 /// Zapped-ice fluxes accumulated during the clean-up (Icepack's `dfresh`, `dfsalt`,
 /// `dfhocn`, `dfpond`), kg m⁻² s⁻¹, kg m⁻² s⁻¹, W m⁻², m.
