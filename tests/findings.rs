@@ -101,9 +101,7 @@ fn missing_records_fail_naming_the_scene() {
 /// pooled with its first), as `data/choices/register.md` holds it.
 #[test]
 fn the_register_is_made_from_the_committed_probe_records() {
-    let o = findings(&["--choices", "data/choices"]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let text = String::from_utf8_lossy(&o.stdout);
+    let text = committed_register("data/choices");
     for f in ["**μ = 0.4, μ_w = 0.6**", "**μ = 1, μ_w = 0.6**"] {
         assert!(text.contains(f), "{f}:\n{text}");
     }
@@ -114,15 +112,23 @@ fn the_register_is_made_from_the_committed_probe_records() {
     for probe in ["tip_bevel_fraction=", "nose_bevel=", "viscous_length="] {
         assert!(text.contains(probe), "{probe}:\n{text}");
     }
+}
+
+/// `pressridge findings --choices DIR`'s table, checked to be what `DIR/register.md` holds.
+fn committed_register(dir: &str) -> String {
+    let o = findings(&["--choices", dir]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8_lossy(&o.stdout).into_owned();
     let committed = std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("data/choices/register.md"),
+        Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("{dir}/register.md")),
     )
     .unwrap();
     assert!(
         committed.contains(text.trim()),
-        "data/choices/register.md is not the command's output: regenerate it with \
-         `pressridge findings --choices data/choices --out data/choices/register.md`"
+        "{dir}/register.md is not the command's output: regenerate it with \
+         `pressridge findings --choices {dir} --out {dir}/register.md`"
     );
+    text
 }
 
 /// The register's follow-up on the decided model (`data/choices40/`: eight seeds per probe
@@ -130,20 +136,9 @@ fn the_register_is_made_from_the_committed_probe_records() {
 /// command's output too.
 #[test]
 fn the_decided_models_register_is_made_from_its_committed_records() {
-    let o = findings(&["--choices", "data/choices40"]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let text = String::from_utf8_lossy(&o.stdout);
+    let text = committed_register("data/choices40");
     assert_eq!(text.matches("| baseline (n = 12) |").count(), 2, "{text}");
     for probe in ["viscous_length=1.0 (n = 8)", "drag_coefficient=0.3 (n = 8)"] {
         assert!(text.contains(probe), "{probe}:\n{text}");
     }
-    let committed = std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("data/choices40/register.md"),
-    )
-    .unwrap();
-    assert!(
-        committed.contains(text.trim()),
-        "data/choices40/register.md is not the command's output: regenerate it with \
-         `pressridge findings --choices data/choices40 --out data/choices40/register.md`"
-    );
 }
