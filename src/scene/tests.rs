@@ -1,0 +1,163 @@
+use super::*;
+use crate::dem::{ContactOnset, Dashpot};
+
+#[test]
+fn dotted_keys_are_read_and_left_out() {
+    let s = Scene::default()
+        .with_overrides(&["contact.mu=0.4", "floe.thickness=3.5"])
+        .unwrap();
+    assert_eq!(s.value_at("contact.mu").as_deref(), Some("0.4"));
+    assert_eq!(s.value_at("floe.thickness").as_deref(), Some("3.5"));
+    assert_eq!(s.value_at("floe.nosuch"), None);
+    assert_eq!(s.value_at("nosuch.key"), None);
+    // Two scenes that differ only in the keys left out give the same text.
+    let t = s.with_overrides(&["floe.thickness=7.0"]).unwrap();
+    let keys = ["floe.thickness".to_string(), "absent.key".to_string()];
+    assert_eq!(s.toml_without(&keys), t.toml_without(&keys));
+    assert_ne!(s.toml_without(&keys[1..]), t.toml_without(&keys[1..]));
+}
+
+#[test]
+fn default_scene_round_trips_through_toml() {
+    let s = Scene::default();
+    assert_eq!(Scene::from_toml(&s.to_toml()).unwrap(), s);
+}
+
+#[test]
+fn unknown_keys_are_rejected_by_name() {
+    let e = Scene::from_toml("duraton = 3.0").unwrap_err().to_string();
+    assert!(e.contains("duraton"), "{e}");
+    let e = Scene::from_toml("[contact]\nmuu = 0.3")
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("muu"), "{e}");
+    let e = Scene::default()
+        .with_overrides(&["contact.mew=1"])
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("mew"), "{e}");
+}
+
+#[test]
+fn overrides_set_nested_values() {
+    let s = Scene::default()
+        .with_overrides(&[
+            "contact.mu=0.4",
+            "pile.blocks=12",
+            "water.enabled=false",
+            "name=x",
+        ])
+        .unwrap();
+    assert_eq!(s.contact.mu, 0.4);
+    assert_eq!(s.pile.as_ref().unwrap().blocks, 12);
+    assert!(!s.water.enabled);
+    assert_eq!(s.name, "x");
+    assert!(s.world_params().water.is_none());
+}
+
+#[test]
+fn invalid_values_are_named() {
+    let e = Scene::default()
+        .with_overrides(&["duration=-1"])
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("duration"), "{e}");
+    let e = Scene::default()
+        .with_overrides(&["contact.normal_stiffness=-5"])
+        .unwrap()
+        .build()
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("normal_stiffness"), "{e}");
+    let e = Scene::from_toml("duration = nan").unwrap_err().to_string();
+    assert!(e.contains("duration"), "{e}");
+    let e = Scene::default()
+        .with_overrides(&["joint.incubation_time=0"])
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("joint.incubation_time"), "{e}");
+}
+
+/// The incubation time is absent unless set, and then absent from the scene's TOML too,
+/// so that the scenes (and campaign digests) of earlier runs are unchanged.
+#[test]
+fn incubation_time_is_optional_and_not_written_when_absent() {
+    let s = Scene::default();
+    assert_eq!(s.joint.incubation_time, None);
+    assert!(!s.to_toml().contains("incubation_time"));
+    let s = s.with_overrides(&["joint.incubation_time=0.002"]).unwrap();
+    assert_eq!(s.joint.incubation_time, Some(0.002));
+    assert_eq!(s.world_params().incubation_time, Some(0.002));
+    assert_eq!(Scene::from_toml(&s.to_toml()).unwrap(), s);
+}
+
+/// An experimental scene option: absent from the default scene's TOML (`key` not in it);
+/// `key=value` set gives a scene that round-trips through TOML (returned), and each of
+/// `bad` values is refused, at parsing or at building, with a message naming `key`.
+fn option_absent_unless_set(key: &str, value: &str, bad: &[&str]) -> Scene {
+    let name = key.rsplit('.').next().unwrap();
+    assert!(!Scene::default().to_toml().contains(name));
+    let s = Scene::default()
+        .with_overrides(&[format!("{key}={value}")])
+        .unwrap();
+    assert_eq!(Scene::from_toml(&s.to_toml()).unwrap(), s);
+    for b in bad {
+        let e = Scene::default()
+            .with_overrides(&[format!("{key}={b}")])
+            .and_then(|s| s.build().map(|_| ()))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains(name), "{key}={b}: {e}");
+    }
+    s
+}
+
+/// The joint dashpot is explicit unless set and then absent from the scene's TOML;
+/// "implicit" reaches the world; a misspelt value is refused naming the key.
+#[test]
+fn joint_dashpot_is_explicit_unless_set_and_not_written_then() {
+    assert_eq!(Scene::default().numerics.joint_dashpot, Dashpot::Explicit);
+    let s = option_absent_unless_set("numerics.joint_dashpot", "implicit", &["centered"]);
+    assert_eq!(s.world_params().joint_dashpot, Dashpot::Implicit);
+}
+
+/// The contact onset is eq (3)'s own unless set, and then absent from the scene's TOML;
+/// "velocity" reaches the world.
+#[test]
+fn contact_onset_is_the_area_rate_unless_set_and_not_written_then() {
+    assert_eq!(Scene::default().numerics.contact_onset, ContactOnset::Area);
+    let s = option_absent_unless_set("numerics.contact_onset", "velocity", &["speed"]);
+    assert_eq!(s.world_params().contact_onset, ContactOnset::Velocity);
+}
+
+/// Eq (8)'s length is the sheet thickness unless set, and then absent from the scene's
+/// TOML; a set length reaches the sheet's k′, and a non-positive one is refused by name.
+#[test]
+fn eq8_length_is_the_thickness_unless_set() {
+    let s = option_absent_unless_set("sheet.viscous_length", "1.0", &["0", "-1", "nan"]);
+    assert_eq!(s.sheet.as_ref().unwrap().viscous_length, Some(1.0));
+}
+
+/// Eq (4)'s k_te has one reading, per contact (0.6·k_ne·L): the key that chose the
+/// withdrawn reading (k_ne·h) is refused by name, in a scene and in `--set`.
+#[test]
+fn the_withdrawn_tangential_reference_is_refused_by_name() {
+    let e = Scene::default()
+        .with_overrides(&["contact.tangential_reference=thickness".to_string()])
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("tangential_reference"), "{e}");
+    let e = Scene::from_toml("[contact]\ntangential_reference = \"chord\"\n")
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("tangential_reference"), "{e}");
+}
+
+/// The contact dashpot's sweeps are 0 (each contact alone) unless set, and then absent
+/// from the scene's TOML; a count reaches the world, and too many are refused by name.
+#[test]
+fn contact_dashpot_sweeps_are_off_unless_set() {
+    assert_eq!(Scene::default().numerics.contact_dashpot_sweeps, 0);
+    let s = option_absent_unless_set("numerics.contact_dashpot_sweeps", "4", &["51", "-1"]);
+    assert_eq!(s.world_params().contact_dashpot_sweeps, 4);
+}
