@@ -13,234 +13,26 @@
 //! Everything is sequential and in a fixed order, so the same world stepped the same number
 //! of times gives bit-identical states.
 
-use super::body::{Block, Bodies, BodyId, Drive, Role, Shape, ShapeError};
+use super::body::{Block, Bodies, BodyId, Drive, Role, Shape};
 use super::boundary::Boundary;
 use super::broadphase::{SweepAndPrune, pair_key};
-use super::contact::{Contact, ContactParams, ContactSet};
+use super::contact::{Contact, ContactSet};
 use super::fracture::JointSet;
 use super::geometry::{V2, below_line, overlap};
 use super::joint::{Joint, JointMaterial};
 use super::ledger::{Accumulators, EnergyBudget, Stored};
-use super::numerics::{ContactOnset, Dashpot};
-use super::water::{WaterForces, WaterParams};
+use super::numerics::Dashpot;
+use super::water::WaterForces;
 use serde::{Deserialize, Serialize};
 
 mod fracture;
+mod params;
 mod snapshot;
 mod timestep;
 
+pub(crate) use params::is_zero;
+pub use params::{DEFAULT_TIME_STEP_SAFETY, MAX_CONTACT_DASHPOT_SWEEPS, WorldError, WorldParams};
 pub use snapshot::{BodyState, Snapshot};
-
-/// Physical and numerical parameters of a world.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct WorldParams {
-    /// Acceleration of gravity g (m/s²). Default 9.81.
-    pub gravity: f64,
-    /// Ice density ρ_i (kg/m³). Default 920 (Hopkins 1994, Table 1).
-    pub ice_density: f64,
-    /// Contact law, eqs (2)–(4).
-    pub contact: ContactParams,
-    /// The water, or `None` for a dry scene (no buoyancy, no drag, μ everywhere).
-    pub water: Option<WaterParams>,
-    /// Safety factor on the stable time step of [`World::stable_time_step`]
-    /// (dimensionless, in (0, 1]). Default [`DEFAULT_TIME_STEP_SAFETY`].
-    pub time_step_safety: f64,
-    /// A fixed time step (s) overriding the derived one, or `None`. It must not exceed the
-    /// stable limit of [`World::stable_time_step`].
-    pub time_step: Option<f64>,
-    /// How the viscous normal force of eq (3) is advanced in time. Default
-    /// [`Dashpot::Implicit`].
-    #[serde(default)]
-    pub contact_dashpot: Dashpot,
-    /// How the joints' viscous stress of eq (1) is advanced in time. Default
-    /// [`Dashpot::Explicit`] (the paper's form, at the half-step velocities); `Implicit`
-    /// centres it at the mid-step velocities (experimental; see `Joint::apply_viscous`
-    /// and docs/speed-vs-error.md, "Fracture and the time step"). Absent from states and
-    /// scenes when explicit.
-    #[serde(
-        default = "Dashpot::explicit",
-        skip_serializing_if = "Dashpot::is_explicit"
-    )]
-    pub joint_dashpot: Dashpot,
-    /// How a new contact reads its first overlap rate in eq (3). Default
-    /// [`ContactOnset::Area`] (the paper's). Absent from states and scenes when the default.
-    #[serde(default, skip_serializing_if = "ContactOnset::is_area")]
-    pub contact_onset: ContactOnset,
-    /// Gauss–Seidel sweeps of the implicit contact dashpot (dimensionless count, at most
-    /// [`MAX_CONTACT_DASHPOT_SWEEPS`]). Default 0: each contact's viscous force is solved
-    /// with the other contacts' viscous and friction forces left out (a Jacobi step, as
-    /// [`Dashpot::Implicit`] describes); n ≥ 1 sweeps the contacts n times in order, each
-    /// seeing the others' latest viscous and friction forces, towards the coupled solution
-    /// for a block with several contacts. Experimental (docs/speed-vs-error.md, "Fracture
-    /// and the time step"); absent from states and scenes when 0.
-    #[serde(default, skip_serializing_if = "is_zero")]
-    pub contact_dashpot_sweeps: u32,
-    /// Speed at which a crack crosses a joint (m/s). Default 50 m/s; see
-    /// docs/model.md ("Fracture").
-    pub crack_speed: f64,
-    /// Incubation time of crack initiation (s), or `None` for the paper's instantaneous
-    /// test; see [`crate::scene::JointSection::incubation_time`].
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub incubation_time: Option<f64>,
-    /// Mass-proportional numerical damping γ (1/s): F = −γ·m·v, M = −γ·I·ω. Default 0;
-    /// used only to relax verification scenes to their static state.
-    pub global_damping: f64,
-}
-
-impl Default for WorldParams {
-    fn default() -> Self {
-        Self {
-            gravity: 9.81,
-            ice_density: 920.0,
-            contact: ContactParams::default(),
-            water: Some(WaterParams::default()),
-            time_step_safety: DEFAULT_TIME_STEP_SAFETY,
-            time_step: None,
-            contact_dashpot: Dashpot::default(),
-            joint_dashpot: Dashpot::Explicit,
-            contact_onset: ContactOnset::Area,
-            contact_dashpot_sweeps: 0,
-            crack_speed: 50.0,
-            incubation_time: None,
-            global_damping: 0.0,
-        }
-    }
-}
-
-/// Largest number of Gauss–Seidel sweeps of the contact dashpot a scene may ask for
-/// ([`WorldParams::contact_dashpot_sweeps`]): more is a mistake, not accuracy.
-pub const MAX_CONTACT_DASHPOT_SWEEPS: u32 = 50;
-
-/// A serde skip test for counts that are absent when zero.
-pub(crate) fn is_zero(n: &u32) -> bool {
-    *n == 0
-}
-
-/// Default safety factor on the stable time step (dimensionless): see docs/model.md ("Time
-/// step") and docs/speed-vs-error.md for the ensembles that chose it.
-pub const DEFAULT_TIME_STEP_SAFETY: f64 = 0.8;
-
-/// An error in a world's parameters or bodies.
-#[derive(Clone, Debug, thiserror::Error, PartialEq)]
-pub enum WorldError {
-    /// A parameter is out of its physical range.
-    #[error("parameter `{name}` = {value} is invalid: {why}")]
-    Param {
-        /// Parameter name.
-        name: &'static str,
-        /// Its value.
-        value: f64,
-        /// What is required.
-        why: &'static str,
-    },
-    /// A saved state does not fit this build.
-    #[error("invalid saved state: {0}")]
-    State(String),
-    /// A block could not be made.
-    #[error("block: {0}")]
-    Shape(#[from] ShapeError),
-    /// A fixed time step above the stable limit.
-    #[error(
-        "time step {dt:.4e} s is above the stable limit {limit:.4e} s of this scene \
-         (the stiffest joint and contact, see docs/model.md \"Time step\"); use at most \
-         {limit:.4e} s or leave the time step to be derived"
-    )]
-    Unstable {
-        /// The requested time step (s).
-        dt: f64,
-        /// The stable limit (s).
-        limit: f64,
-    },
-    /// The state turned non-finite.
-    #[error(
-        "the run turned non-finite at step {step} (t = {time:.6} s): body {body} has a \
-         non-finite {what}; no results were written"
-    )]
-    NonFinite {
-        /// The step that produced the non-finite value.
-        step: u64,
-        /// Simulated time at the end of that step (s).
-        time: f64,
-        /// The first body found with a non-finite value.
-        body: usize,
-        /// Which value: velocity, angular velocity, position or orientation.
-        what: &'static str,
-    },
-}
-
-impl WorldParams {
-    /// Checks every parameter; the message names the first offending one.
-    pub(crate) fn validate(&self) -> Result<(), WorldError> {
-        let pos = |name, value: f64| {
-            if value > 0.0 && value.is_finite() {
-                Ok(())
-            } else {
-                Err(WorldError::Param {
-                    name,
-                    value,
-                    why: "must be positive and finite",
-                })
-            }
-        };
-        let nonneg = |name, value: f64| {
-            if value >= 0.0 && value.is_finite() {
-                Ok(())
-            } else {
-                Err(WorldError::Param {
-                    name,
-                    value,
-                    why: "must be non-negative and finite",
-                })
-            }
-        };
-        nonneg("gravity", self.gravity)?;
-        pos("ice_density", self.ice_density)?;
-        let c = &self.contact;
-        pos("contact.normal_stiffness", c.normal_stiffness)?;
-        nonneg("contact.damping_fraction", c.damping_fraction)?;
-        pos("contact.tangential_fraction", c.tangential_fraction)?;
-        pos("contact.reference_thickness", c.thickness())?;
-        nonneg("contact.mu", c.mu)?;
-        nonneg("contact.mu_water", c.mu_water)?;
-        if let Some(w) = &self.water {
-            pos("water.density", w.density)?;
-            nonneg("water.drag_coefficient", w.drag_coefficient)?;
-            nonneg("water.linear_drag", w.linear_drag)?;
-            if !w.level.is_finite() {
-                return Err(WorldError::Param {
-                    name: "water.level",
-                    value: w.level,
-                    why: "must be finite",
-                });
-            }
-        }
-        pos("time_step_safety", self.time_step_safety)?;
-        if self.time_step_safety > 1.0 {
-            return Err(WorldError::Param {
-                name: "time_step_safety",
-                value: self.time_step_safety,
-                why: "must lie in (0, 1]: the stable time step is a limit",
-            });
-        }
-        pos("crack_speed", self.crack_speed)?;
-        if let Some(t) = self.incubation_time {
-            pos("incubation_time", t)?;
-        }
-        nonneg("global_damping", self.global_damping)?;
-        if self.contact_dashpot_sweeps > MAX_CONTACT_DASHPOT_SWEEPS {
-            return Err(WorldError::Param {
-                name: "contact_dashpot_sweeps",
-                value: f64::from(self.contact_dashpot_sweeps),
-                why: "must lie in 0..=50 (0: each contact solved alone, the default)",
-            });
-        }
-        if let Some(dt) = self.time_step {
-            pos("time_step", dt)?;
-        }
-        Ok(())
-    }
-}
 
 /// A set of blocks in a vertical plane with water, stepping in time.
 ///
