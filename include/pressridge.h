@@ -118,6 +118,39 @@ typedef struct PressridgeRidger PressridgeRidger;
 // [`pressridge_scene_run`], release with [`pressridge_run_free`].
 typedef struct PressridgeRun PressridgeRun;
 
+// Layout of the arrays of one call: `ncol` columns of `ncat` thickness categories.
+//
+// Per-category arrays (`aicen`, `vicen`) hold element (category n, column c) at offset
+// `n·cat_stride + c·col_stride` (in elements, not bytes) and are `len` elements long.
+// Per-column arrays (`aice0`, `strength`, `valid`, `convergence`, `shear`, the rates) hold
+// column c at offset `c·col_stride_1d` and are `len_1d` elements long.
+//
+// - Fortran `aicen(ncat, ncol)`: `cat_stride = 1`, `col_stride = ncat`
+//   ([`pressridge_grid_fortran`]);
+// - C `aicen[ncat][ncol]`: `cat_stride = ncol`, `col_stride = 1` ([`pressridge_grid_c`]);
+// - CICE `aicen(nx_block, ny_block, ncat)` of one block, columns (i, j) flattened:
+//   `ncol = nx_block·ny_block`, `cat_stride = nx_block·ny_block`, `col_stride = 1`.
+//
+// All values must be positive, the strides must not make two elements share memory
+// (`col_stride ≥ ncat·cat_stride` or `cat_stride ≥ ncol·col_stride`), and the last element
+// must lie inside the given length.
+typedef struct PressridgeGrid {
+  // Number of thickness categories (≥ 1).
+  int64_t ncat;
+  // Number of columns (grid cells, ≥ 1).
+  int64_t ncol;
+  // Elements between consecutive categories of one column in `aicen`, `vicen` (≥ 1).
+  int64_t cat_stride;
+  // Elements between consecutive columns in `aicen`, `vicen` (≥ 1).
+  int64_t col_stride;
+  // Length in elements of each of `aicen`, `vicen`.
+  int64_t len;
+  // Elements between consecutive columns of the per-column arrays (≥ 1).
+  int64_t col_stride_1d;
+  // Length in elements of each per-column array.
+  int64_t len_1d;
+} PressridgeGrid;
+
 // Physical constants and tunables (the fields of `pressridge::itd::ItdParams`, CICE's
 // defaults from [`pressridge_options_default`]).
 typedef struct PressridgeParams {
@@ -182,39 +215,6 @@ typedef struct PressridgeOptions {
   // Physical constants and tunables.
   struct PressridgeParams params;
 } PressridgeOptions;
-
-// Layout of the arrays of one call: `ncol` columns of `ncat` thickness categories.
-//
-// Per-category arrays (`aicen`, `vicen`) hold element (category n, column c) at offset
-// `n·cat_stride + c·col_stride` (in elements, not bytes) and are `len` elements long.
-// Per-column arrays (`aice0`, `strength`, `valid`, `convergence`, `shear`, the rates) hold
-// column c at offset `c·col_stride_1d` and are `len_1d` elements long.
-//
-// - Fortran `aicen(ncat, ncol)`: `cat_stride = 1`, `col_stride = ncat`
-//   ([`pressridge_grid_fortran`]);
-// - C `aicen[ncat][ncol]`: `cat_stride = ncol`, `col_stride = 1` ([`pressridge_grid_c`]);
-// - CICE `aicen(nx_block, ny_block, ncat)` of one block, columns (i, j) flattened:
-//   `ncol = nx_block·ny_block`, `cat_stride = nx_block·ny_block`, `col_stride = 1`.
-//
-// All values must be positive, the strides must not make two elements share memory
-// (`col_stride ≥ ncat·cat_stride` or `cat_stride ≥ ncol·col_stride`), and the last element
-// must lie inside the given length.
-typedef struct PressridgeGrid {
-  // Number of thickness categories (≥ 1).
-  int64_t ncat;
-  // Number of columns (grid cells, ≥ 1).
-  int64_t ncol;
-  // Elements between consecutive categories of one column in `aicen`, `vicen` (≥ 1).
-  int64_t cat_stride;
-  // Elements between consecutive columns in `aicen`, `vicen` (≥ 1).
-  int64_t col_stride;
-  // Length in elements of each of `aicen`, `vicen`.
-  int64_t len;
-  // Elements between consecutive columns of the per-column arrays (≥ 1).
-  int64_t col_stride_1d;
-  // Length in elements of each per-column array.
-  int64_t len_1d;
-} PressridgeGrid;
 
 // Caller-owned outputs of [`pressridge_ridge_step`], one value per column laid out as the
 // grid's per-column arrays. Any pointer may be null (that rate is not returned).
@@ -404,13 +404,6 @@ int32_t pressridge_version(char *buf, int64_t len, int64_t *required);
 // `version` must be valid for one write.
 int32_t pressridge_abi_version(int32_t *version);
 
-// Fills `*options` with CICE/Icepack's defaults: exponential participation and
-// redistribution, Rothrock strength, constant C_f = 17, fill 0, the `ItdParams` defaults.
-//
-// # Safety
-// `options` must be valid for one write.
-int32_t pressridge_options_default(struct PressridgeOptions *options);
-
 // Ice strength P (N/m) of `grid->ncol` columns of `grid->ncat` categories: Rothrock (1975)
 // or Hibler (1979) as CICE/Icepack `icepack_ice_strength`, with the options' participation,
 // redistribution and C_f.
@@ -488,6 +481,13 @@ int32_t pressridge_ridge_step(const struct PressridgeGrid *grid,
                               const int32_t *valid,
                               const struct PressridgeOptions *options,
                               const struct PressridgeRidgeRates *rates);
+
+// Fills `*options` with CICE/Icepack's defaults: exponential participation and
+// redistribution, Rothrock strength, constant C_f = 17, fill 0, the `ItdParams` defaults.
+//
+// # Safety
+// `options` must be valid for one write.
+int32_t pressridge_options_default(struct PressridgeOptions *options);
 
 // Fills `*grid` for Fortran arrays `aicen(ncat, ncol)` and per-column arrays `x(ncol)`,
 // all contiguous: `cat_stride = 1`, `col_stride = ncat`, `len = ncat·ncol`,
