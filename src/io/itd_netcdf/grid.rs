@@ -40,25 +40,47 @@ pub enum CoordValues {
     U64(Vec<u64>),
 }
 
+/// Evaluates `$body` with `$v` bound to the values of whichever variant `$values` is: the
+/// one list of the ten types, for the generic code that writes them.
+macro_rules! each_coord_type {
+    ($values:expr, $v:ident => $body:expr) => {
+        match $values {
+            CoordValues::F64($v) => $body,
+            CoordValues::F32($v) => $body,
+            CoordValues::I8($v) => $body,
+            CoordValues::I16($v) => $body,
+            CoordValues::I32($v) => $body,
+            CoordValues::I64($v) => $body,
+            CoordValues::U8($v) => $body,
+            CoordValues::U16($v) => $body,
+            CoordValues::U32($v) => $body,
+            CoordValues::U64($v) => $body,
+        }
+    };
+}
+
 impl CoordValues {
-    /// The values as f64 (exact for every type but 64-bit integers beyond 2^53).
-    pub fn to_f64(&self) -> Vec<f64> {
-        fn conv<T: Copy + Into<f64>>(v: &[T]) -> Vec<f64> {
-            v.iter().map(|&x| x.into()).collect()
+    /// Defines variable `name` on `dims` in `f` with these values' type.
+    pub(crate) fn define<'f>(
+        &self,
+        f: &'f mut netcdf::FileMut,
+        name: &str,
+        dims: &[&str],
+    ) -> netcdf::Result<netcdf::VariableMut<'f>> {
+        fn add<'f, T: netcdf::NcTypeDescriptor>(
+            f: &'f mut netcdf::FileMut,
+            name: &str,
+            dims: &[&str],
+            _: &[T],
+        ) -> netcdf::Result<netcdf::VariableMut<'f>> {
+            f.add_variable::<T>(name, dims)
         }
-        match self {
-            CoordValues::F64(v) => v.clone(),
-            CoordValues::F32(v) => conv(v),
-            CoordValues::I8(v) => conv(v),
-            CoordValues::I16(v) => conv(v),
-            CoordValues::I32(v) => conv(v),
-            CoordValues::U8(v) => conv(v),
-            CoordValues::U16(v) => conv(v),
-            CoordValues::U32(v) => conv(v),
-            // Calendar counts and indices; beyond 2^53 the nearest double.
-            CoordValues::I64(v) => v.iter().map(|&x| x as f64).collect(),
-            CoordValues::U64(v) => v.iter().map(|&x| x as f64).collect(),
-        }
+        each_coord_type!(self, v => add(f, name, dims, v))
+    }
+
+    /// Writes the values into `var`, defined by [`CoordValues::define`].
+    pub(crate) fn put(&self, var: &mut netcdf::VariableMut<'_>) -> netcdf::Result<()> {
+        each_coord_type!(self, v => var.put_values(v, ..))
     }
 }
 

@@ -230,19 +230,7 @@ fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), Netc
     }
     for c in &coords {
         let dims: Vec<&str> = c.dims.iter().map(String::as_str).collect();
-        let mut var = match &c.values {
-            CoordValues::F64(_) => f.add_variable::<f64>(&c.name, &dims),
-            CoordValues::F32(_) => f.add_variable::<f32>(&c.name, &dims),
-            CoordValues::I8(_) => f.add_variable::<i8>(&c.name, &dims),
-            CoordValues::I16(_) => f.add_variable::<i16>(&c.name, &dims),
-            CoordValues::I32(_) => f.add_variable::<i32>(&c.name, &dims),
-            CoordValues::I64(_) => f.add_variable::<i64>(&c.name, &dims),
-            CoordValues::U8(_) => f.add_variable::<u8>(&c.name, &dims),
-            CoordValues::U16(_) => f.add_variable::<u16>(&c.name, &dims),
-            CoordValues::U32(_) => f.add_variable::<u32>(&c.name, &dims),
-            CoordValues::U64(_) => f.add_variable::<u64>(&c.name, &dims),
-        }
-        .map_err(&e)?;
+        let mut var = c.values.define(&mut f, &c.name, &dims).map_err(&e)?;
         for (k, val) in &c.attrs {
             var.put_attribute(k, val.clone()).map_err(&e)?;
         }
@@ -273,19 +261,7 @@ fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), Netc
     }
     for c in &coords {
         let mut var = f.variable_mut(&c.name).expect("just defined");
-        match &c.values {
-            CoordValues::F64(v) => var.put_values(v, ..),
-            CoordValues::F32(v) => var.put_values(v, ..),
-            CoordValues::I8(v) => var.put_values(v, ..),
-            CoordValues::I16(v) => var.put_values(v, ..),
-            CoordValues::I32(v) => var.put_values(v, ..),
-            CoordValues::I64(v) => var.put_values(v, ..),
-            CoordValues::U8(v) => var.put_values(v, ..),
-            CoordValues::U16(v) => var.put_values(v, ..),
-            CoordValues::U32(v) => var.put_values(v, ..),
-            CoordValues::U64(v) => var.put_values(v, ..),
-        }
-        .map_err(&e)?;
+        c.values.put(&mut var).map_err(&e)?;
     }
     f.close().map_err(&e)?;
     Ok(())
