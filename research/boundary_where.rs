@@ -25,11 +25,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data/scenes/figure5.toml");
     let scene = Scene::load(Some(&path), &sets)?;
     let sh = scene.sheet.clone().ok_or("the scene has no sheet")?;
-    let c = &scene.contact;
-    // k′ at the driven end: k_nv·(eq 8's length), k_nv = fraction·2·sqrt(k_ne·h·ρ_i), eq (3).
-    let knv =
-        c.damping_fraction * 2.0 * (c.normal_stiffness * sh.thickness * scene.ice.density).sqrt();
-    let visc = knv * sh.viscous_length.unwrap_or(sh.thickness);
+    let visc = sh.boundary_viscosity(&scene.contact, scene.ice.density);
     let (u, decay) = (sh.speed, sh.viscous_decay);
     let mut w = scene.build()?;
     let dt = w.dt();

@@ -108,10 +108,7 @@ impl Scene {
             tip_bevel: sh.tip_bevel(),
             corner_bevel: sh.corner_bevel,
             decay: sh.viscous_decay,
-            viscosity: self
-                .contact
-                .viscous_coefficient_for(sh.thickness, self.ice.density)
-                * sh.viscous_length.unwrap_or(sh.thickness),
+            viscosity: sh.boundary_viscosity(&self.contact, self.ice.density),
             blocks: Vec::with_capacity(n),
         };
         for k in 0..n {

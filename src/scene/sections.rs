@@ -2,7 +2,7 @@
 //! `[wall]`, `[pile]`, `[joint]`, `[output]`): every key with its unit, default and reason.
 //! Re-exported by `scene`, their one public path.
 
-use crate::dem::{ContactOnset, Dashpot, Drive, WaterParams};
+use crate::dem::{ContactOnset, ContactParams, Dashpot, Drive, WaterParams};
 use serde::{Deserialize, Serialize};
 
 /// Ice properties.
@@ -247,6 +247,14 @@ impl SheetSection {
     /// Skeletal layer (m): `skeletal_fraction·h`, at most `skeletal_max`.
     pub(crate) fn skeletal(&self) -> f64 {
         (self.skeletal_fraction * self.thickness).min(self.skeletal_max)
+    }
+
+    /// k′ of eqs (7)–(8) at the driven end (kg/(m·s)): the k_nv of eq (3) for this sheet's
+    /// thickness and ice density `rho_i` (kg/m³), times eq (8)'s length (`viscous_length`,
+    /// default h; docs/choices.md).
+    pub fn boundary_viscosity(&self, contact: &ContactParams, rho_i: f64) -> f64 {
+        contact.viscous_coefficient_for(self.thickness, rho_i)
+            * self.viscous_length.unwrap_or(self.thickness)
     }
 }
 
