@@ -32,5 +32,5 @@ pub use geometry::V2;
 pub use joint::{Joint, JointMaterial};
 pub use ledger::EnergyBudget;
 pub use numerics::{ContactOnset, Dashpot};
-pub use water::WaterParams;
+pub use water::{DragBodies, WaterParams};
 pub use world::{Snapshot, World, WorldError, WorldParams};

@@ -11,10 +11,12 @@
 //! - moment M = −(ρ_w·C_d·D⁴/64)·|ω|·ω, the strip-theory moment on a plate of length D
 //!   spinning about its middle, with D the diagonal of the submerged part's bounding box.
 //!
-//! Drag acts on free blocks and rubble, not on the blocks of the sheet or the floe: the
-//! paper models the water's damping of those by the viscous forces of eqs (7)–(8) and the
-//! floe's dashpots. (Form drag on each sheet block would also be wrong in itself: the blocks
-//! of a continuous sheet moving through water shield one another.)
+//! By default drag acts on free blocks and rubble, not on the blocks of the sheet or the
+//! floe ([`DragBodies::Rubble`]): the paper models the water's damping of those by the
+//! viscous forces of eqs (7)–(8) and the floe's dashpots. (Form drag on each sheet block
+//! would also be wrong in itself: the blocks of a continuous sheet moving through water
+//! shield one another.) [`DragBodies::All`] puts it on every free body in the water, to
+//! measure that choice (`docs/choices.md`).
 
 use super::body::{Bodies, Role};
 use super::geometry::{ClipPoly, V2, area_centroid, clip_below_into};
@@ -34,6 +36,28 @@ pub struct WaterParams {
     /// Linear drag coefficient c_lin (kg/(m³·s) : N/m per m² submerged per m/s). Default 0;
     /// verification scenes use it to settle quickly without changing the equilibrium.
     pub linear_drag: f64,
+    /// Which bodies feel drag (both laws). Default [`DragBodies::Rubble`].
+    pub drag_bodies: DragBodies,
+}
+
+/// Which bodies feel water drag. The paper names drag among the dissipative mechanisms
+/// without saying on what; held (kinematic) bodies never feel it.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum DragBodies {
+    /// Free blocks and rubble only (the default): the sheet and the floe feel the water
+    /// through eqs (7)–(8) and the floe's dashpots, which would otherwise count it twice.
+    #[default]
+    Rubble,
+    /// Every body in the water, the sheet's and the floe's blocks too.
+    All,
+}
+
+impl DragBodies {
+    /// True for [`DragBodies::Rubble`] (a serde skip test).
+    pub fn is_rubble(&self) -> bool {
+        *self == DragBodies::Rubble
+    }
 }
 
 impl Default for WaterParams {
@@ -43,6 +67,7 @@ impl Default for WaterParams {
             density: 1010.0,
             drag_coefficient: 1.0,
             linear_drag: 0.0,
+            drag_bodies: DragBodies::Rubble,
         }
     }
 }
@@ -98,8 +123,11 @@ impl WaterForces {
             bodies.apply(i, V2::new(0.0, fb), c);
             self.buoyancy[i] = (fb, c);
             // The sheet and the floe feel the water's damping through their own boundary
-            // forces (eqs 7–8; the floe's dashpots): drag acts on free blocks and rubble.
-            if !drag_on || matches!(bodies.role[i], Role::Sheet | Role::Floe) {
+            // forces (eqs 7–8; the floe's dashpots): by default drag acts on free blocks
+            // and rubble only.
+            let shielded = w.drag_bodies == DragBodies::Rubble
+                && matches!(bodies.role[i], Role::Sheet | Role::Floe);
+            if !drag_on || shielded {
                 self.drag[i] = (V2::default(), V2::default(), 0.0);
                 continue;
             }

@@ -24,6 +24,7 @@ impl Scene {
                 density: self.water.density,
                 drag_coefficient: self.water.drag_coefficient,
                 linear_drag: self.water.linear_drag,
+                drag_bodies: self.water.drag_bodies,
             }),
             time_step_safety: self.numerics.time_step_safety,
             time_step: (self.numerics.time_step > 0.0).then_some(self.numerics.time_step),

@@ -2,7 +2,7 @@
 //! `[wall]`, `[pile]`, `[joint]`, `[output]`): every key with its unit, default and reason.
 //! Re-exported by `scene`, their one public path.
 
-use crate::dem::{ContactOnset, ContactParams, Dashpot, Drive, WaterParams};
+use crate::dem::{ContactOnset, ContactParams, Dashpot, DragBodies, Drive, WaterParams};
 use serde::{Deserialize, Serialize};
 
 /// Ice properties.
@@ -38,6 +38,11 @@ pub struct WaterSection {
     pub drag_coefficient: f64,
     /// Linear drag coefficient (kg/(m³·s)). Default 0.
     pub linear_drag: f64,
+    /// Which bodies feel drag: `"rubble"` (free blocks and rubble; the default) or `"all"`
+    /// (the sheet's and the floe's blocks too); see [`DragBodies`]. Left out of a written
+    /// scene at its default, so that the records made before it keep their digests.
+    #[serde(default, skip_serializing_if = "DragBodies::is_rubble")]
+    pub drag_bodies: DragBodies,
 }
 
 impl Default for WaterSection {
@@ -49,6 +54,7 @@ impl Default for WaterSection {
             density: w.density,
             drag_coefficient: w.drag_coefficient,
             linear_drag: w.linear_drag,
+            drag_bodies: w.drag_bodies,
         }
     }
 }
