@@ -17,8 +17,65 @@ use pressridge::itd::{
     StrengthFormula, StrengthOptions, category_bounds, ridge_batch, strength_batch,
 };
 
+/// The fields of the sample grid the tests use.
+struct Sample {
+    aicen: Array2<f64>,
+    vicen: Array2<f64>,
+    aice0: Option<Array1<f64>>,
+    divu: Option<Array1<f64>>,
+    shear: Option<Array1<f64>>,
+}
+
+/// `data/sample_itd.nc` (4 800 columns of five categories); under Miri
+/// (`scripts/check-ub.sh`), which cannot call the NetCDF library and interprets every
+/// operation, 24 synthetic columns of five categories: ice-free, opening and converging
+/// columns, category thicknesses near CICE's.
+fn sample_grid() -> Sample {
+    if !cfg!(miri) {
+        let g =
+            read_itd(&Path::new(env!("CARGO_MANIFEST_DIR")).join("data/sample_itd.nc")).unwrap();
+        return Sample {
+            aicen: g.aicen,
+            vicen: g.vicen,
+            aice0: g.aice0,
+            divu: g.divu,
+            shear: g.shear,
+        };
+    }
+    let (ncat, ncol) = (5, 24);
+    let hmid = [0.3, 1.0, 1.9, 3.0, 4.5];
+    let mut aicen = Array2::zeros((ncat, ncol));
+    let mut vicen = Array2::zeros((ncat, ncol));
+    let mut aice0 = Array1::ones(ncol);
+    for c in (0..ncol).filter(|c| c % 8 != 0) {
+        let w: Vec<f64> = (0..ncat)
+            .map(|n| 0.2 + ((7 * c + 3 * n) % 10) as f64 / 10.0)
+            .collect();
+        let (open, sum) = (0.02 + 0.01 * c as f64, w.iter().sum::<f64>());
+        for n in 0..ncat {
+            aicen[[n, c]] = (1.0 - open) * w[n] / sum;
+            vicen[[n, c]] = aicen[[n, c]] * hmid[n] * (0.8 + 0.04 * ((c + n) % 10) as f64);
+        }
+        aice0[c] = 1.0 - aicen.column(c).sum();
+    }
+    let divu = Array1::from_iter((0..ncol).map(|c| {
+        if c % 4 == 1 {
+            2e-6
+        } else {
+            -1e-6 * (1 + c % 3) as f64
+        }
+    }));
+    Sample {
+        aicen,
+        vicen,
+        aice0: Some(aice0),
+        divu: Some(divu),
+        shear: Some(Array1::from_elem(ncol, 3e-6)),
+    }
+}
+
 fn sample() -> (Array2<f64>, Array2<f64>, Array1<f64>) {
-    let g = read_itd(&Path::new(env!("CARGO_MANIFEST_DIR")).join("data/sample_itd.nc")).unwrap();
+    let g = sample_grid();
     (g.aicen, g.vicen, g.aice0.unwrap())
 }
 
@@ -684,7 +741,7 @@ fn string_outputs_follow_the_required_length_protocol() {
 
 #[test]
 fn ridge_step_matches_rust_api_and_conserves() {
-    let g = read_itd(&Path::new(env!("CARGO_MANIFEST_DIR")).join("data/sample_itd.nc")).unwrap();
+    let g = sample_grid();
     let (ncat, ncol) = g.aicen.dim();
     let conv: Array1<f64> = g.divu.as_ref().unwrap().mapv(|x| f64::max(-x, 0.0));
     let shear = g.shear.clone().unwrap();
@@ -810,7 +867,7 @@ fn ridge_step_matches_rust_api_and_conserves() {
 
 #[test]
 fn single_column_ridging_equals_the_batch_and_leaves_bad_columns_unchanged() {
-    let g = read_itd(&Path::new(env!("CARGO_MANIFEST_DIR")).join("data/sample_itd.nc")).unwrap();
+    let g = sample_grid();
     let (ncat, ncol) = g.aicen.dim();
     let conv: Vec<f64> = g
         .divu
@@ -1379,6 +1436,144 @@ fn calls_from_many_threads_agree_and_keep_their_own_errors() {
     for h in handles {
         h.join().unwrap();
     }
+}
+
+/// A C_f table handle shared by the threads of a test.
+#[derive(Clone, Copy)]
+struct SharedTable(*const PressridgeCfTable);
+// SAFETY: a C_f table is never changed after it is made and may be read from any thread (the
+// C ABI's contract, docs/c-api.md); the test frees it only after joining every thread.
+unsafe impl Send for SharedTable {}
+// SAFETY: as for `Send`: the threads only read through the handle.
+unsafe impl Sync for SharedTable {}
+
+/// The per-cell option sets of the thread test: CICE's defaults, Thorndike/uniform, Hibler's
+/// strength, another constant C_f, C_f from a shared table, and a changed parameter.
+fn cell_options(k: usize, table: SharedTable) -> PressridgeOptions {
+    let mut o = default_options();
+    match k {
+        1 => {
+            o.participation = PRESSRIDGE_PARTICIPATION_THORNDIKE;
+            o.redistribution = PRESSRIDGE_REDISTRIBUTION_UNIFORM;
+        }
+        2 => o.strength_law = PRESSRIDGE_STRENGTH_HIBLER1979,
+        3 => o.cf = 12.0,
+        4 => {
+            o.cf_source = PRESSRIDGE_CF_SOURCE_TABLE;
+            o.cf_table = table.0;
+        }
+        5 => o.params.mu_rdg = 4.0,
+        _ => {}
+    }
+    o
+}
+
+/// Strength (N/m) of one cell through `pressridge_strength_cell`, and the same column after
+/// one area-only ridging step (`pressridge_ridge_step` on a one-column grid), with the option
+/// set `k`, over the first `ncat` categories of the column.
+fn cell_results(a: &[f64], v: &[f64], ncat: usize, k: usize, table: SharedTable) -> Vec<u64> {
+    let o = cell_options(k, table);
+    let a0 = 1.0 - a[..ncat].iter().sum::<f64>();
+    let mut p = f64::NAN;
+    // SAFETY: `a` and `v` hold at least `ncat` values, `o` and `p` are live locals; the table
+    // handle outlives every call (freed after the threads are joined).
+    let rc =
+        unsafe { pressridge_strength_cell(ncat as i64, a.as_ptr(), v.as_ptr(), a0, &o, &mut p) };
+    assert_eq!(rc, PRESSRIDGE_OK, "{}", last_error());
+    let (mut ra, mut rv, mut ra0) = (a[..ncat].to_vec(), v[..ncat].to_vec(), [a0]);
+    let (conv, shear) = ([2e-6], [3e-6]);
+    // SAFETY: as above; the one-column grid matches the buffers' lengths.
+    let rc = unsafe {
+        pressridge_ridge_step(
+            &fortran_grid(ncat, 1),
+            ra.as_mut_ptr(),
+            rv.as_mut_ptr(),
+            ra0.as_mut_ptr(),
+            null(),
+            0,
+            conv.as_ptr(),
+            shear.as_ptr(),
+            3600.0,
+            null(),
+            &o,
+            null(),
+        )
+    };
+    assert_eq!(rc, PRESSRIDGE_OK, "{}", last_error());
+    std::iter::once(p)
+        .chain(ra)
+        .chain(rv)
+        .chain(ra0)
+        .map(f64::to_bits)
+        .collect()
+}
+
+/// The per-cell entry points from 16 threads at once, each changing its options (six sets,
+/// a shared C_f table among them) and its number of categories (5 and 3) from call to call,
+/// give what one thread gives calling them one after the other: the per-thread options
+/// cache and scratch space never mix threads or stale options. (Under Miri,
+/// `scripts/check-ub.sh`, its data-race detector watches the same calls.)
+#[test]
+fn per_cell_calls_from_16_threads_with_changing_options_equal_a_serial_run() {
+    let (a, v, _) = sample();
+    // Columns of pack ice (open water below Thorndike's G* = 0.15, so that every option set
+    // gives its own strength).
+    let cols: Arc<Vec<(Vec<f64>, Vec<f64>)>> = Arc::new(
+        (0..a.ncols())
+            .filter(|&c| a.column(c).sum() > 0.9)
+            .take(if cfg!(miri) { 2 } else { 120 })
+            .map(|c| (a.column(c).to_vec(), v.column(c).to_vec()))
+            .collect(),
+    );
+    let ncol = cols.len();
+    assert!(ncol >= 2);
+    let mut handle = null_mut();
+    let (h, c) = ([0.5, 2.0, 4.0], [9.0, 14.0, 21.0]);
+    // SAFETY: `h` and `c` hold 3 values; `handle` is a live local.
+    let rc = unsafe { pressridge_cf_table_new(h.as_ptr(), c.as_ptr(), 3, &mut handle) };
+    assert_eq!(rc, PRESSRIDGE_OK);
+    let table = SharedTable(handle);
+    let sets = 6;
+    let key = move |c: usize, k: usize, three: bool| (c * sets + k) * 2 + usize::from(three);
+    let mut want = vec![Vec::new(); ncol * sets * 2];
+    for (c, (a, v)) in cols.iter().enumerate() {
+        for k in 0..sets {
+            for three in [false, true] {
+                want[key(c, k, three)] = cell_results(a, v, if three { 3 } else { 5 }, k, table);
+            }
+        }
+    }
+    // Every option set gives its own strength.
+    let p: Vec<u64> = (0..sets).map(|k| want[key(0, k, false)][0]).collect();
+    assert!((1..sets).all(|k| !p[..k].contains(&p[k])), "{p:?}");
+    let want = Arc::new(want);
+    let calls = ncol * sets * 2;
+    let handles: Vec<_> = (0..16)
+        .map(|t| {
+            let (cols, want) = (cols.clone(), want.clone());
+            std::thread::spawn(move || {
+                // Under Miri (scripts/check-ub.sh) a share of them: each call is interpreted.
+                for i in 0..if cfg!(miri) { 6 } else { calls } {
+                    // Each thread walks the calls in its own order, so that neighbouring calls
+                    // of one thread differ in options, categories and column.
+                    let j = (i * 7 + t * 13) % calls;
+                    let (c, k, three) = (j / (sets * 2), (j / 2) % sets, j % 2 == 1);
+                    let (a, v) = &cols[c];
+                    let got = cell_results(a, v, if three { 3 } else { 5 }, k, table);
+                    assert_eq!(
+                        got,
+                        want[key(c, k, three)],
+                        "thread {t}, column {c}, set {k}"
+                    );
+                }
+            })
+        })
+        .collect();
+    for h in handles {
+        h.join().unwrap();
+    }
+    // SAFETY: the handle came from pressridge_cf_table_new and no thread uses it any more.
+    assert_eq!(unsafe { pressridge_cf_table_free(handle) }, PRESSRIDGE_OK);
 }
 
 #[test]

@@ -95,6 +95,9 @@ program host_loop
      ok = ok .and. dmax <= 1e-13_c_double
   end if
 
+  deallocate(aicen, vicen, aice0, divu, shear, hin_max, strength, closing)
+  if (allocated(pref)) deallocate(pref)
+  if (allocated(ra)) deallocate(ra, rv, ra0)
   if (.not. ok) then
      print '(a)', 'host_loop: MISMATCH'
      error stop 1

@@ -290,44 +290,76 @@ pub unsafe extern "C" fn pressridge_strength_cell(
     })
 }
 
-/// Whether [`PressridgeOptions`] has no padding: its fields' sizes (four i32, two f64, a
-/// pointer, the parameters: sixteen f64 and an i64) add up to its own. True on 64-bit
-/// targets (checked there when compiling, so that a field added without counting it stops
-/// the build).
-const OPTIONS_WITHOUT_PADDING: bool = {
-    use std::mem::size_of;
-    size_of::<PressridgeOptions>()
-        == 4 * size_of::<i32>()
-            + 2 * size_of::<f64>()
-            + size_of::<*const PressridgeCfTable>()
-            + size_of::<PressridgeParams>()
-        && size_of::<PressridgeParams>() == 17 * 8
-};
-
-#[cfg(target_pointer_width = "64")]
-const _: () = assert!(
-    OPTIONS_WITHOUT_PADDING,
-    "a field of PressridgeOptions or PressridgeParams is not counted in OPTIONS_WITHOUT_PADDING"
-);
-
-/// Options equal bit for bit, every byte compared. Exact for a cache of options that passed
-/// their checks: the same bits pass the same checks and give the same results (NaN
-/// included), and values equal as numbers but not in bits (±0) are checked again. Never
-/// equal where the struct has padding (its bytes are then not all defined): every call
-/// checks its options again.
+/// Options equal bit for bit, field by field: integers and the table handle by value, every
+/// f64 by its bits. Exact for a cache of options that passed their checks: the same bits pass
+/// the same checks and give the same results (NaN included), and values equal as numbers but
+/// not in bits (±0) are checked again. Safe code in place of a comparison of the struct's
+/// bytes, which relied on its having no padding; it costs 18 instructions more per call of
+/// about 1 400 (docs/performance.md).
 fn same_options(a: &PressridgeOptions, b: &PressridgeOptions) -> bool {
-    if !OPTIONS_WITHOUT_PADDING {
-        return false;
-    }
-    // SAFETY: `PressridgeOptions` is `repr(C)` and `Copy`, and has no padding (checked just
-    // above), so all its bytes are initialised.
-    let bytes = |o: &PressridgeOptions| unsafe {
-        std::slice::from_raw_parts(
-            std::ptr::from_ref(o).cast::<u8>(),
-            std::mem::size_of::<PressridgeOptions>(),
-        )
-    };
-    bytes(a) == bytes(b)
+    // Names every field (no `..`): one added to either struct stops the build here.
+    let PressridgeOptions {
+        participation: _,
+        redistribution: _,
+        strength_law: _,
+        cf_source: _,
+        cf: _,
+        fill: _,
+        cf_table: _,
+        params:
+            PressridgeParams {
+                rhoi: _,
+                rhow: _,
+                gravit: _,
+                gstar: _,
+                astar: _,
+                hstar: _,
+                maxraft: _,
+                mu_rdg: _,
+                cs: _,
+                pstar: _,
+                cstar: _,
+                puny: _,
+                exp_argmax: _,
+                big: _,
+                area_tolerance: _,
+                max_area_before_ridging: _,
+                nitermax: _,
+            },
+    } = a;
+    let (p, q) = (&a.params, &b.params);
+    // Every pair's bits XORed and ORed together: zero only where all are equal. Branch-free,
+    // so that it costs about what the byte comparison it replaced did.
+    let words = [
+        (a.participation as u64, b.participation as u64),
+        (a.redistribution as u64, b.redistribution as u64),
+        (a.strength_law as u64, b.strength_law as u64),
+        (a.cf_source as u64, b.cf_source as u64),
+        (a.cf.to_bits(), b.cf.to_bits()),
+        (a.fill.to_bits(), b.fill.to_bits()),
+        (a.cf_table.addr() as u64, b.cf_table.addr() as u64),
+        (p.rhoi.to_bits(), q.rhoi.to_bits()),
+        (p.rhow.to_bits(), q.rhow.to_bits()),
+        (p.gravit.to_bits(), q.gravit.to_bits()),
+        (p.gstar.to_bits(), q.gstar.to_bits()),
+        (p.astar.to_bits(), q.astar.to_bits()),
+        (p.hstar.to_bits(), q.hstar.to_bits()),
+        (p.maxraft.to_bits(), q.maxraft.to_bits()),
+        (p.mu_rdg.to_bits(), q.mu_rdg.to_bits()),
+        (p.cs.to_bits(), q.cs.to_bits()),
+        (p.pstar.to_bits(), q.pstar.to_bits()),
+        (p.cstar.to_bits(), q.cstar.to_bits()),
+        (p.puny.to_bits(), q.puny.to_bits()),
+        (p.exp_argmax.to_bits(), q.exp_argmax.to_bits()),
+        (p.big.to_bits(), q.big.to_bits()),
+        (p.area_tolerance.to_bits(), q.area_tolerance.to_bits()),
+        (
+            p.max_area_before_ridging.to_bits(),
+            q.max_area_before_ridging.to_bits(),
+        ),
+        (p.nitermax as u64, q.nitermax as u64),
+    ];
+    words.iter().fold(0, |d, (x, y)| d | (x ^ y)) == 0
 }
 
 /// Caller-owned outputs of [`pressridge_ridge_step`], one value per column laid out as the
@@ -522,17 +554,29 @@ mod tests {
     use super::*;
 
     #[test]
-    #[cfg(target_pointer_width = "64")]
-    fn cached_options_are_compared_as_bytes_on_64_bit_targets() {
+    fn cached_options_are_compared_bit_for_bit() {
         let a = PressridgeOptions::default();
         let mut b = a;
         assert!(same_options(&a, &b));
         b.params.nitermax += 1;
         assert!(!same_options(&a, &b));
         b = a;
+        b.params.max_area_before_ridging =
+            f64::from_bits(a.params.max_area_before_ridging.to_bits() ^ 1);
+        assert!(!same_options(&a, &b), "the last parameter, one bit off");
+        b = a;
+        b.cf_table = std::ptr::NonNull::dangling().as_ptr();
+        assert!(!same_options(&a, &b), "another table handle");
+        b = a;
         b.cf = -0.0;
         let mut c = a;
         c.cf = 0.0;
         assert!(!same_options(&b, &c), "equal as numbers, not in bits");
+        b.cf = f64::NAN;
+        c.cf = f64::NAN;
+        assert!(
+            same_options(&b, &c),
+            "the same NaN bits are the same options"
+        );
     }
 }

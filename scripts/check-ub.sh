@@ -1,0 +1,102 @@
+#!/usr/bin/env bash
+# Undefined-behaviour checks of the library's unsafe code (issue 32, docs/reliability.md).
+#
+#   scripts/check-ub.sh [miri]   Miri runs the unit and C-ABI tests that reach unsafe code
+#   scripts/check-ub.sh asan     the C and Fortran tests built with -fsanitize=address,undefined
+#                                against the static library built with Rust's AddressSanitizer
+#   scripts/check-ub.sh tsan     the thread tests of tests/ffi.rs under ThreadSanitizer
+#
+# Installs what it needs: the nightly toolchain's miri and rust-src components (rustup).
+# Miri interprets the program and reports any undefined behaviour it executes: out-of-bounds
+# or misaligned reads, use after free, invalid values, data races, leaks. It cannot run calls
+# into C libraries (NetCDF) or the AVX2 intrinsics' runtime detection; under Miri the feature
+# checks report no AVX2, so the portable lanes, which compute the same bits, run instead.
+# What runs and what is left out, with the reason: docs/reliability.md, "Undefined behaviour".
+set -euo pipefail
+cd "$(dirname "$0")/.."
+stage=${1:-miri}
+
+ensure_nightly() {
+  local have
+  have=$(rustup +nightly component list --installed 2>/dev/null || true)
+  for c in "$@"; do
+    grep -q "^$c" <<<"$have" || rustup component add --toolchain nightly "$c"
+  done
+}
+
+case "$stage" in
+  miri)
+    ensure_nightly miri rust-src
+    cargo +nightly miri setup
+    # Miri's default checks (Stacked Borrows included); isolation stays on (no files, no
+    # clock). Deterministic floats: Miri otherwise perturbs exp, powf and the like by an ulp at
+    # random on each call, and the tests compare paths bit for bit.
+    export MIRIFLAGS="-Zmiri-deterministic-floats ${MIRIFLAGS:-}"
+    echo "== miri: unit tests of the modules with unsafe code ($SECONDS s)"
+    # ffi (the options cache, the C layouts, the error protocol), the strength routines and
+    # the joint lanes (their portable twins under Miri). itd::vexp is left out: its only
+    # unsafe code is the AVX2+FMA path, which Miri cannot run, and its portable path is
+    # f64::exp. The batched strength's lanes and unchecked gather run in tests/ffi.rs below.
+    cargo +nightly miri test --lib -- ffi:: itd::strength dem::joint::lanes
+    echo "== miri: the C ABI called from Rust on in-memory data ($SECONDS s)"
+    # Every test of tests/ffi.rs (their sample grid is synthetic under Miri) but the two that
+    # read and write NetCDF files, 4 threads and a tiny scene run included.
+    cargo +nightly miri test --test ffi -- \
+      --skip cf_tables_load_query_free --skip ridge_tables_load_query_and_give_cf_tables
+    cargo +nightly miri test --test ffi_ridge_step
+    echo "== miri: clean in $SECONDS s"
+    ;;
+  asan)
+    ensure_nightly rust-src
+    target=x86_64-unknown-linux-gnu
+    # The library and the standard library it links, instrumented (-Zbuild-std: a sanitizer
+    # needs std built with it too); its own target folder, so no other build is disturbed.
+    echo "== asan: the static library with AddressSanitizer ($SECONDS s)"
+    RUSTFLAGS="-Zsanitizer=address" cargo +nightly build -Zbuild-std --target $target \
+      --lib --profile ci --target-dir target/asan
+    lib=$PWD/target/asan/$target/ci
+    # The command line computes the Fortran tests' reference files (not instrumented).
+    cargo build --profile ci --bin pressridge
+    san="-fsanitize=address,undefined -fno-omit-frame-pointer"
+    # Two of gfortran 12's UBSan checks report its own code for absent optional array
+    # arguments, which the standard allows and the bridge passes on (docs/failure.md): the
+    # null check on an absent CONTIGUOUS array passed to an optional dummy (an eight-line
+    # program shows it), and the overflow check on the contiguity test it evaluates from
+    # the uninitialised extents of an absent assumed-shape array before it tests presence
+    # (-fdump-tree-original of pressridge_ridging.f90). Both are off for the Fortran sources
+    # only; a real null or wild access still stops the run under ASan.
+    fnull="-fno-sanitize=null,signed-integer-overflow"
+    echo "== asan: C and Fortran tests, instrumented, on the static library ($SECONDS s)"
+    rm -rf fortran-bridge/build/asan
+    make -C fortran-bridge BUILD=build/asan PROFILE=ci CARGO_BUILD=true LIBDIR="$lib" \
+      CFLAGS="-O1 -g -std=c11 -Wall -Wextra -Werror $san" \
+      FFLAGS="-O1 -g -std=f2008 -Wall -Wno-unused-dummy-argument -Wno-maybe-uninitialized $san $fnull" \
+      LINK_STATIC="$lib/libpressridge.a -lnetcdf $(pkg-config --libs hdf5-serial) -lgcc_s -lutil -lrt -lpthread -lm -ldl -lc $san" \
+      build/asan/test_capi_static build/asan/test_pressridge_static build/asan/host_loop_static \
+      build/asan/example_c_static build/asan/strength_default.nc build/asan/ridged.nc \
+      build/asan/strength_thorndike_uniform.nc build/asan/strength_hibler.nc \
+      build/asan/strength_cf_table.nc build/asan/cf_table.nc build/asan/ridge_table.nc
+    export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+    b=fortran-bridge/build/asan
+    $b/test_capi_static | tail -n 1
+    $b/test_pressridge_static data/sample_itd.nc $b | tail -n 1
+    OMP_NUM_THREADS=2 $b/host_loop_static data/sample_itd.nc $b/strength_default.nc $b/ridged.nc | tail -n 1
+    $b/example_c_static > /dev/null
+    echo "== asan: clean in $SECONDS s"
+    ;;
+  tsan)
+    ensure_nightly rust-src
+    target=x86_64-unknown-linux-gnu
+    echo "== tsan: the thread tests of tests/ffi.rs with ThreadSanitizer ($SECONDS s)"
+    # 16 threads on the per-cell entry points with changing options, and 4 threads on the
+    # batched ones with their own errors, each checked against one thread's results.
+    RUSTFLAGS="-Zsanitizer=thread" TSAN_OPTIONS=halt_on_error=1 \
+      cargo +nightly test -Zbuild-std --target $target --profile ci --target-dir target/tsan \
+      --test ffi -- per_cell_calls_from_16_threads calls_from_many_threads
+    echo "== tsan: clean in $SECONDS s"
+    ;;
+  *)
+    echo "check-ub.sh: unknown stage '$stage' (miri, asan, tsan)" >&2
+    exit 2
+    ;;
+esac
