@@ -1,0 +1,210 @@
+//! One tracer field: what it is ([`TracerRole`]), what it is carried on ([`TracerBase`]) and
+//! its place in a layout ([`TracerField`]).
+
+/// What a tracer is carried on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TracerBase {
+    /// Ice area `aicen` (Icepack `trcr_depend = 0`, or `2 + nt` through a stratum).
+    Area,
+    /// Ice volume `vicen` (Icepack `trcr_depend = 1`).
+    IceVolume,
+    /// Snow volume `vsnon` (Icepack `trcr_depend = 2`).
+    SnowVolume,
+}
+
+/// The physical meaning of a tracer, where the ridging step or the clean-up treats it
+/// specially (everything else is [`TracerRole::Other`] and just moves with its base).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TracerRole {
+    /// Surface temperature `Tsfc` (°C), area tracer; set to the freezing temperature `Tf` in
+    /// emptied categories.
+    SurfaceTemperature,
+    /// Ice enthalpy per layer `qice` (J m⁻³, negative), ice-volume tracer.
+    IceEnthalpy,
+    /// Snow enthalpy per layer `qsno` (J m⁻³, negative), snow-volume tracer.
+    SnowEnthalpy,
+    /// Ice salinity per layer `sice` (ppt), ice-volume tracer.
+    IceSalinity,
+    /// Ice age `iage` (s), ice-volume tracer.
+    Age,
+    /// First-year ice area fraction `FY` (1), area tracer.
+    FirstYear,
+    /// Level-ice area fraction `alvl` (1), area tracer; not given to new ridges.
+    LevelArea,
+    /// Level-ice volume fraction `vlvl` (1), ice-volume tracer; not given to new ridges.
+    LevelVolume,
+    /// Pond area fraction of the level ice `apnd` (1), on level-ice area.
+    PondArea,
+    /// Pond depth `hpnd` (m), on pond area.
+    PondDepth,
+    /// Refrozen pond-lid thickness `ipnd` (m), on pond area.
+    PondLid,
+    /// Any other tracer (units as the host defines them).
+    Other,
+}
+
+impl TracerBase {
+    /// Every base, in Icepack's `trcr_depend` order.
+    pub const ALL: [TracerBase; 3] = [
+        TracerBase::Area,
+        TracerBase::IceVolume,
+        TracerBase::SnowVolume,
+    ];
+
+    /// Lower-case name (`area`, `ice_volume`, `snow_volume`), as the Python face spells it.
+    pub fn name(self) -> &'static str {
+        match self {
+            TracerBase::Area => "area",
+            TracerBase::IceVolume => "ice_volume",
+            TracerBase::SnowVolume => "snow_volume",
+        }
+    }
+
+    /// The base called `name` ([`TracerBase::name`]).
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|b| b.name() == name)
+    }
+}
+
+impl TracerRole {
+    /// Every role.
+    pub const ALL: [TracerRole; 12] = [
+        TracerRole::SurfaceTemperature,
+        TracerRole::IceEnthalpy,
+        TracerRole::SnowEnthalpy,
+        TracerRole::IceSalinity,
+        TracerRole::Age,
+        TracerRole::FirstYear,
+        TracerRole::LevelArea,
+        TracerRole::LevelVolume,
+        TracerRole::PondArea,
+        TracerRole::PondDepth,
+        TracerRole::PondLid,
+        TracerRole::Other,
+    ];
+
+    /// Lower-case name (`surface_temperature`, `ice_enthalpy`, ..., `other`), as the Python
+    /// face spells it.
+    pub fn name(self) -> &'static str {
+        use TracerRole::*;
+        match self {
+            SurfaceTemperature => "surface_temperature",
+            IceEnthalpy => "ice_enthalpy",
+            SnowEnthalpy => "snow_enthalpy",
+            IceSalinity => "ice_salinity",
+            Age => "age",
+            FirstYear => "first_year",
+            LevelArea => "level_area",
+            LevelVolume => "level_volume",
+            PondArea => "pond_area",
+            PondDepth => "pond_depth",
+            PondLid => "pond_lid",
+            Other => "other",
+        }
+    }
+
+    /// The role called `name` ([`TracerRole::name`]).
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|r| r.name() == name)
+    }
+
+    /// Icepack's field name of this role (`Tsfc`, `qice`, `qsno`, `sice`, `iage`, `FY`,
+    /// `alvl`, `vlvl`, `apnd`, `hpnd`, `ipnd`; none for [`TracerRole::Other`]), and its base
+    /// and strata as [`TracerLayout::cice`](super::TracerLayout::cice) carries it.
+    pub fn icepack(self) -> Option<(&'static str, TracerBase, &'static [&'static str])> {
+        use TracerBase::*;
+        use TracerRole::*;
+        Some(match self {
+            SurfaceTemperature => ("Tsfc", Area, &[]),
+            IceEnthalpy => ("qice", IceVolume, &[]),
+            SnowEnthalpy => ("qsno", SnowVolume, &[]),
+            IceSalinity => ("sice", IceVolume, &[]),
+            Age => ("iage", IceVolume, &[]),
+            FirstYear => ("FY", Area, &[]),
+            LevelArea => ("alvl", Area, &[]),
+            LevelVolume => ("vlvl", IceVolume, &[]),
+            PondArea => ("apnd", Area, &["alvl"]),
+            PondDepth => ("hpnd", Area, &["alvl", "apnd"]),
+            PondLid => ("ipnd", Area, &["alvl", "apnd"]),
+            Other => return None,
+        })
+    }
+
+    /// CF `units` of a tracer of this role (CICE's units: °C, J m⁻³, ppt, s, m; `""` for
+    /// [`TracerRole::Other`], whose units the host defines).
+    pub fn units(self) -> &'static str {
+        use TracerRole::*;
+        match self {
+            SurfaceTemperature => "degC",
+            IceEnthalpy | SnowEnthalpy => "J m-3",
+            IceSalinity => "ppt",
+            Age => "s",
+            FirstYear | LevelArea | LevelVolume | PondArea => "1",
+            PondDepth | PondLid => "m",
+            Other => "",
+        }
+    }
+
+    /// A CF `long_name` of a tracer of this role.
+    pub fn long_name(self) -> &'static str {
+        use TracerRole::*;
+        match self {
+            SurfaceTemperature => "ice/snow surface temperature",
+            IceEnthalpy => "ice enthalpy of a layer (negative)",
+            SnowEnthalpy => "snow enthalpy of a layer (negative)",
+            IceSalinity => "ice salinity of a layer",
+            Age => "ice age",
+            FirstYear => "first-year ice area fraction",
+            LevelArea => "level ice area fraction",
+            LevelVolume => "level ice volume fraction",
+            PondArea => "melt pond area fraction of the level ice",
+            PondDepth => "melt pond depth",
+            PondLid => "refrozen melt pond lid thickness",
+            Other => "tracer",
+        }
+    }
+
+    /// Whether CICE numbers this role's variables per layer (`qice001`, ...) even with one
+    /// layer.
+    pub(super) fn layered(self) -> bool {
+        matches!(
+            self,
+            TracerRole::IceEnthalpy | TracerRole::SnowEnthalpy | TracerRole::IceSalinity
+        )
+    }
+}
+
+/// One named tracer field (one or more levels, consecutive in the tracer vector).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TracerField {
+    /// Name (Icepack's: `Tsfc`, `qice`, `qsno`, `sice`, `iage`, `FY`, `alvl`, `vlvl`, `apnd`,
+    /// `hpnd`, `ipnd`).
+    pub name: String,
+    /// Physical meaning.
+    pub role: TracerRole,
+    /// Number of levels (layers), ≥ 1.
+    pub levels: usize,
+    /// What the tracer is carried on (before its strata).
+    pub base: TracerBase,
+    /// Names of the single-level fields it is additionally carried on, outermost first
+    /// (e.g. `["alvl", "apnd"]` for pond depth). At most two.
+    pub strata: Vec<String>,
+}
+
+impl TracerField {
+    pub(super) fn new(
+        name: &str,
+        role: TracerRole,
+        levels: usize,
+        base: TracerBase,
+        strata: &[&str],
+    ) -> Self {
+        Self {
+            name: name.to_string(),
+            role,
+            levels,
+            base,
+            strata: strata.iter().map(|s| s.to_string()).collect(),
+        }
+    }
+}

@@ -1,0 +1,90 @@
+//! Unit tests of the tracer layout.
+
+use super::*;
+
+#[test]
+fn cice_layout_matches_icepack_indices() {
+    let l = TracerLayout::cice(7, 1, CiceTracerFlags::ALL).unwrap();
+    assert_eq!(l.ntrcr(), 23);
+    assert_eq!(l.field("qsno"), Some((8, 1)));
+    assert_eq!(l.field("sice"), Some((9, 7)));
+    assert_eq!(l.field("ipnd"), Some((22, 1)));
+    let d = l.trcr_depend();
+    assert_eq!(d[0], 0);
+    assert_eq!(d[1], 1);
+    assert_eq!(d[8], 2);
+    // apnd on alvl (1-based 19), hpnd/ipnd on apnd (1-based 21).
+    assert_eq!(d[20], 2 + 19);
+    assert_eq!(d[21], 2 + 21);
+    assert_eq!(l.strata_one_based()[21], [19, 21]);
+}
+
+#[test]
+fn cice_restart_names_follow_the_layout() {
+    let l = TracerLayout::cice(7, 1, CiceTracerFlags::ALL).unwrap();
+    let n = l.cice_restart_names();
+    assert_eq!(n.len(), 23);
+    assert_eq!(n[0], "Tsfcn");
+    assert_eq!(n[1], "qice001");
+    assert_eq!(n[7], "qice007");
+    assert_eq!(n[8], "qsno001");
+    assert_eq!(n[9], "sice001");
+    assert_eq!(n[16], "iage");
+    assert_eq!(n[22], "ipnd");
+    assert_eq!(
+        l.field_of(8).map(|(f, k)| (f.name.as_str(), k)),
+        Some(("qsno", 0))
+    );
+    assert_eq!(
+        l.field_of(12).map(|(f, k)| (f.name.as_str(), k)),
+        Some(("sice", 3))
+    );
+    assert!(l.field_of(23).is_none());
+}
+
+/// Detection from variable names: the layout that names them, nothing without snow or
+/// tracers, and a missing member named.
+#[test]
+fn detect_cice_from_names() {
+    let want = TracerLayout::cice(
+        3,
+        2,
+        CiceTracerFlags {
+            first_year: true,
+            level_ice: true,
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    let mut names = want.cice_restart_names();
+    names.push("vsnon".into());
+    let has = |n: &str| names.iter().any(|m| m == n);
+    let (got, flags) = TracerLayout::detect_cice(&has).unwrap().unwrap();
+    assert_eq!(got, want);
+    assert!(flags.first_year && flags.level_ice && !flags.age && !flags.ponds);
+    assert_eq!(TracerLayout::detect_cice(&|n| n == "aicen").unwrap(), None);
+    let without_vlvl = |n: &str| n != "vlvl" && has(n);
+    let e = TracerLayout::detect_cice(&without_vlvl).unwrap_err();
+    assert_eq!(e.var, "vlvl");
+    assert!(e.why.contains("alvl"), "{e}");
+    let without_sice2 = |n: &str| n != "sice002" && has(n);
+    assert_eq!(
+        TracerLayout::detect_cice(&without_sice2).unwrap_err().var,
+        "sice002"
+    );
+    for r in TracerRole::ALL {
+        assert_eq!(TracerRole::from_name(r.name()), Some(r));
+    }
+    for b in TracerBase::ALL {
+        assert_eq!(TracerBase::from_name(b.name()), Some(b));
+    }
+}
+
+#[test]
+fn ponds_without_level_ice_rejected() {
+    let f = CiceTracerFlags {
+        ponds: true,
+        ..Default::default()
+    };
+    assert!(TracerLayout::cice(2, 1, f).is_err());
+}
