@@ -231,33 +231,6 @@ typedef struct PressridgeRidgeRates {
   double *dvirdgdt;
 } PressridgeRidgeRates;
 
-// Thermodynamic constants and clean-up thresholds of the ridging step (the fields of
-// `pressridge::itd::RidgeStepParams`; Icepack's defaults from
-// [`pressridge_step_params_default`]).
-typedef struct PressridgeStepParams {
-  // Snow density (kg/m³), Icepack `rhos` = 330.
-  double rhos;
-  // Latent heat of melting of fresh ice (J/kg), Icepack `Lfresh` = 3.34e5.
-  double lfresh;
-  // Specific heat of fresh ice (J kg⁻¹ K⁻¹), Icepack `cp_ice` = 2106.
-  double cp_ice;
-  // Fraction of the snow on ridging ice kept on the ridge (1), Icepack `fsnowrdg` = 0.5.
-  double fsnowrdg;
-  // Salinity of zapped ice with the constant salt flux (ppt), Icepack 4.
-  double ice_ref_salinity;
-  // 0: zapped ice carries `ice_ref_salinity` (Icepack `saltflux_option = "constant"`);
-  // 1: its own salinity (`"prognostic"`).
-  int32_t salt_flux_prognostic;
-  // Cell ice area below which all ice is zapped (1), Icepack `itd_area_min` = 1e-11.
-  double itd_area_min;
-  // Cell ice mass below which all ice is zapped (kg/m²), Icepack `itd_mass_min` = 1e-10.
-  double itd_mass_min;
-  // Snow thickness above which snow temperatures are checked (m), Icepack `hs_min` = 1e-4.
-  double hs_min;
-  // Lowest physical snow temperature (°C), Icepack `Tmin` = −100.
-  double tmin;
-} PressridgeStepParams;
-
 // Fluxes to the ocean of one cell; the ridging step **adds** to them (as Icepack adds to
 // its arguments), except `dpnd_ridge`, which it overwrites.
 typedef struct PressridgeOceanFluxes {
@@ -348,6 +321,33 @@ typedef struct PressridgeCellArrays {
   // Rate of ice volume ridged (m/s), written.
   double *dvirdgdt;
 } PressridgeCellArrays;
+
+// Thermodynamic constants and clean-up thresholds of the ridging step (the fields of
+// `pressridge::itd::RidgeStepParams`; Icepack's defaults from
+// [`pressridge_step_params_default`]).
+typedef struct PressridgeStepParams {
+  // Snow density (kg/m³), Icepack `rhos` = 330.
+  double rhos;
+  // Latent heat of melting of fresh ice (J/kg), Icepack `Lfresh` = 3.34e5.
+  double lfresh;
+  // Specific heat of fresh ice (J kg⁻¹ K⁻¹), Icepack `cp_ice` = 2106.
+  double cp_ice;
+  // Fraction of the snow on ridging ice kept on the ridge (1), Icepack `fsnowrdg` = 0.5.
+  double fsnowrdg;
+  // Salinity of zapped ice with the constant salt flux (ppt), Icepack 4.
+  double ice_ref_salinity;
+  // 0: zapped ice carries `ice_ref_salinity` (Icepack `saltflux_option = "constant"`);
+  // 1: its own salinity (`"prognostic"`).
+  int32_t salt_flux_prognostic;
+  // Cell ice area below which all ice is zapped (1), Icepack `itd_area_min` = 1e-11.
+  double itd_area_min;
+  // Cell ice mass below which all ice is zapped (kg/m²), Icepack `itd_mass_min` = 1e-10.
+  double itd_mass_min;
+  // Snow thickness above which snow temperatures are checked (m), Icepack `hs_min` = 1e-4.
+  double hs_min;
+  // Lowest physical snow temperature (°C), Icepack `Tmin` = −100.
+  double tmin;
+} PressridgeStepParams;
 
 #ifdef __cplusplus
 extern "C" {
@@ -504,67 +504,6 @@ int32_t pressridge_grid_fortran(int64_t ncat, int64_t ncol, struct PressridgeGri
 // `grid` must be valid for one write.
 int32_t pressridge_grid_c(int64_t ncat, int64_t ncol, struct PressridgeGrid *grid);
 
-// Fills `*params` with Icepack's defaults.
-//
-// # Safety
-// `params` must be valid for one write.
-int32_t pressridge_step_params_default(struct PressridgeStepParams *params);
-
-// Makes a ridging set-up for `ncat` categories and the CICE tracer layout with `nilyr` ice
-// and `nslyr` snow layers (both ≥ 1) and the optional tracers of `tracer_flags` (a sum of
-// `PRESSRIDGE_TRACER_*`), in Icepack's order: `Tsfc`, `qice(nilyr)`, `qsno(nslyr)`,
-// `sice(nilyr)`, `iage`, `FY`, `alvl`, `vlvl`, `apnd`, `hpnd`, `ipnd`. `options` (null: CICE
-// defaults) gives the participation, redistribution and ridging parameters (its strength
-// fields are not used), `step_params` (null: Icepack defaults) the thermodynamic constants;
-// `cleanup` and `rebin` are Icepack's `docleanup`, `dorebin` (nonzero = true). Writes the
-// handle to `*ridger`; release it with [`pressridge_ridger_free`].
-//
-// # Safety
-// `options` and `step_params` must be null or valid; `ridger` valid for one write.
-int32_t pressridge_ridger_new(int64_t ncat,
-                              int64_t nilyr,
-                              int64_t nslyr,
-                              int32_t tracer_flags,
-                              const struct PressridgeOptions *options,
-                              const struct PressridgeStepParams *step_params,
-                              int32_t cleanup,
-                              int32_t rebin,
-                              struct PressridgeRidger **ridger);
-
-// Releases a handle of [`pressridge_ridger_new`] (null is allowed and does nothing).
-//
-// # Safety
-// `ridger` must come from `pressridge_ridger_new`, not be in use, and not be freed twice.
-int32_t pressridge_ridger_free(struct PressridgeRidger *ridger);
-
-// The tracer layout of a set-up, as Icepack's arrays: `*ntrcr` (tracers per category), and
-// where not null, for each tracer (arrays of `ntrcr_len` ≥ ntrcr elements; the two 2-D ones
-// Fortran-ordered `(ntrcr_len, 3)` and `(ntrcr_len, 2)`): `trcr_depend` (0 area, 1 ice volume,
-// 2 snow volume, 2 + nt for tracer nt, 1-based), `trcr_base` (1 in the column of its base),
-// `n_trcr_strata` and `nt_strata` (1-based tracer indices, 0 = none).
-//
-// # Safety
-// Non-null pointers must be valid for the writes described.
-int32_t pressridge_ridger_tracers(const struct PressridgeRidger *ridger,
-                                  int64_t *ntrcr,
-                                  int64_t ntrcr_len,
-                                  int32_t *trcr_depend,
-                                  double *trcr_base,
-                                  int32_t *n_trcr_strata,
-                                  int32_t *nt_strata);
-
-// First tracer index (0-based) and number of levels of the tracer field `name` (`len`
-// bytes of UTF-8: `Tsfc`, `qice`, `qsno`, `sice`, `iage`, `FY`, `alvl`, `vlvl`, `apnd`,
-// `hpnd`, `ipnd`); `PRESSRIDGE_ERR_NOT_FOUND` when the layout has no such field.
-//
-// # Safety
-// `name` valid for `len` bytes; `start`, `levels` valid for one write each.
-int32_t pressridge_ridger_tracer_field(const struct PressridgeRidger *ridger,
-                                       const uint8_t *name,
-                                       int64_t len,
-                                       int64_t *start,
-                                       int64_t *levels);
-
 // One ridging step of one grid cell, in place: Icepack's `icepack_step_ridge` (ridging with
 // snow, tracers and ocean fluxes, then the clean-up), see `docs/strength.md`.
 //
@@ -628,6 +567,67 @@ int32_t pressridge_ridge_cells(const struct PressridgeRidger *ridger,
                                double *aice0,
                                double *aice,
                                const struct PressridgeCellArrays *cells);
+
+// Fills `*params` with Icepack's defaults.
+//
+// # Safety
+// `params` must be valid for one write.
+int32_t pressridge_step_params_default(struct PressridgeStepParams *params);
+
+// Makes a ridging set-up for `ncat` categories and the CICE tracer layout with `nilyr` ice
+// and `nslyr` snow layers (both ≥ 1) and the optional tracers of `tracer_flags` (a sum of
+// `PRESSRIDGE_TRACER_*`), in Icepack's order: `Tsfc`, `qice(nilyr)`, `qsno(nslyr)`,
+// `sice(nilyr)`, `iage`, `FY`, `alvl`, `vlvl`, `apnd`, `hpnd`, `ipnd`. `options` (null: CICE
+// defaults) gives the participation, redistribution and ridging parameters (its strength
+// fields are not used), `step_params` (null: Icepack defaults) the thermodynamic constants;
+// `cleanup` and `rebin` are Icepack's `docleanup`, `dorebin` (nonzero = true). Writes the
+// handle to `*ridger`; release it with [`pressridge_ridger_free`].
+//
+// # Safety
+// `options` and `step_params` must be null or valid; `ridger` valid for one write.
+int32_t pressridge_ridger_new(int64_t ncat,
+                              int64_t nilyr,
+                              int64_t nslyr,
+                              int32_t tracer_flags,
+                              const struct PressridgeOptions *options,
+                              const struct PressridgeStepParams *step_params,
+                              int32_t cleanup,
+                              int32_t rebin,
+                              struct PressridgeRidger **ridger);
+
+// Releases a handle of [`pressridge_ridger_new`] (null is allowed and does nothing).
+//
+// # Safety
+// `ridger` must come from `pressridge_ridger_new`, not be in use, and not be freed twice.
+int32_t pressridge_ridger_free(struct PressridgeRidger *ridger);
+
+// The tracer layout of a set-up, as Icepack's arrays: `*ntrcr` (tracers per category), and
+// where not null, for each tracer (arrays of `ntrcr_len` ≥ ntrcr elements; the two 2-D ones
+// Fortran-ordered `(ntrcr_len, 3)` and `(ntrcr_len, 2)`): `trcr_depend` (0 area, 1 ice volume,
+// 2 snow volume, 2 + nt for tracer nt, 1-based), `trcr_base` (1 in the column of its base),
+// `n_trcr_strata` and `nt_strata` (1-based tracer indices, 0 = none).
+//
+// # Safety
+// Non-null pointers must be valid for the writes described.
+int32_t pressridge_ridger_tracers(const struct PressridgeRidger *ridger,
+                                  int64_t *ntrcr,
+                                  int64_t ntrcr_len,
+                                  int32_t *trcr_depend,
+                                  double *trcr_base,
+                                  int32_t *n_trcr_strata,
+                                  int32_t *nt_strata);
+
+// First tracer index (0-based) and number of levels of the tracer field `name` (`len`
+// bytes of UTF-8: `Tsfc`, `qice`, `qsno`, `sice`, `iage`, `FY`, `alvl`, `vlvl`, `apnd`,
+// `hpnd`, `ipnd`); `PRESSRIDGE_ERR_NOT_FOUND` when the layout has no such field.
+//
+// # Safety
+// `name` valid for `len` bytes; `start`, `levels` valid for one write each.
+int32_t pressridge_ridger_tracer_field(const struct PressridgeRidger *ridger,
+                                       const uint8_t *name,
+                                       int64_t len,
+                                       int64_t *start,
+                                       int64_t *levels);
 
 // Runs the scene given as TOML text (`toml_len` bytes of UTF-8, the format of
 // `data/scenes/*.toml`; every key optional, unknown keys rejected) to its duration on the

@@ -1,0 +1,323 @@
+//! The ridging set-up of the C ABI: the tracer flags, the step's constants
+//! ([`PressridgeStepParams`]) and the [`PressridgeRidger`] handle, made once at
+//! initialisation, with the queries of its tracer layout.
+
+// Per-category and per-tracer tables are indexed by number, as in Icepack.
+#![allow(clippy::needless_range_loop)]
+
+use super::super::itd::PressridgeOptions;
+use super::super::layout::check_ptr;
+use super::super::{
+    FfiError, FfiResult, PRESSRIDGE_ERR_BAD_SIZE, PRESSRIDGE_ERR_BAD_VALUE, guard, put,
+};
+use crate::itd::{CiceTracerFlags, RidgeStepOptions, RidgeStepParams, SaltFlux, TracerLayout};
+
+/// Tracer flag: ice age `iage` (s, on ice volume), Icepack `tr_iage`.
+pub const PRESSRIDGE_TRACER_AGE: i32 = 1;
+/// Tracer flag: first-year ice fraction `FY` (on area), Icepack `tr_FY`.
+pub const PRESSRIDGE_TRACER_FIRST_YEAR: i32 = 2;
+/// Tracer flag: level-ice area and volume fractions `alvl`, `vlvl`, Icepack `tr_lvl`.
+pub const PRESSRIDGE_TRACER_LEVEL_ICE: i32 = 4;
+/// Tracer flag: level-ice melt ponds `apnd`, `hpnd`, `ipnd`, Icepack `tr_pond_lvl` (needs
+/// `PRESSRIDGE_TRACER_LEVEL_ICE`).
+pub const PRESSRIDGE_TRACER_PONDS: i32 = 8;
+
+/// Thermodynamic constants and clean-up thresholds of the ridging step (the fields of
+/// `pressridge::itd::RidgeStepParams`; Icepack's defaults from
+/// [`pressridge_step_params_default`]).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PressridgeStepParams {
+    /// Snow density (kg/m³), Icepack `rhos` = 330.
+    pub rhos: f64,
+    /// Latent heat of melting of fresh ice (J/kg), Icepack `Lfresh` = 3.34e5.
+    pub lfresh: f64,
+    /// Specific heat of fresh ice (J kg⁻¹ K⁻¹), Icepack `cp_ice` = 2106.
+    pub cp_ice: f64,
+    /// Fraction of the snow on ridging ice kept on the ridge (1), Icepack `fsnowrdg` = 0.5.
+    pub fsnowrdg: f64,
+    /// Salinity of zapped ice with the constant salt flux (ppt), Icepack 4.
+    pub ice_ref_salinity: f64,
+    /// 0: zapped ice carries `ice_ref_salinity` (Icepack `saltflux_option = "constant"`);
+    /// 1: its own salinity (`"prognostic"`).
+    pub salt_flux_prognostic: i32,
+    /// Cell ice area below which all ice is zapped (1), Icepack `itd_area_min` = 1e-11.
+    pub itd_area_min: f64,
+    /// Cell ice mass below which all ice is zapped (kg/m²), Icepack `itd_mass_min` = 1e-10.
+    pub itd_mass_min: f64,
+    /// Snow thickness above which snow temperatures are checked (m), Icepack `hs_min` = 1e-4.
+    pub hs_min: f64,
+    /// Lowest physical snow temperature (°C), Icepack `Tmin` = −100.
+    pub tmin: f64,
+}
+
+impl From<&RidgeStepParams> for PressridgeStepParams {
+    fn from(p: &RidgeStepParams) -> Self {
+        Self {
+            rhos: p.rhos,
+            lfresh: p.lfresh,
+            cp_ice: p.cp_ice,
+            fsnowrdg: p.fsnowrdg,
+            ice_ref_salinity: p.ice_ref_salinity,
+            salt_flux_prognostic: i32::from(p.salt_flux == SaltFlux::Prognostic),
+            itd_area_min: p.itd_area_min,
+            itd_mass_min: p.itd_mass_min,
+            hs_min: p.hs_min,
+            tmin: p.tmin,
+        }
+    }
+}
+
+impl PressridgeStepParams {
+    fn to_params(self) -> FfiResult<RidgeStepParams> {
+        let p = RidgeStepParams {
+            rhos: self.rhos,
+            lfresh: self.lfresh,
+            cp_ice: self.cp_ice,
+            fsnowrdg: self.fsnowrdg,
+            ice_ref_salinity: self.ice_ref_salinity,
+            salt_flux: match self.salt_flux_prognostic {
+                0 => SaltFlux::Constant,
+                1 => SaltFlux::Prognostic,
+                v => {
+                    return Err(FfiError::new(
+                        PRESSRIDGE_ERR_BAD_VALUE,
+                        format!("salt_flux_prognostic = {v}: must be 0 or 1"),
+                    ));
+                }
+            },
+            itd_area_min: self.itd_area_min,
+            itd_mass_min: self.itd_mass_min,
+            hs_min: self.hs_min,
+            tmin: self.tmin,
+        };
+        p.validate()?;
+        Ok(p)
+    }
+}
+
+/// Fills `*params` with Icepack's defaults.
+///
+/// # Safety
+/// `params` must be valid for one write.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pressridge_step_params_default(params: *mut PressridgeStepParams) -> i32 {
+    // SAFETY: `put` checks the pointer; validity is the caller's promise.
+    guard(|| unsafe {
+        put(
+            params,
+            PressridgeStepParams::from(&RidgeStepParams::default()),
+            "params",
+        )
+    })
+}
+
+/// A ridging set-up: number of categories, tracer layout and options. Immutable after
+/// [`pressridge_ridger_new`]; one handle may be used by several threads at once.
+#[derive(Debug)]
+pub struct PressridgeRidger {
+    pub(super) ncat: usize,
+    pub(super) layout: TracerLayout,
+    pub(super) opts: RidgeStepOptions,
+}
+
+pub(super) fn bad_value(msg: String) -> FfiError {
+    FfiError::new(PRESSRIDGE_ERR_BAD_VALUE, msg)
+}
+
+/// Makes a ridging set-up for `ncat` categories and the CICE tracer layout with `nilyr` ice
+/// and `nslyr` snow layers (both ≥ 1) and the optional tracers of `tracer_flags` (a sum of
+/// `PRESSRIDGE_TRACER_*`), in Icepack's order: `Tsfc`, `qice(nilyr)`, `qsno(nslyr)`,
+/// `sice(nilyr)`, `iage`, `FY`, `alvl`, `vlvl`, `apnd`, `hpnd`, `ipnd`. `options` (null: CICE
+/// defaults) gives the participation, redistribution and ridging parameters (its strength
+/// fields are not used), `step_params` (null: Icepack defaults) the thermodynamic constants;
+/// `cleanup` and `rebin` are Icepack's `docleanup`, `dorebin` (nonzero = true). Writes the
+/// handle to `*ridger`; release it with [`pressridge_ridger_free`].
+///
+/// # Safety
+/// `options` and `step_params` must be null or valid; `ridger` valid for one write.
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn pressridge_ridger_new(
+    ncat: i64,
+    nilyr: i64,
+    nslyr: i64,
+    tracer_flags: i32,
+    options: *const PressridgeOptions,
+    step_params: *const PressridgeStepParams,
+    cleanup: i32,
+    rebin: i32,
+    ridger: *mut *mut PressridgeRidger,
+) -> i32 {
+    // SAFETY: pointers checked before use; validity is the caller's promise.
+    guard(|| unsafe {
+        check_ptr(ridger, "ridger")?;
+        for (name, v) in [("ncat", ncat), ("nilyr", nilyr), ("nslyr", nslyr)] {
+            if !(1..=1 << 20).contains(&v) {
+                return Err(FfiError::new(
+                    PRESSRIDGE_ERR_BAD_SIZE,
+                    format!("{name} = {v}: must be at least 1"),
+                ));
+            }
+        }
+        if tracer_flags & !15 != 0 {
+            return Err(bad_value(format!(
+                "tracer_flags = {tracer_flags}: only PRESSRIDGE_TRACER_* (1, 2, 4, 8) may be set"
+            )));
+        }
+        let flags = CiceTracerFlags {
+            age: tracer_flags & PRESSRIDGE_TRACER_AGE != 0,
+            first_year: tracer_flags & PRESSRIDGE_TRACER_FIRST_YEAR != 0,
+            level_ice: tracer_flags & PRESSRIDGE_TRACER_LEVEL_ICE != 0,
+            ponds: tracer_flags & PRESSRIDGE_TRACER_PONDS != 0,
+        };
+        let layout = TracerLayout::cice(nilyr as usize, nslyr as usize, flags)?;
+        let o = PressridgeOptions::from_ptr(options)?;
+        let ro = o.ridge_options()?;
+        let step = if step_params.is_null() {
+            RidgeStepParams::default()
+        } else {
+            check_ptr(step_params, "step_params")?;
+            (*step_params).to_params()?
+        };
+        let opts = RidgeStepOptions {
+            participation: ro.participation,
+            redistribution: ro.redistribution,
+            params: ro.params,
+            step,
+            cleanup: cleanup != 0,
+            rebin: rebin != 0,
+        };
+        let h = Box::new(PressridgeRidger {
+            ncat: ncat as usize,
+            layout,
+            opts,
+        });
+        ridger.write(Box::into_raw(h));
+        Ok(())
+    })
+}
+
+/// Releases a handle of [`pressridge_ridger_new`] (null is allowed and does nothing).
+///
+/// # Safety
+/// `ridger` must come from `pressridge_ridger_new`, not be in use, and not be freed twice.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pressridge_ridger_free(ridger: *mut PressridgeRidger) -> i32 {
+    // SAFETY: ownership returns from the caller, as documented.
+    guard(|| unsafe {
+        if !ridger.is_null() {
+            drop(Box::from_raw(ridger));
+        }
+        Ok(())
+    })
+}
+
+pub(super) unsafe fn ridger_ref<'a>(r: *const PressridgeRidger) -> FfiResult<&'a PressridgeRidger> {
+    check_ptr(r, "ridger")?;
+    // SAFETY: non-null, aligned; validity is the caller's promise.
+    Ok(unsafe { &*r })
+}
+
+/// The tracer layout of a set-up, as Icepack's arrays: `*ntrcr` (tracers per category), and
+/// where not null, for each tracer (arrays of `ntrcr_len` ≥ ntrcr elements; the two 2-D ones
+/// Fortran-ordered `(ntrcr_len, 3)` and `(ntrcr_len, 2)`): `trcr_depend` (0 area, 1 ice volume,
+/// 2 snow volume, 2 + nt for tracer nt, 1-based), `trcr_base` (1 in the column of its base),
+/// `n_trcr_strata` and `nt_strata` (1-based tracer indices, 0 = none).
+///
+/// # Safety
+/// Non-null pointers must be valid for the writes described.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pressridge_ridger_tracers(
+    ridger: *const PressridgeRidger,
+    ntrcr: *mut i64,
+    ntrcr_len: i64,
+    trcr_depend: *mut i32,
+    trcr_base: *mut f64,
+    n_trcr_strata: *mut i32,
+    nt_strata: *mut i32,
+) -> i32 {
+    // SAFETY: pointers checked; validity is the caller's promise.
+    guard(|| unsafe {
+        let r = ridger_ref(ridger)?;
+        let l = &r.layout;
+        let nt = l.ntrcr();
+        put(ntrcr, nt as i64, "ntrcr")?;
+        let any = [
+            trcr_depend.is_null(),
+            trcr_base.is_null(),
+            n_trcr_strata.is_null(),
+            nt_strata.is_null(),
+        ]
+        .iter()
+        .any(|n| !n);
+        if !any {
+            return Ok(());
+        }
+        if ntrcr_len < nt as i64 {
+            return Err(FfiError::new(
+                PRESSRIDGE_ERR_BAD_SIZE,
+                format!("ntrcr_len = {ntrcr_len}: the layout has {nt} tracers"),
+            ));
+        }
+        let len = ntrcr_len as usize;
+        let dep = l.trcr_depend();
+        let base = l.base_codes();
+        let strata = l.strata_one_based();
+        for it in 0..nt {
+            if !trcr_depend.is_null() {
+                put(trcr_depend.add(it), dep[it], "trcr_depend")?;
+            }
+            if !trcr_base.is_null() {
+                for k in 0..3 {
+                    let v = if base[it] == k as i32 { 1.0 } else { 0.0 };
+                    put(trcr_base.add(it + k * len), v, "trcr_base")?;
+                }
+            }
+            if !n_trcr_strata.is_null() {
+                let n = strata[it].iter().filter(|s| **s > 0).count() as i32;
+                put(n_trcr_strata.add(it), n, "n_trcr_strata")?;
+            }
+            if !nt_strata.is_null() {
+                for k in 0..2 {
+                    put(nt_strata.add(it + k * len), strata[it][k], "nt_strata")?;
+                }
+            }
+        }
+        Ok(())
+    })
+}
+
+/// First tracer index (0-based) and number of levels of the tracer field `name` (`len`
+/// bytes of UTF-8: `Tsfc`, `qice`, `qsno`, `sice`, `iage`, `FY`, `alvl`, `vlvl`, `apnd`,
+/// `hpnd`, `ipnd`); `PRESSRIDGE_ERR_NOT_FOUND` when the layout has no such field.
+///
+/// # Safety
+/// `name` valid for `len` bytes; `start`, `levels` valid for one write each.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pressridge_ridger_tracer_field(
+    ridger: *const PressridgeRidger,
+    name: *const u8,
+    len: i64,
+    start: *mut i64,
+    levels: *mut i64,
+) -> i32 {
+    // SAFETY: pointers checked; validity is the caller's promise.
+    guard(|| unsafe {
+        let r = ridger_ref(ridger)?;
+        check_ptr(name, "name")?;
+        if len < 0 {
+            return Err(FfiError::new(PRESSRIDGE_ERR_BAD_SIZE, "len < 0"));
+        }
+        let s = std::str::from_utf8(std::slice::from_raw_parts(name, len as usize))
+            .map_err(|e| FfiError::new(super::super::PRESSRIDGE_ERR_PARSE, e.to_string()))?;
+        let (a, b) = r.layout.field(s).ok_or_else(|| {
+            FfiError::new(
+                super::super::PRESSRIDGE_ERR_NOT_FOUND,
+                format!("no tracer field {s} in this layout"),
+            )
+        })?;
+        put(start, a as i64, "start")?;
+        put(levels, b as i64, "levels")
+    })
+}
