@@ -5,6 +5,7 @@
 #   scripts/check-ub.sh asan     the C and Fortran tests built with -fsanitize=address,undefined
 #                                against the static library built with Rust's AddressSanitizer
 #   scripts/check-ub.sh tsan     the thread tests of tests/ffi.rs under ThreadSanitizer
+#   scripts/check-ub.sh fuzz     each libFuzzer target of fuzz/ for FUZZ_SECONDS (default 30)
 #
 # Installs what it needs: the nightly toolchain's miri and rust-src components (rustup).
 # Miri interprets the program and reports any undefined behaviour it executes: out-of-bounds
@@ -95,8 +96,22 @@ case "$stage" in
       --test ffi -- per_cell_calls_from_16_threads calls_from_many_threads
     echo "== tsan: clean in $SECONDS s"
     ;;
+  fuzz)
+    command -v cargo-fuzz > /dev/null || cargo install cargo-fuzz --locked
+    secs=${FUZZ_SECONDS:-30}
+    # Seeds from the repository (fuzz/seeds/<target>); what libFuzzer finds goes to the
+    # ignored fuzz/corpus/<target>, a crash to fuzz/artifacts/<target>.
+    for t in scene_toml; do
+      echo "== fuzz: $t for $secs s ($SECONDS s)"
+      mkdir -p "fuzz/corpus/$t"
+      cargo +nightly fuzz run "$t" "fuzz/corpus/$t" "fuzz/seeds/$t" -- \
+        -max_total_time="$secs" -print_final_stats=1 2>&1 | grep -E "^(Done|stat::number_of_executed_units|#[0-9]+ *DONE)|ERROR|panicked" || true
+      [ -z "$(ls -A "fuzz/artifacts/$t" 2>/dev/null)" ] || { echo "fuzz: $t found a failing input in fuzz/artifacts/$t" >&2; exit 1; }
+    done
+    echo "== fuzz: clean in $SECONDS s"
+    ;;
   *)
-    echo "check-ub.sh: unknown stage '$stage' (miri, asan, tsan)" >&2
+    echo "check-ub.sh: unknown stage '$stage' (miri, asan, tsan, fuzz)" >&2
     exit 2
     ;;
 esac
