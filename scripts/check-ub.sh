@@ -99,12 +99,13 @@ case "$stage" in
   fuzz)
     command -v cargo-fuzz > /dev/null || cargo install cargo-fuzz --locked
     secs=${FUZZ_SECONDS:-30}
-    # Seeds from the repository (fuzz/seeds/<target>); what libFuzzer finds goes to the
-    # ignored fuzz/corpus/<target>, a crash to fuzz/artifacts/<target>.
-    for t in scene_toml; do
+    # Each target with its seeds from the repository's own files; what libFuzzer finds goes
+    # to the ignored fuzz/corpus/<target>, a failing input to fuzz/artifacts/<target>.
+    for ts in scene_toml:data/scenes; do
+      t=${ts%%:*} seeds=${ts#*:}
       echo "== fuzz: $t for $secs s ($SECONDS s)"
       mkdir -p "fuzz/corpus/$t"
-      cargo +nightly fuzz run "$t" "fuzz/corpus/$t" "fuzz/seeds/$t" -- \
+      cargo +nightly fuzz run "$t" "fuzz/corpus/$t" "$seeds" -- \
         -max_total_time="$secs" -print_final_stats=1 2>&1 | grep -E "^(Done|stat::number_of_executed_units|#[0-9]+ *DONE)|ERROR|panicked" || true
       [ -z "$(ls -A "fuzz/artifacts/$t" 2>/dev/null)" ] || { echo "fuzz: $t found a failing input in fuzz/artifacts/$t" >&2; exit 1; }
     done
