@@ -101,7 +101,7 @@ case "$stage" in
     secs=${FUZZ_SECONDS:-30}
     # Each target with its seeds from the repository's own files; what libFuzzer finds goes
     # to the ignored fuzz/corpus/<target>, a failing input to fuzz/artifacts/<target>.
-    for ts in scene_toml:data/scenes; do
+    for ts in scene_toml:data/scenes strength_cell:fuzz/seeds/strength_cell; do
       t=${ts%%:*} seeds=${ts#*:}
       echo "== fuzz: $t for $secs s ($SECONDS s)"
       mkdir -p "fuzz/corpus/$t"
