@@ -101,11 +101,13 @@ case "$stage" in
     secs=${FUZZ_SECONDS:-30}
     # Each target with its seeds from the repository's own files; what libFuzzer finds goes
     # to the ignored fuzz/corpus/<target>, a failing input to fuzz/artifacts/<target>.
+    # Inputs that once failed (fuzz/findings/<target>) run first, every time.
     for ts in scene_toml:data/scenes strength_cell:fuzz/seeds/strength_cell; do
-      t=${ts%%:*} seeds=${ts#*:}
+      t=${ts%%:*} seeds=(${ts#*:})
+      [ -d "fuzz/findings/$t" ] && seeds+=("fuzz/findings/$t")
       echo "== fuzz: $t for $secs s ($SECONDS s)"
       mkdir -p "fuzz/corpus/$t"
-      cargo +nightly fuzz run "$t" "fuzz/corpus/$t" "$seeds" -- \
+      cargo +nightly fuzz run "$t" "fuzz/corpus/$t" "${seeds[@]}" -- \
         -max_total_time="$secs" -print_final_stats=1 2>&1 | grep -E "^(Done|stat::number_of_executed_units|#[0-9]+ *DONE)|ERROR|panicked" || true
       [ -z "$(ls -A "fuzz/artifacts/$t" 2>/dev/null)" ] || { echo "fuzz: $t found a failing input in fuzz/artifacts/$t" >&2; exit 1; }
     done
