@@ -1576,6 +1576,45 @@ fn per_cell_calls_from_16_threads_with_changing_options_equal_a_serial_run() {
     assert_eq!(unsafe { pressridge_cf_table_free(handle) }, PRESSRIDGE_OK);
 }
 
+/// The fuzzing find of `fuzz/findings/strength_cell/nan-reported-ok`: categories of 7e-9
+/// area holding 0.1–0.3 m of ice (10⁷ m thick) came back `PRESSRIDGE_OK` with a NaN strength
+/// (h_min + puny rounds to h_min, and ⟨h_r²⟩ is 0/0). Such a column is refused, naming the
+/// category's thickness, per cell and batched.
+#[test]
+fn a_category_thicker_than_any_by_its_own_area_is_refused() {
+    let mut a = [0.0, 7e-9, 0.3, 0.3, 0.2];
+    let v = [0.0, 0.1, 0.3, 0.6, 0.6];
+    let a0 = 1.0 - a.iter().sum::<f64>();
+    let mut p = f64::NAN;
+    // SAFETY: five values each, live locals.
+    let rc = unsafe { pressridge_strength_cell(5, a.as_ptr(), v.as_ptr(), a0, null(), &mut p) };
+    assert_ne!(rc, PRESSRIDGE_OK, "strength {p}");
+    assert!(last_error().contains("vicen/aicen"), "{}", last_error());
+    let mut out = [f64::NAN];
+    // SAFETY: a one-column grid over the five values, live locals.
+    let rc = unsafe {
+        pressridge_strength(
+            &fortran_grid(5, 1),
+            a.as_ptr(),
+            v.as_ptr(),
+            [a0].as_ptr(),
+            null(),
+            null(),
+            out.as_mut_ptr(),
+            null_mut(),
+        )
+    };
+    assert_ne!(rc, PRESSRIDGE_OK, "strength {}", out[0]);
+    assert!(last_error().contains("vicen/aicen"), "{}", last_error());
+    // The same column with the sliver's area at puny or below is computed.
+    a[1] = 1e-12;
+    let a0 = 1.0 - a.iter().sum::<f64>();
+    // SAFETY: as above.
+    let rc = unsafe { pressridge_strength_cell(5, a.as_ptr(), v.as_ptr(), a0, null(), &mut p) };
+    assert_eq!(rc, PRESSRIDGE_OK, "{}", last_error());
+    assert!(p.is_finite());
+}
+
 #[test]
 fn preset_constants_match_the_library() {
     use pressridge::itd::CfPreset;

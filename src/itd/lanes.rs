@@ -84,6 +84,7 @@ fn kernel<const T: bool, const U: bool>(b: &mut Block, call: &BlockCall) -> Opti
         for l in 0..L {
             let (a, v) = (b.a[n][l], b.v[n][l]);
             ok[l] &= a.is_finite() & (a >= 0.0) & v.is_finite() & (v >= 0.0) & (v <= thick_max);
+            ok[l] &= (a <= puny) | (v / a <= thick_max);
             sum[l] += a;
         }
     }

@@ -207,9 +207,14 @@ fn column_prelude(
     p: &ItdParams,
 ) -> Result<Option<(f64, f64)>, ColumnError> {
     let sum = check_column(aicen, vicen, aice0)?;
-    // Squares of thicker ice overflow into NaN (the ridging paths take such volumes).
-    for (n, &v) in vicen.iter().enumerate() {
+    // Squares of thicker ice overflow into NaN (the ridging paths take such volumes). A
+    // category's own thickness too: a volume on a sliver of area (vicen/aicen of 10⁷ m) makes
+    // h_min + puny round to h_min, and eq. ⟨h_r²⟩ 0/0 (a fuzzing find).
+    for (n, (&a, &v)) in aicen.iter().zip(vicen).enumerate() {
         super::too_thick("vicen", n, v)?;
+        if a > p.puny {
+            super::too_thick("vicen/aicen", n, v / a)?;
+        }
     }
     let aice0 = match aice0 {
         Some(a0) if a0 == 0.0 && sum == 0.0 => return Ok(None),
