@@ -1576,45 +1576,6 @@ fn per_cell_calls_from_16_threads_with_changing_options_equal_a_serial_run() {
     assert_eq!(unsafe { pressridge_cf_table_free(handle) }, PRESSRIDGE_OK);
 }
 
-/// The fuzzing find of `fuzz/findings/strength_cell/nan-reported-ok`: categories of 7e-9
-/// area holding 0.1–0.3 m of ice (10⁷ m thick) came back `PRESSRIDGE_OK` with a NaN strength
-/// (h_min + puny rounds to h_min, and ⟨h_r²⟩ is 0/0). Such a column is refused, naming the
-/// category's thickness, per cell and batched.
-#[test]
-fn a_category_thicker_than_any_by_its_own_area_is_refused() {
-    let mut a = [0.0, 7e-9, 0.3, 0.3, 0.2];
-    let v = [0.0, 0.1, 0.3, 0.6, 0.6];
-    let a0 = 1.0 - a.iter().sum::<f64>();
-    let mut p = f64::NAN;
-    // SAFETY: five values each, live locals.
-    let rc = unsafe { pressridge_strength_cell(5, a.as_ptr(), v.as_ptr(), a0, null(), &mut p) };
-    assert_ne!(rc, PRESSRIDGE_OK, "strength {p}");
-    assert!(last_error().contains("vicen/aicen"), "{}", last_error());
-    let mut out = [f64::NAN];
-    // SAFETY: a one-column grid over the five values, live locals.
-    let rc = unsafe {
-        pressridge_strength(
-            &fortran_grid(5, 1),
-            a.as_ptr(),
-            v.as_ptr(),
-            [a0].as_ptr(),
-            null(),
-            null(),
-            out.as_mut_ptr(),
-            null_mut(),
-        )
-    };
-    assert_ne!(rc, PRESSRIDGE_OK, "strength {}", out[0]);
-    assert!(last_error().contains("vicen/aicen"), "{}", last_error());
-    // The same column with the sliver's area at puny or below is computed.
-    a[1] = 1e-12;
-    let a0 = 1.0 - a.iter().sum::<f64>();
-    // SAFETY: as above.
-    let rc = unsafe { pressridge_strength_cell(5, a.as_ptr(), v.as_ptr(), a0, null(), &mut p) };
-    assert_eq!(rc, PRESSRIDGE_OK, "{}", last_error());
-    assert!(p.is_finite());
-}
-
 #[test]
 fn preset_constants_match_the_library() {
     use pressridge::itd::CfPreset;
@@ -1632,41 +1593,59 @@ fn preset_constants_match_the_library() {
 
 #[test]
 fn ice_thicker_than_any_is_refused_on_every_path() {
-    // vicen = 1e160 m overflowed the squares of the strength into NaN (issue 16); every
-    // path refuses it, naming vicen and the category.
-    let (a, v) = ([0.5, 0.3], [1e160, 0.6]);
-    let mut q = 0.0;
-    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
-    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
-    let rc = unsafe { pressridge_strength_cell(2, a.as_ptr(), v.as_ptr(), 0.2, null(), &mut q) };
-    assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
-    let e = last_error();
-    assert!(e.contains("vicen") && e.contains("1000"), "{e}");
-    // The batched grid call with 16 columns (the 8-lane kernel), one of them too thick.
-    let ncol = 16;
-    let mut af = Vec::new();
-    let mut vf = Vec::new();
-    for c in 0..ncol {
-        af.extend_from_slice(&a);
-        vf.extend_from_slice(&if c == 11 { v } else { [0.5, 0.6] });
+    // vicen = 1e160 m overflowed the squares of the strength into NaN (issue 16); 0.1 m of ice
+    // on 7e-9 of area, 10⁷ m thick, made h_min + puny round to h_min and ⟨h_r²⟩ 0/0 under
+    // PRESSRIDGE_OK (a fuzzing find, fuzz/findings/strength_cell/). Every path refuses both,
+    // naming the variable and the category.
+    for (a, v, what) in [
+        ([0.5, 0.3], [1e160, 0.6], "vicen"),
+        ([7e-9, 0.8], [0.1, 0.6], "vicen/aicen"),
+    ] {
+        let a0 = 1.0 - a[0] - a[1];
+        let mut q = 0.0;
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length
+        // passed; the entry point checks nulls, sizes and handles itself (the C ABI's contract).
+        let rc = unsafe { pressridge_strength_cell(2, a.as_ptr(), v.as_ptr(), a0, null(), &mut q) };
+        assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE, "{what}: strength {q}");
+        let e = last_error();
+        assert!(
+            e.contains(&format!("{what}[category 0]")) && e.contains("1000"),
+            "{e}"
+        );
+        // The batched grid call with 16 columns (the 8-lane kernel), one of them too thick.
+        let ncol = 16;
+        let (mut af, mut vf, mut a0s) = (Vec::new(), Vec::new(), Vec::new());
+        for c in 0..ncol {
+            let bad = c == 11;
+            af.extend_from_slice(if bad { &a } else { &[0.5, 0.3] });
+            vf.extend_from_slice(if bad { &v } else { &[0.5, 0.6] });
+            a0s.push(if bad { a0 } else { 0.2 });
+        }
+        let mut out = vec![0.0; ncol];
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length
+        // passed; the entry point checks nulls, sizes and handles itself (the C ABI's contract).
+        let rc = unsafe {
+            pressridge_strength(
+                &fortran_grid(2, ncol),
+                af.as_ptr(),
+                vf.as_ptr(),
+                a0s.as_ptr(),
+                null(),
+                null(),
+                out.as_mut_ptr(),
+                null_mut(),
+            )
+        };
+        assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE, "{what}");
+        assert_eq!(last_column(), 11);
+        assert!(last_error().contains(what), "{}", last_error());
     }
-    let a0 = vec![0.2; ncol];
-    let mut out = vec![0.0; ncol];
-    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
-    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
-    let rc = unsafe {
-        pressridge_strength(
-            &fortran_grid(2, ncol),
-            af.as_ptr(),
-            vf.as_ptr(),
-            a0.as_ptr(),
-            null(),
-            null(),
-            out.as_mut_ptr(),
-            null_mut(),
-        )
-    };
-    assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
-    assert_eq!(last_column(), 11);
-    assert!(last_error().contains("vicen"), "{}", last_error());
+    // The sliver's volume on an area at puny or below is not ice the strength sees: computed.
+    let (a, v) = ([1e-12, 0.8], [0.1, 0.6]);
+    let mut q = f64::NAN;
+    // SAFETY: as above.
+    let rc =
+        unsafe { pressridge_strength_cell(2, a.as_ptr(), v.as_ptr(), 0.2 - 1e-12, null(), &mut q) };
+    assert_eq!(rc, PRESSRIDGE_OK, "{}", last_error());
+    assert!(q.is_finite());
 }

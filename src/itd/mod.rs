@@ -75,8 +75,9 @@ pub enum ColumnError {
         /// The offending value.
         value: f64,
     },
-    /// A volume per unit area beyond [`crate::limits::CATEGORY_THICKNESS`] in a strength input: ice
-    /// thicker than any, whose squares would overflow (vicen ≤ vicen/aicen).
+    /// A volume per unit area, or a category's thickness `vicen/aicen`, beyond
+    /// [`crate::limits::CATEGORY_THICKNESS`] in a strength input: ice thicker than any, whose
+    /// squares overflow or whose ridge thickness range rounds to nothing.
     #[error(
         "{var}{} = {value} m exceeds {max} m: thicker than any sea ice (the deepest ridge keels \
          reach ~50 m)",
@@ -321,7 +322,8 @@ impl Workspace {
     }
 }
 
-/// Refuses a volume per unit area (m) beyond [`crate::limits::CATEGORY_THICKNESS`].
+/// Refuses a volume per unit area or a thickness (m), `var` naming which, beyond
+/// [`crate::limits::CATEGORY_THICKNESS`].
 #[inline]
 pub(crate) fn too_thick(var: &'static str, n: usize, v: f64) -> Result<(), ColumnError> {
     let max = crate::limits::CATEGORY_THICKNESS.max;
