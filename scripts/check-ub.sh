@@ -72,11 +72,7 @@ case "$stage" in
     make -C fortran-bridge BUILD=build/asan PROFILE=ci CARGO_BUILD=true LIBDIR="$lib" \
       CFLAGS="-O1 -g -std=c11 -Wall -Wextra -Werror $san" \
       FFLAGS="-O1 -g -std=f2008 -Wall -Wno-unused-dummy-argument -Wno-maybe-uninitialized $san $fnull" \
-      LINK_STATIC="$lib/libpressridge.a -lnetcdf $(pkg-config --libs hdf5-serial) -lgcc_s -lutil -lrt -lpthread -lm -ldl -lc $san" \
-      build/asan/test_capi_static build/asan/test_pressridge_static build/asan/host_loop_static \
-      build/asan/example_c_static build/asan/strength_default.nc build/asan/ridged.nc \
-      build/asan/strength_thorndike_uniform.nc build/asan/strength_hibler.nc \
-      build/asan/strength_cf_table.nc build/asan/cf_table.nc build/asan/ridge_table.nc
+      LDEXTRA="$san" static
     export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
     b=fortran-bridge/build/asan
     $b/test_capi_static | tail -n 1

@@ -125,8 +125,8 @@ impl WaterForces {
             // The sheet and the floe feel the water's damping through their own boundary
             // forces (eqs 7–8; the floe's dashpots): by default drag acts on free blocks
             // and rubble only.
-            let shielded = w.drag_bodies == DragBodies::Rubble
-                && matches!(bodies.role[i], Role::Sheet | Role::Floe);
+            let shielded =
+                w.drag_bodies.is_rubble() && matches!(bodies.role[i], Role::Sheet | Role::Floe);
             if !drag_on || shielded {
                 self.drag[i] = (V2::default(), V2::default(), 0.0);
                 continue;
