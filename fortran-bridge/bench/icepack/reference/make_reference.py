@@ -1,0 +1,182 @@
+#!/usr/bin/env python3
+"""Reference columns of icepack_step_ridge with snow, isotope and aerosol tracers.
+
+Takes the cases of tests/data/icepack/ridge_step_cases.jsonl (the 23-tracer CICE layout),
+adds to every category the snow tracers (smice, smliq, rhos, rsnw), N_ISO isotope species
+in snow and ice and N_AERO aerosol species (snow and ice, surface layer and interior: four
+tracers each) in Icepack's driver order (icedrv_init.F90), runs them through Icepack's
+icepack_step_ridge with the driver ridge_reference (built by make-reference.sh) and writes
+the same JSONL schema with the extended layout and the fluxes faero_ocn and fiso_ocn.
+
+    make_reference.py DRIVER IN.jsonl OUT.jsonl
+"""
+import json
+import re
+import subprocess
+import sys
+
+N_ISO, N_AERO = 3, 2
+
+
+def layout(params):
+    """Fields (name, levels, depend, strata) in Icepack's driver order."""
+    nilyr, nslyr = params["nilyr"], params["nslyr"]
+    f = [(t["name"], t["levels"]) for t in params["tracer_layout"]]
+    f += [("smice", nslyr), ("smliq", nslyr), ("rhos", nslyr), ("rsnw", nslyr)]
+    f += [("isosno", N_ISO), ("isoice", N_ISO)]
+    for k in range(1, N_AERO + 1):
+        f += [(f"aerosnossl{k:03d}", 1), (f"aerosnoint{k:03d}", 1),
+              (f"aeroicessl{k:03d}", 1), (f"aeroiceint{k:03d}", 1)]
+    start, i = {}, 0
+    for name, lev in f:
+        start[name] = i
+        i += lev
+    assert f[2][0] == "qsno" and nilyr == f[1][1]
+    return f, start, i
+
+
+def depend(name, start):
+    """Icepack's trcr_depend, trcr_base, n_trcr_strata, nt_strata (1-based) of a field."""
+    snow = {"qsno", "smice", "smliq", "rhos", "rsnw", "isosno"}
+    ice = {"qice", "sice", "iage", "vlvl", "isoice"}
+    if name in ("apnd",):
+        return 2 + start["alvl"] + 1, [1, 0, 0], [start["alvl"] + 1]
+    if name in ("hpnd", "ipnd"):
+        return 2 + start["apnd"] + 1, [1, 0, 0], [start["alvl"] + 1, start["apnd"] + 1]
+    if name in snow or name.startswith("aerosno"):
+        return 2, [0, 0, 1], []
+    if name in ice or name.startswith("aeroice"):
+        return 1, [0, 1, 0], []
+    return 0, [1, 0, 0], []
+
+
+def extra(name, k, n, area):
+    """A deterministic value of an added tracer (level k, category n); zero without ice.
+    Snow tracers in kg m-3 and m, isotopes and aerosols in kg m-3 of their base."""
+    if area <= 0.0:
+        return 0.0
+    x = (n + 1) * (k + 1)
+    if name.startswith("aero"):
+        scale = {"aerosnossl": 3.0, "aerosnoint": 1.0, "aeroicessl": 0.5, "aeroiceint": 0.2}
+        return 1.0e-6 * (1 + int(name[-3:])) * (n + 1) * scale[name[:10]]
+    return {"smice": 250.0 + 5.0 * x, "smliq": 2.0 + 0.5 * x, "rhos": 300.0 + 3.0 * x,
+            "rsnw": 1.0e-4 * (1 + 0.1 * x), "isosno": 1.0e-3 * (1 + 0.3 * x),
+            "isoice": 2.0e-3 * (1 + 0.2 * x)}[name]
+
+
+def fnum(x):
+    return repr(float(x))
+
+
+def main():
+    driver, src, dst = sys.argv[1:4]
+    lines = [json.loads(l) for l in open(src) if l.strip()]
+    params, cases = lines[0], lines[1:]
+    fields, start, ntrcr = layout(params)
+    nt = {k: 0 for k in ["Tsfc", "qice", "qsno", "sice", "iage", "FY", "alvl", "vlvl", "apnd",
+                         "hpnd", "ipnd", "smice", "smliq", "rhos", "rsnw", "isosno", "isoice"]}
+    for k in nt:
+        nt[k] = start[k] + 1
+    out = [f"{params['nilyr']} {params['nslyr']} {ntrcr} {N_AERO} {N_ISO}",
+           " ".join(str(v) for v in nt.values()) + f" {start['aerosnossl001'] + 1}",
+           "1 1 1 1 1 1 1"]
+    for name, lev in fields:
+        d, base, strata = depend(name, start)
+        s = (strata + [0, 0])[:2]
+        for _ in range(lev):
+            out.append(f"{d} {base[0]} {base[1]} {base[2]} {len(strata)} {s[0]} {s[1]}")
+    out.append(str(len(cases)))
+    for c in cases:
+        i = c["inputs"]
+        ncat = i["ncat"]
+        hasc = i["closing_in"] is not None
+        out.append(f"{ncat} {i['ndtd']} {i['krdg_partic']} {i['krdg_redist']} {int(hasc)} "
+                   f"{int(i['docleanup'])} {int(i['dorebin'])}")
+        out.append(" ".join(fnum(x) for x in [
+            i["dt"], i["rdg_conv"], i["rdg_shear"], i["mu_rdg"], i["Tf"], i["aice0"],
+            i["aice"], i["closing_in"] or 0.0, i["opening_in"] or 0.0]))
+        for k in ("hin_max", "aicen", "vicen", "vsnon"):
+            out.append(" ".join(fnum(x) for x in i[k]))
+        tr = []
+        for n in range(ncat):
+            for name, lev in fields:
+                for k in range(lev):
+                    if name in i["trcrn"]:
+                        tr.append(i["trcrn"][name][n][k])
+                    else:
+                        tr.append(extra(name, k, n, i["aicen"][n]))
+        out.append(" ".join(fnum(x) for x in tr))
+        out.append(" ".join(str(int(b)) for b in i["first_ice"]))
+        # Keep the added tracers in the case's inputs, by field as the schema has them.
+        i["trcrn"] = {name: [[tr[n * ntrcr + start[name] + k] for k in range(lev)]
+                             for n in range(ncat)] for name, lev in fields}
+    res = subprocess.run([driver], input="\n".join(out) + "\n", capture_output=True,
+                         text=True, check=True)
+    warnings = {}
+    cur = None
+    for l in open("warnings.txt"):
+        if l.startswith("case "):
+            cur = int(l.split()[1])
+            warnings[cur] = []
+        elif l.strip():
+            # As the 23-tracer file: one leading blank less, file names without directories.
+            l = re.sub(r"\S*/(\w+\.F90)", r"\1", l.rstrip())
+            warnings[cur].append(l[1:] if l.startswith(" ") else l)
+    parsed, cur = {}, None
+    for l in res.stdout.splitlines():
+        w = l.split()
+        if not w:
+            continue
+        if w[0] == "case":
+            cur = int(w[1])
+            parsed[cur] = {}
+        elif w[0] == "aborted":
+            parsed[cur]["aborted"] = w[1] == "T"
+        elif w[0] == "first_ice":
+            parsed[cur]["first_ice"] = [x == "1" for x in w[1:]]
+        else:
+            parsed[cur][w[0]] = [float(x.replace("E", "e")) for x in w[1:]]
+
+    def num(x):
+        return x if x == x and abs(x) != float("inf") else (
+            "nan" if x != x else ("inf" if x > 0 else "-inf"))
+
+    params = dict(params)
+    params["ntrcr"] = ntrcr
+    params["tracer_layout"] = [{"name": n, "index0": start[n], "levels": l} for n, l in fields]
+    dep = {}
+    for n, _ in fields:
+        d, _, s = depend(n, start)
+        dep[n] = d if d < 3 else ("2+nt_alvl" if n == "apnd" else "2+nt_apnd")
+    params["tracer_depend"] = dep
+    flags = dict(params["tracer_flags"])
+    flags.update(tr_snow=True, tr_iso=True, tr_aero=True, n_aero=N_AERO, n_iso=N_ISO)
+    params["tracer_flags"] = flags
+    params["generator"] = ("fortran-bridge/bench/icepack/reference/make-reference.sh from "
+                           "tests/data/icepack/ridge_step_cases.jsonl")
+    with open(dst, "w") as f:
+        f.write(json.dumps(params) + "\n")
+        for k, c in enumerate(cases, start=1):
+            p = parsed[k]
+            ncat = c["inputs"]["ncat"]
+            o = {"aborted": p["aborted"], "warnings": "\n".join(warnings.get(k, []))}
+            for key in ("hin_max", "aicen", "vicen", "vsnon", "dardg1ndt", "dardg2ndt",
+                        "dvirdgndt", "aparticn", "krdgn", "aredistn", "vredistn", "araftn",
+                        "vraftn", "faero_ocn", "fiso_ocn"):
+                o[key] = [num(x) for x in p[key]]
+            for key in ("aice0", "aice", "opening", "dardg1dt", "dardg2dt", "dvirdgdt", "fresh",
+                        "fsalt", "fhocn", "fpond", "dpnd_ridge"):
+                o[key] = num(p[key][0])
+            o["closing"] = num(p["closing"][0]) if c["inputs"]["closing_in"] is not None else None
+            t = p["trcrn"]
+            o["trcrn"] = {name: [[num(t[n * ntrcr + start[name] + k]) for k in range(lev)]
+                                 for n in range(ncat)] for name, lev in fields}
+            o["first_ice"] = p["first_ice"]
+            c = dict(c)
+            c["outputs"] = o
+            f.write(json.dumps(c) + "\n")
+    print(f"{len(cases)} cases, {ntrcr} tracers, into {dst}")
+
+
+if __name__ == "__main__":
+    main()
