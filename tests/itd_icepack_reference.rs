@@ -1,9 +1,11 @@
 //! The complete ridging step against Icepack 1.5.3's `icepack_step_ridge`
-//! (`tests/data/icepack/ridge_step_cases.jsonl`, described in the README next to it).
+//! (`tests/data/icepack/ridge_step_cases.jsonl`, and the same cases with snow, isotope and
+//! aerosol tracers in `ridge_step_tracers.jsonl`, described in the README next to them).
 //!
 //! Every line of the file is read and every output field checked, so adding cases of the same
-//! schema adds checks. `typical` and `hard` cases must give Icepack's answer within 1e-12
-//! relative or 1e-14 absolute (tracers only where their base and strata exceed `puny`);
+//! schema adds checks. `typical` and `hard` cases must give Icepack's answer bit for bit
+//! (tracers only where their base and strata exceed `puny`; a failure lists the values outside
+//! 1e-12 relative or 1e-14 absolute first);
 //! `stress` cases (where Icepack aborts or returns negative areas, volumes or snow) must give
 //! a clear error or a conserving, non-negative answer.
 
@@ -47,6 +49,18 @@ impl Cmp {
         ));
     }
 
+    /// A budget closed to round-off (1e-12 relative or 1e-14 absolute); not counted among
+    /// the values compared with Icepack.
+    fn conserved(&mut self, what: &str, after: f64, before: f64) {
+        let diff = (after - before).abs();
+        if diff > 1e-14 && diff > 1e-12 * f64::max(after.abs(), before.abs()) {
+            self.failures.push(format!(
+                "{}: {what}: after {after:e}, before {before:e}",
+                self.case
+            ));
+        }
+    }
+
     fn all(&mut self, what: &str, ours: &[f64], theirs: &[f64]) {
         assert_eq!(ours.len(), theirs.len(), "{what} length");
         for (n, (a, b)) in ours.iter().zip(theirs).enumerate() {
@@ -71,8 +85,8 @@ struct Case {
     out: Value,
 }
 
-fn read_cases() -> (Value, TracerLayout, Vec<Case>) {
-    let (params, lines) = common::icepack::read();
+fn read_cases(file: &str) -> (Value, TracerLayout, Vec<Case>) {
+    let (params, lines) = common::icepack::read_file(file);
     assert_eq!(params["kind"], "params");
     let nilyr = params["nilyr"].as_u64().unwrap() as usize;
     let nslyr = params["nslyr"].as_u64().unwrap() as usize;
@@ -277,6 +291,21 @@ fn check_typical(c: &Case, layout: &TracerLayout, puny: f64, cmp: &mut Cmp) {
     cmp.close("fhocn", r.fluxes.fhocn, num(&o["fhocn"]));
     cmp.close("fpond", r.fluxes.fpond, num(&o["fpond"]));
     cmp.close("dpnd_ridge", r.fluxes.dpnd_ridge, num(&o["dpnd_ridge"]));
+    for (key, ours) in [
+        ("faero_ocn", &r.fluxes.faero_ocn[..]),
+        ("fiso_ocn", &r.fluxes.fiso_ocn[..]),
+    ] {
+        let theirs = if o[key].is_null() {
+            vec![]
+        } else {
+            nums(&o[key])
+        };
+        cmp.all(key, &ours[..theirs.len()], &theirs);
+        assert!(
+            ours[theirs.len()..].iter().all(|x| *x == 0.0),
+            "{key} beyond"
+        );
+    }
     let first_ice: Vec<bool> = o["first_ice"]
         .as_array()
         .unwrap()
@@ -367,7 +396,7 @@ fn check_stress(c: &Case, layout: &TracerLayout, params: &Value, cmp: &mut Cmp) 
     let tau = c.forcing.dt * c.forcing.ndtd as f64;
     let m0 = mass(&c.vicen, &c.vsnon);
     let m1 = mass(&r.col.vicen, &r.col.vsnon) + r.fluxes.fresh * tau;
-    cmp.close("water mass (conservation)", m1, m0);
+    cmp.conserved("water mass", m1, m0);
     let e0 = heat(&c.vicen, &c.vsnon, &c.trcrn);
     let e1 = heat(&r.col.vicen, &r.col.vsnon, &r.col.trcrn) + r.fluxes.fhocn * tau;
     assert!(
@@ -375,11 +404,60 @@ fn check_stress(c: &Case, layout: &TracerLayout, params: &Value, cmp: &mut Cmp) 
         "{}: enthalpy {e1} against {e0}",
         c.name
     );
+    // Aerosol and isotope mass: what the column loses goes to the ocean. `fields` are
+    // (first tracer, carried on snow) of the fields named, `k` the level (isotope species).
+    let amount = |v: &[f64], s: &[f64], t: &[f64], fields: &[(usize, bool)], k: usize| {
+        let mut m = 0.0;
+        for n in 0..c.ncat {
+            for &(i, snow) in fields {
+                m += if snow { s[n] } else { v[n] } * t[n * nt + i + k];
+            }
+        }
+        m
+    };
+    let named = |pick: &dyn Fn(&str) -> bool| -> Vec<(usize, bool)> {
+        let f = layout.fields().iter().filter(|f| pick(&f.name));
+        f.map(|f| {
+            (
+                layout.field(&f.name).unwrap().0,
+                f.base == TracerBase::SnowVolume,
+            )
+        })
+        .collect()
+    };
+    let n_aero = named(&|n| n.starts_with("aero")).len() / 4;
+    for k in 0..n_aero {
+        let suffix = format!("{:03}", k + 1);
+        let fields = named(&|n| n.starts_with("aero") && n.ends_with(&suffix));
+        let m0 = amount(&c.vicen, &c.vsnon, &c.trcrn, &fields, 0);
+        let m1 = amount(&r.col.vicen, &r.col.vsnon, &r.col.trcrn, &fields, 0)
+            + r.fluxes.faero_ocn[k] * tau;
+        cmp.conserved(&format!("aerosol {k} mass"), m1, m0);
+    }
+    if let Some((_, n_iso)) = layout.field("isosno") {
+        let fields = named(&|n| n == "isosno" || n == "isoice");
+        for k in 0..n_iso {
+            let m0 = amount(&c.vicen, &c.vsnon, &c.trcrn, &fields, k);
+            let m1 = amount(&r.col.vicen, &r.col.vsnon, &r.col.trcrn, &fields, k)
+                + r.fluxes.fiso_ocn[k] * tau;
+            cmp.conserved(&format!("isotope {k} mass"), m1, m0);
+        }
+    }
 }
 
 #[test]
 fn icepack_reference_every_case() {
-    let (params, layout, cases) = read_cases();
+    every_case(common::icepack::FILE);
+}
+
+/// Snow, isotope and aerosol tracers: the same cases, with `faero_ocn` and `fiso_ocn`.
+#[test]
+fn icepack_reference_with_snow_isotope_and_aerosol_tracers() {
+    every_case(common::icepack::TRACERS_FILE);
+}
+
+fn every_case(file: &str) {
+    let (params, layout, cases) = read_cases(file);
     assert!(!cases.is_empty());
     let puny = num(&params["puny"]);
     let mut total = (0, 0);
@@ -418,4 +496,6 @@ fn icepack_reference_every_case() {
         failures.len(),
         failures.join("\n")
     );
+    // Not only within the tolerance: every value checked equals Icepack's bit for bit.
+    assert_eq!(total.1, total.0, "values not bit-identical to Icepack's");
 }

@@ -16,10 +16,13 @@ use crate::errors::{BindError, value_err};
 /// what base (the Rust ``pressridge::itd::TracerLayout``, not a copy of it).
 ///
 /// Make one with ``TracerLayout.cice(nilyr, nslyr, *, age=False, first_year=False,
-/// level_ice=False, ponds=False)``: CICE/Icepack's order ``Tsfc``, ``qice(nilyr)``,
+/// level_ice=False, ponds=False, snow=False, isotopes=0, aerosols=0)``: CICE/Icepack's order ``Tsfc``, ``qice(nilyr)``,
 /// ``qsno(nslyr)``, ``sice(nilyr)``, then ``iage``, ``FY``, ``alvl``, ``vlvl``, ``apnd``,
 /// ``hpnd``, ``ipnd`` as the flags (Icepack's ``tr_iage``, ``tr_FY``, ``tr_lvl``,
-/// ``tr_pond_lvl``) select; ``ponds`` needs ``level_ice``. Or with
+/// ``tr_pond_lvl``) select, then with ``snow=True`` ``smice``, ``smliq``, ``rhos``, ``rsnw``
+/// (``nslyr`` each), with ``isotopes=n`` ``isosno(n)``, ``isoice(n)`` and with
+/// ``aerosols=n`` four tracers per species (``aerosnossl001``, ``aerosnoint001``,
+/// ``aeroicessl001``, ``aeroiceint001``, ...); ``ponds`` needs ``level_ice``. Or with
 /// ``TracerLayout.from_fields(fields)`` for any layout the Rust ``TracerLayout::new``
 /// accepts, or ``TracerLayout.detect(names)`` from CICE restart variable names. Units:
 /// ``Tsfc`` degC, enthalpies J m-3 (negative), salinity ppt, age s, fractions 1, pond depth
@@ -38,11 +41,21 @@ pub(crate) struct PyTracerLayout {
 /// The optional CICE tracers a layout carries, from its fields' roles.
 fn flags_of(l: &TracerLayout) -> CiceTracerFlags {
     let has = |r: TracerRole| l.fields().iter().any(|f| f.role == r);
+    let count = |r: TracerRole| l.fields().iter().filter(|f| f.role == r).count();
     CiceTracerFlags {
         age: has(TracerRole::Age),
         first_year: has(TracerRole::FirstYear),
         level_ice: has(TracerRole::LevelArea),
         ponds: has(TracerRole::PondArea),
+        snow: ["smice", "smliq", "rhos", "rsnw"]
+            .iter()
+            .all(|n| l.field(n).is_some()),
+        isotopes: l
+            .fields()
+            .iter()
+            .find(|f| f.role == TracerRole::IsotopeSnow)
+            .map_or(0, |f| f.levels),
+        aerosols: count(TracerRole::AerosolSnow) / 2,
     }
 }
 
@@ -187,7 +200,8 @@ impl PyTracerLayout {
     /// The CICE/Icepack layout (`TracerLayout::cice`) for `nilyr` ice and `nslyr` snow layers
     /// (both >= 1) with the optional tracers of `CiceTracerFlags` by keyword.
     #[staticmethod]
-    #[pyo3(signature = (nilyr, nslyr, *, age = false, first_year = false, level_ice = false, ponds = false))]
+    #[pyo3(signature = (nilyr, nslyr, *, age = false, first_year = false, level_ice = false, ponds = false, snow = false, isotopes = 0, aerosols = 0))]
+    #[allow(clippy::too_many_arguments)]
     fn cice(
         nilyr: i64,
         nslyr: i64,
@@ -195,10 +209,18 @@ impl PyTracerLayout {
         first_year: bool,
         level_ice: bool,
         ponds: bool,
+        snow: bool,
+        isotopes: i64,
+        aerosols: i64,
     ) -> PyResult<Self> {
         for (name, v) in [("nilyr", nilyr), ("nslyr", nslyr)] {
             if !(1..=1 << 20).contains(&v) {
                 return Err(value_err(format!("{name} = {v}: must be at least 1")).into());
+            }
+        }
+        for (name, v, max) in [("isotopes", isotopes, 3), ("aerosols", aerosols, 6)] {
+            if !(0..=max).contains(&v) {
+                return Err(value_err(format!("{name} = {v}: must be 0 to {max}")).into());
             }
         }
         let flags = CiceTracerFlags {
@@ -206,6 +228,9 @@ impl PyTracerLayout {
             first_year,
             level_ice,
             ponds,
+            snow,
+            isotopes: isotopes as usize,
+            aerosols: aerosols as usize,
         };
         let l = TracerLayout::cice(nilyr as usize, nslyr as usize, flags).map_err(value_err)?;
         Ok(Self { inner: Arc::new(l) })
@@ -216,9 +241,10 @@ impl PyTracerLayout {
     /// `snow_volume`), `strata` (names of earlier single-level fields it is also carried on),
     /// `role` (`surface_temperature`, `ice_enthalpy`, `snow_enthalpy`, `ice_salinity`, `age`,
     /// `first_year`, `level_area`, `level_volume`, `pond_area`, `pond_depth`, `pond_lid`,
-    /// `other`), or a sequence in that order. The role defaults to the one whose Icepack name
-    /// is `name` (`Tsfc`, `qice`, `qsno`, `sice`, `iage`, `FY`, `alvl`, `vlvl`, `apnd`,
-    /// `hpnd`, `ipnd`), else `other`; base and strata default to Icepack's for the role.
+    /// `aerosol_snow`, `aerosol_ice`, `isotope_snow`, `isotope_ice`, `other`), or a sequence
+    /// in that order. The role defaults to the one whose Icepack name is `name` (`Tsfc`,
+    /// `qice`, `qsno`, `sice`, `iage`, `FY`, `alvl`, `vlvl`, `apnd`, `hpnd`, `ipnd`,
+    /// `isosno`, `isoice`), else `other`; base and strata default to Icepack's for the role.
     /// Errors name the field and what is wrong.
     #[staticmethod]
     fn from_fields(fields: Vec<Bound<'_, PyAny>>) -> PyResult<Self> {
@@ -274,9 +300,12 @@ impl PyTracerLayout {
             ("first_year", f.first_year),
             ("level_ice", f.level_ice),
             ("ponds", f.ponds),
+            ("snow", f.snow),
         ] {
             d.set_item(k, v)?;
         }
+        d.set_item("isotopes", f.isotopes)?;
+        d.set_item("aerosols", f.aerosols)?;
         Ok(d)
     }
 
@@ -392,8 +421,19 @@ impl PyTracerLayout {
         let l = &*self.inner;
         let f = flags_of(l);
         if TracerLayout::cice(l.nilyr(), l.nslyr(), f).is_ok_and(|c| c == *l) {
+            // The newer keywords only where set, so the common layouts read as before.
+            let mut more = String::new();
+            if f.snow {
+                more += ", snow=True";
+            }
+            if f.isotopes > 0 {
+                more += &format!(", isotopes={}", f.isotopes);
+            }
+            if f.aerosols > 0 {
+                more += &format!(", aerosols={}", f.aerosols);
+            }
             return format!(
-                "TracerLayout.cice(nilyr={}, nslyr={}, age={}, first_year={}, level_ice={}, ponds={}) with {} tracers",
+                "TracerLayout.cice(nilyr={}, nslyr={}, age={}, first_year={}, level_ice={}, ponds={}{more}) with {} tracers",
                 l.nilyr(),
                 l.nslyr(),
                 py_bool(f.age),

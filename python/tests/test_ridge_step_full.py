@@ -425,7 +425,8 @@ def test_layout_object():
     assert l.names[:3] == ["Tsfcn", "qice001", "qice002"] and l.names[-1] == "ipnd"
     assert l.field("hpnd") == (21, 1)
     assert l.units[0] == "degC" and l.units[1] == "J m-3"
-    assert l.flags == dict(age=True, first_year=True, level_ice=True, ponds=True)
+    assert l.flags == dict(age=True, first_year=True, level_ice=True, ponds=True, snow=False,
+                           isotopes=0, aerosols=0)
     import pickle
 
     assert pickle.loads(pickle.dumps(l)) == l
@@ -434,6 +435,17 @@ def test_layout_object():
         pr.TracerLayout.cice(2, 1, ponds=True)
     with pytest.raises(ValueError, match="nilyr"):
         pr.TracerLayout.cice(0, 1)
+    # Snow, isotope and aerosol tracers in Icepack's driver order (41 with the 23 above).
+    x = pr.TracerLayout.cice(7, 1, age=True, first_year=True, level_ice=True, ponds=True,
+                             snow=True, isotopes=3, aerosols=2)
+    assert x.ntrcr == 41 and x.field("smice") == (23, 1) and x.field("isoice") == (30, 3)
+    assert x.names[27:30] == ["isosno001", "isosno002", "isosno003"]
+    assert x.names[-4:] == ["aerosnossl002", "aerosnoint002", "aeroicessl002", "aeroiceint002"]
+    assert x.flags["aerosols"] == 2 and x.flags["isotopes"] == 3 and x.flags["snow"]
+    assert "snow=True, isotopes=3, aerosols=2" in repr(x)
+    assert x.units[-1] == "kg m-3"
+    with pytest.raises(ValueError, match="aerosols = 7"):
+        pr.TracerLayout.cice(7, 1, aerosols=7)
     with pytest.raises(ValueError, match="no tracer field `x`"):
         l.field("x")
     assert set(pr.STEP_CELL_OUTPUTS) <= set(pr.RidgeStepResult._fields)

@@ -284,6 +284,7 @@ pub unsafe extern "C" fn pressridge_ridge_cell(
                 fhocn: f.fhocn,
                 fpond: f.fpond,
                 dpnd_ridge: f.dpnd_ridge,
+                ..OceanFluxes::default()
             }
         };
         with_step_scratch(ncat, nt, |ws| -> FfiResult<()> {
@@ -490,6 +491,7 @@ pub unsafe extern "C" fn pressridge_ridge_cells(
                     fhocn: outs[2].as_ref().map_or(0.0, |x| x[i]),
                     fpond: outs[3].as_ref().map_or(0.0, |x| x[i]),
                     dpnd_ridge: 0.0,
+                    ..OceanFluxes::default()
                 };
                 let mut col = ColumnMut {
                     aicen: &mut a[i * ncat..(i + 1) * ncat],

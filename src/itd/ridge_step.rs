@@ -38,7 +38,7 @@ pub use workspace::StepWorkspace;
 
 use super::ColumnError;
 use super::params::{ItdParams, Participation, Redistribution};
-use super::tracers::TracerLayout;
+use super::tracers::{MAX_AERO, MAX_ISO, TracerLayout};
 use checks::{check_inputs, check_outputs};
 use passes::step;
 use workspace::Saved;
@@ -183,6 +183,13 @@ pub struct OceanFluxes {
     /// Pond water drained by ridging (m over the cell, per step; Icepack `dpnd_ridge`;
     /// overwritten, not added).
     pub dpnd_ridge: f64,
+    /// Aerosol into the ocean per species (kg m⁻² s⁻¹, over `ndtd·dt`; Icepack `faero_ocn`):
+    /// with the snow that ridging puts into the ocean, and with zapped and excess ice and snow.
+    /// The layout's species first; the rest stay as they are.
+    pub faero_ocn: [f64; MAX_AERO],
+    /// Water isotopes into the ocean per species (kg m⁻² s⁻¹, over `ndtd·dt`; Icepack
+    /// `fiso_ocn`), as `faero_ocn`.
+    pub fiso_ocn: [f64; MAX_ISO],
 }
 
 /// Cell diagnostics of one step.

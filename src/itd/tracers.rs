@@ -23,8 +23,13 @@ use super::ItdError;
 mod field;
 pub use field::{TracerBase, TracerField, TracerRole};
 
+/// Most aerosol species a layout may carry (Icepack's `icepack_max_aero`).
+pub const MAX_AERO: usize = 6;
+/// Most water-isotope species a layout may carry (Icepack's `icepack_max_iso`).
+pub const MAX_ISO: usize = 3;
+
 /// Which optional CICE tracers a column carries (Icepack's `tr_iage`, `tr_FY`, `tr_lvl`,
-/// `tr_pond_lvl`).
+/// `tr_pond_lvl`, `tr_snow`, `tr_iso` with `n_iso`, `tr_aero` with `n_aero`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct CiceTracerFlags {
     /// Ice age `iage`.
@@ -35,6 +40,16 @@ pub struct CiceTracerFlags {
     pub level_ice: bool,
     /// Level-ice melt ponds `apnd`, `hpnd`, `ipnd` (needs `level_ice`).
     pub ponds: bool,
+    /// Snow tracers `smice`, `smliq` (kg m⁻³), `rhos` (kg m⁻³), `rsnw` (m), one level per
+    /// snow layer each, carried on snow volume (Icepack's `tr_snow`; emptied categories get
+    /// 0, Icepack's value with its default `snwredist = 'none'`, `snwgrain = .false.`).
+    pub snow: bool,
+    /// Number of water-isotope species `isosno`, `isoice` (Icepack's `n_iso`; 0 to
+    /// [`MAX_ISO`], 0: `tr_iso` off).
+    pub isotopes: usize,
+    /// Number of aerosol species, four tracers each (Icepack's `n_aero`; 0 to [`MAX_AERO`],
+    /// 0: `tr_aero` off).
+    pub aerosols: usize,
 }
 
 impl CiceTracerFlags {
@@ -45,6 +60,9 @@ impl CiceTracerFlags {
         first_year: true,
         level_ice: true,
         ponds: true,
+        snow: false,
+        isotopes: 0,
+        aerosols: 0,
     };
 }
 
@@ -86,12 +104,20 @@ pub struct TracerLayout {
     pub(crate) nt_alvl: Option<usize>,
     pub(crate) nt_apnd: Option<usize>,
     pub(crate) nt_hpnd: Option<usize>,
+    /// Per aerosol species: the tracers of snow surface layer, snow interior, ice surface
+    /// layer, ice interior.
+    pub(crate) aero: Vec<[usize; 4]>,
+    /// Water isotopes: first tracer in snow, first in ice, number of species.
+    pub(crate) iso: Option<(usize, usize, usize)>,
 }
 
 impl TracerLayout {
     /// The CICE/Icepack layout for `nilyr` ice layers and `nslyr` snow layers (both ≥ 1):
     /// `Tsfc`, `qice(nilyr)`, `qsno(nslyr)`, `sice(nilyr)`, then `iage`, `FY`, `alvl`,
-    /// `vlvl`, `apnd`, `hpnd`, `ipnd` as the flags select, in Icepack's order.
+    /// `vlvl`, `apnd`, `hpnd`, `ipnd`, `smice(nslyr)`, `smliq(nslyr)`, `rhos(nslyr)`,
+    /// `rsnw(nslyr)`, `isosno(n_iso)`, `isoice(n_iso)` and per aerosol species `k`
+    /// `aerosnossl00k`, `aerosnoint00k`, `aeroicessl00k`, `aeroiceint00k` as the flags select,
+    /// in the order of Icepack's driver (`icedrv_init.F90`).
     pub fn cice(nilyr: usize, nslyr: usize, flags: CiceTracerFlags) -> Result<Self, ItdError> {
         use TracerBase::*;
         use TracerRole::*;
@@ -135,6 +161,57 @@ impl TracerLayout {
                 &["alvl", "apnd"],
             ));
         }
+        if flags.snow {
+            for name in ["smice", "smliq", "rhos", "rsnw"] {
+                f.push(TracerField::new(name, Other, nslyr, SnowVolume, &[]));
+            }
+        }
+        if flags.isotopes > MAX_ISO {
+            return Err(ItdError::Parameter {
+                name: "isotopes",
+                value: flags.isotopes as f64,
+                reason: "at most 3 isotope species (Icepack's icepack_max_iso)",
+            });
+        }
+        if flags.isotopes > 0 {
+            f.push(TracerField::new(
+                "isosno",
+                IsotopeSnow,
+                flags.isotopes,
+                SnowVolume,
+                &[],
+            ));
+            f.push(TracerField::new(
+                "isoice",
+                IsotopeIce,
+                flags.isotopes,
+                IceVolume,
+                &[],
+            ));
+        }
+        if flags.aerosols > MAX_AERO {
+            return Err(ItdError::Parameter {
+                name: "aerosols",
+                value: flags.aerosols as f64,
+                reason: "at most 6 aerosol species (Icepack's icepack_max_aero)",
+            });
+        }
+        for k in 1..=flags.aerosols {
+            for (part, role, base) in [
+                ("snossl", AerosolSnow, SnowVolume),
+                ("snoint", AerosolSnow, SnowVolume),
+                ("icessl", AerosolIce, IceVolume),
+                ("iceint", AerosolIce, IceVolume),
+            ] {
+                f.push(TracerField::new(
+                    &format!("aero{part}{k:03}"),
+                    role,
+                    1,
+                    base,
+                    &[],
+                ));
+            }
+        }
         Self::new(f)
     }
 
@@ -154,7 +231,7 @@ impl TracerLayout {
             if fields[..i].iter().any(|g| g.name == f.name) {
                 return Err(bad(format!("field name {} used twice", f.name)));
             }
-            if f.role != TracerRole::Other && fields[..i].iter().any(|g| g.role == f.role) {
+            if !f.role.repeats() && fields[..i].iter().any(|g| g.role == f.role) {
                 return Err(bad(format!("two fields with role {:?}", f.role)));
             }
             if f.strata.len() > 2 {
@@ -180,6 +257,8 @@ impl TracerLayout {
             (TracerRole::PondArea, TracerBase::Area),
             (TracerRole::PondDepth, TracerBase::Area),
             (TracerRole::PondLid, TracerBase::Area),
+            (TracerRole::AerosolSnow, TracerBase::SnowVolume),
+            (TracerRole::AerosolIce, TracerBase::IceVolume),
         ] {
             if let Some(i) = find(role)
                 && (fields[i].base != base || fields[i].levels != 1 && base == TracerBase::Area)
@@ -190,6 +269,58 @@ impl TracerLayout {
                 )));
             }
         }
+        for (i, f) in fields.iter().enumerate() {
+            let base = match f.role {
+                TracerRole::AerosolSnow | TracerRole::IsotopeSnow => TracerBase::SnowVolume,
+                TracerRole::AerosolIce | TracerRole::IsotopeIce => TracerBase::IceVolume,
+                _ => continue,
+            };
+            let single = !matches!(f.role, TracerRole::AerosolSnow | TracerRole::AerosolIce);
+            if f.base != base || !f.strata.is_empty() || (!single && f.levels != 1) {
+                return Err(bad(format!(
+                    "field {} must be a{} {:?} tracer without strata",
+                    fields[i].name,
+                    if single { "" } else { " single-level" },
+                    base
+                )));
+            }
+        }
+        // Aerosols: per species a surface-layer and an interior field in snow and in ice, the
+        // k-th pair of each role making species k.
+        let of = |role: TracerRole| -> Vec<usize> {
+            fields
+                .iter()
+                .enumerate()
+                .filter(|(_, f)| f.role == role)
+                .map(|(i, _)| starts[i])
+                .collect()
+        };
+        let (asno, aice) = (of(TracerRole::AerosolSnow), of(TracerRole::AerosolIce));
+        if asno.len() != aice.len() || asno.len() % 2 != 0 || asno.len() > 2 * MAX_AERO {
+            return Err(bad(format!(
+                "aerosols need two snow and two ice fields (surface layer, interior) per \
+                 species, at most {MAX_AERO} species: {} snow and {} ice fields",
+                asno.len(),
+                aice.len()
+            )));
+        }
+        let aero = (0..asno.len() / 2)
+            .map(|k| [asno[2 * k], asno[2 * k + 1], aice[2 * k], aice[2 * k + 1]])
+            .collect();
+        let iso = match (find(TracerRole::IsotopeSnow), find(TracerRole::IsotopeIce)) {
+            (None, None) => None,
+            (Some(s), Some(i)) if fields[s].levels == fields[i].levels => {
+                if fields[s].levels > MAX_ISO {
+                    return Err(bad(format!("at most {MAX_ISO} isotope species")));
+                }
+                Some((starts[s], starts[i], fields[s].levels))
+            }
+            _ => {
+                return Err(bad(
+                    "isotopes need isosno and isoice fields with one level per species each".into(),
+                ));
+            }
+        };
         if let Some(i) = find(TracerRole::SurfaceTemperature)
             && i != 0
         {
@@ -279,6 +410,8 @@ impl TracerLayout {
             nt_alvl,
             nt_apnd,
             nt_hpnd,
+            aero,
+            iso,
             fields,
             starts,
             ntrcr,
@@ -380,6 +513,7 @@ impl TracerLayout {
             first_year,
             level_ice,
             ponds,
+            ..CiceTracerFlags::default()
         };
         // Each optional group: the names it adds to the layout below it.
         let groups: [(CiceTracerFlags, CiceTracerFlags); 4] = [

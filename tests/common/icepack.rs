@@ -6,15 +6,27 @@ use pressridge::itd::{
 };
 use serde_json::Value;
 
-/// The reference file.
+/// The reference file (the 23-tracer CICE layout).
 pub const FILE: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
     "/tests/data/icepack/ridge_step_cases.jsonl"
 );
 
-/// The file's first line (the parameters) and its cases, one JSON value a line.
+/// The same cases with snow, isotope and aerosol tracers (41 tracers).
+pub const TRACERS_FILE: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/tests/data/icepack/ridge_step_tracers.jsonl"
+);
+
+/// The first reference file's first line (the parameters) and its cases.
+#[allow(dead_code)]
 pub fn read() -> (Value, Vec<Value>) {
-    let text = std::fs::read_to_string(FILE).expect("reference file");
+    read_file(FILE)
+}
+
+/// A reference file's first line (the parameters) and its cases, one JSON value a line.
+pub fn read_file(file: &str) -> (Value, Vec<Value>) {
+    let text = std::fs::read_to_string(file).expect("reference file");
     let mut lines = text.lines().filter(|l| !l.trim().is_empty());
     let params: Value = serde_json::from_str(lines.next().unwrap()).unwrap();
     let cases = lines.map(|l| serde_json::from_str(l).unwrap()).collect();
@@ -43,6 +55,13 @@ pub fn nums(v: &Value) -> Vec<f64> {
 pub fn layout(params: &Value) -> TracerLayout {
     let flags = &params["tracer_flags"];
     let flag = |k: &str| flags[k].as_bool().unwrap();
+    let count = |on: &str, n: &str| {
+        if flag(on) {
+            flags[n].as_u64().unwrap() as usize
+        } else {
+            0
+        }
+    };
     TracerLayout::cice(
         params["nilyr"].as_u64().unwrap() as usize,
         params["nslyr"].as_u64().unwrap() as usize,
@@ -51,6 +70,9 @@ pub fn layout(params: &Value) -> TracerLayout {
             first_year: flag("tr_FY"),
             level_ice: flag("tr_lvl"),
             ponds: flag("tr_pond_lvl"),
+            snow: flag("tr_snow"),
+            isotopes: count("tr_iso", "n_iso"),
+            aerosols: count("tr_aero", "n_aero"),
         },
     )
     .unwrap()

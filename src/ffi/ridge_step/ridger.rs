@@ -170,6 +170,7 @@ pub unsafe extern "C" fn pressridge_ridger_new(
             first_year: tracer_flags & PRESSRIDGE_TRACER_FIRST_YEAR != 0,
             level_ice: tracer_flags & PRESSRIDGE_TRACER_LEVEL_ICE != 0,
             ponds: tracer_flags & PRESSRIDGE_TRACER_PONDS != 0,
+            ..CiceTracerFlags::default()
         };
         let layout = TracerLayout::cice(nilyr as usize, nslyr as usize, flags)?;
         let o = PressridgeOptions::from_ptr(options)?;

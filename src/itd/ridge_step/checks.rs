@@ -117,13 +117,19 @@ pub(super) fn check_outputs(col: &ColumnMut<'_>, f: &OceanFluxes) -> Result<(), 
             }
         }
     }
+    let aero = f.faero_ocn.iter().map(|&x| ("faero_ocn", x));
+    let iso = f.fiso_ocn.iter().map(|&x| ("fiso_ocn", x));
     for (var, x) in [
         ("aice0", *col.aice0),
         ("fresh", f.fresh),
         ("fsalt", f.fsalt),
         ("fhocn", f.fhocn),
         ("fpond", f.fpond),
-    ] {
+    ]
+    .into_iter()
+    .chain(aero)
+    .chain(iso)
+    {
         if !x.is_finite() || (var == "aice0" && x < 0.0) {
             return Err(ColumnError::Unphysical {
                 var,

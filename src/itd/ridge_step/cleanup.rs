@@ -13,16 +13,19 @@
 
 use super::{ColumnMut, OceanFluxes, RidgeStepParams, SaltFlux, StepWorkspace};
 use crate::itd::ColumnError;
-use crate::itd::tracers::TracerLayout;
+use crate::itd::tracers::{MAX_AERO, MAX_ISO, TracerLayout};
 
 /// Zapped-ice fluxes accumulated during the clean-up (Icepack's `dfresh`, `dfsalt`,
-/// `dfhocn`, `dfpond`), kg m⁻² s⁻¹, kg m⁻² s⁻¹, W m⁻², m.
+/// `dfhocn`, `dfpond`, `dfaero_ocn`, `dfiso_ocn`), kg m⁻² s⁻¹, kg m⁻² s⁻¹, W m⁻², m,
+/// kg m⁻² s⁻¹, kg m⁻² s⁻¹.
 #[derive(Debug, Default, Clone, Copy)]
 struct Zapped {
     fresh: f64,
     fsalt: f64,
     fhocn: f64,
     fpond: f64,
+    aero: [f64; MAX_AERO],
+    iso: [f64; MAX_ISO],
     /// Ice and snow volume put into the ocean (m).
     vice: f64,
     vsno: f64,
@@ -70,6 +73,12 @@ pub(crate) fn cleanup_itd(
     fluxes.fresh += z.fresh;
     fluxes.fsalt += z.fsalt;
     fluxes.fhocn += z.fhocn;
+    for (f, d) in fluxes.faero_ocn.iter_mut().zip(&z.aero) {
+        *f += d;
+    }
+    for (f, d) in fluxes.fiso_ocn.iter_mut().zip(&z.iso) {
+        *f += d;
+    }
     Ok((z.vice, z.vsno))
 }
 
@@ -246,6 +255,14 @@ fn zap_small_areas(
         }
         let v = col.vicen[n];
         let trc = &mut col.trcrn[n * nt..(n + 1) * nt];
+        for (d, a) in z.aero.iter_mut().zip(&layout.aero) {
+            *d += v * (trc[a[2]] + trc[a[3]]) / dt;
+        }
+        if let Some((_, iice, niso)) = layout.iso {
+            for k in 0..niso {
+                z.iso[k] += v * trc[iice + k] / dt;
+            }
+        }
         for k in 0..layout.nilyr {
             let q = &mut trc[layout.nt_qice + k];
             z.fhocn += *q / dt * v / nilyr;
@@ -279,6 +296,16 @@ fn zap_small_areas(
         for n in 0..ncat {
             let (v, s) = (col.vicen[n], col.vsnon[n]);
             let trc = &col.trcrn[n * nt..(n + 1) * nt];
+            for (d, a) in z.aero.iter_mut().zip(&layout.aero) {
+                *d += (s * (trc[a[0]] + trc[a[1]]) + v * (trc[a[2]] + trc[a[3]])) * (aice - 1.0)
+                    / aice
+                    / dt;
+            }
+            if let Some((isno, iice, niso)) = layout.iso {
+                for k in 0..niso {
+                    z.iso[k] += (s * trc[isno + k] + v * trc[iice + k]) * (aice - 1.0) / aice / dt;
+                }
+            }
             for k in 0..layout.nilyr {
                 z.fhocn += trc[layout.nt_qice + k] * v / nilyr * (aice - 1.0) / aice / dt;
             }
@@ -330,6 +357,14 @@ fn zap_snow(
     z: &mut Zapped,
 ) {
     let nslyr = layout.nslyr as f64;
+    for (d, a) in z.aero.iter_mut().zip(&layout.aero) {
+        *d += *vsnon * (trc[a[0]] + trc[a[1]]) / dt;
+    }
+    if let Some((isno, _, niso)) = layout.iso {
+        for k in 0..niso {
+            z.iso[k] += *vsnon * trc[isno + k] / dt;
+        }
+    }
     for k in 0..layout.nslyr {
         let q = &mut trc[layout.nt_qsno + k];
         z.fhocn += *q / dt * *vsnon / nslyr;

@@ -14,7 +14,7 @@ use crate::itd::ColumnError;
 use crate::itd::params::Redistribution;
 use crate::itd::redistribution::{RidgeGeometry, category_fractions_all};
 use crate::itd::ridging::{asum_ridging, close_and_open};
-use crate::itd::tracers::TracerLayout;
+use crate::itd::tracers::{MAX_AERO, MAX_ISO, TracerLayout};
 
 /// Sums of one ridging pass and of the whole step (Icepack `ridge_ice` locals).
 #[derive(Default)]
@@ -27,6 +27,9 @@ struct Sums {
     esnow_mlt: f64,
     mpond: f64,
     vsno_ocean: f64,
+    /// Aerosol and isotope mass put into the ocean with ridged snow (kg m⁻²).
+    maero: [f64; MAX_AERO],
+    miso: [f64; MAX_ISO],
 }
 
 pub(super) fn step(
@@ -109,6 +112,12 @@ pub(super) fn step(
     let dti = 1.0 / (f64::from(forcing.ndtd) * dt);
     fluxes.fresh += s.msnow_mlt * dti;
     fluxes.fhocn += s.esnow_mlt * dti;
+    for (f, m) in fluxes.faero_ocn.iter_mut().zip(&s.maero) {
+        *f += m * dti;
+    }
+    for (f, m) in fluxes.fiso_ocn.iter_mut().zip(&s.miso) {
+        *f += m * dti;
+    }
     fluxes.fpond -= s.mpond;
     fluxes.dpnd_ridge = s.mpond;
     d.snow_to_ocean = s.vsno_ocean;
@@ -233,6 +242,15 @@ fn ridge_shift(
         let trc = &col.trcrn[n * nt..(n + 1) * nt];
         s.msnow_mlt += c.rhos * vsrdgn * one_minus_f;
         s.vsno_ocean += vsrdgn * one_minus_f;
+        for (m, a) in s.maero.iter_mut().zip(&layout.aero) {
+            *m += vsrdgn * one_minus_f * (trc[a[0]] + trc[a[1]]);
+        }
+        if let Some((isno, iice, niso)) = layout.iso {
+            // Icepack counts the ice's isotopes with the snow's here.
+            for k in 0..niso {
+                s.miso[k] += vsrdgn * one_minus_f * (trc[isno + k] + trc[iice + k]);
+            }
+        }
         if let (Some(ia), Some(ip), Some(ih)) = (layout.nt_alvl, layout.nt_apnd, layout.nt_hpnd) {
             s.mpond += ardg1n * trc[ip] * trc[ih] * trc[ia];
         }

@@ -39,6 +39,21 @@ pub enum TracerRole {
     PondDepth,
     /// Refrozen pond-lid thickness `ipnd` (m), on pond area.
     PondLid,
+    /// Aerosol in snow (kg m⁻³), snow-volume tracer, single-level: one field for the
+    /// surface scattering layer and one for the interior of each species, in that order
+    /// (CICE's `aerosnossl00k`, `aerosnoint00k`). The share of snow on ridging ice that goes
+    /// to the ocean, and zapped snow, take it into `faero_ocn`.
+    AerosolSnow,
+    /// Aerosol in ice (kg m⁻³), ice-volume tracer, single-level, as [`TracerRole::AerosolSnow`]
+    /// (`aeroicessl00k`, `aeroiceint00k`); zapped ice puts it into `faero_ocn`.
+    AerosolIce,
+    /// Water isotopes in snow `isosno` (kg m⁻³), snow-volume tracer, one level per species;
+    /// into `fiso_ocn` with the snow that leaves.
+    IsotopeSnow,
+    /// Water isotopes in ice `isoice` (kg m⁻³), ice-volume tracer, one level per species;
+    /// into `fiso_ocn` with zapped ice and, as in Icepack, with the snow that ridging puts into
+    /// the ocean.
+    IsotopeIce,
     /// Any other tracer (units as the host defines them).
     Other,
 }
@@ -68,7 +83,7 @@ impl TracerBase {
 
 impl TracerRole {
     /// Every role.
-    pub const ALL: [TracerRole; 12] = [
+    pub const ALL: [TracerRole; 16] = [
         TracerRole::SurfaceTemperature,
         TracerRole::IceEnthalpy,
         TracerRole::SnowEnthalpy,
@@ -80,6 +95,10 @@ impl TracerRole {
         TracerRole::PondArea,
         TracerRole::PondDepth,
         TracerRole::PondLid,
+        TracerRole::AerosolSnow,
+        TracerRole::AerosolIce,
+        TracerRole::IsotopeSnow,
+        TracerRole::IsotopeIce,
         TracerRole::Other,
     ];
 
@@ -99,6 +118,10 @@ impl TracerRole {
             PondArea => "pond_area",
             PondDepth => "pond_depth",
             PondLid => "pond_lid",
+            AerosolSnow => "aerosol_snow",
+            AerosolIce => "aerosol_ice",
+            IsotopeSnow => "isotope_snow",
+            IsotopeIce => "isotope_ice",
             Other => "other",
         }
     }
@@ -109,8 +132,9 @@ impl TracerRole {
     }
 
     /// Icepack's field name of this role (`Tsfc`, `qice`, `qsno`, `sice`, `iage`, `FY`,
-    /// `alvl`, `vlvl`, `apnd`, `hpnd`, `ipnd`; none for [`TracerRole::Other`]), and its base
-    /// and strata as [`TracerLayout::cice`](super::TracerLayout::cice) carries it.
+    /// `alvl`, `vlvl`, `apnd`, `hpnd`, `ipnd`, `isosno`, `isoice`; none for the aerosols,
+    /// whose names carry the species, and for [`TracerRole::Other`]), and its base and strata
+    /// as [`TracerLayout::cice`](super::TracerLayout::cice) carries it.
     pub fn icepack(self) -> Option<(&'static str, TracerBase, &'static [&'static str])> {
         use TracerBase::*;
         use TracerRole::*;
@@ -126,7 +150,9 @@ impl TracerRole {
             PondArea => ("apnd", Area, &["alvl"]),
             PondDepth => ("hpnd", Area, &["alvl", "apnd"]),
             PondLid => ("ipnd", Area, &["alvl", "apnd"]),
-            Other => return None,
+            IsotopeSnow => ("isosno", SnowVolume, &[]),
+            IsotopeIce => ("isoice", IceVolume, &[]),
+            AerosolSnow | AerosolIce | Other => return None,
         })
     }
 
@@ -141,6 +167,7 @@ impl TracerRole {
             Age => "s",
             FirstYear | LevelArea | LevelVolume | PondArea => "1",
             PondDepth | PondLid => "m",
+            AerosolSnow | AerosolIce | IsotopeSnow | IsotopeIce => "kg m-3",
             Other => "",
         }
     }
@@ -160,8 +187,21 @@ impl TracerRole {
             PondArea => "melt pond area fraction of the level ice",
             PondDepth => "melt pond depth",
             PondLid => "refrozen melt pond lid thickness",
+            AerosolSnow => "aerosol in snow (surface layer or interior)",
+            AerosolIce => "aerosol in ice (surface layer or interior)",
+            IsotopeSnow => "water isotope in snow",
+            IsotopeIce => "water isotope in ice",
             Other => "tracer",
         }
+    }
+
+    /// Whether a layout may hold several fields of this role (the aerosol fields, one per
+    /// species and part, and [`TracerRole::Other`]).
+    pub(super) fn repeats(self) -> bool {
+        matches!(
+            self,
+            TracerRole::AerosolSnow | TracerRole::AerosolIce | TracerRole::Other
+        )
     }
 
     /// Whether CICE numbers this role's variables per layer (`qice001`, ...) even with one
@@ -169,7 +209,11 @@ impl TracerRole {
     pub(super) fn layered(self) -> bool {
         matches!(
             self,
-            TracerRole::IceEnthalpy | TracerRole::SnowEnthalpy | TracerRole::IceSalinity
+            TracerRole::IceEnthalpy
+                | TracerRole::SnowEnthalpy
+                | TracerRole::IceSalinity
+                | TracerRole::IsotopeSnow
+                | TracerRole::IsotopeIce
         )
     }
 }

@@ -88,3 +88,73 @@ fn ponds_without_level_ice_rejected() {
     };
     assert!(TracerLayout::cice(2, 1, f).is_err());
 }
+
+#[test]
+fn aerosols_and_isotopes_are_paired_by_species() {
+    use TracerBase::*;
+    use TracerRole::*;
+    let flags = CiceTracerFlags {
+        snow: true,
+        isotopes: 2,
+        aerosols: 2,
+        ..CiceTracerFlags::ALL
+    };
+    let l = TracerLayout::cice(7, 1, flags).unwrap();
+    // 23 + 4 snow + 2·2 isotopes + 4·2 aerosols, Icepack's driver order.
+    assert_eq!(l.ntrcr(), 39);
+    assert_eq!(l.iso, Some((27, 29, 2)));
+    assert_eq!(l.aero, vec![[31, 32, 33, 34], [35, 36, 37, 38]]);
+    let d = l.trcr_depend();
+    assert_eq!((d[23], d[27], d[29], d[31], d[33]), (2, 2, 1, 2, 1));
+    assert!(
+        TracerLayout::cice(
+            7,
+            1,
+            CiceTracerFlags {
+                aerosols: 7,
+                ..flags
+            }
+        )
+        .is_err()
+    );
+    assert!(
+        TracerLayout::cice(
+            7,
+            1,
+            CiceTracerFlags {
+                isotopes: 4,
+                ..flags
+            }
+        )
+        .is_err()
+    );
+    // Rules of TracerLayout::new: whole species, the right base, both isotope fields.
+    let core = || {
+        vec![
+            TracerField::new("qice", IceEnthalpy, 2, IceVolume, &[]),
+            TracerField::new("qsno", SnowEnthalpy, 1, SnowVolume, &[]),
+            TracerField::new("sice", IceSalinity, 2, IceVolume, &[]),
+        ]
+    };
+    let with = |extra: Vec<TracerField>| TracerLayout::new([core(), extra].concat());
+    let a = |name: &str, role, base| TracerField::new(name, role, 1, base, &[]);
+    let species = vec![
+        a("s1", AerosolSnow, SnowVolume),
+        a("s2", AerosolSnow, SnowVolume),
+        a("i1", AerosolIce, IceVolume),
+        a("i2", AerosolIce, IceVolume),
+    ];
+    assert_eq!(with(species.clone()).unwrap().aero, vec![[5, 6, 7, 8]]);
+    assert!(with(species[..3].to_vec()).is_err(), "half a species");
+    let mut wrong = species.clone();
+    wrong[2] = a("i1", AerosolIce, SnowVolume);
+    assert!(with(wrong).is_err(), "ice aerosol on snow");
+    let iso = |n| TracerField::new("isosno", IsotopeSnow, n, SnowVolume, &[]);
+    assert!(with(vec![iso(2)]).is_err(), "isosno without isoice");
+    let isoice = TracerField::new("isoice", IsotopeIce, 3, IceVolume, &[]);
+    assert!(
+        with(vec![iso(2), isoice.clone()]).is_err(),
+        "species differ"
+    );
+    assert_eq!(with(vec![iso(3), isoice]).unwrap().iso, Some((5, 8, 3)));
+}
