@@ -30,8 +30,15 @@ const FILL: f64 = 1e30;
 const LAND: usize = 5;
 const DT: f64 = 3600.0;
 
+/// Every CICE tracer group, with two isotope and two aerosol species.
 fn layout() -> TracerLayout {
-    TracerLayout::cice(2, 1, CiceTracerFlags::ALL).unwrap()
+    let flags = CiceTracerFlags {
+        snow: true,
+        isotopes: 2,
+        aerosols: 2,
+        ..CiceTracerFlags::ALL
+    };
+    TracerLayout::cice(2, 1, flags).unwrap()
 }
 
 /// Inputs: per variable, values in C order over (nc, nj, ni) or (nj, ni).
@@ -289,6 +296,20 @@ fn snow_and_tracers_round_trip_equal_the_library_and_conserve() {
             assert_eq!(cats[4][i], ws.krdgn[n]);
         }
         assert_eq!(got_a0[c].to_bits(), a0.to_bits());
+        // Aerosol and isotope fluxes, one variable per species.
+        for (name, want) in [
+            ("faero_ocn001", fl.faero_ocn[0]),
+            ("faero_ocn002", fl.faero_ocn[1]),
+            ("fiso_ocn001", fl.fiso_ocn[0]),
+            ("fiso_ocn002", fl.fiso_ocn[1]),
+        ] {
+            assert_eq!(
+                read(&out, name)[c].to_bits(),
+                want.to_bits(),
+                "{name} col {c}"
+            );
+            assert!(want > 0.0, "{name}: ridged snow takes some into the ocean");
+        }
         for (name, want) in [
             ("fresh", fl.fresh),
             ("fsalt", fl.fsalt),

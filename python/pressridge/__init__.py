@@ -46,6 +46,7 @@ __all__ = [
     "RidgeStepResult",
     "TracerLayout",
     "STEP_CELL_OUTPUTS",
+    "STEP_SPECIES_OUTPUTS",
     "STEP_CATEGORY_OUTPUTS",
     "Simulation",
     "CampaignResult",
@@ -367,14 +368,17 @@ TracerLayout = _core.TracerLayout
 
 
 #: Names, units and meanings of the per-cell outputs of the complete step (from the Rust
-#: ``itd::CELL_OUTPUTS``) and of its per-category outputs (``itd::CATEGORY_OUTPUTS``):
+#: ``itd::CELL_OUTPUTS``), of its per-category outputs (``itd::CATEGORY_OUTPUTS``) and of its
+#: per-species outputs (``itd::SPECIES_OUTPUTS``: aerosol and isotope fluxes):
 #: ``{name: (units, long_name)}``.
 STEP_CELL_OUTPUTS: dict
 STEP_CATEGORY_OUTPUTS: dict
-_cell, _cat = _core.step_outputs()
+STEP_SPECIES_OUTPUTS: dict
+_cell, _cat, _species = _core.step_outputs()
 STEP_CELL_OUTPUTS = {n: (u, ln) for n, u, ln in _cell}
 STEP_CATEGORY_OUTPUTS = {n: (u, ln) for n, u, ln in _cat}
-del _cell, _cat
+STEP_SPECIES_OUTPUTS = {n: (u, ln) for n, u, ln in _species}
+del _cell, _cat, _species
 
 
 class RidgeStepResult(NamedTuple):
@@ -423,6 +427,11 @@ class RidgeStepResult(NamedTuple):
     snow_to_ocean: Any = None
     #: Ridging passes done (a float array: NaN in masked columns).
     niter: Any = None
+    #: Aerosol flux to the ocean per species (kg m-2 s-1, over ``ndtd*dt``; Icepack
+    #: ``faero_ocn``), shape (n_aero, ...): the layout's aerosol species (none: shape (0, ...)).
+    faero_ocn: Any = None
+    #: Water-isotope flux to the ocean per species (kg m-2 s-1; ``fiso_ocn``), (n_iso, ...).
+    fiso_ocn: Any = None
     #: Per-category diagnostics, shape (ncat, ...) each, Icepack's names and units
     #: (:data:`STEP_CATEGORY_OUTPUTS`): ``dardg1ndt``, ``dardg2ndt``, ``dvirdgndt``,
     #: ``aparticn``, ``krdgn``, ``araftn``, ``vraftn``, ``aredistn``, ``vredistn``,
@@ -535,8 +544,10 @@ def ridge_step(
         ``dardg1dt``, ``dardg2dt`` (1/s), ``dvirdgdt`` (m/s); the complete step also
         ``vsnon``, ``trcrn`` (if given), ``aice``, ``hin_max``, the fluxes ``fresh``,
         ``fsalt`` (kg m-2 s-1), ``fhocn`` (W m-2), ``fpond``, ``dpnd_ridge`` (m),
-        ``ice_to_ocean``, ``snow_to_ocean`` (m), ``niter`` and ``categories``. Area, ice
-        and snow volume, enthalpy and salt are conserved with the fluxes to round-off.
+        ``ice_to_ocean``, ``snow_to_ocean`` (m), ``niter``, the aerosol and isotope fluxes
+        ``faero_ocn``, ``fiso_ocn`` (kg m-2 s-1, one row per species of the layout) and
+        ``categories``. Area, ice and snow volume, enthalpy, salt, aerosols and isotopes are
+        conserved with the fluxes to round-off.
 
     Raises
     ------
@@ -646,30 +657,33 @@ def ridge_step(
     n = 1 if ndtd is None else ndtd
     if isinstance(n, (bool, _np.bool_)) or not isinstance(n, (int, _np.integer)):
         raise ValueError(f"ndtd must be an integer >= 1, got {ndtd!r}")
-    (a_new, v_new, s_new), t_new, (a0_new, ai_new), h_used, cell, cats = _core.ridge_step_full(
-        a,
-        v,
-        s,
-        t,
-        layout,
-        a0,
-        ai,
-        h,
-        c1,
-        c2,
-        rates_given,
-        tf_a,
-        dt_f,
-        int(n),
-        ok,
-        participation,
-        redistribution,
-        _params(params, step=True),
-        True if cleanup is None else bool(cleanup),
-        True if rebin is None else bool(rebin),
-        "constant" if salt_flux is None else str(salt_flux),
+    (a_new, v_new, s_new), t_new, (a0_new, ai_new), h_used, cell, cats, species = (
+        _core.ridge_step_full(
+            a,
+            v,
+            s,
+            t,
+            layout,
+            a0,
+            ai,
+            h,
+            c1,
+            c2,
+            rates_given,
+            tf_a,
+            dt_f,
+            int(n),
+            ok,
+            participation,
+            redistribution,
+            _params(params, step=True),
+            True if cleanup is None else bool(cleanup),
+            True if rebin is None else bool(rebin),
+            "constant" if salt_flux is None else str(salt_flux),
+        )
     )
     c = {k: _scalar_if_0d(x) for k, x in cell}
+    sp = dict(species)
     return RidgeStepResult(
         aicen=a_new,
         vicen=v_new,
@@ -691,6 +705,8 @@ def ridge_step(
         ice_to_ocean=c["ice_to_ocean"],
         snow_to_ocean=c["snow_to_ocean"],
         niter=c["niter"],
+        faero_ocn=sp["faero_ocn"],
+        fiso_ocn=sp["fiso_ocn"],
         categories=dict(cats),
     )
 

@@ -12,8 +12,8 @@ use pyo3::prelude::*;
 
 use pressridge::itd::{
     BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, CategoryBounds, CiceTracerFlags,
-    NamedParams, RidgeStepOptions, RidgeStepParams, SaltFlux, StepBatchMut, TracerLayout,
-    category_bounds, ridge_step_batch,
+    NamedParams, RidgeStepOptions, RidgeStepParams, SPECIES_OUTPUTS, SaltFlux, StepBatchMut,
+    TracerLayout, category_bounds, ridge_step_batch,
 };
 
 use crate::arrays::{
@@ -51,11 +51,12 @@ pub(crate) fn step_parameters() -> Vec<(&'static str, &'static str, &'static str
         .collect()
 }
 
-/// Names, units and long names of the per-cell and per-category outputs of the complete step
-/// (`pressridge::itd::CELL_OUTPUTS`, `CATEGORY_OUTPUTS`).
+/// Names, units and long names of the per-cell, per-category and per-species outputs of the
+/// complete step (`pressridge::itd::CELL_OUTPUTS`, `CATEGORY_OUTPUTS`, `SPECIES_OUTPUTS`).
 #[pyfunction]
 #[allow(clippy::type_complexity)]
 pub(crate) fn step_outputs() -> (
+    Vec<(&'static str, &'static str, &'static str)>,
     Vec<(&'static str, &'static str, &'static str)>,
     Vec<(&'static str, &'static str, &'static str)>,
 ) {
@@ -63,6 +64,7 @@ pub(crate) fn step_outputs() -> (
     (
         CELL_OUTPUTS.iter().map(f).collect(),
         CATEGORY_OUTPUTS.iter().map(f).collect(),
+        SPECIES_OUTPUTS.iter().map(f).collect(),
     )
 }
 
@@ -74,6 +76,7 @@ type FullOut<'py> = (
     Bound<'py, PyArray1<f64>>,
     Vec<(&'static str, Bound<'py, PyArrayDyn<f64>>)>,
     Vec<(&'static str, Bound<'py, PyArrayDyn<f64>>)>,
+    Vec<(&'static str, Bound<'py, PyArrayDyn<f64>>)>,
 );
 
 /// The complete ridging step (`itd::ridge_step_batch`); see `pressridge.ridge_step`. Every
@@ -81,7 +84,8 @@ type FullOut<'py> = (
 /// `rates`: `c1`, `c2` are the host's closing and opening rates, else Icepack's convergence
 /// and shear terms. Without `trcrn` the column carries no tracers (zeros of a minimal layout,
 /// not returned). Returns ([aicen, vicen, vsnon], trcrn, [aice0, aice], hin_max used,
-/// [(cell output, array)], [(category output, array)]); the inputs are not modified.
+/// [(cell output, array)], [(category output, array)], [(species output, array of shape
+/// (n_aero or n_iso, spatial...))]); the inputs are not modified.
 #[pyfunction]
 #[pyo3(signature = (aicen, vicen, vsnon, trcrn, layout, aice0, aice, hin_max, c1, c2, rates, tf, dt, ndtd, valid, participation_name, redistribution_name, params, cleanup, rebin, salt_flux))]
 #[allow(clippy::too_many_arguments)]
@@ -196,6 +200,14 @@ pub(crate) fn ridge_step_full<'py>(
         .iter()
         .map(|_| new_array(py, &full, order))
         .collect();
+    let species: Vec<Bound<'py, PyArrayDyn<f64>>> = [layout.n_aero(), layout.n_iso()]
+        .iter()
+        .map(|&n| {
+            let mut shape = vec![n];
+            shape.extend_from_slice(&spatial);
+            new_array(py, &shape, order)
+        })
+        .collect();
     {
         let mut s_rw: Vec<_> = state.iter().map(|x| x.readwrite()).collect();
         let mut s_cols: Vec<ArrayViewMut2<'_, f64>> = s_rw
@@ -246,6 +258,11 @@ pub(crate) fn ridge_step_full<'py>(
             .iter_mut()
             .map(|x| columns_mut(x.as_array_mut(), order))
             .collect();
+        let mut sp_rw: Vec<_> = species.iter().map(|x| x.readwrite()).collect();
+        let mut sp_views: Vec<ArrayViewMut2<'_, f64>> = sp_rw
+            .iter_mut()
+            .map(|x| columns_mut(x.as_array_mut(), order))
+            .collect();
         let layout_ref = &*layout;
         detached(py, || {
             let closing = if rates {
@@ -286,6 +303,7 @@ pub(crate) fn ridge_step_full<'py>(
                 layout_ref,
                 &mut cell_views,
                 Some(&mut cat_views),
+                Some(&mut sp_views),
             )
             .map_err(|e| itd_err(e, &spatial, order))?;
             // Masked columns: their open water is missing, like their outputs.
@@ -311,5 +329,10 @@ pub(crate) fn ridge_step_full<'py>(
         PyArray1::from_vec(py, h_used),
         CELL_OUTPUTS.iter().map(|m| m.name).zip(cell).collect(),
         CATEGORY_OUTPUTS.iter().map(|m| m.name).zip(cats).collect(),
+        SPECIES_OUTPUTS
+            .iter()
+            .map(|m| m.name)
+            .zip(species)
+            .collect(),
     ))
 }

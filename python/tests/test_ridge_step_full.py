@@ -309,6 +309,49 @@ def test_icepack_reference_python_equals_icepack(case):
                     assert _close(r["trcrn"][n, k], want[n, k]), (name, n, k)
 
 
+def test_snow_isotope_and_aerosol_tracers_equal_icepack_bit_for_bit():
+    """The 41-tracer reference (tests/data/icepack/ridge_step_tracers.jsonl): the fluxes
+    faero_ocn and fiso_ocn, and the added tracers where their base exceeds puny."""
+    lines = [json.loads(l) for l in (ROOT / "tests/data/icepack/ridge_step_tracers.jsonl").open()]
+    params, cases = lines[0], lines[1:]
+    f = params["tracer_flags"]
+    layout = pr.TracerLayout.cice(params["nilyr"], params["nslyr"], age=True, first_year=True,
+                                  level_ice=True, ponds=True, snow=f["tr_snow"],
+                                  isotopes=f["n_iso"], aerosols=f["n_aero"])
+    assert layout.ntrcr == params["ntrcr"] == 41
+    checked = 0
+    for c in cases:
+        o = c["outputs"]
+        if c["group"] == "stress" or o["aborted"]:
+            continue
+        i23 = dict(c["inputs"], trcrn={f["name"]: c["inputs"]["trcrn"][f["name"]]
+                                       for f in LAYOUT.spec()})
+        case = Case(dict(c, inputs=i23))
+        case.trcrn = np.zeros((case.ncat, layout.ntrcr))
+        for name, per_cat in c["inputs"]["trcrn"].items():
+            start, levels = layout.field(name)
+            case.trcrn[:, start : start + levels] = per_cat
+        k = case.kwargs()
+        k["layout"] = layout
+        r = pr.ridge_step(case.aicen, case.vicen, case.aice0, vsnon=case.vsnon,
+                          trcrn=case.trcrn, aice=case.aice, **k)
+        assert r.faero_ocn.shape == (2,) and r.fiso_ocn.shape == (3,)
+        assert list(r.faero_ocn) == [_num(x) for x in o["faero_ocn"]], c["case"]
+        assert list(r.fiso_ocn) == [_num(x) for x in o["fiso_ocn"]], c["case"]
+        for name, per_cat in o["trcrn"].items():
+            if not name.startswith(("aero", "iso", "sm", "rhos", "rsnw")):
+                continue
+            start, levels = layout.field(name)
+            base = o["vicen"] if name.startswith(("aeroice", "isoice")) else o["vsnon"]
+            for n in range(case.ncat):
+                if _num(base[n]) > params["puny"]:
+                    got = r.trcrn[n, start : start + levels]
+                    assert list(got) == [_num(x) for x in per_cat[n]], (c["case"], name, n)
+                    checked += levels
+    assert checked > 100
+    assert set(pr.STEP_SPECIES_OUTPUTS) == {"faero_ocn", "fiso_ocn"}
+
+
 # ---------------------------------------------------------------------------------------
 # Conservation on random columns
 

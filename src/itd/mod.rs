@@ -37,8 +37,8 @@ pub use ridge_step::{
     ridge_step_column,
 };
 pub use ridge_step_batch::{
-    BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, OutputMeta, StepBatchMut,
-    ridge_step_batch,
+    BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, OutputMeta, SPECIES_OUTPUTS,
+    StepBatchMut, ridge_step_batch,
 };
 pub use ridging::{
     RidgeDiagnostics, RidgeForcing, RidgeOptions, RidgeRatesMut, ridge_batch, ridge_batch_masked,

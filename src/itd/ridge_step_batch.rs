@@ -133,6 +133,22 @@ pub const CATEGORY_OUTPUTS: [OutputMeta; 10] = [
     ),
 ];
 
+/// The per-species outputs of [`ridge_step_batch`], in the order of its `species` argument:
+/// `(n_aero, ncol)` and `(n_iso, ncol)` ([`TracerLayout::n_aero`], [`TracerLayout::n_iso`]),
+/// one step's values averaged over `ndtd·dt`.
+pub const SPECIES_OUTPUTS: [OutputMeta; 2] = [
+    meta(
+        "faero_ocn",
+        "kg m-2 s-1",
+        "aerosol flux to the ocean from ridging (snow) and clean-up (ice and snow), per species",
+    ),
+    meta(
+        "fiso_ocn",
+        "kg m-2 s-1",
+        "water isotope flux to the ocean from ridging (snow) and clean-up (ice and snow), per species",
+    ),
+];
+
 /// Per-column closing and opening of [`ridge_step_batch`] (1/s, `ncol` values each): the two
 /// calling conventions of [`Closing`].
 #[derive(Debug, Clone, Copy)]
@@ -191,7 +207,8 @@ pub struct BatchForcing<'a> {
 /// top bound used is `opts.params.big`, as Icepack's. `valid` (`ncol`): columns to step; the
 /// others keep their state and get `fill` in every output. `cell`: the [`CELL_OUTPUTS`],
 /// `ncol` values each, written (one step's values); `category`: the [`CATEGORY_OUTPUTS`],
-/// `(ncat, ncol)` each, written, or `None`.
+/// `(ncat, ncol)` each, written, or `None`; `species`: the [`SPECIES_OUTPUTS`], written, or
+/// `None`.
 ///
 /// Stops at the first failing column with [`ItdError::Column`] (its flat index): earlier
 /// columns are stepped, that one and later ones keep their state. Allocates only the scratch
@@ -207,6 +224,7 @@ pub fn ridge_step_batch(
     layout: &TracerLayout,
     cell: &mut [ArrayViewMut1<'_, f64>],
     mut category: Option<&mut [ArrayViewMut2<'_, f64>]>,
+    mut species: Option<&mut [ArrayViewMut2<'_, f64>]>,
 ) -> Result<(), ItdError> {
     let StepBatchMut {
         mut aicen,
@@ -257,6 +275,13 @@ pub fn ridge_step_batch(
             check_shape(m.name, o.shape(), &[ncat, ncol])?;
         }
     }
+    let nspecies = [layout.n_aero(), layout.n_iso()];
+    if let Some(sp) = species.as_deref() {
+        check_len("species outputs", sp.len(), SPECIES_OUTPUTS.len())?;
+        for ((m, o), n) in SPECIES_OUTPUTS.iter().zip(sp.iter()).zip(nspecies) {
+            check_shape(m.name, o.shape(), &[n, ncol])?;
+        }
+    }
 
     let mut ws = StepWorkspace::new(ncat, nt);
     let mut a = vec![0.0; ncat];
@@ -270,6 +295,11 @@ pub fn ridge_step_batch(
             }
             if let Some(cat) = category.as_deref_mut() {
                 for o in cat.iter_mut() {
+                    o.column_mut(c).fill(fill);
+                }
+            }
+            if let Some(sp) = species.as_deref_mut() {
+                for o in sp.iter_mut() {
                     o.column_mut(c).fill(fill);
                 }
             }
@@ -361,6 +391,13 @@ pub fn ridge_step_batch(
                 first_ice[[n, c]] = if *z { 1.0 } else { 0.0 };
             }
         }
+        if let Some(sp) = species.as_deref_mut() {
+            for (o, xs) in sp.iter_mut().zip([&fl.faero_ocn[..], &fl.fiso_ocn[..]]) {
+                for k in 0..o.nrows() {
+                    o[[k, c]] = xs[k];
+                }
+            }
+        }
     }
     Ok(())
 }
@@ -374,7 +411,13 @@ mod tests {
     /// The batch equals the column routine bit for bit, in any column order and stride.
     #[test]
     fn batch_equals_column_calls() {
-        let layout = TracerLayout::cice(2, 1, CiceTracerFlags::ALL).unwrap();
+        let flags = CiceTracerFlags {
+            snow: true,
+            isotopes: 1,
+            aerosols: 2,
+            ..CiceTracerFlags::ALL
+        };
+        let layout = TracerLayout::cice(2, 1, flags).unwrap();
         let nt = layout.ntrcr();
         let (ncat, ncol) = (3, 4);
         let hin = [0.0, 0.6, 1.4, 2.4];
@@ -446,8 +489,10 @@ mod tests {
         let mut cats: Vec<Array2<f64>> = (0..CATEGORY_OUTPUTS.len())
             .map(|_| Array2::zeros((ncat, ncol)))
             .collect();
+        let mut sp = [Array2::zeros((2, ncol)), Array2::zeros((1, ncol))];
         let mut cell_views: Vec<_> = cells.iter_mut().map(|x| x.view_mut()).collect();
         let mut cat_views: Vec<_> = cats.iter_mut().map(|x| x.view_mut()).collect();
+        let mut sp_views: Vec<_> = sp.iter_mut().map(|x| x.view_mut()).collect();
         ridge_step_batch(
             StepBatchMut {
                 aicen: aicen.view_mut(),
@@ -473,6 +518,7 @@ mod tests {
             &layout,
             &mut cell_views,
             Some(&mut cat_views),
+            Some(&mut sp_views),
         )
         .unwrap();
         for (c, (a, v, s, t, a0, ai, fl, d, krdgn)) in want.iter().enumerate() {
@@ -490,6 +536,12 @@ mod tests {
             assert_eq!(cells[2][c], fl.fhocn);
             assert_eq!(cells[7][c], d.dardg1dt);
             assert_eq!(cats[4].column(c).to_vec(), *krdgn);
+            assert_eq!(sp[0].column(c).to_vec(), fl.faero_ocn[..2]);
+            assert_eq!(sp[1][[0, c]], fl.fiso_ocn[0]);
+            assert!(
+                fl.faero_ocn[1] > 0.0 && fl.fiso_ocn[0] > 0.0,
+                "snow went to the ocean"
+            );
         }
     }
 }

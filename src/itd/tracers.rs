@@ -162,8 +162,9 @@ impl TracerLayout {
             ));
         }
         if flags.snow {
-            for name in ["smice", "smliq", "rhos", "rsnw"] {
-                f.push(TracerField::new(name, Other, nslyr, SnowVolume, &[]));
+            for role in [SnowIceMass, SnowLiquidMass, SnowDensity, SnowGrainRadius] {
+                let name = role.icepack().expect("snow tracers have Icepack names").0;
+                f.push(TracerField::new(name, role, nslyr, SnowVolume, &[]));
             }
         }
         if flags.isotopes > MAX_ISO {
@@ -271,7 +272,12 @@ impl TracerLayout {
         }
         for (i, f) in fields.iter().enumerate() {
             let base = match f.role {
-                TracerRole::AerosolSnow | TracerRole::IsotopeSnow => TracerBase::SnowVolume,
+                TracerRole::AerosolSnow
+                | TracerRole::IsotopeSnow
+                | TracerRole::SnowIceMass
+                | TracerRole::SnowLiquidMass
+                | TracerRole::SnowDensity
+                | TracerRole::SnowGrainRadius => TracerBase::SnowVolume,
                 TracerRole::AerosolIce | TracerRole::IsotopeIce => TracerBase::IceVolume,
                 _ => continue,
             };
@@ -427,6 +433,17 @@ impl TracerLayout {
         self.ntrcr
     }
 
+    /// Number of aerosol species (Icepack `n_aero`): the length of
+    /// [`OceanFluxes::faero_ocn`](super::OceanFluxes::faero_ocn) the step fills.
+    pub fn n_aero(&self) -> usize {
+        self.aero.len()
+    }
+
+    /// Number of water-isotope species (Icepack `n_iso`).
+    pub fn n_iso(&self) -> usize {
+        self.iso.map_or(0, |(_, _, n)| n)
+    }
+
     /// Number of ice layers (Icepack `nilyr`).
     pub fn nilyr(&self) -> usize {
         self.nilyr
@@ -474,7 +491,10 @@ impl TracerLayout {
     /// (`has`): `Ok(None)` when it has none of `vsnon`, `Tsfcn`, `qice001`, `sice001`,
     /// `qsno001` (no snow, no tracers); the numbers of ice and snow layers are those of the
     /// consecutive `qice001..` and `qsno001..` found; each optional group (`iage`; `FY`;
-    /// `alvl` with `vlvl`; `apnd`, `hpnd`, `ipnd`) is used when all its variables are there.
+    /// `alvl` with `vlvl`; `apnd`, `hpnd`, `ipnd`) is used when all its variables are there;
+    /// the snow tracers (`smice001`.., `smliq001`.., `rhos001`.., `rsnw001`..) when any is,
+    /// and as many isotope (`isosno001`.., `isoice001`..) and aerosol species
+    /// (`aerosnossl001`, `aerosnoint001`, `aeroicessl001`, `aeroiceint001`, ...) as are numbered.
     /// A missing member of a group, or a base tracer missing for the layers found, is an
     /// error naming the variable. The NetCDF reader and Python's `xr.ridge_step` both use it.
     pub fn detect_cice(
@@ -553,6 +573,18 @@ impl TracerLayout {
         if flags.ponds && !flags.level_ice {
             flags.ponds = false;
         }
+        // Snow tracers (all four or none), isotope and aerosol species by count; a partial
+        // species is caught by the check of every name below.
+        flags.snow = ["smice001", "smliq001", "rhos001", "rsnw001"]
+            .iter()
+            .any(|n| has(n));
+        flags.isotopes = count("isosno").max(count("isoice")).min(MAX_ISO);
+        flags.aerosols = ["aerosnossl", "aerosnoint", "aeroicessl", "aeroiceint"]
+            .iter()
+            .map(|p| count(p))
+            .max()
+            .unwrap_or(0)
+            .min(MAX_AERO);
         let layout = TracerLayout::cice(nilyr, nslyr, flags).map_err(|e| LayoutDetectError {
             var: "qice001".into(),
             why: e.to_string(),

@@ -39,6 +39,14 @@ pub enum TracerRole {
     PondDepth,
     /// Refrozen pond-lid thickness `ipnd` (m), on pond area.
     PondLid,
+    /// Mass of ice in snow per layer `smice` (kg m⁻³), snow-volume tracer (Icepack `tr_snow`).
+    SnowIceMass,
+    /// Mass of liquid water in snow per layer `smliq` (kg m⁻³), snow-volume tracer.
+    SnowLiquidMass,
+    /// Effective snow density per layer `rhos` (kg m⁻³), snow-volume tracer.
+    SnowDensity,
+    /// Snow grain radius per layer `rsnw` (m), snow-volume tracer.
+    SnowGrainRadius,
     /// Aerosol in snow (kg m⁻³), snow-volume tracer, single-level: one field for the
     /// surface scattering layer and one for the interior of each species, in that order
     /// (CICE's `aerosnossl00k`, `aerosnoint00k`). The share of snow on ridging ice that goes
@@ -83,7 +91,7 @@ impl TracerBase {
 
 impl TracerRole {
     /// Every role.
-    pub const ALL: [TracerRole; 16] = [
+    pub const ALL: [TracerRole; 20] = [
         TracerRole::SurfaceTemperature,
         TracerRole::IceEnthalpy,
         TracerRole::SnowEnthalpy,
@@ -95,6 +103,10 @@ impl TracerRole {
         TracerRole::PondArea,
         TracerRole::PondDepth,
         TracerRole::PondLid,
+        TracerRole::SnowIceMass,
+        TracerRole::SnowLiquidMass,
+        TracerRole::SnowDensity,
+        TracerRole::SnowGrainRadius,
         TracerRole::AerosolSnow,
         TracerRole::AerosolIce,
         TracerRole::IsotopeSnow,
@@ -118,6 +130,10 @@ impl TracerRole {
             PondArea => "pond_area",
             PondDepth => "pond_depth",
             PondLid => "pond_lid",
+            SnowIceMass => "snow_ice_mass",
+            SnowLiquidMass => "snow_liquid_mass",
+            SnowDensity => "snow_density",
+            SnowGrainRadius => "snow_grain_radius",
             AerosolSnow => "aerosol_snow",
             AerosolIce => "aerosol_ice",
             IsotopeSnow => "isotope_snow",
@@ -132,7 +148,8 @@ impl TracerRole {
     }
 
     /// Icepack's field name of this role (`Tsfc`, `qice`, `qsno`, `sice`, `iage`, `FY`,
-    /// `alvl`, `vlvl`, `apnd`, `hpnd`, `ipnd`, `isosno`, `isoice`; none for the aerosols,
+    /// `alvl`, `vlvl`, `apnd`, `hpnd`, `ipnd`, `smice`, `smliq`, `rhos`, `rsnw`, `isosno`,
+    /// `isoice`; none for the aerosols,
     /// whose names carry the species, and for [`TracerRole::Other`]), and its base and strata
     /// as [`TracerLayout::cice`](super::TracerLayout::cice) carries it.
     pub fn icepack(self) -> Option<(&'static str, TracerBase, &'static [&'static str])> {
@@ -150,6 +167,10 @@ impl TracerRole {
             PondArea => ("apnd", Area, &["alvl"]),
             PondDepth => ("hpnd", Area, &["alvl", "apnd"]),
             PondLid => ("ipnd", Area, &["alvl", "apnd"]),
+            SnowIceMass => ("smice", SnowVolume, &[]),
+            SnowLiquidMass => ("smliq", SnowVolume, &[]),
+            SnowDensity => ("rhos", SnowVolume, &[]),
+            SnowGrainRadius => ("rsnw", SnowVolume, &[]),
             IsotopeSnow => ("isosno", SnowVolume, &[]),
             IsotopeIce => ("isoice", IceVolume, &[]),
             AerosolSnow | AerosolIce | Other => return None,
@@ -167,6 +188,8 @@ impl TracerRole {
             Age => "s",
             FirstYear | LevelArea | LevelVolume | PondArea => "1",
             PondDepth | PondLid => "m",
+            SnowIceMass | SnowLiquidMass | SnowDensity => "kg m-3",
+            SnowGrainRadius => "m",
             AerosolSnow | AerosolIce | IsotopeSnow | IsotopeIce => "kg m-3",
             Other => "",
         }
@@ -187,6 +210,10 @@ impl TracerRole {
             PondArea => "melt pond area fraction of the level ice",
             PondDepth => "melt pond depth",
             PondLid => "refrozen melt pond lid thickness",
+            SnowIceMass => "mass of ice in a snow layer",
+            SnowLiquidMass => "mass of liquid water in a snow layer",
+            SnowDensity => "effective density of a snow layer",
+            SnowGrainRadius => "snow grain radius of a layer",
             AerosolSnow => "aerosol in snow (surface layer or interior)",
             AerosolIce => "aerosol in ice (surface layer or interior)",
             IsotopeSnow => "water isotope in snow",
@@ -212,6 +239,10 @@ impl TracerRole {
             TracerRole::IceEnthalpy
                 | TracerRole::SnowEnthalpy
                 | TracerRole::IceSalinity
+                | TracerRole::SnowIceMass
+                | TracerRole::SnowLiquidMass
+                | TracerRole::SnowDensity
+                | TracerRole::SnowGrainRadius
                 | TracerRole::IsotopeSnow
                 | TracerRole::IsotopeIce
         )

@@ -158,3 +158,34 @@ fn aerosols_and_isotopes_are_paired_by_species() {
     );
     assert_eq!(with(vec![iso(3), isoice]).unwrap().iso, Some((5, 8, 3)));
 }
+
+#[test]
+fn snow_isotope_and_aerosol_tracers_are_detected_from_names() {
+    let flags = CiceTracerFlags {
+        snow: true,
+        isotopes: 2,
+        aerosols: 3,
+        ..CiceTracerFlags::ALL
+    };
+    let l = TracerLayout::cice(4, 2, flags).unwrap();
+    let names = l.cice_restart_names();
+    assert!(names.contains(&"smice002".to_string()) && names.contains(&"rsnw001".to_string()));
+    assert!(names.contains(&"isoice002".to_string()));
+    assert!(names.contains(&"aeroiceint003".to_string()));
+    let mut all = names.clone();
+    all.push("vsnon".into());
+    let has = |n: &str| all.iter().any(|m| m == n);
+    let (got, f) = TracerLayout::detect_cice(&has).unwrap().unwrap();
+    assert_eq!((got, f), (l, flags));
+    // A species without one of its four tracers is named.
+    let short: Vec<String> = all
+        .iter()
+        .filter(|n| *n != "aeroicessl002")
+        .cloned()
+        .collect();
+    let has = |n: &str| short.iter().any(|m| m == n);
+    assert_eq!(
+        TracerLayout::detect_cice(&has).unwrap_err().var,
+        "aeroicessl002"
+    );
+}

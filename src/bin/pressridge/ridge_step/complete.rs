@@ -10,8 +10,8 @@ use pressridge::io::itd_netcdf::{
     read_cell_field, write_output,
 };
 use pressridge::itd::{
-    BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, RidgeOptions, RidgeStepOptions,
-    RidgeStepParams, SaltFlux, StepBatchMut, ridge_step_batch,
+    BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, OutputMeta, RidgeOptions,
+    RidgeStepOptions, RidgeStepParams, SPECIES_OUTPUTS, SaltFlux, StepBatchMut, ridge_step_batch,
 };
 
 use super::forcing::Forcing;
@@ -154,11 +154,18 @@ pub(super) fn run_complete(
         .iter()
         .map(|_| Array2::zeros((ncat, ncol)))
         .collect();
+    // Aerosol and isotope fluxes, one row per species of the layout.
+    let mut species: Vec<Array2<f64>> = [layout.n_aero(), layout.n_iso()]
+        .iter()
+        .map(|&n| Array2::zeros((n, ncol)))
+        .collect();
     {
         let mut cell_v: Vec<ArrayViewMut1<'_, f64>> =
             cell.iter_mut().map(|x| x.view_mut()).collect();
         let mut cat_v: Vec<ArrayViewMut2<'_, f64>> =
             cats.iter_mut().map(|x| x.view_mut()).collect();
+        let mut sp_v: Vec<ArrayViewMut2<'_, f64>> =
+            species.iter_mut().map(|x| x.view_mut()).collect();
         ridge_step_batch(
             StepBatchMut {
                 aicen: grid.aicen.view_mut(),
@@ -191,6 +198,7 @@ pub(super) fn run_complete(
             &layout,
             &mut cell_v,
             Some(&mut cat_v),
+            Some(&mut sp_v),
         )
         .map_err(|e| grid.locate(&args.input, e))?;
     }
@@ -300,6 +308,27 @@ pub(super) fn run_complete(
                 standard_name: None,
             },
             x.as_slice().expect("contiguous"),
+        ));
+    }
+    // Per species a cell field, numbered as CICE numbers its species (`faero_ocn001`, ...).
+    let species_rows: Vec<(String, &OutputMeta, Vec<f64>)> = SPECIES_OUTPUTS
+        .iter()
+        .zip(&species)
+        .flat_map(|(m, x)| {
+            x.outer_iter()
+                .enumerate()
+                .map(move |(k, row)| (format!("{}{:03}", m.name, k + 1), m, row.to_vec()))
+        })
+        .collect();
+    for (name, m, x) in &species_rows {
+        fields.push((
+            FieldMeta {
+                name,
+                units: m.units,
+                long_name: m.long_name,
+                standard_name: None,
+            },
+            x,
         ));
     }
     // A per-column Tf read from the input goes to the output too, so that a chained step
