@@ -100,6 +100,10 @@
 // `PRESSRIDGE_TRACER_LEVEL_ICE`).
 #define PRESSRIDGE_TRACER_PONDS 8
 
+// Tracer flag: snow tracers `smice`, `smliq`, `rhos` (kg m⁻³), `rsnw` (m), one per snow
+// layer each, on snow volume, Icepack `tr_snow`.
+#define PRESSRIDGE_TRACER_SNOW 16
+
 // A C_f table: C_f (dimensionless) against the ridging ice's thickness (m), linear between
 // nodes, clamped (and flagged) outside. Opaque; create with [`pressridge_cf_table_open`] or
 // [`pressridge_cf_table_new`], release with [`pressridge_cf_table_free`].
@@ -244,6 +248,12 @@ typedef struct PressridgeOceanFluxes {
   double fpond;
   // Pond water drained by ridging (m over the cell, per step), Icepack `dpnd_ridge`.
   double dpnd_ridge;
+  // Aerosol into the ocean per species (kg m⁻² s⁻¹, over `ndtd·dt`), Icepack
+  // `faero_ocn`; the ridger's `n_aero` first values are added to, the rest left as they are.
+  double faero_ocn[6];
+  // Water isotopes into the ocean per species (kg m⁻² s⁻¹), Icepack `fiso_ocn`; the first
+  // `n_iso` values are added to.
+  double fiso_ocn[3];
 } PressridgeOceanFluxes;
 
 // Cell diagnostics of one ridging step (all written).
@@ -320,6 +330,12 @@ typedef struct PressridgeCellArrays {
   double *dardg2dt;
   // Rate of ice volume ridged (m/s), written.
   double *dvirdgdt;
+  // Aerosol flux to the ocean (kg m⁻² s⁻¹), `n_aero·ncol` values (Fortran
+  // `faero_ocn(n_aero, ncol)`: species fastest), added to. Null: not returned.
+  double *faero_ocn;
+  // Water-isotope flux to the ocean (kg m⁻² s⁻¹), `n_iso·ncol` values
+  // (`fiso_ocn(n_iso, ncol)`), added to. Null: not returned.
+  double *fiso_ocn;
 } PressridgeCellArrays;
 
 // Thermodynamic constants and clean-up thresholds of the ridging step (the fields of
@@ -575,9 +591,13 @@ int32_t pressridge_ridge_cells(const struct PressridgeRidger *ridger,
 int32_t pressridge_step_params_default(struct PressridgeStepParams *params);
 
 // Makes a ridging set-up for `ncat` categories and the CICE tracer layout with `nilyr` ice
-// and `nslyr` snow layers (both ≥ 1) and the optional tracers of `tracer_flags` (a sum of
-// `PRESSRIDGE_TRACER_*`), in Icepack's order: `Tsfc`, `qice(nilyr)`, `qsno(nslyr)`,
-// `sice(nilyr)`, `iage`, `FY`, `alvl`, `vlvl`, `apnd`, `hpnd`, `ipnd`. `options` (null: CICE
+// and `nslyr` snow layers (both ≥ 1), the optional tracers of `tracer_flags` (a sum of
+// `PRESSRIDGE_TRACER_*`), `n_iso` water-isotope species (0–3, Icepack `n_iso`) and `n_aero`
+// aerosol species (0–6, Icepack `n_aero`), in the order of Icepack's driver: `Tsfc`,
+// `qice(nilyr)`, `qsno(nslyr)`, `sice(nilyr)`, `iage`, `FY`, `alvl`, `vlvl`, `apnd`, `hpnd`,
+// `ipnd`, `smice(nslyr)`, `smliq(nslyr)`, `rhos(nslyr)`, `rsnw(nslyr)`, `isosno(n_iso)`,
+// `isoice(n_iso)`, four aerosol tracers per species (snow surface layer and interior, ice
+// surface layer and interior). `options` (null: CICE
 // defaults) gives the participation, redistribution and ridging parameters (its strength
 // fields are not used), `step_params` (null: Icepack defaults) the thermodynamic constants;
 // `cleanup` and `rebin` are Icepack's `docleanup`, `dorebin` (nonzero = true). Writes the
@@ -589,6 +609,8 @@ int32_t pressridge_ridger_new(int64_t ncat,
                               int64_t nilyr,
                               int64_t nslyr,
                               int32_t tracer_flags,
+                              int32_t n_iso,
+                              int32_t n_aero,
                               const struct PressridgeOptions *options,
                               const struct PressridgeStepParams *step_params,
                               int32_t cleanup,

@@ -21,7 +21,9 @@ fn ridger(cleanup: i32) -> *mut PressridgeRidger {
     let rc =
         // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
         // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
-        unsafe { pressridge_ridger_new(NCAT as i64, 7, 1, 15, null(), null(), cleanup, 1, &mut r) };
+        unsafe {
+            pressridge_ridger_new(NCAT as i64, 7, 1, 15, 0, 0, null(), null(), cleanup, 1, &mut r)
+        };
     assert_eq!(rc, PRESSRIDGE_OK);
     r
 }
@@ -231,6 +233,8 @@ fn batched_cells_equal_cell_calls_and_errors_name_the_cell() {
         dardg1dt: null_mut(),
         dardg2dt: null_mut(),
         dvirdgdt: null_mut(),
+        faero_ocn: null_mut(),
+        fiso_ocn: null_mut(),
     };
     // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
     // entry point checks nulls, sizes and handles itself (the C ABI's contract).
@@ -338,6 +342,8 @@ fn batched_cells_equal_cell_calls_and_errors_name_the_cell() {
             7,
             1,
             PRESSRIDGE_TRACER_PONDS,
+            0,
+            0,
             null(),
             null(),
             1,
@@ -348,4 +354,174 @@ fn batched_cells_equal_cell_calls_and_errors_name_the_cell() {
     assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
     // SAFETY: a handle from its *_new/*_open (or null), freed once and not used after.
     unsafe { pressridge_ridger_free(r) };
+}
+
+/// Snow, isotope and aerosol tracers through the C ABI: the ridger made with
+/// `PRESSRIDGE_TRACER_SNOW`, `n_iso` and `n_aero`; `pressridge_ridge_cell` adds the same
+/// `faero_ocn` and `fiso_ocn` as the Rust step, and `pressridge_ridge_cells` the same per
+/// column (`faero_ocn(n_aero, ncol)`); species counts out of range are refused by name.
+#[test]
+fn aerosol_and_isotope_fluxes_through_the_c_abi() {
+    let flags = CiceTracerFlags {
+        snow: true,
+        isotopes: 2,
+        aerosols: 3,
+        ..CiceTracerFlags::ALL
+    };
+    let layout = TracerLayout::cice(7, 1, flags).unwrap();
+    let nt = layout.ntrcr();
+    let mut r = null_mut();
+    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
+    // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
+    let rc = unsafe { pressridge_ridger_new(5, 7, 1, 31, 2, 3, null(), null(), 1, 1, &mut r) };
+    assert_eq!(rc, PRESSRIDGE_OK);
+    // The 23 CICE tracers of `column`, then the added ones: positive amounts.
+    let small = TracerLayout::cice(7, 1, CiceTracerFlags::ALL).unwrap();
+    let ncol = 3;
+    let (mut a, mut v, mut s, mut t, mut a0) = (vec![], vec![], vec![], vec![], vec![]);
+    for c in 0..ncol {
+        let (ca, cv, cs, ct, ca0) = column(&small, c);
+        for n in 0..NCAT {
+            t.extend_from_slice(&ct[n * 23..(n + 1) * 23]);
+            t.extend((23..nt).map(|it| 1e-3 * (1 + it % 7 + n) as f64));
+        }
+        a.extend(ca);
+        v.extend(cv);
+        s.extend(cs);
+        a0.push(ca0);
+    }
+    let hin = [0.0, 0.6, 1.4, 2.4, 3.6, 999.9];
+    let forcing = StepForcing {
+        closing: Closing::Deformation {
+            convergence: 3e-6,
+            shear: 2e-6,
+        },
+        dt: 3600.0,
+        ndtd: 1,
+        tf: -1.8,
+    };
+    // Rust, per column.
+    let mut want = Vec::new();
+    for c in 0..ncol {
+        let (mut ra, mut rv, mut rs) = (
+            a[c * NCAT..(c + 1) * NCAT].to_vec(),
+            v[c * NCAT..(c + 1) * NCAT].to_vec(),
+            s[c * NCAT..(c + 1) * NCAT].to_vec(),
+        );
+        let mut rt = t[c * NCAT * nt..(c + 1) * NCAT * nt].to_vec();
+        let (mut ra0, mut raice) = (a0[c], 0.0);
+        let mut rf = OceanFluxes::default();
+        let mut ws = StepWorkspace::new(NCAT, nt);
+        let mut col = ColumnMut {
+            aicen: &mut ra,
+            vicen: &mut rv,
+            vsnon: &mut rs,
+            trcrn: &mut rt,
+            aice0: &mut ra0,
+            aice: &mut raice,
+        };
+        let opts = RidgeStepOptions::default();
+        ridge_step_column(&mut col, &hin, forcing, &opts, &layout, &mut rf, &mut ws).unwrap();
+        assert!(rf.faero_ocn[2] > 0.0 && rf.fiso_ocn[1] > 0.0);
+        want.push((rf, rt));
+    }
+    // C, one cell.
+    let (mut ca, mut cv, mut cs) = (a[..NCAT].to_vec(), v[..NCAT].to_vec(), s[..NCAT].to_vec());
+    let mut ct = t[..NCAT * nt].to_vec();
+    let (mut ca0, mut caice, mut opening) = (a0[0], 0.0, 0.0);
+    let mut h = hin;
+    let mut fl = PressridgeOceanFluxes {
+        faero_ocn: [0.0, 0.0, 0.0, 7.0, 7.0, 7.0],
+        ..Default::default()
+    };
+    // SAFETY: as above.
+    let rc = unsafe {
+        pressridge_ridge_cell(
+            r,
+            3600.0,
+            1,
+            h.as_mut_ptr(),
+            3e-6,
+            2e-6,
+            null(),
+            &mut opening,
+            ca.as_mut_ptr(),
+            ct.as_mut_ptr(),
+            cv.as_mut_ptr(),
+            cs.as_mut_ptr(),
+            &mut ca0,
+            &mut caice,
+            -1.8,
+            &mut fl,
+            null_mut(),
+            null(),
+        )
+    };
+    assert_eq!(rc, PRESSRIDGE_OK);
+    assert_eq!(fl.faero_ocn[..3], want[0].0.faero_ocn[..3]);
+    assert_eq!(
+        fl.faero_ocn[3..],
+        [7.0; 3],
+        "beyond n_aero: left as they were"
+    );
+    assert_eq!(fl.fiso_ocn[..2], want[0].0.fiso_ocn[..2]);
+    assert_eq!(ct, want[0].1);
+    // C, three cells: species fastest.
+    let mut faero = vec![0.0; 3 * ncol];
+    let mut fiso = vec![0.0; 2 * ncol];
+    let conv = vec![3e-6; ncol];
+    let shear = vec![2e-6; ncol];
+    let tf = vec![-1.8; ncol];
+    let mut aice = vec![0.0; ncol];
+    let cells = PressridgeCellArrays {
+        rdg_conv: conv.as_ptr(),
+        rdg_shear: shear.as_ptr(),
+        closing: null(),
+        opening: null_mut(),
+        tf: tf.as_ptr(),
+        valid: null(),
+        fresh: null_mut(),
+        fsalt: null_mut(),
+        fhocn: null_mut(),
+        fpond: null_mut(),
+        dardg1dt: null_mut(),
+        dardg2dt: null_mut(),
+        dvirdgdt: null_mut(),
+        faero_ocn: faero.as_mut_ptr(),
+        fiso_ocn: fiso.as_mut_ptr(),
+    };
+    // SAFETY: as above.
+    let rc = unsafe {
+        pressridge_ridge_cells(
+            r,
+            ncol as i64,
+            3600.0,
+            1,
+            hin.as_ptr(),
+            a.as_mut_ptr(),
+            t.as_mut_ptr(),
+            v.as_mut_ptr(),
+            s.as_mut_ptr(),
+            a0.as_mut_ptr(),
+            aice.as_mut_ptr(),
+            &cells,
+        )
+    };
+    assert_eq!(rc, PRESSRIDGE_OK);
+    for (c, (f, rt)) in want.iter().enumerate() {
+        assert_eq!(faero[3 * c..3 * c + 3], f.faero_ocn[..3], "column {c}");
+        assert_eq!(fiso[2 * c..2 * c + 2], f.fiso_ocn[..2], "column {c}");
+        assert_eq!(t[c * NCAT * nt..(c + 1) * NCAT * nt], rt[..]);
+    }
+    // SAFETY: a handle from its *_new (or null), freed once and not used after.
+    unsafe { pressridge_ridger_free(r) };
+    let mut bad = null_mut();
+    // SAFETY: as above.
+    let rc = unsafe { pressridge_ridger_new(5, 7, 1, 31, 2, 7, null(), null(), 1, 1, &mut bad) };
+    assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
+    let mut buf = vec![0u8; 256];
+    // SAFETY: as above.
+    unsafe { pressridge_last_error(buf.as_mut_ptr().cast(), 256, null_mut()) };
+    let msg = String::from_utf8_lossy(&buf).to_string();
+    assert!(msg.contains("n_aero = 7"), "{msg}");
 }

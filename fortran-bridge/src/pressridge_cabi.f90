@@ -48,6 +48,7 @@ module pressridge_cabi_mod
   integer(c_int32_t), parameter, public :: PRESSRIDGE_TRACER_FIRST_YEAR = 2
   integer(c_int32_t), parameter, public :: PRESSRIDGE_TRACER_LEVEL_ICE = 4
   integer(c_int32_t), parameter, public :: PRESSRIDGE_TRACER_PONDS = 8
+  integer(c_int32_t), parameter, public :: PRESSRIDGE_TRACER_SNOW = 16
 
   !> Physical constants and tunables (C struct PressridgeParams). The initial values are
   !> CICE's defaults, the same as pressridge_default_options returns (checked by the tests).
@@ -122,6 +123,8 @@ module pressridge_cabi_mod
      type(c_ptr) :: ptr = c_null_ptr
      integer :: ncat = 0   !< thickness categories
      integer :: ntrcr = 0  !< tracers per category
+     integer :: n_aero = 0 !< aerosol species
+     integer :: n_iso = 0  !< water-isotope species
   end type pressridge_ridger
 
   ! The C structs the wrappers fill; not re-exported by `pressridge`.
@@ -129,6 +132,7 @@ module pressridge_cabi_mod
   !> PressridgeOceanFluxes.
   type, bind(C) :: c_fluxes
      real(c_double) :: fresh = 0, fsalt = 0, fhocn = 0, fpond = 0, dpnd_ridge = 0
+     real(c_double) :: faero_ocn(6) = 0, fiso_ocn(3) = 0
   end type c_fluxes
 
   !> PressridgeStepDiagnostics.
@@ -150,7 +154,8 @@ module pressridge_cabi_mod
      type(c_ptr) :: rdg_conv = c_null_ptr, rdg_shear = c_null_ptr, closing = c_null_ptr, &
           opening = c_null_ptr, tf = c_null_ptr, valid = c_null_ptr, fresh = c_null_ptr, &
           fsalt = c_null_ptr, fhocn = c_null_ptr, fpond = c_null_ptr, dardg1dt = c_null_ptr, &
-          dardg2dt = c_null_ptr, dvirdgdt = c_null_ptr
+          dardg2dt = c_null_ptr, dvirdgdt = c_null_ptr, faero_ocn = c_null_ptr, &
+          fiso_ocn = c_null_ptr
   end type c_cell_arrays
 
   !> PressridgeGrid: the layout of the per-category and per-column arrays.
@@ -231,11 +236,11 @@ module pressridge_cabi_mod
        type(c_ptr), value :: valid, options
        type(c_rates), intent(in) :: rates
      end function c_ridge_step
-     integer(c_int32_t) function c_ridger_new(ncat, nilyr, nslyr, flags, options, step, &
-          cleanup, rebin, ridger) bind(C, name="pressridge_ridger_new")
+     integer(c_int32_t) function c_ridger_new(ncat, nilyr, nslyr, flags, n_iso, n_aero, &
+          options, step, cleanup, rebin, ridger) bind(C, name="pressridge_ridger_new")
        import :: c_int32_t, c_int64_t, c_ptr
        integer(c_int64_t), value :: ncat, nilyr, nslyr
-       integer(c_int32_t), value :: flags
+       integer(c_int32_t), value :: flags, n_iso, n_aero
        type(c_ptr), value :: options, step
        integer(c_int32_t), value :: cleanup, rebin
        type(c_ptr), intent(out) :: ridger

@@ -152,12 +152,17 @@ contains
   !> of one first size, ntrcr or more, trcr_depend, trcr_base(:, 3), n_trcr_strata,
   !> nt_strata(:, 2)). step_params: the thermodynamic constants and clean-up thresholds
   !> (rhos, Lfresh, cp_ice, fsnowrdg, the salt flux option, ...; default: Icepack's).
+  !> tr_snow, n_iso, n_aero (default .false., 0, 0): Icepack's snow tracers and numbers of
+  !> water-isotope (0-3) and aerosol (0-6) species, in the order of Icepack's driver after
+  !> the pond tracers.
   subroutine pressridge_ridger_init(ridger, ncat, nilyr, nslyr, tr_iage, tr_FY, tr_lvl, &
        tr_pond_lvl, options, docleanup, dorebin, ntrcr, trcr_depend, trcr_base, &
-       n_trcr_strata, nt_strata, step_params, ierr)
+       n_trcr_strata, nt_strata, step_params, tr_snow, n_iso, n_aero, ierr)
     type(pressridge_ridger), intent(out) :: ridger
     integer, intent(in) :: ncat, nilyr, nslyr
     logical, intent(in) :: tr_iage, tr_FY, tr_lvl, tr_pond_lvl
+    logical, intent(in), optional :: tr_snow
+    integer, intent(in), optional :: n_iso, n_aero
     type(pressridge_options), intent(in), optional, target :: options
     logical, intent(in), optional :: docleanup, dorebin
     type(pressridge_step_params), intent(in), optional, target :: step_params
@@ -167,7 +172,7 @@ contains
     real(c_double), intent(out), optional, contiguous, target :: trcr_base(:, :)
     integer, intent(out), optional :: ierr
     character(len=*), parameter :: where = 'pressridge_ridger_init'
-    integer(c_int32_t) :: flags, clean, rebin, rc
+    integer(c_int32_t) :: flags, clean, rebin, rc, niso, naero
     integer(c_int64_t) :: nt, len
     type(c_ptr) :: o, sp
     type(array_arg) :: arrays(4)
@@ -177,6 +182,13 @@ contains
     if (tr_FY) flags = flags + PRESSRIDGE_TRACER_FIRST_YEAR
     if (tr_lvl) flags = flags + PRESSRIDGE_TRACER_LEVEL_ICE
     if (tr_pond_lvl) flags = flags + PRESSRIDGE_TRACER_PONDS
+    if (present(tr_snow)) then
+       if (tr_snow) flags = flags + PRESSRIDGE_TRACER_SNOW
+    end if
+    niso = 0
+    naero = 0
+    if (present(n_iso)) niso = int(n_iso, c_int32_t)
+    if (present(n_aero)) naero = int(n_aero, c_int32_t)
     clean = 1
     rebin = 1
     if (present(docleanup)) then
@@ -189,7 +201,7 @@ contains
     sp = c_null_ptr
     if (present(step_params)) sp = c_loc(step_params)
     rc = c_ridger_new(int(ncat, c_int64_t), int(nilyr, c_int64_t), int(nslyr, c_int64_t), &
-         flags, o, sp, clean, rebin, ridger%ptr)
+         flags, niso, naero, o, sp, clean, rebin, ridger%ptr)
     if (rc /= PRESSRIDGE_OK) then
        call finish(rc, where, ierr)
        return
@@ -198,6 +210,8 @@ contains
          c_null_ptr)
     ridger%ncat = ncat
     ridger%ntrcr = int(nt)
+    ridger%n_iso = int(niso)
+    ridger%n_aero = int(naero)
     if (present(ntrcr)) ntrcr = int(nt)
     ! The tracer arrays, present ones passed on: all of the same first size, the length the C
     ! call is told (the library writes ntrcr rows), trcr_base with 3 columns, nt_strata with 2.
@@ -244,11 +258,12 @@ contains
   !> set to params%big; closing present: the host's rates closing and opening (SIS2).
   !> fresh, fsalt, fhocn, fpond are added to; the other diagnostics are overwritten;
   !> first_ice is set .true. for categories emptied by the clean-up. The optional
-  !> per-category arrays (aparticn ... vraftn, first_ice) have ncat values each.
+  !> per-category arrays (aparticn ... vraftn, first_ice) have ncat values each; faero_ocn
+  !> and fiso_ocn (kg m-2 s-1, added to) at least the ridger's n_aero and n_iso values.
   subroutine pressridge_step_ridge(ridger, dt, ndtd, hin_max, rdg_conv, rdg_shear, aicen, &
        trcrn, vicen, vsnon, aice0, dardg1dt, dardg2dt, dvirdgdt, opening, fpond, fresh, &
        fhocn, aparticn, krdgn, aredistn, vredistn, dardg1ndt, dardg2ndt, dvirdgndt, araftn, &
-       vraftn, aice, fsalt, first_ice, closing, Tf, dpnd_ridge, ierr)
+       vraftn, aice, fsalt, first_ice, closing, Tf, dpnd_ridge, faero_ocn, fiso_ocn, ierr)
     type(pressridge_ridger), intent(in) :: ridger
     real(c_double), intent(in) :: dt                     !< dynamics time step (s)
     integer, intent(in) :: ndtd                          !< dynamics subcycles
@@ -266,6 +281,7 @@ contains
     real(c_double), intent(in), optional, target :: closing
     real(c_double), intent(in) :: Tf                     !< freezing temperature (degC)
     real(c_double), intent(out), optional :: dpnd_ridge  !< m
+    real(c_double), intent(inout), optional :: faero_ocn(:), fiso_ocn(:) !< kg m-2 s-1
     integer, intent(out), optional :: ierr
     character(len=*), parameter :: where = 'pressridge_step_ridge'
     type(c_fluxes) :: fl
@@ -288,7 +304,24 @@ contains
          opt_real1(araftn), opt_real1(vraftn), opt_mask1(first_ice)], [character(len=9) :: &
          'aparticn', 'krdgn', 'aredistn', 'vredistn', 'dardg1ndt', 'dardg2ndt', 'dvirdgndt', &
          'araftn', 'vraftn', 'first_ice'], n, 'ncat', where, ierr)) return
-    fl = c_fluxes(fresh, fsalt, fhocn, fpond, 0.0_c_double)
+    if (present(faero_ocn)) then
+       if (size(faero_ocn) < ridger%n_aero) then
+          call fail(PRESSRIDGE_ERR_BAD_SIZE, 'faero_ocn needs n_aero values', where, ierr)
+          return
+       end if
+    end if
+    if (present(fiso_ocn)) then
+       if (size(fiso_ocn) < ridger%n_iso) then
+          call fail(PRESSRIDGE_ERR_BAD_SIZE, 'fiso_ocn needs n_iso values', where, ierr)
+          return
+       end if
+    end if
+    fl%fresh = fresh
+    fl%fsalt = fsalt
+    fl%fhocn = fhocn
+    fl%fpond = fpond
+    if (present(faero_ocn)) fl%faero_ocn(1:ridger%n_aero) = faero_ocn(1:ridger%n_aero)
+    if (present(fiso_ocn)) fl%fiso_ocn(1:ridger%n_iso) = fiso_ocn(1:ridger%n_iso)
     zapped = 0
     if (present(aparticn)) cd%aparticn = c_loc(aparticn)
     if (present(krdgn)) cd%krdgn = c_loc(krdgn)
@@ -311,6 +344,8 @@ contains
        fhocn = fl%fhocn
        fpond = fl%fpond
        if (present(dpnd_ridge)) dpnd_ridge = fl%dpnd_ridge
+       if (present(faero_ocn)) faero_ocn(1:ridger%n_aero) = fl%faero_ocn(1:ridger%n_aero)
+       if (present(fiso_ocn)) fiso_ocn(1:ridger%n_iso) = fl%fiso_ocn(1:ridger%n_iso)
        if (present(dardg1dt)) dardg1dt = d%dardg1dt
        if (present(dardg2dt)) dardg2dt = d%dardg2dt
        if (present(dvirdgdt)) dvirdgdt = d%dvirdgdt
@@ -323,11 +358,12 @@ contains
   !> trcrn(ntrcr, ncat, ncol), aice0, aice(ncol), rdg_conv, rdg_shear(ncol); optional Tf(ncol)
   !> (default -1.8), fluxes fresh, fsalt, fhocn, fpond(ncol) (added to), rates dardg1dt,
   !> dardg2dt, dvirdgdt(ncol), and closing with opening (ncol, SIS2 convention; opening is
-  !> also returned in the CICE convention), each optional array of ncol values.
+  !> also returned in the CICE convention), each optional array of ncol values, and the
+  !> aerosol and isotope fluxes faero_ocn(n_aero, ncol), fiso_ocn(n_iso, ncol) (added to).
   !> hin_max(0:ncat) is not modified.
   subroutine pressridge_step_ridge_cells(ridger, dt, ndtd, hin_max, rdg_conv, rdg_shear, &
        aicen, trcrn, vicen, vsnon, aice0, aice, Tf, fresh, fsalt, fhocn, fpond, dardg1dt, &
-       dardg2dt, dvirdgdt, closing, opening, ierr)
+       dardg2dt, dvirdgdt, closing, opening, faero_ocn, fiso_ocn, ierr)
     type(pressridge_ridger), intent(in) :: ridger
     real(c_double), intent(in) :: dt
     integer, intent(in) :: ndtd
@@ -339,6 +375,8 @@ contains
          fhocn(:), fpond(:), opening(:)
     real(c_double), intent(out), optional, contiguous, target :: dardg1dt(:), dardg2dt(:), &
          dvirdgdt(:)
+    real(c_double), intent(inout), optional, contiguous, target :: faero_ocn(:, :), &
+         fiso_ocn(:, :)
     integer, intent(out), optional :: ierr
     character(len=*), parameter :: where = 'pressridge_step_ridge_cells'
     type(c_cell_arrays) :: c
@@ -360,6 +398,20 @@ contains
          opt_real1(closing), opt_real1(opening)], [character(len=8) :: 'Tf', 'fresh', 'fsalt', &
          'fhocn', 'fpond', 'dardg1dt', 'dardg2dt', 'dvirdgdt', 'closing', 'opening'], ncol, &
          'ncol', where, ierr)) return
+    if (present(faero_ocn)) then
+       if (any(shape(faero_ocn) /= [ridger%n_aero, ncol])) then
+          call fail(PRESSRIDGE_ERR_BAD_SIZE, 'faero_ocn must be (n_aero, ncol)', where, ierr)
+          return
+       end if
+       if (ridger%n_aero > 0) c%faero_ocn = c_loc(faero_ocn)
+    end if
+    if (present(fiso_ocn)) then
+       if (any(shape(fiso_ocn) /= [ridger%n_iso, ncol])) then
+          call fail(PRESSRIDGE_ERR_BAD_SIZE, 'fiso_ocn must be (n_iso, ncol)', where, ierr)
+          return
+       end if
+       if (ridger%n_iso > 0) c%fiso_ocn = c_loc(fiso_ocn)
+    end if
     c%rdg_conv = c_loc(rdg_conv)
     c%rdg_shear = c_loc(rdg_shear)
     if (present(closing)) c%closing = c_loc(closing)

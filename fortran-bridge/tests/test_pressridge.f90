@@ -432,6 +432,68 @@ program test_pressridge
            pressridge_last_error_message() == 'trcr_base must have 3 columns')
       call pressridge_ridger_free(rg)
     end block layout
+    ! Snow, isotope and aerosol tracers (41 with 3 isotope, 2 aerosol species): the fluxes
+    ! faero_ocn, fiso_ocn of the per-cell call equal those of the batched call bit for bit,
+    ! and ridged snow puts some of each into the ocean.
+    species: block
+      type(pressridge_ridger) :: rx
+      integer :: nx
+      real(c_double), allocatable :: tx(:, :, :), tc(:, :)
+      real(c_double) :: ax(nc, nk), vx(nc, nk), sx(nc, nk), a0x(nk), aix(nk), fa(2, nk), &
+           fi(3, nk), fa1(2), fi1(3), h1(0:nc), ac(nc), vc(nc), scn(nc), a0c, aic, op1, fp1, &
+           fr1, fh1, fs1
+      call pressridge_ridger_init(rx, nc, 7, 1, .true., .true., .true., .true., ntrcr=nx, &
+           tr_snow=.true., n_iso=3, n_aero=2, ierr=e)
+      call check('ridger_init(tr_snow, n_iso = 3, n_aero = 2): 41 tracers', &
+           e == PRESSRIDGE_OK .and. nx == 41)
+      allocate(tx(nx, nc, nk), tc(nx, nc))
+      do c = 1, nk
+         do k = 1, nc
+            ax(k, c) = 0.19_c_double
+            vx(k, c) = ax(k, c) * (0.3_c_double + 0.9_c_double * (k - 1))
+            sx(k, c) = 0.1_c_double * vx(k, c)
+            tx(1:23, k, c) = [-15.0_c_double, (-3.0e8_c_double - 1.0e6_c_double * i, i = 1, 7), &
+                 -1.15e8_c_double, (4.0_c_double + 0.2_c_double * i, i = 1, 7), &
+                 2.0e7_c_double, 0.4_c_double, 0.8_c_double, 0.8_c_double, 0.2_c_double, &
+                 0.1_c_double, 0.01_c_double]
+            tx(24:, k, c) = [(1.0e-3_c_double * (i + k), i = 24, nx)]
+         end do
+         a0x(c) = 1 - sum(ax(:, c))
+         aix(c) = sum(ax(:, c))
+      end do
+      ac = ax(:, 2)
+      vc = vx(:, 2)
+      scn = sx(:, 2)
+      tc = tx(:, :, 2)
+      a0c = a0x(2)
+      aic = aix(2)
+      h1 = hb
+      op1 = 0
+      fp1 = 0
+      fr1 = 0
+      fh1 = 0
+      fs1 = 0
+      fa1 = 0
+      fi1 = 0
+      call pressridge_step_ridge(rx, 3600.0_c_double, 1, h1, cv(2), sh(2), ac, tc, vc, scn, &
+           a0c, d1, d2, d3, op1, fp1, fr1, fh1, aice=aic, fsalt=fs1, Tf=-1.8_c_double, &
+           faero_ocn=fa1, fiso_ocn=fi1, ierr=e)
+      call check('step_ridge with faero_ocn(2), fiso_ocn(3) steps the cell', &
+           e == PRESSRIDGE_OK .and. all(fa1 > 0) .and. all(fi1 > 0))
+      fa = 0
+      fi = 0
+      call pressridge_step_ridge_cells(rx, 3600.0_c_double, 1, hb, cv, sh, ax, tx, vx, sx, &
+           a0x, aix, faero_ocn=fa, fiso_ocn=fi, ierr=e)
+      call check('step_ridge_cells faero_ocn(:, 2), fiso_ocn(:, 2) = per cell, bit for bit', &
+           e == PRESSRIDGE_OK .and. all(fa(:, 2) == fa1) .and. all(fi(:, 2) == fi1) .and. &
+           all(tx(:, :, 2) == tc))
+      call pressridge_step_ridge_cells(rx, 3600.0_c_double, 1, hb, cv, sh, ax, tx, vx, sx, &
+           a0x, aix, faero_ocn=fa(:, 1:2), ierr=e)
+      call check('step_ridge_cells, faero_ocn(2, ncol - 1): PRESSRIDGE_ERR_BAD_SIZE', &
+           e == PRESSRIDGE_ERR_BAD_SIZE .and. &
+           pressridge_last_error_message() == 'faero_ocn must be (n_aero, ncol)')
+      call pressridge_ridger_free(rx)
+    end block species
   end block cstep
 
   ! --- ridging lookup tables

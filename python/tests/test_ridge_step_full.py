@@ -126,8 +126,8 @@ CASES = [Case(c) for c in ALL_CASES]
 
 
 def _structs():
-    """ctypes classes of the header's structs (fields of double, int32_t, int64_t and
-    pointers), so that no layout is written twice."""
+    """ctypes classes of the header's structs (fields of double, int32_t, int64_t, their
+    fixed-size arrays and pointers), so that no layout is written twice."""
     text = HEADER.read_text()
     types = {"double": ctypes.c_double, "int32_t": ctypes.c_int32, "int64_t": ctypes.c_int64}
     out = {}
@@ -137,11 +137,14 @@ def _structs():
             line = line.split("//")[0].strip()
             if not line:
                 continue
-            m = re.match(r"(?:const\s+)?(?:struct\s+)?(\w+)\s*(\*?)\s*(\w+);$", line)
+            m = re.match(r"(?:const\s+)?(?:struct\s+)?(\w+)\s*(\*?)\s*(\w+)(?:\[(\d+)\])?;$",
+                         line)
             assert m, f"cannot read the field `{line}` of {name} in {HEADER}"
-            ty, ptr, fname = m.group(1), m.group(2), m.group(3)
+            ty, ptr, fname, count = m.group(1), m.group(2), m.group(3), m.group(4)
             if ptr:
                 fields.append((fname, ctypes.c_void_p))
+            elif ty in types and count:
+                fields.append((fname, types[ty] * int(count)))
             elif ty in types:
                 fields.append((fname, types[ty]))
             elif ty in out:
@@ -175,6 +178,8 @@ def _c_step(clib, case: Case):
         ctypes.c_int64(LAYOUT.nilyr),
         ctypes.c_int64(LAYOUT.nslyr),
         ctypes.c_int32(flags),
+        ctypes.c_int32(0),  # n_iso
+        ctypes.c_int32(0),  # n_aero
         ctypes.byref(opts),
         None,
         ctypes.c_int32(int(case.cleanup)),

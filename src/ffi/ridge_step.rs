@@ -11,16 +11,16 @@ use std::cell::RefCell;
 use super::layout::{Region, check_disjoint, check_ptr};
 use super::{FfiError, FfiResult, PRESSRIDGE_ERR_BAD_SIZE, guard, put};
 use crate::itd::{
-    Closing, ColumnMut, ItdError, OceanFluxes, StepDiagnostics, StepForcing, StepWorkspace,
-    ridge_step_column,
+    Closing, ColumnMut, ItdError, MAX_AERO, MAX_ISO, OceanFluxes, StepDiagnostics, StepForcing,
+    StepWorkspace, ridge_step_column,
 };
 
 mod ridger;
 pub use ridger::{
     PRESSRIDGE_TRACER_AGE, PRESSRIDGE_TRACER_FIRST_YEAR, PRESSRIDGE_TRACER_LEVEL_ICE,
-    PRESSRIDGE_TRACER_PONDS, PressridgeRidger, PressridgeStepParams, pressridge_ridger_free,
-    pressridge_ridger_new, pressridge_ridger_tracer_field, pressridge_ridger_tracers,
-    pressridge_step_params_default,
+    PRESSRIDGE_TRACER_PONDS, PRESSRIDGE_TRACER_SNOW, PressridgeRidger, PressridgeStepParams,
+    pressridge_ridger_free, pressridge_ridger_new, pressridge_ridger_tracer_field,
+    pressridge_ridger_tracers, pressridge_step_params_default,
 };
 use ridger::{bad_value, ridger_ref};
 
@@ -39,7 +39,16 @@ pub struct PressridgeOceanFluxes {
     pub fpond: f64,
     /// Pond water drained by ridging (m over the cell, per step), Icepack `dpnd_ridge`.
     pub dpnd_ridge: f64,
+    /// Aerosol into the ocean per species (kg m⁻² s⁻¹, over `ndtd·dt`), Icepack
+    /// `faero_ocn`; the ridger's `n_aero` first values are added to, the rest left as they are.
+    pub faero_ocn: [f64; 6],
+    /// Water isotopes into the ocean per species (kg m⁻² s⁻¹), Icepack `fiso_ocn`; the first
+    /// `n_iso` values are added to.
+    pub fiso_ocn: [f64; 3],
 }
+
+// The C struct's arrays hold every species a layout may have.
+const _: () = assert!(MAX_AERO == 6 && MAX_ISO == 3);
 
 /// Cell diagnostics of one ridging step (all written).
 #[repr(C)]
@@ -284,7 +293,8 @@ pub unsafe extern "C" fn pressridge_ridge_cell(
                 fhocn: f.fhocn,
                 fpond: f.fpond,
                 dpnd_ridge: f.dpnd_ridge,
-                ..OceanFluxes::default()
+                faero_ocn: f.faero_ocn,
+                fiso_ocn: f.fiso_ocn,
             }
         };
         with_step_scratch(ncat, nt, |ws| -> FfiResult<()> {
@@ -301,6 +311,8 @@ pub unsafe extern "C" fn pressridge_ridge_cell(
                     fhocn: fl.fhocn,
                     fpond: fl.fpond,
                     dpnd_ridge: fl.dpnd_ridge,
+                    faero_ocn: fl.faero_ocn,
+                    fiso_ocn: fl.fiso_ocn,
                 });
             }
             if !diag.is_null() {
@@ -346,6 +358,12 @@ pub struct PressridgeCellArrays {
     pub dardg2dt: *mut f64,
     /// Rate of ice volume ridged (m/s), written.
     pub dvirdgdt: *mut f64,
+    /// Aerosol flux to the ocean (kg m⁻² s⁻¹), `n_aero·ncol` values (Fortran
+    /// `faero_ocn(n_aero, ncol)`: species fastest), added to. Null: not returned.
+    pub faero_ocn: *mut f64,
+    /// Water-isotope flux to the ocean (kg m⁻² s⁻¹), `n_iso·ncol` values
+    /// (`fiso_ocn(n_iso, ncol)`), added to. Null: not returned.
+    pub fiso_ocn: *mut f64,
 }
 
 /// The ridging step of `ncol` cells in one call (arrays Fortran-ordered and contiguous:
@@ -406,6 +424,8 @@ pub unsafe extern "C" fn pressridge_ridge_cells(
             Region::new(c.dardg1dt, n, "cells.dardg1dt"),
             Region::new(c.dardg2dt, n, "cells.dardg2dt"),
             Region::new(c.dvirdgdt, n, "cells.dvirdgdt"),
+            Region::new(c.faero_ocn, r.layout.n_aero() * n, "cells.faero_ocn"),
+            Region::new(c.fiso_ocn, r.layout.n_iso() * n, "cells.fiso_ocn"),
         ];
         let read = [
             Region::new(hin_max, ncat + 1, "hin_max"),
@@ -459,6 +479,16 @@ pub unsafe extern "C" fn pressridge_ridge_cells(
             opt_out(c.fhocn, "cells.fhocn")?,
             opt_out(c.fpond, "cells.fpond")?,
         ];
+        let (na, ni) = (r.layout.n_aero(), r.layout.n_iso());
+        let species_out = |p: *mut f64, k: usize, what: &str| -> FfiResult<Option<&mut [f64]>> {
+            if p.is_null() || k == 0 {
+                Ok(None)
+            } else {
+                slice_mut(p, k * n, what).map(Some)
+            }
+        };
+        let mut faero = species_out(c.faero_ocn, na, "cells.faero_ocn")?;
+        let mut fiso = species_out(c.fiso_ocn, ni, "cells.fiso_ocn")?;
         let mut rates = [
             opt_out(c.dardg1dt, "cells.dardg1dt")?,
             opt_out(c.dardg2dt, "cells.dardg2dt")?,
@@ -493,6 +523,12 @@ pub unsafe extern "C" fn pressridge_ridge_cells(
                     dpnd_ridge: 0.0,
                     ..OceanFluxes::default()
                 };
+                if let Some(x) = faero.as_ref() {
+                    fl.faero_ocn[..na].copy_from_slice(&x[i * na..(i + 1) * na]);
+                }
+                if let Some(x) = fiso.as_ref() {
+                    fl.fiso_ocn[..ni].copy_from_slice(&x[i * ni..(i + 1) * ni]);
+                }
                 let mut col = ColumnMut {
                     aicen: &mut a[i * ncat..(i + 1) * ncat],
                     vicen: &mut v[i * ncat..(i + 1) * ncat],
@@ -518,6 +554,12 @@ pub unsafe extern "C" fn pressridge_ridge_cells(
                     if let Some(o) = o {
                         o[i] = x;
                     }
+                }
+                if let Some(x) = faero.as_mut() {
+                    x[i * na..(i + 1) * na].copy_from_slice(&fl.faero_ocn[..na]);
+                }
+                if let Some(x) = fiso.as_mut() {
+                    x[i * ni..(i + 1) * ni].copy_from_slice(&fl.fiso_ocn[..ni]);
                 }
             }
             Ok(())

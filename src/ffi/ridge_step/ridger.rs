@@ -21,6 +21,9 @@ pub const PRESSRIDGE_TRACER_LEVEL_ICE: i32 = 4;
 /// Tracer flag: level-ice melt ponds `apnd`, `hpnd`, `ipnd`, Icepack `tr_pond_lvl` (needs
 /// `PRESSRIDGE_TRACER_LEVEL_ICE`).
 pub const PRESSRIDGE_TRACER_PONDS: i32 = 8;
+/// Tracer flag: snow tracers `smice`, `smliq`, `rhos` (kg m⁻³), `rsnw` (m), one per snow
+/// layer each, on snow volume, Icepack `tr_snow`.
+pub const PRESSRIDGE_TRACER_SNOW: i32 = 16;
 
 /// Thermodynamic constants and clean-up thresholds of the ridging step (the fields of
 /// `pressridge::itd::RidgeStepParams`; Icepack's defaults from
@@ -126,9 +129,13 @@ pub(super) fn bad_value(msg: String) -> FfiError {
 }
 
 /// Makes a ridging set-up for `ncat` categories and the CICE tracer layout with `nilyr` ice
-/// and `nslyr` snow layers (both ≥ 1) and the optional tracers of `tracer_flags` (a sum of
-/// `PRESSRIDGE_TRACER_*`), in Icepack's order: `Tsfc`, `qice(nilyr)`, `qsno(nslyr)`,
-/// `sice(nilyr)`, `iage`, `FY`, `alvl`, `vlvl`, `apnd`, `hpnd`, `ipnd`. `options` (null: CICE
+/// and `nslyr` snow layers (both ≥ 1), the optional tracers of `tracer_flags` (a sum of
+/// `PRESSRIDGE_TRACER_*`), `n_iso` water-isotope species (0–3, Icepack `n_iso`) and `n_aero`
+/// aerosol species (0–6, Icepack `n_aero`), in the order of Icepack's driver: `Tsfc`,
+/// `qice(nilyr)`, `qsno(nslyr)`, `sice(nilyr)`, `iage`, `FY`, `alvl`, `vlvl`, `apnd`, `hpnd`,
+/// `ipnd`, `smice(nslyr)`, `smliq(nslyr)`, `rhos(nslyr)`, `rsnw(nslyr)`, `isosno(n_iso)`,
+/// `isoice(n_iso)`, four aerosol tracers per species (snow surface layer and interior, ice
+/// surface layer and interior). `options` (null: CICE
 /// defaults) gives the participation, redistribution and ridging parameters (its strength
 /// fields are not used), `step_params` (null: Icepack defaults) the thermodynamic constants;
 /// `cleanup` and `rebin` are Icepack's `docleanup`, `dorebin` (nonzero = true). Writes the
@@ -143,6 +150,8 @@ pub unsafe extern "C" fn pressridge_ridger_new(
     nilyr: i64,
     nslyr: i64,
     tracer_flags: i32,
+    n_iso: i32,
+    n_aero: i32,
     options: *const PressridgeOptions,
     step_params: *const PressridgeStepParams,
     cleanup: i32,
@@ -160,17 +169,24 @@ pub unsafe extern "C" fn pressridge_ridger_new(
                 ));
             }
         }
-        if tracer_flags & !15 != 0 {
+        if tracer_flags & !31 != 0 {
             return Err(bad_value(format!(
-                "tracer_flags = {tracer_flags}: only PRESSRIDGE_TRACER_* (1, 2, 4, 8) may be set"
+                "tracer_flags = {tracer_flags}: only PRESSRIDGE_TRACER_* (1, 2, 4, 8, 16) may be set"
             )));
+        }
+        for (name, v, max) in [("n_iso", n_iso, 3), ("n_aero", n_aero, 6)] {
+            if !(0..=max).contains(&v) {
+                return Err(bad_value(format!("{name} = {v}: must be 0 to {max}")));
+            }
         }
         let flags = CiceTracerFlags {
             age: tracer_flags & PRESSRIDGE_TRACER_AGE != 0,
             first_year: tracer_flags & PRESSRIDGE_TRACER_FIRST_YEAR != 0,
             level_ice: tracer_flags & PRESSRIDGE_TRACER_LEVEL_ICE != 0,
             ponds: tracer_flags & PRESSRIDGE_TRACER_PONDS != 0,
-            ..CiceTracerFlags::default()
+            snow: tracer_flags & PRESSRIDGE_TRACER_SNOW != 0,
+            isotopes: n_iso as usize,
+            aerosols: n_aero as usize,
         };
         let layout = TracerLayout::cice(nilyr as usize, nslyr as usize, flags)?;
         let o = PressridgeOptions::from_ptr(options)?;
