@@ -1,0 +1,268 @@
+!> pressridge_icepack: Icepack's ridging step and ice strength with Icepack's own argument
+!> lists, for a host that swaps pressridge in by its `use` line alone:
+!>
+!>   use pressridge_icepack, only: icepack_step_ridge => pressridge_icepack_step_ridge, &
+!>        icepack_ice_strength => pressridge_icepack_ice_strength
+!>
+!> Compiled with the host beside Icepack (it uses icepack_intfc): every call reads Icepack's
+!> tracer sizes and the ridging parameters (krdg_partic, krdg_redist, mu_rdg, kstrength, Cf,
+!> Pstar, Cstar, the densities and thermodynamic constants) through Icepack's own queries,
+!> and makes the pressridge set-up for them on first use (one per set of values and
+!> docleanup/dorebin, kept for the run; OpenMP threads share it). The host's tracer tables
+!> (trcr_depend, trcr_base, n_trcr_strata, nt_strata) are checked against the layout
+!> pressridge derives from Icepack's flags. Errors, and tracers pressridge does not carry yet
+!> (topography and sea-level ponds, brine, floe size, biogeochemistry), are reported as
+!> Icepack reports its own: icepack_warnings_add and icepack_warnings_setabort.
+module pressridge_icepack
+  use, intrinsic :: iso_c_binding, only: c_double, c_int32_t
+  use pressridge
+  use icepack_intfc, only: icepack_query_tracer_flags, icepack_query_tracer_sizes, &
+       icepack_query_parameters
+  ! Icepack's own error reporting (module icepack_warnings; icepack_intfc does not re-export
+  ! these two).
+  use icepack_warnings, only: icepack_warnings_add, icepack_warnings_setabort
+  implicit none
+  private
+
+  public :: pressridge_icepack_step_ridge, pressridge_icepack_ice_strength
+
+  !> One set-up: the values it was made for and its handle.
+  type :: setup
+     integer :: ncat = -1, ntrcr = -1, nilyr = -1, nslyr = -1, n_aero = -1, n_iso = -1
+     integer :: kp = -1, kr = -1
+     real(c_double) :: mu_rdg = -1
+     logical :: flags(5) = .false., cleanup = .true., rebin = .true.
+     type(pressridge_step_params) :: step
+     type(pressridge_ridger) :: ridger
+  end type setup
+
+  integer, parameter :: max_setups = 16
+  type(setup), save :: setups(max_setups)
+  integer, save :: nsetups = 0
+
+contains
+
+  !> Icepack's icepack_step_ridge (argument names, meanings and optional arguments as in
+  !> Icepack 1.5): the complete ridging step of one cell by pressridge. flux_bio is accepted
+  !> and left unchanged (biogeochemical tracers are refused).
+  subroutine pressridge_icepack_step_ridge(dt, ndtd, hin_max, rdg_conv, rdg_shear, aicen, &
+       trcrn, vicen, vsnon, aice0, trcr_depend, trcr_base, n_trcr_strata, nt_strata, &
+       dardg1dt, dardg2dt, dvirdgdt, opening, fpond, fresh, fhocn, faero_ocn, fiso_ocn, &
+       aparticn, krdgn, aredistn, vredistn, dardg1ndt, dardg2ndt, dvirdgndt, araftn, vraftn, &
+       aice, fsalt, first_ice, flux_bio, closing, Tf, dpnd_ridge, docleanup, dorebin)
+    real(c_double), intent(in) :: dt, Tf
+    integer, intent(in) :: ndtd
+    real(c_double), intent(inout), contiguous :: hin_max(0:)
+    integer, intent(in) :: trcr_depend(:), n_trcr_strata(:)
+    real(c_double), intent(in) :: trcr_base(:, :)
+    integer, intent(in) :: nt_strata(:, :)
+    real(c_double), intent(inout) :: aice, aice0, rdg_conv, rdg_shear, dardg1dt, dardg2dt, &
+         dvirdgdt, opening, fpond, fresh, fsalt, fhocn
+    real(c_double), intent(inout), optional :: closing
+    real(c_double), intent(inout), contiguous :: aicen(:), vicen(:), vsnon(:)
+    real(c_double), intent(inout) :: dardg1ndt(:), dardg2ndt(:), dvirdgndt(:), aparticn(:), &
+         krdgn(:), araftn(:), vraftn(:), aredistn(:), vredistn(:), faero_ocn(:), flux_bio(:)
+    real(c_double), intent(inout), optional :: fiso_ocn(:)
+    real(c_double), intent(inout), contiguous :: trcrn(:, :)
+    logical, intent(inout) :: first_ice(:)
+    real(c_double), intent(inout), optional :: dpnd_ridge
+    logical, intent(in), optional :: docleanup, dorebin
+    character(len=*), parameter :: subname = '(pressridge_icepack_step_ridge)'
+    logical :: clean, rebin
+    integer :: k, e
+    real(c_double) :: fa(6), fi(3)
+    clean = .true.
+    rebin = .true.
+    if (present(docleanup)) clean = docleanup
+    if (present(dorebin)) rebin = dorebin
+    k = setup_for(size(aicen), size(trcrn, 1), clean, rebin, trcr_depend, trcr_base, &
+         n_trcr_strata, nt_strata)
+    if (k == 0) return
+    fa = 0
+    fi = 0
+    associate (s => setups(k))
+      fa(1:s%n_aero) = faero_ocn(1:s%n_aero)
+      if (present(fiso_ocn)) fi(1:s%n_iso) = fiso_ocn(1:s%n_iso)
+      call pressridge_step_ridge(s%ridger, dt, ndtd, hin_max, rdg_conv, rdg_shear, aicen, &
+           trcrn, vicen, vsnon, aice0, dardg1dt, dardg2dt, dvirdgdt, opening, fpond, fresh, &
+           fhocn, aparticn, krdgn, aredistn, vredistn, dardg1ndt, dardg2ndt, dvirdgndt, &
+           araftn, vraftn, aice, fsalt, first_ice, closing, Tf, dpnd_ridge, &
+           faero_ocn=fa(1:s%n_aero), fiso_ocn=fi(1:s%n_iso), ierr=e)
+      if (e /= PRESSRIDGE_OK) then
+         call abort_with(subname//' '//trim(pressridge_last_error_message()))
+         return
+      end if
+      faero_ocn(1:s%n_aero) = fa(1:s%n_aero)
+      if (present(fiso_ocn)) fiso_ocn(1:s%n_iso) = fi(1:s%n_iso)
+    end associate
+  end subroutine pressridge_icepack_step_ridge
+
+  !> Icepack's icepack_ice_strength: the strength (N/m) of one cell by pressridge, with
+  !> Icepack's kstrength, krdg_partic, krdg_redist, mu_rdg, Cf, Pstar, Cstar and densities.
+  subroutine pressridge_icepack_ice_strength(aice, vice, aice0, aicen, vicen, strength)
+    real(c_double), intent(in) :: aice, vice, aice0
+    real(c_double), intent(in), contiguous :: aicen(:), vicen(:)
+    real(c_double), intent(inout) :: strength
+    integer :: e, kstrength, kp, kr
+    real(c_double) :: mu_rdg, Cf, Pstar, Cstar, rhoi, rhow, gravit
+    call icepack_query_parameters(kstrength_out=kstrength, krdg_partic_out=kp, &
+         krdg_redist_out=kr, mu_rdg_out=mu_rdg, Cf_out=Cf, Pstar_out=Pstar, Cstar_out=Cstar, &
+         rhoi_out=rhoi, rhow_out=rhow, gravit_out=gravit)
+    call pressridge_init_parameters(kstrength=kstrength, krdg_partic=kp, krdg_redist=kr, &
+         mu_rdg=mu_rdg, Cf=Cf, Pstar=Pstar, Cstar=Cstar, rhoi=rhoi, rhow=rhow, gravit=gravit)
+    call pressridge_ice_strength(aice, vice, aice0, aicen, vicen, strength, e)
+    if (e /= PRESSRIDGE_OK) call abort_with('(pressridge_icepack_ice_strength) '// &
+         trim(pressridge_last_error_message()))
+  end subroutine pressridge_icepack_ice_strength
+
+  !> The set-up for Icepack's present sizes, flags and parameters (made on first use), its
+  !> index in `setups`; 0 after reporting an error to Icepack.
+  integer function setup_for(ncat, ntrcr, clean, rebin, trcr_depend, trcr_base, &
+       n_trcr_strata, nt_strata) result(k)
+    integer, intent(in) :: ncat, ntrcr
+    logical, intent(in) :: clean, rebin
+    integer, intent(in) :: trcr_depend(:), n_trcr_strata(:), nt_strata(:, :)
+    real(c_double), intent(in) :: trcr_base(:, :)
+    type(setup) :: want
+    logical :: iage, fy, lvl, pond_lvl, snow, pond_topo, pond_sealvl, brine, fsd, iso, aero
+    integer :: nilyr, nslyr, nblyr, n_aero, n_iso, nbtrcr, nfsd, kp, kr
+    real(c_double) :: mu_rdg, rhos, rhoi, lfresh, cp_ice, sal, amin, mmin, hsmin
+    character(len=32) :: saltflux
+    character(len=*), parameter :: subname = '(pressridge_icepack_step_ridge)'
+    k = 0
+    call icepack_query_tracer_sizes(nilyr_out=nilyr, nslyr_out=nslyr, nblyr_out=nblyr, &
+         n_aero_out=n_aero, n_iso_out=n_iso, nbtrcr_out=nbtrcr, nfsd_out=nfsd)
+    call icepack_query_tracer_flags(tr_iage_out=iage, tr_FY_out=fy, tr_lvl_out=lvl, &
+         tr_pond_lvl_out=pond_lvl, tr_pond_topo_out=pond_topo, &
+         tr_pond_sealvl_out=pond_sealvl, tr_snow_out=snow, tr_brine_out=brine, &
+         tr_fsd_out=fsd, tr_iso_out=iso, tr_aero_out=aero)
+    call icepack_query_parameters(krdg_partic_out=kp, krdg_redist_out=kr, mu_rdg_out=mu_rdg)
+    if (pond_topo .or. pond_sealvl .or. brine .or. fsd .or. nbtrcr > 0) then
+       call abort_with(subname//' pressridge does not carry yet: '// &
+            trim(merge('tr_pond_topo   ', '               ', pond_topo))// &
+            trim(merge(' tr_pond_sealvl', '               ', pond_sealvl))// &
+            trim(merge(' tr_brine      ', '               ', brine))// &
+            trim(merge(' tr_fsd        ', '               ', fsd))// &
+            trim(merge(' nbtrcr > 0    ', '               ', nbtrcr > 0)))
+       return
+    end if
+    if (.not. iso) n_iso = 0
+    if (.not. aero) n_aero = 0
+    want%ncat = ncat
+    want%ntrcr = ntrcr
+    want%nilyr = nilyr
+    want%nslyr = nslyr
+    want%n_aero = n_aero
+    want%n_iso = n_iso
+    want%kp = kp
+    want%kr = kr
+    want%mu_rdg = mu_rdg
+    want%flags = [iage, fy, lvl, pond_lvl, snow]
+    want%cleanup = clean
+    want%rebin = rebin
+    call icepack_query_parameters(rhos_out=rhos, rhoi_out=rhoi, Lfresh_out=lfresh, &
+         cp_ice_out=cp_ice, ice_ref_salinity_out=sal, itd_area_min_out=amin, &
+         itd_mass_min_out=mmin, hs_min_out=hsmin, saltflux_option_out=saltflux)
+    call pressridge_default_step_params(want%step)
+    want%step%rhos = rhos
+    want%step%lfresh = lfresh
+    want%step%cp_ice = cp_ice
+    want%step%ice_ref_salinity = sal
+    want%step%itd_area_min = amin
+    want%step%itd_mass_min = mmin
+    want%step%hs_min = hsmin
+    want%step%salt_flux_prognostic = merge(1, 0, trim(saltflux) == 'prognostic')
+    do k = 1, nsetups
+       if (same(setups(k), want)) return
+    end do
+    !$omp critical (pressridge_icepack_setup)
+    do k = 1, nsetups
+       if (same(setups(k), want)) exit
+    end do
+    if (k > nsetups) k = make(want, rhoi, trcr_depend, trcr_base, n_trcr_strata, nt_strata)
+    !$omp end critical (pressridge_icepack_setup)
+  end function setup_for
+
+  !> Makes a set-up (the caller holds the critical section); its index, or 0 after an error.
+  integer function make(want, rhoi, trcr_depend, trcr_base, n_trcr_strata, nt_strata) &
+       result(k)
+    type(setup), intent(in) :: want
+    real(c_double), intent(in) :: rhoi
+    integer, intent(in) :: trcr_depend(:), n_trcr_strata(:), nt_strata(:, :)
+    real(c_double), intent(in) :: trcr_base(:, :)
+    type(setup) :: s
+    type(pressridge_options) :: o
+    integer :: e, nt, it, j
+    integer(c_int32_t), allocatable :: dep(:), nst(:), str(:, :)
+    real(c_double), allocatable :: base(:, :)
+    character(len=200) :: msg
+    character(len=*), parameter :: subname = '(pressridge_icepack_step_ridge)'
+    k = 0
+    if (nsetups == max_setups) then
+       call abort_with(subname//' more than 16 different ridging set-ups in one run')
+       return
+    end if
+    s = want
+    call pressridge_get_parameters(o)
+    o%participation = want%kp
+    o%redistribution = want%kr
+    o%params%mu_rdg = want%mu_rdg
+    o%params%rhoi = rhoi
+    allocate(dep(want%ntrcr), nst(want%ntrcr), str(want%ntrcr, 2), base(want%ntrcr, 3))
+    call pressridge_ridger_init(s%ridger, want%ncat, want%nilyr, want%nslyr, want%flags(1), &
+         want%flags(2), want%flags(3), want%flags(4), options=o, docleanup=want%cleanup, &
+         dorebin=want%rebin, ntrcr=nt, trcr_depend=dep, trcr_base=base, n_trcr_strata=nst, &
+         nt_strata=str, step_params=want%step, tr_snow=want%flags(5), n_iso=want%n_iso, &
+         n_aero=want%n_aero, ierr=e)
+    if (e /= PRESSRIDGE_OK) then
+       call abort_with(subname//' '//trim(pressridge_last_error_message()))
+       return
+    end if
+    if (nt /= want%ntrcr .or. size(trcr_depend) < nt .or. size(n_trcr_strata) < nt .or. &
+         size(trcr_base, 1) < nt .or. size(nt_strata, 1) < nt) then
+       write (msg, '(a, i0, a, i0, a)') ' Icepack''s tracer flags give ', nt, &
+            ' tracers in pressridge''s layout, trcrn has ', want%ntrcr, &
+            ' (or a tracer table is shorter)'
+       call abort_with(subname//trim(msg))
+       call pressridge_ridger_free(s%ridger)
+       return
+    end if
+    do it = 1, nt
+       if (trcr_depend(it) /= dep(it) .or. n_trcr_strata(it) /= nst(it) .or. &
+            any(trcr_base(it, 1:3) /= base(it, :)) .or. &
+            any([(nt_strata(it, j) /= str(it, j), j = 1, nst(it))])) then
+          write (msg, '(a, i0, a, i0, a, i0, a)') ' tracer ', it, ': the host''s trcr_depend ', &
+               trcr_depend(it), ', pressridge''s layout ', dep(it), &
+               ' (or trcr_base / the strata differ): the host orders its tracers otherwise'
+          call abort_with(subname//trim(msg))
+          call pressridge_ridger_free(s%ridger)
+          return
+       end if
+    end do
+    nsetups = nsetups + 1
+    setups(nsetups) = s
+    k = nsetups
+  end function make
+
+  logical function same(a, b)
+    type(setup), intent(in) :: a, b
+    same = a%ncat == b%ncat .and. a%ntrcr == b%ntrcr .and. a%nilyr == b%nilyr .and. &
+         a%nslyr == b%nslyr .and. a%n_aero == b%n_aero .and. a%n_iso == b%n_iso .and. &
+         a%kp == b%kp .and. a%kr == b%kr .and. a%mu_rdg == b%mu_rdg .and. &
+         all(a%flags .eqv. b%flags) .and. (a%cleanup .eqv. b%cleanup) .and. &
+         (a%rebin .eqv. b%rebin) .and. a%step%rhos == b%step%rhos .and. &
+         a%step%lfresh == b%step%lfresh .and. a%step%cp_ice == b%step%cp_ice .and. &
+         a%step%ice_ref_salinity == b%step%ice_ref_salinity .and. &
+         a%step%itd_area_min == b%step%itd_area_min .and. &
+         a%step%itd_mass_min == b%step%itd_mass_min .and. a%step%hs_min == b%step%hs_min .and. &
+         a%step%salt_flux_prognostic == b%step%salt_flux_prognostic
+  end function same
+
+  !> Reports an error as Icepack reports its own.
+  subroutine abort_with(msg)
+    character(len=*), intent(in) :: msg
+    call icepack_warnings_add(msg)
+    call icepack_warnings_setabort(.true., __FILE__, __LINE__)
+  end subroutine abort_with
+
+end module pressridge_icepack
