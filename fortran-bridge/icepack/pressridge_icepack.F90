@@ -103,14 +103,20 @@ contains
     real(c_double), intent(in) :: aice, vice, aice0
     real(c_double), intent(in), contiguous :: aicen(:), vicen(:)
     real(c_double), intent(inout) :: strength
+    type(pressridge_options) :: o
     integer :: e, kstrength, kp, kr
-    real(c_double) :: mu_rdg, Cf, Pstar, Cstar, rhoi, rhow, gravit
+    ! Local options (OpenMP threads may call at once): pressridge's defaults with Icepack's
+    ! present values.
+    call pressridge_get_parameters(o)
     call icepack_query_parameters(kstrength_out=kstrength, krdg_partic_out=kp, &
-         krdg_redist_out=kr, mu_rdg_out=mu_rdg, Cf_out=Cf, Pstar_out=Pstar, Cstar_out=Cstar, &
-         rhoi_out=rhoi, rhow_out=rhow, gravit_out=gravit)
-    call pressridge_init_parameters(kstrength=kstrength, krdg_partic=kp, krdg_redist=kr, &
-         mu_rdg=mu_rdg, Cf=Cf, Pstar=Pstar, Cstar=Cstar, rhoi=rhoi, rhow=rhow, gravit=gravit)
-    call pressridge_ice_strength(aice, vice, aice0, aicen, vicen, strength, e)
+         krdg_redist_out=kr, mu_rdg_out=o%params%mu_rdg, Cf_out=o%cf, Pstar_out=o%params%pstar, &
+         Cstar_out=o%params%cstar, rhoi_out=o%params%rhoi, rhow_out=o%params%rhow, &
+         gravit_out=o%params%gravit)
+    o%strength_law = kstrength
+    o%participation = kp
+    o%redistribution = kr
+    o%cf_source = PRESSRIDGE_CF_SOURCE_CONSTANT
+    call pressridge_ice_strength(aice, vice, aice0, aicen, vicen, strength, e, o)
     if (e /= PRESSRIDGE_OK) call abort_with('(pressridge_icepack_ice_strength) '// &
          trim(pressridge_last_error_message()))
   end subroutine pressridge_icepack_ice_strength

@@ -25,17 +25,18 @@ module pressridge_strength_mod
 contains
 
   !> Icepack-compatible: the same arguments as icepack_ice_strength (aice, vice, aice0, aicen,
-  !> vicen, strength), so a host swaps one call. Options from pressridge_init_parameters
-  !> (CICE's defaults otherwise). strength (N/m) is overwritten, not accumulated (CICE sets it
+  !> vicen, strength), so a host swaps one call. Options: `options`, else those of
+  !> pressridge_init_parameters (CICE's defaults otherwise). strength (N/m) is overwritten, not accumulated (CICE sets it
   !> to 0 before its call). aice and vice are accepted for compatibility; the library uses
   !> sum(aicen) and sum(vicen). Errors (NaN, negative, |aice0 + sum(aicen) - 1| > 1e-6) come
   !> back in ierr, or stop the program when ierr is absent.
-  subroutine pressridge_ice_strength(aice, vice, aice0, aicen, vicen, strength, ierr)
+  subroutine pressridge_ice_strength(aice, vice, aice0, aicen, vicen, strength, ierr, options)
     real(c_double), intent(in) :: aice, vice
     real(c_double), intent(in), target :: aice0
     real(c_double), intent(in), contiguous, target :: aicen(:), vicen(:)
     real(c_double), intent(inout), target :: strength
     integer, intent(out), optional :: ierr
+    type(pressridge_options), intent(in), optional, target :: options
     integer(c_int32_t) :: rc
     if (size(vicen) /= size(aicen)) then
        call fail(PRESSRIDGE_ERR_BAD_SIZE, 'vicen and aicen differ in size', &
@@ -48,7 +49,7 @@ contains
        return
     end if
     rc = c_strength_cell(size(aicen, kind=c_int64_t), c_loc(aicen), c_loc(vicen), aice0, &
-         options_ptr(), c_loc(strength))
+         options_ptr(options), c_loc(strength))
     call finish(rc, 'pressridge_ice_strength', ierr)
   end subroutine pressridge_ice_strength
 

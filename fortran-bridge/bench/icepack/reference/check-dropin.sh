@@ -5,8 +5,10 @@
 #   fortran-bridge/bench/icepack/reference/check-dropin.sh /path/to/Icepack
 #
 # Builds the reference driver ridge_reference.f90 twice: as it is (Icepack's
-# icepack_step_ridge) and with its `use icepack_intfc` line for icepack_step_ridge replaced by
-#   use pressridge_icepack, only: icepack_step_ridge => pressridge_icepack_step_ridge
+# icepack_step_ridge and icepack_ice_strength) and with its `use icepack_intfc` line for them
+# replaced by
+#   use pressridge_icepack, only: icepack_step_ridge => pressridge_icepack_step_ridge, &
+#        icepack_ice_strength => pressridge_icepack_ice_strength
 # (the one line a host changes), then runs the snow, isotope and aerosol cases
 # (make_reference.py) through both and compares every output. Prints a line per case and
 # `drop-in: N of N cases bit-identical` last (the typical and hard cases; the stress cases,
@@ -33,7 +35,7 @@ LIB=$ROOT/target/release
 make -s -C "$ROOT/fortran-bridge" module BUILD="$BUILD" FC="$FC" FFLAGS="-O2"
 $FC $FFLAGS -c "$ROOT/fortran-bridge/icepack/pressridge_icepack.F90" -o dropin_module.o
 # The swap: one line of the driver.
-sed 's/^  use icepack_intfc, only: icepack_step_ridge, /  use pressridge_icepack, only: icepack_step_ridge => pressridge_icepack_step_ridge\n  use icepack_intfc, only: /' \
+sed 's/^  use icepack_intfc, only: icepack_step_ridge, icepack_ice_strength, /  use pressridge_icepack, only: icepack_step_ridge => pressridge_icepack_step_ridge, icepack_ice_strength => pressridge_icepack_ice_strength\n  use icepack_intfc, only: /' \
   "$HERE/ridge_reference.f90" > ridge_dropin.f90
 diff "$HERE/ridge_reference.f90" ridge_dropin.f90 | grep '^[<>]' | sed 's/^/  swapped: /' || true
 $FC $FFLAGS -c ridge_dropin.f90 -o ridge_dropin.o

@@ -165,7 +165,7 @@ def main():
                         "vraftn", "faero_ocn", "fiso_ocn"):
                 o[key] = [num(x) for x in p[key]]
             for key in ("aice0", "aice", "opening", "dardg1dt", "dardg2dt", "dvirdgdt", "fresh",
-                        "fsalt", "fhocn", "fpond", "dpnd_ridge"):
+                        "fsalt", "fhocn", "fpond", "dpnd_ridge", "strength"):
                 o[key] = num(p[key][0])
             o["closing"] = num(p["closing"][0]) if c["inputs"]["closing_in"] is not None else None
             t = p["trcrn"]

@@ -11,9 +11,10 @@
 !>   ncase, then per case: ncat ndtd krdg_partic krdg_redist has_closing docleanup dorebin;
 !>   dt rdg_conv rdg_shear mu_rdg Tf aice0 aice closing opening; hin_max(0:ncat); aicen;
 !>   vicen; vsnon; trcrn(ntrcr, ncat) in Fortran order; first_ice (0/1).
-!> Output: per case a line `case K`, then `name v1 v2 ...` lines; warnings on unit 7.
+!> Output: per case a line `case K`, then `name v1 v2 ...` lines (with icepack_ice_strength
+!> of the new state, N/m, 0 where the step aborted); warnings on unit 7.
 program ridge_reference
-  use icepack_intfc, only: icepack_step_ridge, icepack_init_tracer_sizes, &
+  use icepack_intfc, only: icepack_step_ridge, icepack_ice_strength, icepack_init_tracer_sizes, &
        icepack_init_tracer_flags, icepack_init_tracer_indices, icepack_init_parameters, &
        icepack_warnings_flush, icepack_warnings_aborted, icepack_warnings_clear
   implicit none
@@ -26,7 +27,7 @@ program ridge_reference
        dardg2ndt(:), dvirdgndt(:), araftn(:), vraftn(:)
   logical, allocatable :: first_ice(:)
   real(dp) :: dt, conv, shear, mu_rdg, tf, aice0, aice, closing, opening
-  real(dp) :: d1, d2, d3, fpond, fresh, fhocn, fsalt, dpnd, faero(6), fiso(3), fbio(1)
+  real(dp) :: d1, d2, d3, fpond, fresh, fhocn, fsalt, dpnd, faero(6), fiso(3), fbio(1), str
 
   read (*, *) nilyr, nslyr, ntrcr, n_aero, n_iso
   read (*, *) nt
@@ -88,6 +89,10 @@ program ridge_reference
              vraftn=vraftn, aice=aice, fsalt=fsalt, first_ice=first_ice, flux_bio=fbio, &
              Tf=tf, dpnd_ridge=dpnd, docleanup=docl == 1, dorebin=dore == 1)
      end if
+     ! The strength of the new state (Icepack's kstrength, Rothrock by default).
+     str = 0
+     if (.not. icepack_warnings_aborted()) call icepack_ice_strength(aice=aice, &
+          vice=sum(v), aice0=aice0, aicen=a, vicen=v, strength=str)
      write (*, '(a, i0)') 'case ', k
      write (*, '(a, l1)') 'aborted ', icepack_warnings_aborted()
      call put('hin_max', hin)
@@ -116,6 +121,7 @@ program ridge_reference
      call put('fhocn', [fhocn])
      call put('fpond', [fpond])
      call put('dpnd_ridge', [dpnd])
+     call put('strength', [str])
      call put('faero_ocn', faero(1:n_aero))
      call put('fiso_ocn', fiso(1:n_iso))
      write (*, '(a, *(1x, i0))') 'first_ice', (merge(1, 0, first_ice(n)), n = 1, ncat)
