@@ -15,6 +15,7 @@
 !> Icepack reports its own: icepack_warnings_add and icepack_warnings_setabort.
 module pressridge_icepack
   use, intrinsic :: iso_c_binding, only: c_double, c_int32_t
+  use, intrinsic :: iso_fortran_env, only: int64
   use pressridge
   use icepack_intfc, only: icepack_query_tracer_flags, icepack_query_tracer_sizes, &
        icepack_query_parameters
@@ -235,7 +236,7 @@ contains
     end if
     do it = 1, nt
        if (trcr_depend(it) /= dep(it) .or. n_trcr_strata(it) /= nst(it) .or. &
-            any(trcr_base(it, 1:3) /= base(it, :)) .or. &
+            any(bits(trcr_base(it, 1:3)) /= bits(base(it, :))) .or. &
             any([(nt_strata(it, j) /= str(it, j), j = 1, nst(it))])) then
           write (msg, '(a, i0, a, i0, a, i0, a)') ' tracer ', it, ': the host''s trcr_depend ', &
                trcr_depend(it), ', pressridge''s layout ', dep(it), &
@@ -250,19 +251,24 @@ contains
     k = nsetups
   end function make
 
+  !> Whether two set-ups are for the same values (reals compared bit for bit).
   logical function same(a, b)
     type(setup), intent(in) :: a, b
     same = a%ncat == b%ncat .and. a%ntrcr == b%ntrcr .and. a%nilyr == b%nilyr .and. &
          a%nslyr == b%nslyr .and. a%n_aero == b%n_aero .and. a%n_iso == b%n_iso .and. &
-         a%kp == b%kp .and. a%kr == b%kr .and. a%mu_rdg == b%mu_rdg .and. &
-         all(a%flags .eqv. b%flags) .and. (a%cleanup .eqv. b%cleanup) .and. &
-         (a%rebin .eqv. b%rebin) .and. a%step%rhos == b%step%rhos .and. &
-         a%step%lfresh == b%step%lfresh .and. a%step%cp_ice == b%step%cp_ice .and. &
-         a%step%ice_ref_salinity == b%step%ice_ref_salinity .and. &
-         a%step%itd_area_min == b%step%itd_area_min .and. &
-         a%step%itd_mass_min == b%step%itd_mass_min .and. a%step%hs_min == b%step%hs_min .and. &
-         a%step%salt_flux_prognostic == b%step%salt_flux_prognostic
+         a%kp == b%kp .and. a%kr == b%kr .and. all(a%flags .eqv. b%flags) .and. &
+         (a%cleanup .eqv. b%cleanup) .and. (a%rebin .eqv. b%rebin) .and. &
+         a%step%salt_flux_prognostic == b%step%salt_flux_prognostic .and. &
+         all(bits([a%mu_rdg, a%step%rhos, a%step%lfresh, a%step%cp_ice, &
+         a%step%ice_ref_salinity, a%step%itd_area_min, a%step%itd_mass_min, a%step%hs_min]) == &
+         bits([b%mu_rdg, b%step%rhos, b%step%lfresh, b%step%cp_ice, &
+         b%step%ice_ref_salinity, b%step%itd_area_min, b%step%itd_mass_min, b%step%hs_min]))
   end function same
+
+  elemental integer(int64) function bits(x)
+    real(c_double), intent(in) :: x
+    bits = transfer(x, 0_int64)
+  end function bits
 
   !> Reports an error as Icepack reports its own.
   subroutine abort_with(msg)

@@ -1,0 +1,157 @@
+!> The Icepack drop-in (icepack/pressridge_icepack.F90) built against the stand-in of
+!> Icepack's interface (icepack_stub.F90), without Icepack: with Icepack's argument lists it
+!> gives pressridge_step_ridge's and pressridge_ice_strength's answers bit for bit, follows
+!> Icepack's parameters from call to call, and reports what it refuses through Icepack's
+!> warnings. (The drop-in against Icepack itself: bench/icepack/reference/check-dropin.sh.)
+program test_dropin
+  use, intrinsic :: iso_c_binding, only: c_double
+  use pressridge
+  use pressridge_icepack, only: icepack_step_ridge => pressridge_icepack_step_ridge, &
+       icepack_ice_strength => pressridge_icepack_ice_strength
+  use icepack_intfc, only: stub_flags, stub_sizes, stub_krdg_redist, stub_mu_rdg
+  use icepack_warnings, only: stub_aborted, stub_message
+  implicit none
+  integer, parameter :: nc = 5
+  integer :: failures = 0, nt, i, k, e, pass
+  type(pressridge_ridger) :: rg
+  integer :: dep(64), nst(64), str(64, 2)
+  real(c_double) :: base(64, 3), hb(0:nc), h1(0:nc), h2(0:nc)
+  real(c_double), allocatable :: t1(:, :), t2(:, :)
+  real(c_double) :: a1(nc), v1(nc), s1(nc), a2(nc), v2(nc), s2(nc), x0(nc), a01, a02, ai1, &
+       ai2, fa1(2), fa2(2), fi1(1), fi2(1), fb(1), d(3, 2), op(2), fp(2), fr(2), fh(2), fs(2), &
+       p1, p2, cat(nc, 9, 2), conv, shear
+  logical :: first1(nc), first2(nc)
+
+  ! Icepack's layout: the CICE tracers, snow tracers, one isotope, two aerosol species.
+  stub_flags = [.true., .true., .true., .true., .false., .false., .true., .false., .false., &
+       .true., .true.]
+  stub_sizes(4:5) = [2, 1]
+  call pressridge_ridger_init(rg, nc, 7, 1, .true., .true., .true., .true., ntrcr=nt, &
+       trcr_depend=dep, trcr_base=base, n_trcr_strata=nst, nt_strata=str, tr_snow=.true., &
+       n_iso=1, n_aero=2, ierr=e)
+  call check('explicit ridger: 37 tracers', e == PRESSRIDGE_OK .and. nt == 37)
+  allocate(t1(nt, nc), t2(nt, nc))
+  conv = 2.0e-6_c_double
+  shear = 1.0e-6_c_double
+  hb = [0.0_c_double, 0.6_c_double, 1.4_c_double, 2.4_c_double, 3.6_c_double, 5.0_c_double]
+  do k = 1, nc
+     a1(k) = 0.18_c_double
+     v1(k) = a1(k) * (0.3_c_double + 0.9_c_double * (k - 1))
+     s1(k) = 0.1_c_double * v1(k)
+     t1(1:23, k) = [-15.0_c_double, (-3.0e8_c_double - 1.0e6_c_double * i, i = 1, 7), &
+          -1.15e8_c_double, (4.0_c_double + 0.2_c_double * i, i = 1, 7), 2.0e7_c_double, &
+          0.4_c_double, 0.8_c_double, 0.8_c_double, 0.2_c_double, 0.1_c_double, 0.01_c_double]
+     t1(24:, k) = [(1.0e-3_c_double * (i + k), i = 24, nt)]
+  end do
+  do pass = 1, 2
+     ! pass 2: Icepack's parameters changed between calls (uniform redistribution, mu_rdg).
+     if (pass == 2) then
+        stub_krdg_redist = 0
+        stub_mu_rdg = 4.0_c_double
+        call pressridge_ridger_free(rg)
+        call pressridge_init_parameters(krdg_redist=0, mu_rdg=4.0_c_double)
+        call pressridge_ridger_init(rg, nc, 7, 1, .true., .true., .true., .true., &
+             tr_snow=.true., n_iso=1, n_aero=2, ierr=e)
+        call pressridge_init_parameters(krdg_redist=1, mu_rdg=3.0_c_double)
+     end if
+     a2 = a1
+     v2 = v1
+     s2 = s1
+     t2 = t1
+     a01 = 1 - sum(a1)
+     a02 = a01
+     ai1 = sum(a1)
+     ai2 = ai1
+     h1 = hb
+     h2 = hb
+     fa1 = 0
+     fa2 = 0
+     fi1 = 0
+     fi2 = 0
+     d = 0
+     op = 0
+     fp = 0
+     fr = 0
+     fh = 0
+     fs = 0
+     first1 = .false.
+     first2 = .false.
+     cat = 0
+     x0 = 0
+     call pressridge_step_ridge(rg, 3600.0_c_double, 1, h1, 2.0e-6_c_double, 1.0e-6_c_double, &
+          a1, t1, v1, s1, a01, d(1, 1), d(2, 1), d(3, 1), op(1), fp(1), fr(1), fh(1), &
+          cat(:, 1, 1), cat(:, 2, 1), cat(:, 3, 1), cat(:, 4, 1), cat(:, 5, 1), cat(:, 6, 1), &
+          cat(:, 7, 1), cat(:, 8, 1), cat(:, 9, 1), ai1, fs(1), first1, Tf=-1.8_c_double, &
+          faero_ocn=fa1, fiso_ocn=fi1, ierr=e)
+     call check('explicit call steps the cell', e == PRESSRIDGE_OK)
+     call icepack_step_ridge(dt=3600.0_c_double, ndtd=1, hin_max=h2, rdg_conv=conv, &
+          rdg_shear=shear, aicen=a2, trcrn=t2, vicen=v2, vsnon=s2, aice0=a02, &
+          trcr_depend=dep(1:nt), trcr_base=base(1:nt, :), n_trcr_strata=nst(1:nt), &
+          nt_strata=str(1:nt, :), dardg1dt=d(1, 2), dardg2dt=d(2, 2), dvirdgdt=d(3, 2), &
+          opening=op(2), fpond=fp(2), fresh=fr(2), fhocn=fh(2), faero_ocn=fa2, fiso_ocn=fi2, &
+          aparticn=cat(:, 1, 2), krdgn=cat(:, 2, 2), aredistn=cat(:, 3, 2), &
+          vredistn=cat(:, 4, 2), dardg1ndt=cat(:, 5, 2), dardg2ndt=cat(:, 6, 2), &
+          dvirdgndt=cat(:, 7, 2), araftn=cat(:, 8, 2), vraftn=cat(:, 9, 2), aice=ai2, &
+          fsalt=fs(2), first_ice=first2, flux_bio=fb, Tf=-1.8_c_double)
+     call check('drop-in with Icepack''s arguments = explicit call, bit for bit', &
+          .not. stub_aborted .and. all(a1 == a2) .and. all(v1 == v2) .and. all(s1 == s2) .and. &
+          all(t1 == t2) .and. a01 == a02 .and. ai1 == ai2 .and. all(h1 == h2) .and. &
+          all(d(:, 1) == d(:, 2)) .and. op(1) == op(2) .and. fr(1) == fr(2) .and. &
+          fh(1) == fh(2) .and. fs(1) == fs(2) .and. fp(1) == fp(2) .and. all(fa1 == fa2) .and. &
+          all(fi1 == fi2) .and. all(cat(:, :, 1) == cat(:, :, 2)) .and. &
+          (first1(1) .eqv. first2(1)) .and. all(fa1 > 0) .and. fi1(1) > 0)
+  end do
+  call pressridge_ridger_free(rg)
+  stub_krdg_redist = 1
+  stub_mu_rdg = 3.0_c_double
+  ! The strength, Icepack-style, with Icepack's (stub) parameters.
+  call pressridge_ice_strength(sum(a1), sum(v1), a01, a1, v1, p1, e)
+  p2 = 0
+  call icepack_ice_strength(sum(a1), sum(v1), a01, a1, v1, p2)
+  call check('strength drop-in = pressridge_ice_strength (CICE defaults)', &
+       e == PRESSRIDGE_OK .and. p1 == p2 .and. p1 > 0 .and. .not. stub_aborted)
+  ! What it refuses, through Icepack's warnings.
+  stub_flags(8) = .true.
+  call icepack_step_ridge(dt=3600.0_c_double, ndtd=1, hin_max=h2, rdg_conv=conv, &
+       rdg_shear=shear, aicen=a2, trcrn=t2, vicen=v2, vsnon=s2, aice0=a02, &
+       trcr_depend=dep(1:nt), trcr_base=base(1:nt, :), n_trcr_strata=nst(1:nt), &
+       nt_strata=str(1:nt, :), dardg1dt=d(1, 2), dardg2dt=d(2, 2), dvirdgdt=d(3, 2), &
+       opening=op(2), fpond=fp(2), fresh=fr(2), fhocn=fh(2), faero_ocn=fa2, &
+       aparticn=x0, krdgn=x0, aredistn=x0, vredistn=x0, dardg1ndt=x0, dardg2ndt=x0, &
+       dvirdgndt=x0, araftn=x0, vraftn=x0, aice=ai2, fsalt=fs(2), first_ice=first2, &
+       flux_bio=fb, Tf=-1.8_c_double)
+  call check('tr_brine: an abort through Icepack''s warnings naming it', &
+       stub_aborted .and. index(stub_message, 'tr_brine') > 0)
+  stub_flags(8) = .false.
+  stub_aborted = .false.
+  dep(24) = 1
+  call icepack_step_ridge(dt=3600.0_c_double, ndtd=1, hin_max=h2, rdg_conv=conv, &
+       rdg_shear=shear, aicen=a2, trcrn=t2, vicen=v2, vsnon=s2, aice0=a02, &
+       trcr_depend=dep(1:nt), trcr_base=base(1:nt, :), n_trcr_strata=nst(1:nt), &
+       nt_strata=str(1:nt, :), dardg1dt=d(1, 2), dardg2dt=d(2, 2), dvirdgdt=d(3, 2), &
+       opening=op(2), fpond=fp(2), fresh=fr(2), fhocn=fh(2), faero_ocn=fa2, &
+       aparticn=x0, krdgn=x0, aredistn=x0, vredistn=x0, dardg1ndt=x0, dardg2ndt=x0, &
+       dvirdgndt=x0, araftn=x0, vraftn=x0, aice=ai2, fsalt=fs(2), first_ice=first2, &
+       flux_bio=fb, Tf=-1.8_c_double, docleanup=.false.)
+  call check('a host tracer table that differs: an abort naming the tracer', &
+       stub_aborted .and. index(stub_message, 'tracer 24') > 0)
+  if (failures > 0) then
+     print '(i0, a)', failures, ' drop-in checks failed'
+     error stop 1
+  end if
+  print '(a)', 'drop-in (Icepack stand-in): all checks passed'
+
+contains
+
+  subroutine check(what, ok)
+    character(len=*), intent(in) :: what
+    logical, intent(in) :: ok
+    if (ok) then
+       print '(a, a)', 'ok     ', what
+    else
+       print '(a, a)', 'FAIL   ', what
+       failures = failures + 1
+    end if
+  end subroutine check
+
+end program test_dropin
