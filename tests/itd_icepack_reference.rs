@@ -233,6 +233,26 @@ fn tracer_defined(
         })
 }
 
+/// Whether tracer `it` of category `n` is a volume tracer with no base volume in the
+/// state: there Icepack writes a definite value (0, or its refill: `fbri` = 1, the snow
+/// tracers with `snwredist`, `snwgrain`).
+fn base_is_zero(
+    layout: &TracerLayout,
+    it: usize,
+    n: usize,
+    aicen: &[f64],
+    vicen: &[f64],
+    vsnon: &[f64],
+) -> bool {
+    let (field, _) = layout.field_of(it).unwrap();
+    let _ = aicen;
+    match field.base {
+        TracerBase::Area => false,
+        TracerBase::IceVolume => vicen[n] == 0.0,
+        TracerBase::SnowVolume => vsnon[n] == 0.0,
+    }
+}
+
 fn check_typical(c: &Case, layout: &TracerLayout, puny: f64, cmp: &mut Cmp) {
     let o = &c.out;
     let r = run(c, layout);
@@ -324,7 +344,9 @@ fn check_typical(c: &Case, layout: &TracerLayout, puny: f64, cmp: &mut Cmp) {
     let nt = layout.ntrcr();
     for n in 0..c.ncat {
         for it in 0..nt {
-            if tracer_defined(layout, it, n, &ea, &ev, &es, &want, puny) {
+            if tracer_defined(layout, it, n, &ea, &ev, &es, &want, puny)
+                || base_is_zero(layout, it, n, &ea, &ev, &es)
+            {
                 cmp.close(
                     &format!("trcrn[cat {n}, tracer {it}]"),
                     r.col.trcrn[n * nt + it],
@@ -454,6 +476,13 @@ fn icepack_reference_every_case() {
 #[test]
 fn icepack_reference_with_snow_isotope_and_aerosol_tracers() {
     every_case(common::icepack::TRACERS_FILE);
+}
+
+/// Topography ponds (pond water of zapped ice in `fpond`), the snow tracers refilled where
+/// there is no snow (`snwredist = 'ITD'`, `snwgrain`), floe size and the brine fraction.
+#[test]
+fn icepack_reference_with_topography_ponds_snow_refills_floe_size_and_brine() {
+    every_case(common::icepack::TOPO_FILE);
 }
 
 fn every_case(file: &str) {

@@ -46,7 +46,21 @@ fn flags_of(l: &TracerLayout) -> CiceTracerFlags {
         age: has(TracerRole::Age),
         first_year: has(TracerRole::FirstYear),
         level_ice: has(TracerRole::LevelArea),
-        ponds: has(TracerRole::PondArea),
+        ponds: l
+            .fields()
+            .iter()
+            .any(|f| f.role == TracerRole::PondArea && !f.strata.is_empty()),
+        pond_topo: l
+            .fields()
+            .iter()
+            .any(|f| f.role == TracerRole::PondArea && f.strata.is_empty()),
+        pond_sealvl: false,
+        fsd: l
+            .fields()
+            .iter()
+            .find(|f| f.role == TracerRole::FloeSize)
+            .map_or(0, |f| f.levels),
+        brine: has(TracerRole::BrineFraction),
         snow: ["smice", "smliq", "rhos", "rsnw"]
             .iter()
             .all(|n| l.field(n).is_some()),
@@ -183,6 +197,12 @@ fn field_from_py(i: usize, item: &Bound<'_, PyAny>) -> Result<TracerField, BindE
         levels,
         base,
         strata,
+        // Icepack's: 1 for the brine fraction, else 0 (TracerLayout::with_empty_value).
+        empty: if role == TracerRole::BrineFraction {
+            1.0
+        } else {
+            0.0
+        },
     })
 }
 
@@ -231,6 +251,7 @@ impl PyTracerLayout {
             snow,
             isotopes: isotopes as usize,
             aerosols: aerosols as usize,
+            ..CiceTracerFlags::default()
         };
         let l = TracerLayout::cice(nilyr as usize, nslyr as usize, flags).map_err(value_err)?;
         Ok(Self { inner: Arc::new(l) })

@@ -50,6 +50,17 @@ pub struct CiceTracerFlags {
     /// Number of aerosol species, four tracers each (Icepack's `n_aero`; 0 to [`MAX_AERO`],
     /// 0: `tr_aero` off).
     pub aerosols: usize,
+    /// Topography melt ponds `apnd` (on area), `hpnd`, `ipnd` (on pond area), Icepack's
+    /// `tr_pond_topo`: the pond water of zapped ice is booked in `fpond`. At most one pond
+    /// scheme.
+    pub pond_topo: bool,
+    /// Sea-level melt ponds, carried as the topography ponds (Icepack's `tr_pond_sealvl`).
+    pub pond_sealvl: bool,
+    /// Number of floe-size categories `fsd` (area tracers; Icepack's `nfsd` with `tr_fsd`;
+    /// 0: off).
+    pub fsd: usize,
+    /// Brine height fraction `fbri` (Icepack's `tr_brine`), after the aerosols.
+    pub brine: bool,
 }
 
 impl CiceTracerFlags {
@@ -63,6 +74,10 @@ impl CiceTracerFlags {
         snow: false,
         isotopes: 0,
         aerosols: 0,
+        pond_topo: false,
+        pond_sealvl: false,
+        fsd: 0,
+        brine: false,
     };
 }
 
@@ -109,6 +124,20 @@ pub struct TracerLayout {
     pub(crate) aero: Vec<[usize; 4]>,
     /// Water isotopes: first tracer in snow, first in ice, number of species.
     pub(crate) iso: Option<(usize, usize, usize)>,
+    /// Ponds carried on level ice (`apnd` on `alvl`), as Icepack's `tr_pond_lvl`; else on the
+    /// ice area (topography and sea-level ponds).
+    pub(crate) ponds_on_level_ice: bool,
+    /// Whether the clean-up books the pond water of the ice it zaps in `fpond` (Icepack does
+    /// for `tr_pond_topo` only).
+    pub(crate) zap_pond_water: bool,
+    /// Per tracer: its value where its base volume is zero ([`TracerField::empty`]).
+    pub(crate) empty: Vec<f64>,
+    /// Tracers with a nonzero [`TracerField::empty`].
+    pub(crate) refilled: Vec<usize>,
+    /// Per base (area, ice volume, snow volume): tracers carried on the brine fraction that
+    /// new ridges get with it (Icepack gives ridges the tracers whose strata are `fbri` only).
+    pub(crate) ridge_lists_brine: [Vec<usize>; 3],
+    pub(crate) nt_fbri: Option<usize>,
 }
 
 impl TracerLayout {
@@ -126,6 +155,18 @@ impl TracerLayout {
                 name: "ponds",
                 value: 1.0,
                 reason: "melt ponds are carried on level ice: turn on level_ice too",
+            });
+        }
+        if [flags.ponds, flags.pond_topo, flags.pond_sealvl]
+            .iter()
+            .filter(|x| **x)
+            .count()
+            > 1
+        {
+            return Err(ItdError::Parameter {
+                name: "pond_topo",
+                value: 1.0,
+                reason: "one pond scheme at a time: ponds (level ice), pond_topo or pond_sealvl",
             });
         }
         let mut f = vec![
@@ -161,11 +202,19 @@ impl TracerLayout {
                 &["alvl", "apnd"],
             ));
         }
+        if flags.pond_topo || flags.pond_sealvl {
+            f.push(TracerField::new("apnd", PondArea, 1, Area, &[]));
+            f.push(TracerField::new("hpnd", PondDepth, 1, Area, &["apnd"]));
+            f.push(TracerField::new("ipnd", PondLid, 1, Area, &["apnd"]));
+        }
         if flags.snow {
             for role in [SnowIceMass, SnowLiquidMass, SnowDensity, SnowGrainRadius] {
                 let name = role.icepack().expect("snow tracers have Icepack names").0;
                 f.push(TracerField::new(name, role, nslyr, SnowVolume, &[]));
             }
+        }
+        if flags.fsd > 0 {
+            f.push(TracerField::new("fsd", FloeSize, flags.fsd, Area, &[]));
         }
         if flags.isotopes > MAX_ISO {
             return Err(ItdError::Parameter {
@@ -213,7 +262,35 @@ impl TracerLayout {
                 ));
             }
         }
-        Self::new(f)
+        if flags.brine {
+            f.push(TracerField::new("fbri", BrineFraction, 1, IceVolume, &[]));
+        }
+        let mut l = Self::new(f)?;
+        l.zap_pond_water = flags.pond_topo;
+        Ok(l)
+    }
+
+    /// The layout with `value` as the tracer field `name`'s value where its base volume is
+    /// zero and in emptied categories ([`TracerField::empty`]; units of the tracer): for
+    /// Icepack's `snwredist = 'ITD'`, `rhos` = `rhosnew`; for `snwgrain`, `smice` = `rhos` and
+    /// `rsnw` = `rsnw_fall`. Only for ice- and snow-volume tracers.
+    pub fn with_empty_value(mut self, name: &str, value: f64) -> Result<Self, ItdError> {
+        let i = self
+            .fields
+            .iter()
+            .position(|f| f.name == name)
+            .ok_or_else(|| ItdError::Bounds(format!("tracer layout: no tracer field `{name}`")))?;
+        if self.fields[i].base == TracerBase::Area || !value.is_finite() {
+            return Err(ItdError::Bounds(format!(
+                "tracer layout: `{name}`: an empty value is for finite values of ice- and \
+                 snow-volume tracers"
+            )));
+        }
+        self.fields[i].empty = value;
+        let zap = self.zap_pond_water;
+        let mut l = Self::new(std::mem::take(&mut self.fields))?;
+        l.zap_pond_water = zap;
+        Ok(l)
     }
 
     /// A layout from explicit fields. Rules: exactly one field each of roles `IceEnthalpy`,
@@ -335,16 +412,19 @@ impl TracerLayout {
         let nt_alvl = find(TracerRole::LevelArea).map(|i| starts[i]);
         let nt_apnd = find(TracerRole::PondArea).map(|i| starts[i]);
         let nt_hpnd = find(TracerRole::PondDepth).map(|i| starts[i]);
-        if nt_apnd.is_some() != nt_hpnd.is_some() || (nt_apnd.is_some() && nt_alvl.is_none()) {
-            return Err(bad(
-                "ponds need apnd and hpnd, carried on level ice (alvl)".into()
-            ));
+        if nt_apnd.is_some() != nt_hpnd.is_some() {
+            return Err(bad("ponds need apnd and hpnd".into()));
         }
+        // Level-ice ponds when apnd is carried on a stratum (alvl), else on the area.
+        let on_level = find(TracerRole::PondArea).is_some_and(|i| !fields[i].strata.is_empty());
+        let brine = find(TracerRole::BrineFraction);
         let mut base = Vec::with_capacity(ntrcr);
         let mut nstrata = Vec::with_capacity(ntrcr);
         let mut strata = Vec::with_capacity(ntrcr);
         let mut to_ridges = Vec::with_capacity(ntrcr);
         let mut area_direct = Vec::with_capacity(ntrcr);
+        let mut brine_ridges = Vec::with_capacity(ntrcr);
+        let mut empty = Vec::with_capacity(ntrcr);
         for (i, f) in fields.iter().enumerate() {
             let mut s = [0usize; 2];
             for (k, name) in f.strata.iter().enumerate() {
@@ -362,12 +442,14 @@ impl TracerLayout {
                 }
                 s[k] = starts[j];
             }
-            // Icepack's level-ice ponds: apnd on [alvl], hpnd and ipnd on [alvl, apnd].
-            let expected: &[TracerRole] = match f.role {
-                TracerRole::PondArea => &[TracerRole::LevelArea],
-                TracerRole::PondDepth | TracerRole::PondLid => {
+            // Icepack's ponds: on level ice apnd on [alvl], hpnd and ipnd on [alvl, apnd];
+            // topography and sea-level ponds apnd on the area, hpnd and ipnd on [apnd].
+            let expected: &[TracerRole] = match (f.role, on_level) {
+                (TracerRole::PondArea, true) => &[TracerRole::LevelArea],
+                (TracerRole::PondDepth | TracerRole::PondLid, true) => {
                     &[TracerRole::LevelArea, TracerRole::PondArea]
                 }
+                (TracerRole::PondDepth | TracerRole::PondLid, false) => &[TracerRole::PondArea],
                 _ => &[],
             };
             if !expected.is_empty()
@@ -383,7 +465,17 @@ impl TracerLayout {
             }
             let ridges = !matches!(f.role, TracerRole::LevelArea | TracerRole::LevelVolume)
                 && f.strata.is_empty();
+            let on_brine = !f.strata.is_empty()
+                && f.strata
+                    .iter()
+                    .all(|n| brine.is_some_and(|b| &fields[b].name == n));
             for _ in 0..f.levels {
+                brine_ridges.push(on_brine);
+                empty.push(if f.base == TracerBase::Area {
+                    0.0
+                } else {
+                    f.empty
+                });
                 base.push(f.base);
                 nstrata.push(f.strata.len() as u8);
                 strata.push(s);
@@ -404,6 +496,12 @@ impl TracerLayout {
                 .filter(|&it| to_ridges[it] && base_idx[it] as usize == k)
                 .collect()
         });
+        let ridge_lists_brine = std::array::from_fn(|k| {
+            (0..ntrcr)
+                .filter(|&it| brine_ridges[it] && base_idx[it] as usize == k)
+                .collect()
+        });
+        let refilled = (0..ntrcr).filter(|&it| empty[it] != 0.0).collect();
         Ok(Self {
             base_idx,
             ridge_lists,
@@ -418,6 +516,12 @@ impl TracerLayout {
             nt_hpnd,
             aero,
             iso,
+            ponds_on_level_ice: on_level,
+            zap_pond_water: false,
+            empty,
+            refilled,
+            ridge_lists_brine,
+            nt_fbri: brine.map(|i| starts[i]),
             fields,
             starts,
             ntrcr,
@@ -692,6 +796,12 @@ impl TracerLayout {
                     w = if st > 0.0 { w / st } else { 0.0 };
                 }
                 trc[it] = w;
+            }
+        }
+        // Icepack's refills where the base volume is zero (fbri; the snow tracers).
+        for &it in &self.refilled {
+            if [a, v, s][self.base_idx[it] as usize] <= 0.0 {
+                trc[it] = self.empty[it];
             }
         }
     }

@@ -18,6 +18,12 @@ pub const TRACERS_FILE: &str = concat!(
     "/tests/data/icepack/ridge_step_tracers.jsonl"
 );
 
+/// Topography ponds, the snow tracers with Icepack's refills, floe size and brine (37 tracers).
+pub const TOPO_FILE: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/tests/data/icepack/ridge_step_tracers_topo.jsonl"
+);
+
 /// The first reference file's first line (the parameters) and its cases.
 #[allow(dead_code)]
 pub fn read() -> (Value, Vec<Value>) {
@@ -54,15 +60,15 @@ pub fn nums(v: &Value) -> Vec<f64> {
 /// The CICE tracer layout of the parameters' `nilyr`, `nslyr` and `tracer_flags`.
 pub fn layout(params: &Value) -> TracerLayout {
     let flags = &params["tracer_flags"];
-    let flag = |k: &str| flags[k].as_bool().unwrap();
+    let flag = |k: &str| flags[k].as_bool().unwrap_or(false);
     let count = |on: &str, n: &str| {
         if flag(on) {
-            flags[n].as_u64().unwrap() as usize
+            flags[n].as_u64().unwrap_or(0) as usize
         } else {
             0
         }
     };
-    TracerLayout::cice(
+    let mut layout = TracerLayout::cice(
         params["nilyr"].as_u64().unwrap() as usize,
         params["nslyr"].as_u64().unwrap() as usize,
         CiceTracerFlags {
@@ -73,9 +79,24 @@ pub fn layout(params: &Value) -> TracerLayout {
             snow: flag("tr_snow"),
             isotopes: count("tr_iso", "n_iso"),
             aerosols: count("tr_aero", "n_aero"),
+            pond_topo: flag("tr_pond_topo"),
+            pond_sealvl: flag("tr_pond_sealvl"),
+            fsd: count("tr_fsd", "nfsd"),
+            brine: flag("tr_brine"),
         },
     )
-    .unwrap()
+    .unwrap();
+    // Icepack's refills of the snow tracers (snwredist = 'ITD', snwgrain).
+    for (name, key) in [
+        ("rhos", "rhos_empty"),
+        ("smice", "smice_empty"),
+        ("rsnw", "rsnw_empty"),
+    ] {
+        if let Some(v) = flags[key].as_f64() {
+            layout = layout.with_empty_value(name, v).unwrap();
+        }
+    }
+    layout
 }
 
 /// Tracers of a case as `trcrn[n * ntrcr + it]`.

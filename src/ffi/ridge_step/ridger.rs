@@ -187,6 +187,7 @@ pub unsafe extern "C" fn pressridge_ridger_new(
             snow: tracer_flags & PRESSRIDGE_TRACER_SNOW != 0,
             isotopes: n_iso as usize,
             aerosols: n_aero as usize,
+            ..CiceTracerFlags::default()
         };
         let layout = TracerLayout::cice(nilyr as usize, nslyr as usize, flags)?;
         let o = PressridgeOptions::from_ptr(options)?;

@@ -255,6 +255,11 @@ fn zap_small_areas(
         }
         let v = col.vicen[n];
         let trc = &mut col.trcrn[n * nt..(n + 1) * nt];
+        if layout.zap_pond_water
+            && let (Some(ip), Some(ih)) = (layout.nt_apnd, layout.nt_hpnd)
+        {
+            z.fpond -= a * trc[ip] * trc[ih];
+        }
         for (d, a) in z.aero.iter_mut().zip(&layout.aero) {
             *d += v * (trc[a[2]] + trc[a[3]]) / dt;
         }
@@ -283,6 +288,10 @@ fn zap_small_areas(
                 *t = 0.0;
             }
         }
+        // Icepack's refills of an emptied category (fbri = 1; the snow tracers).
+        for &it in &layout.refilled {
+            trc[it] = layout.empty[it];
+        }
         ws.zapped[n] = true;
     }
     if aice > 1.0 + puny {
@@ -296,6 +305,11 @@ fn zap_small_areas(
         for n in 0..ncat {
             let (v, s) = (col.vicen[n], col.vsnon[n]);
             let trc = &col.trcrn[n * nt..(n + 1) * nt];
+            if layout.zap_pond_water
+                && let (Some(ip), Some(ih)) = (layout.nt_apnd, layout.nt_hpnd)
+            {
+                z.fpond -= col.aicen[n] * trc[ip] * trc[ih] * (aice - 1.0) / aice;
+            }
             for (d, a) in z.aero.iter_mut().zip(&layout.aero) {
                 *d += (s * (trc[a[0]] + trc[a[1]]) + v * (trc[a[2]] + trc[a[3]])) * (aice - 1.0)
                     / aice

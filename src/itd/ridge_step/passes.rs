@@ -251,8 +251,14 @@ fn ridge_shift(
                 s.miso[k] += vsrdgn * one_minus_f * (trc[isno + k] + trc[iice + k]);
             }
         }
-        if let (Some(ia), Some(ip), Some(ih)) = (layout.nt_alvl, layout.nt_apnd, layout.nt_hpnd) {
-            s.mpond += ardg1n * trc[ip] * trc[ih] * trc[ia];
+        // Pond water on the ridging ice (Icepack's diagnostic of every pond scheme).
+        if let (Some(ip), Some(ih)) = (layout.nt_apnd, layout.nt_hpnd) {
+            match layout.nt_alvl {
+                Some(ia) if layout.ponds_on_level_ice => {
+                    s.mpond += ardg1n * trc[ip] * trc[ih] * trc[ia];
+                }
+                _ => s.mpond += ardg1n * trc[ip] * trc[ih],
+            }
         }
         for k in 0..layout.nslyr {
             let esrdgn = vsrdgn * trc[layout.nt_qsno + k] / nslyr;
@@ -296,6 +302,14 @@ fn ridge_shift(
             for (k, list) in layout.ridge_lists.iter().enumerate() {
                 for &it in list {
                     dst[it] += f[k] * trc[it];
+                }
+            }
+            // Tracers carried on the brine fraction go with it.
+            if let Some(ib) = layout.nt_fbri {
+                for (k, list) in layout.ridge_lists_brine.iter().enumerate() {
+                    for &it in list {
+                        dst[it] += f[k] * trc[it] * trc[ib];
+                    }
                 }
             }
         }

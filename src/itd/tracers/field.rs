@@ -47,6 +47,12 @@ pub enum TracerRole {
     SnowDensity,
     /// Snow grain radius per layer `rsnw` (m), snow-volume tracer.
     SnowGrainRadius,
+    /// Floe size distribution `fsd` (1), area tracer, one level per floe-size category
+    /// (Icepack `tr_fsd`).
+    FloeSize,
+    /// Brine height fraction `fbri` (1), ice-volume tracer; 1 where there is no ice (Icepack
+    /// `tr_brine`). Tracers carried on it (strata `["fbri"]`) are given to new ridges.
+    BrineFraction,
     /// Aerosol in snow (kg m⁻³), snow-volume tracer, single-level: one field for the
     /// surface scattering layer and one for the interior of each species, in that order
     /// (CICE's `aerosnossl00k`, `aerosnoint00k`). The share of snow on ridging ice that goes
@@ -91,7 +97,7 @@ impl TracerBase {
 
 impl TracerRole {
     /// Every role.
-    pub const ALL: [TracerRole; 20] = [
+    pub const ALL: [TracerRole; 22] = [
         TracerRole::SurfaceTemperature,
         TracerRole::IceEnthalpy,
         TracerRole::SnowEnthalpy,
@@ -107,6 +113,8 @@ impl TracerRole {
         TracerRole::SnowLiquidMass,
         TracerRole::SnowDensity,
         TracerRole::SnowGrainRadius,
+        TracerRole::FloeSize,
+        TracerRole::BrineFraction,
         TracerRole::AerosolSnow,
         TracerRole::AerosolIce,
         TracerRole::IsotopeSnow,
@@ -134,6 +142,8 @@ impl TracerRole {
             SnowLiquidMass => "snow_liquid_mass",
             SnowDensity => "snow_density",
             SnowGrainRadius => "snow_grain_radius",
+            FloeSize => "floe_size",
+            BrineFraction => "brine_fraction",
             AerosolSnow => "aerosol_snow",
             AerosolIce => "aerosol_ice",
             IsotopeSnow => "isotope_snow",
@@ -171,6 +181,8 @@ impl TracerRole {
             SnowLiquidMass => ("smliq", SnowVolume, &[]),
             SnowDensity => ("rhos", SnowVolume, &[]),
             SnowGrainRadius => ("rsnw", SnowVolume, &[]),
+            FloeSize => ("fsd", Area, &[]),
+            BrineFraction => ("fbri", IceVolume, &[]),
             IsotopeSnow => ("isosno", SnowVolume, &[]),
             IsotopeIce => ("isoice", IceVolume, &[]),
             AerosolSnow | AerosolIce | Other => return None,
@@ -186,7 +198,7 @@ impl TracerRole {
             IceEnthalpy | SnowEnthalpy => "J m-3",
             IceSalinity => "ppt",
             Age => "s",
-            FirstYear | LevelArea | LevelVolume | PondArea => "1",
+            FirstYear | LevelArea | LevelVolume | PondArea | FloeSize | BrineFraction => "1",
             PondDepth | PondLid => "m",
             SnowIceMass | SnowLiquidMass | SnowDensity => "kg m-3",
             SnowGrainRadius => "m",
@@ -214,6 +226,8 @@ impl TracerRole {
             SnowLiquidMass => "mass of liquid water in a snow layer",
             SnowDensity => "effective density of a snow layer",
             SnowGrainRadius => "snow grain radius of a layer",
+            FloeSize => "floe size distribution (area fraction per floe-size category)",
+            BrineFraction => "brine height over ice thickness",
             AerosolSnow => "aerosol in snow (surface layer or interior)",
             AerosolIce => "aerosol in ice (surface layer or interior)",
             IsotopeSnow => "water isotope in snow",
@@ -243,6 +257,7 @@ impl TracerRole {
                 | TracerRole::SnowLiquidMass
                 | TracerRole::SnowDensity
                 | TracerRole::SnowGrainRadius
+                | TracerRole::FloeSize
                 | TracerRole::IsotopeSnow
                 | TracerRole::IsotopeIce
         )
@@ -264,6 +279,12 @@ pub struct TracerField {
     /// Names of the single-level fields it is additionally carried on, outermost first
     /// (e.g. `["alvl", "apnd"]` for pond depth). At most two.
     pub strata: Vec<String>,
+    /// The value where its base volume is zero, and in categories the clean-up empties
+    /// (units of the tracer): 0 but for Icepack's refills — `fbri` = 1, and with Icepack's
+    /// `snwredist = 'ITD'` `rhos` = `rhosnew`, with `snwgrain` `smice` = `rhos` and `rsnw` =
+    /// `rsnw_fall` (set with [`TracerLayout::with_empty_value`](super::TracerLayout::with_empty_value)).
+    /// Used for ice- and snow-volume tracers only.
+    pub empty: f64,
 }
 
 impl TracerField {
@@ -280,6 +301,11 @@ impl TracerField {
             levels,
             base,
             strata: strata.iter().map(|s| s.to_string()).collect(),
+            empty: if role == TracerRole::BrineFraction {
+                1.0
+            } else {
+                0.0
+            },
         }
     }
 }

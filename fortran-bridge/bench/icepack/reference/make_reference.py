@@ -8,14 +8,27 @@ tracers each) in Icepack's driver order (icedrv_init.F90), runs them through Ice
 icepack_step_ridge with the driver ridge_reference (built by make-reference.sh) and writes
 the same JSONL schema with the extended layout and the fluxes faero_ocn and fiso_ocn.
 
-    make_reference.py DRIVER IN.jsonl OUT.jsonl
+    make_reference.py DRIVER IN.jsonl OUT.jsonl [VARIANT]
+
+VARIANT `aero` (default): the layout above. `topo`: topography ponds instead of level-ice
+ponds (apnd on the area, hpnd and ipnd on apnd), the snow tracers with Icepack's refills
+(snwredist = 'ITD', snwgrain), three floe-size categories, one isotope and one aerosol
+species, and the brine fraction fbri.
 """
 import json
 import re
 import subprocess
 import sys
 
-N_ISO, N_AERO = 3, 2
+N_ISO, N_AERO, NFSD, TOPO = 3, 2, 0, False
+
+
+def set_variant(v):
+    global N_ISO, N_AERO, NFSD, TOPO
+    if v == "topo":
+        N_ISO, N_AERO, NFSD, TOPO = 1, 1, 3, True
+    else:
+        assert v == "aero", v
 
 
 def layout(params):
@@ -23,10 +36,14 @@ def layout(params):
     nilyr, nslyr = params["nilyr"], params["nslyr"]
     f = [(t["name"], t["levels"]) for t in params["tracer_layout"]]
     f += [("smice", nslyr), ("smliq", nslyr), ("rhos", nslyr), ("rsnw", nslyr)]
+    if NFSD:
+        f += [("fsd", NFSD)]
     f += [("isosno", N_ISO), ("isoice", N_ISO)]
     for k in range(1, N_AERO + 1):
         f += [(f"aerosnossl{k:03d}", 1), (f"aerosnoint{k:03d}", 1),
               (f"aeroicessl{k:03d}", 1), (f"aeroiceint{k:03d}", 1)]
+    if TOPO:
+        f += [("fbri", 1)]
     start, i = {}, 0
     for name, lev in f:
         start[name] = i
@@ -38,7 +55,11 @@ def layout(params):
 def depend(name, start):
     """Icepack's trcr_depend, trcr_base, n_trcr_strata, nt_strata (1-based) of a field."""
     snow = {"qsno", "smice", "smliq", "rhos", "rsnw", "isosno"}
-    ice = {"qice", "sice", "iage", "vlvl", "isoice"}
+    ice = {"qice", "sice", "iage", "vlvl", "isoice", "fbri"}
+    if TOPO and name == "apnd":
+        return 0, [1, 0, 0], []
+    if TOPO and name in ("hpnd", "ipnd"):
+        return 2 + start["apnd"] + 1, [1, 0, 0], [start["apnd"] + 1]
     if name in ("apnd",):
         return 2 + start["alvl"] + 1, [1, 0, 0], [start["alvl"] + 1]
     if name in ("hpnd", "ipnd"):
@@ -59,9 +80,11 @@ def extra(name, k, n, area):
     if name.startswith("aero"):
         scale = {"aerosnossl": 3.0, "aerosnoint": 1.0, "aeroicessl": 0.5, "aeroiceint": 0.2}
         return 1.0e-6 * (1 + int(name[-3:])) * (n + 1) * scale[name[:10]]
+    if name == "fsd":
+        return [0.5, 0.3, 0.2][k]
     return {"smice": 250.0 + 5.0 * x, "smliq": 2.0 + 0.5 * x, "rhos": 300.0 + 3.0 * x,
             "rsnw": 1.0e-4 * (1 + 0.1 * x), "isosno": 1.0e-3 * (1 + 0.3 * x),
-            "isoice": 2.0e-3 * (1 + 0.2 * x)}[name]
+            "isoice": 2.0e-3 * (1 + 0.2 * x), "fbri": 0.8 + 0.02 * n}[name]
 
 
 def fnum(x):
@@ -70,6 +93,7 @@ def fnum(x):
 
 def main():
     driver, src, dst = sys.argv[1:4]
+    set_variant(sys.argv[4] if len(sys.argv) > 4 else "aero")
     lines = [json.loads(l) for l in open(src) if l.strip()]
     params, cases = lines[0], lines[1:]
     fields, start, ntrcr = layout(params)
@@ -77,9 +101,10 @@ def main():
                          "hpnd", "ipnd", "smice", "smliq", "rhos", "rsnw", "isosno", "isoice"]}
     for k in nt:
         nt[k] = start[k] + 1
-    out = [f"{params['nilyr']} {params['nslyr']} {ntrcr} {N_AERO} {N_ISO}",
-           " ".join(str(v) for v in nt.values()) + f" {start['aerosnossl001'] + 1}",
-           "1 1 1 1 1 1 1"]
+    out = [f"{params['nilyr']} {params['nslyr']} {ntrcr} {N_AERO} {N_ISO} {NFSD}",
+           " ".join(str(v) for v in nt.values()) + f" {start['aerosnossl001'] + 1}"
+           + f" {start['fsd'] + 1 if NFSD else 0} {start['fbri'] + 1 if TOPO else 0}",
+           ("1 1 1 0 1 1 1 1 1 1 1" if TOPO else "1 1 1 1 1 1 1 0 0 0 0")]
     for name, lev in fields:
         d, base, strata = depend(name, start)
         s = (strata + [0, 0])[:2]
@@ -127,6 +152,9 @@ def main():
         w = l.split()
         if not w:
             continue
+        if w[0] == "refill":
+            refill = [float(x.replace("E", "e")) for x in w[1:]]
+            continue
         if w[0] == "case":
             cur = int(w[1])
             parsed[cur] = {}
@@ -151,6 +179,12 @@ def main():
     params["tracer_depend"] = dep
     flags = dict(params["tracer_flags"])
     flags.update(tr_snow=True, tr_iso=True, tr_aero=True, n_aero=N_AERO, n_iso=N_ISO)
+    if TOPO:
+        # Icepack's refills where there is no snow (snwredist = 'ITD', snwgrain), and the
+        # other groups of this variant.
+        flags.update(tr_pond_lvl=False, tr_pond_topo=True, tr_brine=True, tr_fsd=True,
+                     nfsd=NFSD, snwredist="ITD", snwgrain=True, rhos_empty=refill[0],
+                     smice_empty=refill[1], rsnw_empty=refill[2])
     params["tracer_flags"] = flags
     params["generator"] = ("fortran-bridge/bench/icepack/reference/make-reference.sh from "
                            "tests/data/icepack/ridge_step_cases.jsonl")

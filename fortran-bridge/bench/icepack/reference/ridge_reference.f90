@@ -3,10 +3,12 @@
 !> icepack_step_ridge once per case and prints every output with 18 significant digits.
 !> Built against the user's Icepack checkout by make-reference.sh; no Icepack code is in
 !> this repository. Input (list-directed):
-!>   nilyr nslyr ntrcr n_aero n_iso
-!>   18 indices nt_Tsfc nt_qice nt_qsno nt_sice nt_iage nt_FY nt_alvl nt_vlvl nt_apnd
-!>     nt_hpnd nt_ipnd nt_smice nt_smliq nt_rhos nt_rsnw nt_isosno nt_isoice nt_aero (0: absent)
-!>   7 flags (0/1) tr_iage tr_FY tr_lvl tr_pond_lvl tr_snow tr_iso tr_aero
+!>   nilyr nslyr ntrcr n_aero n_iso nfsd
+!>   20 indices nt_Tsfc nt_qice nt_qsno nt_sice nt_iage nt_FY nt_alvl nt_vlvl nt_apnd
+!>     nt_hpnd nt_ipnd nt_smice nt_smliq nt_rhos nt_rsnw nt_isosno nt_isoice nt_aero nt_fsd
+!>     nt_fbri (0: absent)
+!>   11 flags (0/1) tr_iage tr_FY tr_lvl tr_pond_lvl tr_snow tr_iso tr_aero tr_pond_topo
+!>     tr_brine tr_fsd, and snow refills (snwredist = 'ITD' with snwgrain)
 !>   ntrcr rows: trcr_depend trcr_base(1:3) n_trcr_strata nt_strata(1:2)
 !>   ncase, then per case: ncat ndtd krdg_partic krdg_redist has_closing docleanup dorebin;
 !>   dt rdg_conv rdg_shear mu_rdg Tf aice0 aice closing opening; hin_max(0:ncat); aicen;
@@ -16,10 +18,11 @@
 program ridge_reference
   use icepack_intfc, only: icepack_step_ridge, icepack_ice_strength, icepack_init_tracer_sizes, &
        icepack_init_tracer_flags, icepack_init_tracer_indices, icepack_init_parameters, &
-       icepack_warnings_flush, icepack_warnings_aborted, icepack_warnings_clear
+       icepack_warnings_flush, icepack_warnings_aborted, icepack_warnings_clear, &
+       icepack_query_parameters
   implicit none
   integer, parameter :: dp = kind(1.0d0)
-  integer :: nilyr, nslyr, ntrcr, n_aero, n_iso, nt(18), fl(7), ncase, k, it, n
+  integer :: nilyr, nslyr, ntrcr, n_aero, n_iso, nfsd, nt(20), fl(11), ncase, k, it, n
   integer :: ncat, ndtd, kp, kr, hasc, docl, dore
   integer, allocatable :: trcr_depend(:), n_trcr_strata(:), nt_strata(:, :), fi(:)
   real(dp), allocatable :: trcr_base(:, :), hin(:), a(:), v(:), s(:), tr(:, :)
@@ -28,8 +31,9 @@ program ridge_reference
   logical, allocatable :: first_ice(:)
   real(dp) :: dt, conv, shear, mu_rdg, tf, aice0, aice, closing, opening
   real(dp) :: d1, d2, d3, fpond, fresh, fhocn, fsalt, dpnd, faero(6), fiso(3), fbio(1), str
+  real(dp) :: rhosnew, rhos, rsnw_fall
 
-  read (*, *) nilyr, nslyr, ntrcr, n_aero, n_iso
+  read (*, *) nilyr, nslyr, ntrcr, n_aero, n_iso, nfsd
   read (*, *) nt
   read (*, *) fl
   allocate(trcr_depend(ntrcr), n_trcr_strata(ntrcr), nt_strata(ntrcr, 2), trcr_base(ntrcr, 3))
@@ -38,12 +42,14 @@ program ridge_reference
   end do
   call icepack_init_tracer_flags(tr_iage_in=fl(1) == 1, tr_FY_in=fl(2) == 1, &
        tr_lvl_in=fl(3) == 1, tr_pond_in=fl(4) == 1, tr_pond_lvl_in=fl(4) == 1, &
-       tr_snow_in=fl(5) == 1, tr_iso_in=fl(6) == 1, tr_aero_in=fl(7) == 1)
+       tr_snow_in=fl(5) == 1, tr_iso_in=fl(6) == 1, tr_aero_in=fl(7) == 1, &
+       tr_pond_topo_in=fl(8) == 1, tr_brine_in=fl(9) == 1, tr_fsd_in=fl(10) == 1)
+  if (fl(8) == 1) call icepack_init_tracer_flags(tr_pond_in=.true., tr_pond_lvl_in=.false.)
   call icepack_init_tracer_indices(nt_Tsfc_in=nt(1), nt_qice_in=nt(2), nt_qsno_in=nt(3), &
        nt_sice_in=nt(4), nt_iage_in=nt(5), nt_FY_in=nt(6), nt_alvl_in=nt(7), nt_vlvl_in=nt(8), &
        nt_apnd_in=nt(9), nt_hpnd_in=nt(10), nt_ipnd_in=nt(11), nt_smice_in=nt(12), &
        nt_smliq_in=nt(13), nt_rhos_in=nt(14), nt_rsnw_in=nt(15), nt_isosno_in=nt(16), &
-       nt_isoice_in=nt(17), nt_aero_in=nt(18))
+       nt_isoice_in=nt(17), nt_aero_in=nt(18), nt_fsd_in=nt(19), nt_fbri_in=nt(20))
   open (7, file='warnings.txt', status='replace')
   read (*, *) ncase
   do k = 1, ncase
@@ -61,8 +67,15 @@ program ridge_reference
      first_ice = fi == 1
      call icepack_warnings_clear()
      call icepack_init_parameters(krdg_partic_in=kp, krdg_redist_in=kr, mu_rdg_in=mu_rdg)
+     if (fl(11) == 1) call icepack_init_parameters(snwredist_in='ITD', snwgrain_in=.true.)
      call icepack_init_tracer_sizes(ncat_in=ncat, nilyr_in=nilyr, nslyr_in=nslyr, &
-          nblyr_in=1, ntrcr_in=ntrcr, nbtrcr_in=0, n_aero_in=n_aero, n_iso_in=n_iso)
+          nblyr_in=1, ntrcr_in=ntrcr, nbtrcr_in=0, n_aero_in=n_aero, n_iso_in=n_iso, &
+          nfsd_in=max(nfsd, 1))
+     if (k == 1) then
+        call icepack_query_parameters(rhosnew_out=rhosnew, rhos_out=rhos, &
+             rsnw_fall_out=rsnw_fall)
+        write (*, '(a, 3(1x, es25.17e3))') 'refill', rhosnew, rhos, rsnw_fall
+     end if
      d1 = 0; d2 = 0; d3 = 0; fpond = 0; fresh = 0; fhocn = 0; fsalt = 0; dpnd = 0
      faero = 0; fiso = 0; fbio = 0
      aparticn = 0; krdgn = 0; aredistn = 0; vredistn = 0; dardg1ndt = 0; dardg2ndt = 0
