@@ -104,6 +104,17 @@
 // layer each, on snow volume, Icepack `tr_snow`.
 #define PRESSRIDGE_TRACER_SNOW 16
 
+// Tracer flag: topography melt ponds `apnd` (on area), `hpnd`, `ipnd` (on pond area), Icepack
+// `tr_pond_topo` (one pond scheme at a time).
+#define PRESSRIDGE_TRACER_POND_TOPO 32
+
+// Tracer flag: sea-level melt ponds, carried as the topography ponds, `tr_pond_sealvl`.
+#define PRESSRIDGE_TRACER_POND_SEALVL 64
+
+// Tracer flag: brine height fraction `fbri` (on ice volume; 1 where there is no ice),
+// Icepack `tr_brine`.
+#define PRESSRIDGE_TRACER_BRINE 128
+
 // A C_f table: C_f (dimensionless) against the ridging ice's thickness (m), linear between
 // nodes, clamped (and flagged) outside. Opaque; create with [`pressridge_cf_table_open`] or
 // [`pressridge_cf_table_new`], release with [`pressridge_cf_table_free`].
@@ -365,6 +376,26 @@ typedef struct PressridgeStepParams {
   double tmin;
 } PressridgeStepParams;
 
+// The optional tracers of a ridging set-up ([`pressridge_ridger_new`]); all zero: none.
+typedef struct PressridgeTracers {
+  // Sum of `PRESSRIDGE_TRACER_*` flags.
+  int32_t flags;
+  // Water-isotope species, 0–3 (Icepack `n_iso`).
+  int32_t n_iso;
+  // Aerosol species, 0–6 (Icepack `n_aero`).
+  int32_t n_aero;
+  // Floe-size categories `fsd` (area tracers), ≥ 0 (Icepack `nfsd` with `tr_fsd`).
+  int32_t nfsd;
+  // Snow tracers where there is no snow (kg m⁻³, kg m⁻³, m; with `PRESSRIDGE_TRACER_SNOW`):
+  // 0, or Icepack's refills, `rhos` = `rhosnew` with `snwredist = 'ITD'`, `smice` = `rhos`
+  // and `rsnw` = `rsnw_fall` with `snwgrain`.
+  double rhos_empty;
+  // See `rhos_empty`.
+  double smice_empty;
+  // See `rhos_empty`.
+  double rsnw_empty;
+} PressridgeTracers;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -591,26 +622,24 @@ int32_t pressridge_ridge_cells(const struct PressridgeRidger *ridger,
 int32_t pressridge_step_params_default(struct PressridgeStepParams *params);
 
 // Makes a ridging set-up for `ncat` categories and the CICE tracer layout with `nilyr` ice
-// and `nslyr` snow layers (both ≥ 1), the optional tracers of `tracer_flags` (a sum of
-// `PRESSRIDGE_TRACER_*`), `n_iso` water-isotope species (0–3, Icepack `n_iso`) and `n_aero`
-// aerosol species (0–6, Icepack `n_aero`), in the order of Icepack's driver: `Tsfc`,
-// `qice(nilyr)`, `qsno(nslyr)`, `sice(nilyr)`, `iage`, `FY`, `alvl`, `vlvl`, `apnd`, `hpnd`,
-// `ipnd`, `smice(nslyr)`, `smliq(nslyr)`, `rhos(nslyr)`, `rsnw(nslyr)`, `isosno(n_iso)`,
-// `isoice(n_iso)`, four aerosol tracers per species (snow surface layer and interior, ice
-// surface layer and interior). `options` (null: CICE
+// and `nslyr` snow layers (both ≥ 1) and the optional tracers of `tracers` (null: none), in
+// the order of Icepack's driver: `Tsfc`, `qice(nilyr)`, `qsno(nslyr)`, `sice(nilyr)`,
+// `iage`, `FY`, `alvl`, `vlvl`, `apnd`, `hpnd`, `ipnd`, `smice(nslyr)`, `smliq(nslyr)`,
+// `rhos(nslyr)`, `rsnw(nslyr)`, `fsd(nfsd)`, `isosno(n_iso)`, `isoice(n_iso)`, four aerosol
+// tracers per species (snow surface layer and interior, ice surface layer and interior),
+// `fbri`. `options` (null: CICE
 // defaults) gives the participation, redistribution and ridging parameters (its strength
 // fields are not used), `step_params` (null: Icepack defaults) the thermodynamic constants;
 // `cleanup` and `rebin` are Icepack's `docleanup`, `dorebin` (nonzero = true). Writes the
 // handle to `*ridger`; release it with [`pressridge_ridger_free`].
 //
 // # Safety
-// `options` and `step_params` must be null or valid; `ridger` valid for one write.
+// `tracers`, `options` and `step_params` must be null or valid; `ridger` valid for one
+// write.
 int32_t pressridge_ridger_new(int64_t ncat,
                               int64_t nilyr,
                               int64_t nslyr,
-                              int32_t tracer_flags,
-                              int32_t n_iso,
-                              int32_t n_aero,
+                              const struct PressridgeTracers *tracers,
                               const struct PressridgeOptions *options,
                               const struct PressridgeStepParams *step_params,
                               int32_t cleanup,

@@ -16,13 +16,21 @@ use pressridge::itd::{
 
 const NCAT: usize = 5;
 
+/// The 23 CICE tracers of the reference data: age, first-year ice, level ice, level ponds.
+fn cice_tracers() -> PressridgeTracers {
+    PressridgeTracers {
+        flags: 15,
+        ..Default::default()
+    }
+}
+
 fn ridger(cleanup: i32) -> *mut PressridgeRidger {
     let mut r = null_mut();
     let rc =
         // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
         // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         unsafe {
-            pressridge_ridger_new(NCAT as i64, 7, 1, 15, 0, 0, null(), null(), cleanup, 1, &mut r)
+            pressridge_ridger_new(NCAT as i64, 7, 1, &cice_tracers(), null(), null(), cleanup, 1, &mut r)
         };
     assert_eq!(rc, PRESSRIDGE_OK);
     r
@@ -341,9 +349,10 @@ fn batched_cells_equal_cell_calls_and_errors_name_the_cell() {
             5,
             7,
             1,
-            PRESSRIDGE_TRACER_PONDS,
-            0,
-            0,
+            &PressridgeTracers {
+                flags: PRESSRIDGE_TRACER_PONDS,
+                ..Default::default()
+            },
             null(),
             null(),
             1,
@@ -371,9 +380,15 @@ fn aerosol_and_isotope_fluxes_through_the_c_abi() {
     let layout = TracerLayout::cice(7, 1, flags).unwrap();
     let nt = layout.ntrcr();
     let mut r = null_mut();
+    let tracers = PressridgeTracers {
+        flags: 31,
+        n_iso: 2,
+        n_aero: 3,
+        ..Default::default()
+    };
     // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
     // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
-    let rc = unsafe { pressridge_ridger_new(5, 7, 1, 31, 2, 3, null(), null(), 1, 1, &mut r) };
+    let rc = unsafe { pressridge_ridger_new(5, 7, 1, &tracers, null(), null(), 1, 1, &mut r) };
     assert_eq!(rc, PRESSRIDGE_OK);
     // The 23 CICE tracers of `column`, then the added ones: positive amounts.
     let small = TracerLayout::cice(7, 1, CiceTracerFlags::ALL).unwrap();
@@ -516,12 +531,54 @@ fn aerosol_and_isotope_fluxes_through_the_c_abi() {
     // SAFETY: a handle from its *_new (or null), freed once and not used after.
     unsafe { pressridge_ridger_free(r) };
     let mut bad = null_mut();
+    let too_many = PressridgeTracers {
+        n_aero: 7,
+        ..tracers
+    };
     // SAFETY: as above.
-    let rc = unsafe { pressridge_ridger_new(5, 7, 1, 31, 2, 7, null(), null(), 1, 1, &mut bad) };
+    let rc = unsafe { pressridge_ridger_new(5, 7, 1, &too_many, null(), null(), 1, 1, &mut bad) };
     assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
     let mut buf = vec![0u8; 256];
     // SAFETY: as above.
     unsafe { pressridge_last_error(buf.as_mut_ptr().cast(), 256, null_mut()) };
     let msg = String::from_utf8_lossy(&buf).to_string();
-    assert!(msg.contains("n_aero = 7"), "{msg}");
+    assert!(msg.contains("tracers.n_aero = 7"), "{msg}");
+    // The other groups: topography ponds, floe size, brine and the snow refills make the
+    // layout of Icepack's driver (45 tracers here).
+    let all = PressridgeTracers {
+        flags: 1 | 2 | 4 | 16 | PRESSRIDGE_TRACER_POND_TOPO | PRESSRIDGE_TRACER_BRINE,
+        nfsd: 3,
+        rhos_empty: 100.0,
+        smice_empty: 330.0,
+        rsnw_empty: 54.5,
+        ..tracers
+    };
+    let mut r = null_mut();
+    // SAFETY: as above.
+    let rc = unsafe { pressridge_ridger_new(5, 7, 1, &all, null(), null(), 1, 1, &mut r) };
+    assert_eq!(rc, PRESSRIDGE_OK);
+    let mut ntrcr = 0i64;
+    // SAFETY: as above.
+    let rc = unsafe {
+        pressridge_ridger_tracers(
+            r,
+            &mut ntrcr,
+            0,
+            null_mut(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
+        )
+    };
+    assert_eq!((rc, ntrcr), (PRESSRIDGE_OK, 23 + 4 + 3 + 4 + 12 + 1));
+    // SAFETY: a handle from its *_new (or null), freed once and not used after.
+    unsafe { pressridge_ridger_free(r) };
+    let two_schemes = PressridgeTracers {
+        flags: 15 | PRESSRIDGE_TRACER_POND_TOPO,
+        ..Default::default()
+    };
+    // SAFETY: as above.
+    let rc =
+        unsafe { pressridge_ridger_new(5, 7, 1, &two_schemes, null(), null(), 1, 1, &mut bad) };
+    assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
 }

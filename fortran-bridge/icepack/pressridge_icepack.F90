@@ -10,9 +10,10 @@
 !> and makes the pressridge set-up for them on first use (one per set of values and
 !> docleanup/dorebin, kept for the run; OpenMP threads share it). The host's tracer tables
 !> (trcr_depend, trcr_base, n_trcr_strata, nt_strata) are checked against the layout
-!> pressridge derives from Icepack's flags. Errors, and tracers pressridge does not carry yet
-!> (topography and sea-level ponds, brine, floe size, biogeochemistry), are reported as
-!> Icepack reports its own: icepack_warnings_add and icepack_warnings_setabort.
+!> pressridge derives from Icepack's flags (every pond scheme, the snow tracers with Icepack's
+!> refills, floe size, isotopes, aerosols, brine). Errors, and biogeochemical tracers, which
+!> pressridge does not carry yet, are reported as Icepack reports its own:
+!> icepack_warnings_add and icepack_warnings_setabort.
 module pressridge_icepack
   use, intrinsic :: iso_c_binding, only: c_double, c_int32_t
   use, intrinsic :: iso_fortran_env, only: int64
@@ -30,9 +31,10 @@ module pressridge_icepack
   !> One set-up: the values it was made for and its handle.
   type :: setup
      integer :: ncat = -1, ntrcr = -1, nilyr = -1, nslyr = -1, n_aero = -1, n_iso = -1
-     integer :: kp = -1, kr = -1
-     real(c_double) :: mu_rdg = -1
-     logical :: flags(5) = .false., cleanup = .true., rebin = .true.
+     integer :: nfsd = -1, kp = -1, kr = -1
+     real(c_double) :: mu_rdg = -1, refill(3) = 0
+     !> tr_iage, tr_FY, tr_lvl, tr_pond_lvl, tr_snow, tr_pond_topo, tr_pond_sealvl, tr_brine
+     logical :: flags(8) = .false., cleanup = .true., rebin = .true.
      type(pressridge_step_params) :: step
      type(pressridge_ridger) :: ridger
   end type setup
@@ -133,8 +135,10 @@ contains
     type(setup) :: want
     logical :: iage, fy, lvl, pond_lvl, snow, pond_topo, pond_sealvl, brine, fsd, iso, aero
     integer :: nilyr, nslyr, nblyr, n_aero, n_iso, nbtrcr, nfsd, kp, kr
-    real(c_double) :: mu_rdg, rhos, rhoi, lfresh, cp_ice, sal, amin, mmin, hsmin
-    character(len=32) :: saltflux
+    real(c_double) :: mu_rdg, rhos, rhoi, lfresh, cp_ice, sal, amin, mmin, hsmin, rhosnew, &
+         rsnw_fall
+    logical :: snwgrain
+    character(len=32) :: saltflux, snwredist
     character(len=*), parameter :: subname = '(pressridge_icepack_step_ridge)'
     k = 0
     call icepack_query_tracer_sizes(nilyr_out=nilyr, nslyr_out=nslyr, nblyr_out=nblyr, &
@@ -144,17 +148,14 @@ contains
          tr_pond_sealvl_out=pond_sealvl, tr_snow_out=snow, tr_brine_out=brine, &
          tr_fsd_out=fsd, tr_iso_out=iso, tr_aero_out=aero)
     call icepack_query_parameters(krdg_partic_out=kp, krdg_redist_out=kr, mu_rdg_out=mu_rdg)
-    if (pond_topo .or. pond_sealvl .or. brine .or. fsd .or. nbtrcr > 0) then
-       call abort_with(subname//' pressridge does not carry yet: '// &
-            trim(merge('tr_pond_topo   ', '               ', pond_topo))// &
-            trim(merge(' tr_pond_sealvl', '               ', pond_sealvl))// &
-            trim(merge(' tr_brine      ', '               ', brine))// &
-            trim(merge(' tr_fsd        ', '               ', fsd))// &
-            trim(merge(' nbtrcr > 0    ', '               ', nbtrcr > 0)))
+    if (nbtrcr > 0) then
+       call abort_with(subname//' pressridge does not carry biogeochemical tracers yet '// &
+            '(nbtrcr > 0)')
        return
     end if
     if (.not. iso) n_iso = 0
     if (.not. aero) n_aero = 0
+    if (.not. fsd) nfsd = 0
     want%ncat = ncat
     want%ntrcr = ntrcr
     want%nilyr = nilyr
@@ -164,12 +165,18 @@ contains
     want%kp = kp
     want%kr = kr
     want%mu_rdg = mu_rdg
-    want%flags = [iage, fy, lvl, pond_lvl, snow]
+    want%nfsd = nfsd
+    want%flags = [iage, fy, lvl, pond_lvl, snow, pond_topo, pond_sealvl, brine]
     want%cleanup = clean
     want%rebin = rebin
     call icepack_query_parameters(rhos_out=rhos, rhoi_out=rhoi, Lfresh_out=lfresh, &
          cp_ice_out=cp_ice, ice_ref_salinity_out=sal, itd_area_min_out=amin, &
-         itd_mass_min_out=mmin, hs_min_out=hsmin, saltflux_option_out=saltflux)
+         itd_mass_min_out=mmin, hs_min_out=hsmin, saltflux_option_out=saltflux, &
+         snwredist_out=snwredist, snwgrain_out=snwgrain, rhosnew_out=rhosnew, &
+         rsnw_fall_out=rsnw_fall)
+    ! Icepack's refills of the snow tracers where there is no snow.
+    if (snow .and. snwredist(1:3) == 'ITD') want%refill(1) = rhosnew
+    if (snow .and. snwgrain) want%refill(2:3) = [rhos, rsnw_fall]
     call pressridge_default_step_params(want%step)
     want%step%rhos = rhos
     want%step%lfresh = lfresh
@@ -220,7 +227,9 @@ contains
          want%flags(2), want%flags(3), want%flags(4), options=o, docleanup=want%cleanup, &
          dorebin=want%rebin, ntrcr=nt, trcr_depend=dep, trcr_base=base, n_trcr_strata=nst, &
          nt_strata=str, step_params=want%step, tr_snow=want%flags(5), n_iso=want%n_iso, &
-         n_aero=want%n_aero, ierr=e)
+         n_aero=want%n_aero, tr_pond_topo=want%flags(6), tr_pond_sealvl=want%flags(7), &
+         tr_brine=want%flags(8), nfsd=want%nfsd, rhos_empty=want%refill(1), &
+         smice_empty=want%refill(2), rsnw_empty=want%refill(3), ierr=e)
     if (e /= PRESSRIDGE_OK) then
        call abort_with(subname//' '//trim(pressridge_last_error_message()))
        return
@@ -256,10 +265,10 @@ contains
     type(setup), intent(in) :: a, b
     same = a%ncat == b%ncat .and. a%ntrcr == b%ntrcr .and. a%nilyr == b%nilyr .and. &
          a%nslyr == b%nslyr .and. a%n_aero == b%n_aero .and. a%n_iso == b%n_iso .and. &
-         a%kp == b%kp .and. a%kr == b%kr .and. all(a%flags .eqv. b%flags) .and. &
+         a%nfsd == b%nfsd .and. a%kp == b%kp .and. a%kr == b%kr .and. all(a%flags .eqv. b%flags) .and. &
          (a%cleanup .eqv. b%cleanup) .and. (a%rebin .eqv. b%rebin) .and. &
          a%step%salt_flux_prognostic == b%step%salt_flux_prognostic .and. &
-         all(bits([a%mu_rdg, a%step%rhos, a%step%lfresh, a%step%cp_ice, &
+         all(bits(a%refill) == bits(b%refill)) .and. all(bits([a%mu_rdg, a%step%rhos, a%step%lfresh, a%step%cp_ice, &
          a%step%ice_ref_salinity, a%step%itd_area_min, a%step%itd_mass_min, a%step%hs_min]) == &
          bits([b%mu_rdg, b%step%rhos, b%step%lfresh, b%step%cp_ice, &
          b%step%ice_ref_salinity, b%step%itd_area_min, b%step%itd_mass_min, b%step%hs_min]))

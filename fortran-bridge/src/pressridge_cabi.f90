@@ -5,7 +5,7 @@
 !> PressridgeOptions, with CICE's defaults as initial values: tests/params_faces.rs checks
 !> pressridge_params against the Rust ItdParams::FIELDS); the opaque handles
 !> (pressridge_cf_table, pressridge_ridge_table, pressridge_run, pressridge_ridger); the
-!> bind(C) structs the wrappers fill (c_grid, c_rates, c_fluxes, c_step_diag, c_cat_diag,
+!> bind(C) structs the wrappers fill (c_grid, c_rates, c_tracers, c_fluxes, c_step_diag, c_cat_diag,
 !> c_cell_arrays); and the bind(C) interfaces c_* of every C function the wrappers call.
 !> No executable code. Hosts `use pressridge`, which re-exports the public names; the c_*
 !> names are for the other modules of the bridge (src/pressridge_*.f90).
@@ -49,6 +49,9 @@ module pressridge_cabi_mod
   integer(c_int32_t), parameter, public :: PRESSRIDGE_TRACER_LEVEL_ICE = 4
   integer(c_int32_t), parameter, public :: PRESSRIDGE_TRACER_PONDS = 8
   integer(c_int32_t), parameter, public :: PRESSRIDGE_TRACER_SNOW = 16
+  integer(c_int32_t), parameter, public :: PRESSRIDGE_TRACER_POND_TOPO = 32
+  integer(c_int32_t), parameter, public :: PRESSRIDGE_TRACER_POND_SEALVL = 64
+  integer(c_int32_t), parameter, public :: PRESSRIDGE_TRACER_BRINE = 128
 
   !> Physical constants and tunables (C struct PressridgeParams). The initial values are
   !> CICE's defaults, the same as pressridge_default_options returns (checked by the tests).
@@ -128,6 +131,12 @@ module pressridge_cabi_mod
   end type pressridge_ridger
 
   ! The C structs the wrappers fill; not re-exported by `pressridge`.
+
+  !> PressridgeTracers.
+  type, bind(C) :: c_tracers
+     integer(c_int32_t) :: flags = 0, n_iso = 0, n_aero = 0, nfsd = 0
+     real(c_double) :: rhos_empty = 0, smice_empty = 0, rsnw_empty = 0
+  end type c_tracers
 
   !> PressridgeOceanFluxes.
   type, bind(C) :: c_fluxes
@@ -236,11 +245,11 @@ module pressridge_cabi_mod
        type(c_ptr), value :: valid, options
        type(c_rates), intent(in) :: rates
      end function c_ridge_step
-     integer(c_int32_t) function c_ridger_new(ncat, nilyr, nslyr, flags, n_iso, n_aero, &
-          options, step, cleanup, rebin, ridger) bind(C, name="pressridge_ridger_new")
-       import :: c_int32_t, c_int64_t, c_ptr
+     integer(c_int32_t) function c_ridger_new(ncat, nilyr, nslyr, tracers, options, step, &
+          cleanup, rebin, ridger) bind(C, name="pressridge_ridger_new")
+       import :: c_int32_t, c_int64_t, c_ptr, c_tracers
        integer(c_int64_t), value :: ncat, nilyr, nslyr
-       integer(c_int32_t), value :: flags, n_iso, n_aero
+       type(c_tracers), intent(in) :: tracers
        type(c_ptr), value :: options, step
        integer(c_int32_t), value :: cleanup, rebin
        type(c_ptr), intent(out) :: ridger

@@ -152,17 +152,22 @@ contains
   !> of one first size, ntrcr or more, trcr_depend, trcr_base(:, 3), n_trcr_strata,
   !> nt_strata(:, 2)). step_params: the thermodynamic constants and clean-up thresholds
   !> (rhos, Lfresh, cp_ice, fsnowrdg, the salt flux option, ...; default: Icepack's).
-  !> tr_snow, n_iso, n_aero (default .false., 0, 0): Icepack's snow tracers and numbers of
-  !> water-isotope (0-3) and aerosol (0-6) species, in the order of Icepack's driver after
-  !> the pond tracers.
+  !> The other tracer groups, in the order of Icepack's driver (default: off): tr_snow
+  !> (smice, smliq, rhos, rsnw), tr_pond_topo or tr_pond_sealvl (ponds on the ice area; one
+  !> pond scheme at a time), nfsd floe-size categories, n_iso water-isotope (0-3) and n_aero
+  !> aerosol (0-6) species, tr_brine (fbri); rhos_empty, smice_empty, rsnw_empty: the snow
+  !> tracers where there is no snow (kg/m3, kg/m3, m; 0, or Icepack's refills rhosnew with
+  !> snwredist = 'ITD', rhos and rsnw_fall with snwgrain).
   subroutine pressridge_ridger_init(ridger, ncat, nilyr, nslyr, tr_iage, tr_FY, tr_lvl, &
        tr_pond_lvl, options, docleanup, dorebin, ntrcr, trcr_depend, trcr_base, &
-       n_trcr_strata, nt_strata, step_params, tr_snow, n_iso, n_aero, ierr)
+       n_trcr_strata, nt_strata, step_params, tr_snow, n_iso, n_aero, tr_pond_topo, &
+       tr_pond_sealvl, tr_brine, nfsd, rhos_empty, smice_empty, rsnw_empty, ierr)
     type(pressridge_ridger), intent(out) :: ridger
     integer, intent(in) :: ncat, nilyr, nslyr
     logical, intent(in) :: tr_iage, tr_FY, tr_lvl, tr_pond_lvl
-    logical, intent(in), optional :: tr_snow
-    integer, intent(in), optional :: n_iso, n_aero
+    logical, intent(in), optional :: tr_snow, tr_pond_topo, tr_pond_sealvl, tr_brine
+    integer, intent(in), optional :: n_iso, n_aero, nfsd
+    real(c_double), intent(in), optional :: rhos_empty, smice_empty, rsnw_empty
     type(pressridge_options), intent(in), optional, target :: options
     logical, intent(in), optional :: docleanup, dorebin
     type(pressridge_step_params), intent(in), optional, target :: step_params
@@ -172,7 +177,8 @@ contains
     real(c_double), intent(out), optional, contiguous, target :: trcr_base(:, :)
     integer, intent(out), optional :: ierr
     character(len=*), parameter :: where = 'pressridge_ridger_init'
-    integer(c_int32_t) :: flags, clean, rebin, rc, niso, naero
+    integer(c_int32_t) :: flags, clean, rebin, rc
+    type(c_tracers) :: tr
     integer(c_int64_t) :: nt, len
     type(c_ptr) :: o, sp
     type(array_arg) :: arrays(4)
@@ -185,10 +191,22 @@ contains
     if (present(tr_snow)) then
        if (tr_snow) flags = flags + PRESSRIDGE_TRACER_SNOW
     end if
-    niso = 0
-    naero = 0
-    if (present(n_iso)) niso = int(n_iso, c_int32_t)
-    if (present(n_aero)) naero = int(n_aero, c_int32_t)
+    if (present(tr_pond_topo)) then
+       if (tr_pond_topo) flags = flags + PRESSRIDGE_TRACER_POND_TOPO
+    end if
+    if (present(tr_pond_sealvl)) then
+       if (tr_pond_sealvl) flags = flags + PRESSRIDGE_TRACER_POND_SEALVL
+    end if
+    if (present(tr_brine)) then
+       if (tr_brine) flags = flags + PRESSRIDGE_TRACER_BRINE
+    end if
+    tr%flags = flags
+    if (present(n_iso)) tr%n_iso = int(n_iso, c_int32_t)
+    if (present(n_aero)) tr%n_aero = int(n_aero, c_int32_t)
+    if (present(nfsd)) tr%nfsd = int(nfsd, c_int32_t)
+    if (present(rhos_empty)) tr%rhos_empty = rhos_empty
+    if (present(smice_empty)) tr%smice_empty = smice_empty
+    if (present(rsnw_empty)) tr%rsnw_empty = rsnw_empty
     clean = 1
     rebin = 1
     if (present(docleanup)) then
@@ -201,7 +219,7 @@ contains
     sp = c_null_ptr
     if (present(step_params)) sp = c_loc(step_params)
     rc = c_ridger_new(int(ncat, c_int64_t), int(nilyr, c_int64_t), int(nslyr, c_int64_t), &
-         flags, niso, naero, o, sp, clean, rebin, ridger%ptr)
+         tr, o, sp, clean, rebin, ridger%ptr)
     if (rc /= PRESSRIDGE_OK) then
        call finish(rc, where, ierr)
        return
@@ -210,8 +228,8 @@ contains
          c_null_ptr)
     ridger%ncat = ncat
     ridger%ntrcr = int(nt)
-    ridger%n_iso = int(niso)
-    ridger%n_aero = int(naero)
+    ridger%n_iso = int(tr%n_iso)
+    ridger%n_aero = int(tr%n_aero)
     if (present(ntrcr)) ntrcr = int(nt)
     ! The tracer arrays, present ones passed on: all of the same first size, the length the C
     ! call is told (the library writes ntrcr rows), trcr_base with 3 columns, nt_strata with 2.

@@ -70,12 +70,14 @@ contains
   subroutine icepack_query_parameters(kstrength_out, krdg_partic_out, krdg_redist_out, &
        mu_rdg_out, Cf_out, Pstar_out, Cstar_out, rhoi_out, rhow_out, rhos_out, gravit_out, &
        Lfresh_out, cp_ice_out, ice_ref_salinity_out, itd_area_min_out, itd_mass_min_out, &
-       hs_min_out, saltflux_option_out)
+       hs_min_out, saltflux_option_out, snwredist_out, snwgrain_out, rhosnew_out, &
+       rsnw_fall_out)
     integer, intent(out), optional :: kstrength_out, krdg_partic_out, krdg_redist_out
     real(dp), intent(out), optional :: mu_rdg_out, Cf_out, Pstar_out, Cstar_out, rhoi_out, &
          rhow_out, rhos_out, gravit_out, Lfresh_out, cp_ice_out, ice_ref_salinity_out, &
-         itd_area_min_out, itd_mass_min_out, hs_min_out
-    character(len=*), intent(out), optional :: saltflux_option_out
+         itd_area_min_out, itd_mass_min_out, hs_min_out, rhosnew_out, rsnw_fall_out
+    character(len=*), intent(out), optional :: saltflux_option_out, snwredist_out
+    logical, intent(out), optional :: snwgrain_out
     if (present(kstrength_out)) kstrength_out = stub_kstrength
     if (present(krdg_partic_out)) krdg_partic_out = stub_krdg_partic
     if (present(krdg_redist_out)) krdg_redist_out = stub_krdg_redist
@@ -94,5 +96,9 @@ contains
     if (present(itd_mass_min_out)) itd_mass_min_out = 1.0e-10_dp
     if (present(hs_min_out)) hs_min_out = 1.0e-4_dp
     if (present(saltflux_option_out)) saltflux_option_out = 'constant'
+    if (present(snwredist_out)) snwredist_out = 'none'
+    if (present(snwgrain_out)) snwgrain_out = .false.
+    if (present(rhosnew_out)) rhosnew_out = 100.0_dp
+    if (present(rsnw_fall_out)) rsnw_fall_out = 54.526_dp
   end subroutine icepack_query_parameters
 end module icepack_intfc

@@ -2,7 +2,8 @@
 !> Icepack's interface (icepack_stub.F90), without Icepack: with Icepack's argument lists it
 !> gives pressridge_step_ridge's and pressridge_ice_strength's answers bit for bit, follows
 !> Icepack's parameters from call to call, and reports what it refuses through Icepack's
-!> warnings. (The drop-in against Icepack itself: bench/icepack/reference/check-dropin.sh.)
+!> warnings. (The drop-in against Icepack itself, every tracer group included:
+!> bench/icepack/reference/check-dropin.sh.)
 program test_dropin
   use, intrinsic :: iso_c_binding, only: c_double
   use pressridge
@@ -111,7 +112,7 @@ program test_dropin
   call check('strength drop-in = pressridge_ice_strength (CICE defaults)', &
        e == PRESSRIDGE_OK .and. p1 == p2 .and. p1 > 0 .and. .not. stub_aborted)
   ! What it refuses, through Icepack's warnings.
-  stub_flags(8) = .true.
+  stub_sizes(6) = 2
   call icepack_step_ridge(dt=3600.0_c_double, ndtd=1, hin_max=h2, rdg_conv=conv, &
        rdg_shear=shear, aicen=a2, trcrn=t2, vicen=v2, vsnon=s2, aice0=a02, &
        trcr_depend=dep(1:nt), trcr_base=base(1:nt, :), n_trcr_strata=nst(1:nt), &
@@ -120,9 +121,9 @@ program test_dropin
        aparticn=x0, krdgn=x0, aredistn=x0, vredistn=x0, dardg1ndt=x0, dardg2ndt=x0, &
        dvirdgndt=x0, araftn=x0, vraftn=x0, aice=ai2, fsalt=fs(2), first_ice=first2, &
        flux_bio=fb, Tf=-1.8_c_double)
-  call check('tr_brine: an abort through Icepack''s warnings naming it', &
-       stub_aborted .and. index(stub_message, 'tr_brine') > 0)
-  stub_flags(8) = .false.
+  call check('biogeochemistry (nbtrcr > 0): an abort through Icepack''s warnings naming it', &
+       stub_aborted .and. index(stub_message, 'nbtrcr') > 0)
+  stub_sizes(6) = 0
   stub_aborted = .false.
   dep(24) = 1
   call icepack_step_ridge(dt=3600.0_c_double, ndtd=1, hin_max=h2, rdg_conv=conv, &

@@ -177,9 +177,7 @@ def _c_step(clib, case: Case):
         ctypes.c_int64(case.ncat),
         ctypes.c_int64(LAYOUT.nilyr),
         ctypes.c_int64(LAYOUT.nslyr),
-        ctypes.c_int32(flags),
-        ctypes.c_int32(0),  # n_iso
-        ctypes.c_int32(0),  # n_aero
+        ctypes.byref(S["PressridgeTracers"](flags=flags)),
         ctypes.byref(opts),
         None,
         ctypes.c_int32(int(case.cleanup)),

@@ -17,10 +17,11 @@ use crate::itd::{
 
 mod ridger;
 pub use ridger::{
-    PRESSRIDGE_TRACER_AGE, PRESSRIDGE_TRACER_FIRST_YEAR, PRESSRIDGE_TRACER_LEVEL_ICE,
+    PRESSRIDGE_TRACER_AGE, PRESSRIDGE_TRACER_BRINE, PRESSRIDGE_TRACER_FIRST_YEAR,
+    PRESSRIDGE_TRACER_LEVEL_ICE, PRESSRIDGE_TRACER_POND_SEALVL, PRESSRIDGE_TRACER_POND_TOPO,
     PRESSRIDGE_TRACER_PONDS, PRESSRIDGE_TRACER_SNOW, PressridgeRidger, PressridgeStepParams,
-    pressridge_ridger_free, pressridge_ridger_new, pressridge_ridger_tracer_field,
-    pressridge_ridger_tracers, pressridge_step_params_default,
+    PressridgeTracers, pressridge_ridger_free, pressridge_ridger_new,
+    pressridge_ridger_tracer_field, pressridge_ridger_tracers, pressridge_step_params_default,
 };
 use ridger::{bad_value, ridger_ref};
 

@@ -24,6 +24,36 @@ pub const PRESSRIDGE_TRACER_PONDS: i32 = 8;
 /// Tracer flag: snow tracers `smice`, `smliq`, `rhos` (kg m⁻³), `rsnw` (m), one per snow
 /// layer each, on snow volume, Icepack `tr_snow`.
 pub const PRESSRIDGE_TRACER_SNOW: i32 = 16;
+/// Tracer flag: topography melt ponds `apnd` (on area), `hpnd`, `ipnd` (on pond area), Icepack
+/// `tr_pond_topo` (one pond scheme at a time).
+pub const PRESSRIDGE_TRACER_POND_TOPO: i32 = 32;
+/// Tracer flag: sea-level melt ponds, carried as the topography ponds, `tr_pond_sealvl`.
+pub const PRESSRIDGE_TRACER_POND_SEALVL: i32 = 64;
+/// Tracer flag: brine height fraction `fbri` (on ice volume; 1 where there is no ice),
+/// Icepack `tr_brine`.
+pub const PRESSRIDGE_TRACER_BRINE: i32 = 128;
+
+/// The optional tracers of a ridging set-up ([`pressridge_ridger_new`]); all zero: none.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct PressridgeTracers {
+    /// Sum of `PRESSRIDGE_TRACER_*` flags.
+    pub flags: i32,
+    /// Water-isotope species, 0–3 (Icepack `n_iso`).
+    pub n_iso: i32,
+    /// Aerosol species, 0–6 (Icepack `n_aero`).
+    pub n_aero: i32,
+    /// Floe-size categories `fsd` (area tracers), ≥ 0 (Icepack `nfsd` with `tr_fsd`).
+    pub nfsd: i32,
+    /// Snow tracers where there is no snow (kg m⁻³, kg m⁻³, m; with `PRESSRIDGE_TRACER_SNOW`):
+    /// 0, or Icepack's refills, `rhos` = `rhosnew` with `snwredist = 'ITD'`, `smice` = `rhos`
+    /// and `rsnw` = `rsnw_fall` with `snwgrain`.
+    pub rhos_empty: f64,
+    /// See `rhos_empty`.
+    pub smice_empty: f64,
+    /// See `rhos_empty`.
+    pub rsnw_empty: f64,
+}
 
 /// Thermodynamic constants and clean-up thresholds of the ridging step (the fields of
 /// `pressridge::itd::RidgeStepParams`; Icepack's defaults from
@@ -129,29 +159,27 @@ pub(super) fn bad_value(msg: String) -> FfiError {
 }
 
 /// Makes a ridging set-up for `ncat` categories and the CICE tracer layout with `nilyr` ice
-/// and `nslyr` snow layers (both ≥ 1), the optional tracers of `tracer_flags` (a sum of
-/// `PRESSRIDGE_TRACER_*`), `n_iso` water-isotope species (0–3, Icepack `n_iso`) and `n_aero`
-/// aerosol species (0–6, Icepack `n_aero`), in the order of Icepack's driver: `Tsfc`,
-/// `qice(nilyr)`, `qsno(nslyr)`, `sice(nilyr)`, `iage`, `FY`, `alvl`, `vlvl`, `apnd`, `hpnd`,
-/// `ipnd`, `smice(nslyr)`, `smliq(nslyr)`, `rhos(nslyr)`, `rsnw(nslyr)`, `isosno(n_iso)`,
-/// `isoice(n_iso)`, four aerosol tracers per species (snow surface layer and interior, ice
-/// surface layer and interior). `options` (null: CICE
+/// and `nslyr` snow layers (both ≥ 1) and the optional tracers of `tracers` (null: none), in
+/// the order of Icepack's driver: `Tsfc`, `qice(nilyr)`, `qsno(nslyr)`, `sice(nilyr)`,
+/// `iage`, `FY`, `alvl`, `vlvl`, `apnd`, `hpnd`, `ipnd`, `smice(nslyr)`, `smliq(nslyr)`,
+/// `rhos(nslyr)`, `rsnw(nslyr)`, `fsd(nfsd)`, `isosno(n_iso)`, `isoice(n_iso)`, four aerosol
+/// tracers per species (snow surface layer and interior, ice surface layer and interior),
+/// `fbri`. `options` (null: CICE
 /// defaults) gives the participation, redistribution and ridging parameters (its strength
 /// fields are not used), `step_params` (null: Icepack defaults) the thermodynamic constants;
 /// `cleanup` and `rebin` are Icepack's `docleanup`, `dorebin` (nonzero = true). Writes the
 /// handle to `*ridger`; release it with [`pressridge_ridger_free`].
 ///
 /// # Safety
-/// `options` and `step_params` must be null or valid; `ridger` valid for one write.
+/// `tracers`, `options` and `step_params` must be null or valid; `ridger` valid for one
+/// write.
 #[unsafe(no_mangle)]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn pressridge_ridger_new(
     ncat: i64,
     nilyr: i64,
     nslyr: i64,
-    tracer_flags: i32,
-    n_iso: i32,
-    n_aero: i32,
+    tracers: *const PressridgeTracers,
     options: *const PressridgeOptions,
     step_params: *const PressridgeStepParams,
     cleanup: i32,
@@ -169,12 +197,23 @@ pub unsafe extern "C" fn pressridge_ridger_new(
                 ));
             }
         }
-        if tracer_flags & !31 != 0 {
+        let t = if tracers.is_null() {
+            PressridgeTracers::default()
+        } else {
+            *tracers
+        };
+        let tracer_flags = t.flags;
+        if tracer_flags & !255 != 0 {
             return Err(bad_value(format!(
-                "tracer_flags = {tracer_flags}: only PRESSRIDGE_TRACER_* (1, 2, 4, 8, 16) may be set"
+                "tracers.flags = {tracer_flags}: only PRESSRIDGE_TRACER_* (1, 2, 4, ..., 128) \
+                 may be set"
             )));
         }
-        for (name, v, max) in [("n_iso", n_iso, 3), ("n_aero", n_aero, 6)] {
+        for (name, v, max) in [
+            ("tracers.n_iso", t.n_iso, 3),
+            ("tracers.n_aero", t.n_aero, 6),
+            ("tracers.nfsd", t.nfsd, 1 << 20),
+        ] {
             if !(0..=max).contains(&v) {
                 return Err(bad_value(format!("{name} = {v}: must be 0 to {max}")));
             }
@@ -185,11 +224,28 @@ pub unsafe extern "C" fn pressridge_ridger_new(
             level_ice: tracer_flags & PRESSRIDGE_TRACER_LEVEL_ICE != 0,
             ponds: tracer_flags & PRESSRIDGE_TRACER_PONDS != 0,
             snow: tracer_flags & PRESSRIDGE_TRACER_SNOW != 0,
-            isotopes: n_iso as usize,
-            aerosols: n_aero as usize,
-            ..CiceTracerFlags::default()
+            isotopes: t.n_iso as usize,
+            aerosols: t.n_aero as usize,
+            pond_topo: tracer_flags & PRESSRIDGE_TRACER_POND_TOPO != 0,
+            pond_sealvl: tracer_flags & PRESSRIDGE_TRACER_POND_SEALVL != 0,
+            fsd: t.nfsd as usize,
+            brine: tracer_flags & PRESSRIDGE_TRACER_BRINE != 0,
         };
-        let layout = TracerLayout::cice(nilyr as usize, nslyr as usize, flags)?;
+        let mut layout = TracerLayout::cice(nilyr as usize, nslyr as usize, flags)?;
+        for (name, v) in [
+            ("rhos", t.rhos_empty),
+            ("smice", t.smice_empty),
+            ("rsnw", t.rsnw_empty),
+        ] {
+            if v != 0.0 {
+                if !flags.snow {
+                    return Err(bad_value(format!(
+                        "tracers.{name}_empty = {v}: needs PRESSRIDGE_TRACER_SNOW"
+                    )));
+                }
+                layout = layout.with_empty_value(name, v)?;
+            }
+        }
         let o = PressridgeOptions::from_ptr(options)?;
         let ro = o.ridge_options()?;
         let step = if step_params.is_null() {

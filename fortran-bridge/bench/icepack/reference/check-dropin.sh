@@ -28,6 +28,7 @@ FFLAGS="-O2 -ffree-line-length-none"
 mkdir -p "$BUILD"
 # Icepack as the reference data were built, and the reference driver on it.
 BUILD=$BUILD/icepack "$HERE/make-reference.sh" "$SRC" "$BUILD/icepack.jsonl" > /dev/null
+BUILD=$BUILD/icepack "$HERE/make-reference.sh" "$SRC" "$BUILD/icepack_topo.jsonl" topo > /dev/null
 cd "$BUILD"
 cp icepack/icepack_*.o icepack/*.mod .
 LIB=$ROOT/target/release
@@ -41,31 +42,36 @@ diff "$HERE/ridge_reference.f90" ridge_dropin.f90 | grep '^[<>]' | sed 's/^/  sw
 $FC $FFLAGS -c ridge_dropin.f90 -o ridge_dropin.o
 $FC -o ridge_dropin ridge_dropin.o dropin_module.o pressridge*.o icepack_*.o \
   -L"$LIB" -lpressridge -Wl,-rpath,"$LIB"
-python3 "$HERE/make_reference.py" "$BUILD/ridge_dropin" \
-  "$ROOT/tests/data/icepack/ridge_step_cases.jsonl" "$BUILD/dropin.jsonl" > /dev/null
-python3 - "$BUILD/icepack.jsonl" "$BUILD/dropin.jsonl" <<'PY'
+for variant in aero topo; do
+  python3 "$HERE/make_reference.py" "$BUILD/ridge_dropin" \
+    "$ROOT/tests/data/icepack/ridge_step_cases.jsonl" "$BUILD/dropin_$variant.jsonl" $variant > /dev/null
+done
+python3 - "$BUILD" <<'PY'
 import json, sys
-a = [json.loads(l) for l in open(sys.argv[1])][1:]
-b = [json.loads(l) for l in open(sys.argv[2])][1:]
 same = n = 0
-for x, y in zip(a, b):
-    ox, oy = x["outputs"], y["outputs"]
-    if x["group"] == "stress":
-        # Where Icepack returns negative amounts or aborts, pressridge refuses (an abort
-        # through Icepack's warnings) or gives a conserving answer: docs/strength.md.
-        print(f"{x['case']} (stress): Icepack {'aborts' if ox['aborted'] else 'answers'}, "
-              f"the drop-in {'aborts' if oy['aborted'] else 'answers'} (documented)")
-        continue
-    n += 1
-    if ox["aborted"]:
-        ok = oy["aborted"]
-        what = "Icepack aborts; the drop-in " + ("aborts too" if ok else "does not")
-    else:
-        diff = [k for k in ox if k != "warnings" and ox[k] != oy.get(k)]
-        ok = not diff and not oy["aborted"]
-        what = "bit-identical" if ok else "differs: " + ", ".join(diff or ["aborted"])
-    same += ok
-    print(f"{x['case']} ({x['group']}): {what}")
+for variant, ref in (("aero", "icepack.jsonl"), ("topo", "icepack_topo.jsonl")):
+    print(f"== {variant}: " + {"aero": "41 tracers, level-ice ponds, snow, 3 isotope and 2 aerosol species",
+                                "topo": "37 tracers, topography ponds, snow refills, floe size, brine"}[variant])
+    a = [json.loads(l) for l in open(f"{sys.argv[1]}/{ref}")][1:]
+    b = [json.loads(l) for l in open(f"{sys.argv[1]}/dropin_{variant}.jsonl")][1:]
+    for x, y in zip(a, b):
+        ox, oy = x["outputs"], y["outputs"]
+        if x["group"] == "stress":
+            # Where Icepack returns negative amounts or aborts, pressridge refuses (an abort
+            # through Icepack's warnings) or gives a conserving answer: docs/strength.md.
+            print(f"{x['case']} (stress): Icepack {'aborts' if ox['aborted'] else 'answers'}, "
+                  f"the drop-in {'aborts' if oy['aborted'] else 'answers'} (documented)")
+            continue
+        n += 1
+        if ox["aborted"]:
+            ok = oy["aborted"]
+            what = "Icepack aborts; the drop-in " + ("aborts too" if ok else "does not")
+        else:
+            diff = [k for k in ox if k != "warnings" and ox[k] != oy.get(k)]
+            ok = not diff and not oy["aborted"]
+            what = "bit-identical" if ok else "differs: " + ", ".join(diff or ["aborted"])
+        same += ok
+        print(f"{x['case']} ({x['group']}): {what}")
 print(f"drop-in: {same} of {n} cases bit-identical")
 sys.exit(0 if same == n else 1)
 PY
