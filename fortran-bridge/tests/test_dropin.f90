@@ -113,27 +113,13 @@ program test_dropin
        e == PRESSRIDGE_OK .and. p1 == p2 .and. p1 > 0 .and. .not. stub_aborted)
   ! What it refuses, through Icepack's warnings.
   stub_sizes(6) = 2
-  call icepack_step_ridge(dt=3600.0_c_double, ndtd=1, hin_max=h2, rdg_conv=conv, &
-       rdg_shear=shear, aicen=a2, trcrn=t2, vicen=v2, vsnon=s2, aice0=a02, &
-       trcr_depend=dep(1:nt), trcr_base=base(1:nt, :), n_trcr_strata=nst(1:nt), &
-       nt_strata=str(1:nt, :), dardg1dt=d(1, 2), dardg2dt=d(2, 2), dvirdgdt=d(3, 2), &
-       opening=op(2), fpond=fp(2), fresh=fr(2), fhocn=fh(2), faero_ocn=fa2, &
-       aparticn=x0, krdgn=x0, aredistn=x0, vredistn=x0, dardg1ndt=x0, dardg2ndt=x0, &
-       dvirdgndt=x0, araftn=x0, vraftn=x0, aice=ai2, fsalt=fs(2), first_ice=first2, &
-       flux_bio=fb, Tf=-1.8_c_double)
+  call refused_call(.true.)
   call check('biogeochemistry (nbtrcr > 0): an abort through Icepack''s warnings naming it', &
        stub_aborted .and. index(stub_message, 'nbtrcr') > 0)
   stub_sizes(6) = 0
   stub_aborted = .false.
   dep(24) = 1
-  call icepack_step_ridge(dt=3600.0_c_double, ndtd=1, hin_max=h2, rdg_conv=conv, &
-       rdg_shear=shear, aicen=a2, trcrn=t2, vicen=v2, vsnon=s2, aice0=a02, &
-       trcr_depend=dep(1:nt), trcr_base=base(1:nt, :), n_trcr_strata=nst(1:nt), &
-       nt_strata=str(1:nt, :), dardg1dt=d(1, 2), dardg2dt=d(2, 2), dvirdgdt=d(3, 2), &
-       opening=op(2), fpond=fp(2), fresh=fr(2), fhocn=fh(2), faero_ocn=fa2, &
-       aparticn=x0, krdgn=x0, aredistn=x0, vredistn=x0, dardg1ndt=x0, dardg2ndt=x0, &
-       dvirdgndt=x0, araftn=x0, vraftn=x0, aice=ai2, fsalt=fs(2), first_ice=first2, &
-       flux_bio=fb, Tf=-1.8_c_double, docleanup=.false.)
+  call refused_call(.false.)
   call check('a host tracer table that differs: an abort naming the tracer', &
        stub_aborted .and. index(stub_message, 'tracer 24') > 0)
   if (failures > 0) then
@@ -143,6 +129,20 @@ program test_dropin
   print '(a)', 'drop-in (Icepack stand-in): all checks passed'
 
 contains
+
+  !> The drop-in with Icepack's arguments on the second copy of the column (a call it is
+  !> expected to refuse).
+  subroutine refused_call(cleanup)
+    logical, intent(in) :: cleanup
+    call icepack_step_ridge(dt=3600.0_c_double, ndtd=1, hin_max=h2, rdg_conv=conv, &
+         rdg_shear=shear, aicen=a2, trcrn=t2, vicen=v2, vsnon=s2, aice0=a02, &
+         trcr_depend=dep(1:nt), trcr_base=base(1:nt, :), n_trcr_strata=nst(1:nt), &
+         nt_strata=str(1:nt, :), dardg1dt=d(1, 2), dardg2dt=d(2, 2), dvirdgdt=d(3, 2), &
+         opening=op(2), fpond=fp(2), fresh=fr(2), fhocn=fh(2), faero_ocn=fa2, &
+         aparticn=x0, krdgn=x0, aredistn=x0, vredistn=x0, dardg1ndt=x0, dardg2ndt=x0, &
+         dvirdgndt=x0, araftn=x0, vraftn=x0, aice=ai2, fsalt=fs(2), first_ice=first2, &
+         flux_bio=fb, Tf=-1.8_c_double, docleanup=cleanup)
+  end subroutine refused_call
 
   subroutine check(what, ok)
     character(len=*), intent(in) :: what

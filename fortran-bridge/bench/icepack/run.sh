@@ -23,22 +23,7 @@ FC=${FC:-gfortran}
 FFLAGS="-O2 -ffree-line-length-none"
 mkdir -p "$BUILD"
 cd "$BUILD"
-# Icepack's modules depend on each other: compile until every file has compiled.
-todo=("$SRC"/columnphysics/*.F90)
-for pass in $(seq 1 ${#todo[@]}); do
-  left=()
-  for f in "${todo[@]}"; do
-    o=$(basename "${f%.F90}").o
-    $FC $FFLAGS -c "$f" -o "$o" 2>/dev/null || left+=("$f")
-  done
-  todo=("${left[@]+"${left[@]}"}")
-  [ ${#todo[@]} -eq 0 ] && break
-done
-if [ ${#todo[@]} -ne 0 ]; then
-  echo "could not compile: ${todo[*]}" >&2
-  $FC $FFLAGS -c "${todo[0]}" -o /dev/null
-  exit 1
-fi
+"$HERE/build-icepack.sh" "$SRC"
 LIB=$ROOT/target/release
 [ -f "$LIB/libpressridge.so" ] || (cd "$ROOT" && cargo build --release --lib)
 # The pressridge module (fortran-bridge/src/, in the Makefile's order): *.mod and pressridge*.o.

@@ -28,23 +28,7 @@ FC=${FC:-gfortran}
 FFLAGS="-O2 -ffree-line-length-none"
 mkdir -p "$BUILD"
 cd "$BUILD"
-# Icepack's modules depend on each other: compile until every file has compiled.
-todo=("$SRC"/columnphysics/*.F90)
-for pass in $(seq 1 ${#todo[@]}); do
-  left=()
-  for f in "${todo[@]}"; do
-    o=$(basename "${f%.F90}").o
-    [ -f "$o" ] && [ "$o" -nt "$f" ] && continue
-    $FC $FFLAGS -c "$f" -o "$o" 2>/dev/null || left+=("$f")
-  done
-  todo=("${left[@]+"${left[@]}"}")
-  [ ${#todo[@]} -eq 0 ] && break
-done
-if [ ${#todo[@]} -ne 0 ]; then
-  echo "could not compile: ${todo[*]}" >&2
-  $FC $FFLAGS -c "${todo[0]}" -o /dev/null
-  exit 1
-fi
+"$HERE/../build-icepack.sh" "$SRC"
 $FC $FFLAGS -c "$HERE/ridge_reference.f90" -o ridge_reference.o
 $FC -o ridge_reference ridge_reference.o icepack_*.o
 echo "Icepack: $(cat "$SRC/columnphysics/version.txt" 2>/dev/null) $(git -C "$SRC" describe --always 2>/dev/null || true), $($FC --version | head -1)"

@@ -81,26 +81,11 @@ program ridge_reference
      aparticn = 0; krdgn = 0; aredistn = 0; vredistn = 0; dardg1ndt = 0; dardg2ndt = 0
      dvirdgndt = 0; araftn = 0; vraftn = 0
      if (hasc == 0) opening = 0
+     ! closing present (SIS2) or absent (CICE): an absent optional is passed on absent.
      if (hasc == 1) then
-        call icepack_step_ridge(dt=dt, ndtd=ndtd, hin_max=hin, rdg_conv=conv, &
-             rdg_shear=shear, aicen=a, trcrn=tr, vicen=v, vsnon=s, aice0=aice0, &
-             trcr_depend=trcr_depend, trcr_base=trcr_base, n_trcr_strata=n_trcr_strata, &
-             nt_strata=nt_strata, dardg1dt=d1, dardg2dt=d2, dvirdgdt=d3, opening=opening, &
-             fpond=fpond, fresh=fresh, fhocn=fhocn, faero_ocn=faero, fiso_ocn=fiso, &
-             aparticn=aparticn, krdgn=krdgn, aredistn=aredistn, vredistn=vredistn, &
-             dardg1ndt=dardg1ndt, dardg2ndt=dardg2ndt, dvirdgndt=dvirdgndt, araftn=araftn, &
-             vraftn=vraftn, aice=aice, fsalt=fsalt, first_ice=first_ice, flux_bio=fbio, &
-             closing=closing, Tf=tf, dpnd_ridge=dpnd, docleanup=docl == 1, dorebin=dore == 1)
+        call step(closing)
      else
-        call icepack_step_ridge(dt=dt, ndtd=ndtd, hin_max=hin, rdg_conv=conv, &
-             rdg_shear=shear, aicen=a, trcrn=tr, vicen=v, vsnon=s, aice0=aice0, &
-             trcr_depend=trcr_depend, trcr_base=trcr_base, n_trcr_strata=n_trcr_strata, &
-             nt_strata=nt_strata, dardg1dt=d1, dardg2dt=d2, dvirdgdt=d3, opening=opening, &
-             fpond=fpond, fresh=fresh, fhocn=fhocn, faero_ocn=faero, fiso_ocn=fiso, &
-             aparticn=aparticn, krdgn=krdgn, aredistn=aredistn, vredistn=vredistn, &
-             dardg1ndt=dardg1ndt, dardg2ndt=dardg2ndt, dvirdgndt=dvirdgndt, araftn=araftn, &
-             vraftn=vraftn, aice=aice, fsalt=fsalt, first_ice=first_ice, flux_bio=fbio, &
-             Tf=tf, dpnd_ridge=dpnd, docleanup=docl == 1, dorebin=dore == 1)
+        call step()
      end if
      ! The strength of the new state (Icepack's kstrength, Rothrock by default).
      str = 0
@@ -146,6 +131,20 @@ program ridge_reference
   close (7)
 
 contains
+
+  !> Icepack's step of the case read (closing: the host's, or absent).
+  subroutine step(cl)
+    real(dp), intent(inout), optional :: cl
+    call icepack_step_ridge(dt=dt, ndtd=ndtd, hin_max=hin, rdg_conv=conv, rdg_shear=shear, &
+         aicen=a, trcrn=tr, vicen=v, vsnon=s, aice0=aice0, trcr_depend=trcr_depend, &
+         trcr_base=trcr_base, n_trcr_strata=n_trcr_strata, nt_strata=nt_strata, &
+         dardg1dt=d1, dardg2dt=d2, dvirdgdt=d3, opening=opening, fpond=fpond, fresh=fresh, &
+         fhocn=fhocn, faero_ocn=faero, fiso_ocn=fiso, aparticn=aparticn, krdgn=krdgn, &
+         aredistn=aredistn, vredistn=vredistn, dardg1ndt=dardg1ndt, dardg2ndt=dardg2ndt, &
+         dvirdgndt=dvirdgndt, araftn=araftn, vraftn=vraftn, aice=aice, fsalt=fsalt, &
+         first_ice=first_ice, flux_bio=fbio, closing=cl, Tf=tf, dpnd_ridge=dpnd, &
+         docleanup=docl == 1, dorebin=dore == 1)
+  end subroutine step
 
   subroutine put(name, x)
     character(len=*), intent(in) :: name
