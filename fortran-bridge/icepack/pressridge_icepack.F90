@@ -4,11 +4,14 @@
 !>   use pressridge_icepack, only: icepack_step_ridge => pressridge_icepack_step_ridge, &
 !>        icepack_ice_strength => pressridge_icepack_ice_strength
 !>
-!> Compiled with the host beside Icepack (it uses icepack_intfc): every call reads Icepack's
-!> tracer sizes and the ridging parameters (krdg_partic, krdg_redist, mu_rdg, kstrength, Cf,
-!> Pstar, Cstar, the densities and thermodynamic constants) through Icepack's own queries,
-!> and makes the pressridge set-up for them on first use (one per set of values and
-!> docleanup/dorebin, kept for the run; OpenMP threads share it). The host's tracer tables
+!> Compiled with the host beside Icepack (it uses icepack_intfc): the first call reads
+!> Icepack's tracer flags and sizes and the ridging parameters (krdg_partic, krdg_redist,
+!> mu_rdg, kstrength, Cf, Pstar, Cstar, the densities and thermodynamic constants) through
+!> Icepack's own queries and makes the pressridge set-up for them (one per number of
+!> categories and tracers and docleanup/dorebin, kept for the run; OpenMP threads share it).
+!> Later calls use it without asking Icepack again (the queries would cost more than a
+!> strength); a host that changes Icepack's parameters or tracer flags during the run calls
+!> pressridge_icepack_refresh() after the change. The host's tracer tables
 !> (trcr_depend, trcr_base, n_trcr_strata, nt_strata) are checked against the layout
 !> pressridge derives from Icepack's flags (every pond scheme, the snow tracers with Icepack's
 !> refills, floe size, isotopes, aerosols, brine). Errors, and biogeochemical tracers, which
@@ -26,7 +29,8 @@ module pressridge_icepack
   implicit none
   private
 
-  public :: pressridge_icepack_step_ridge, pressridge_icepack_ice_strength
+  public :: pressridge_icepack_step_ridge, pressridge_icepack_ice_strength, &
+       pressridge_icepack_refresh
 
   !> One set-up: the values it was made for and its handle.
   type :: setup
@@ -42,8 +46,20 @@ module pressridge_icepack
   integer, parameter :: max_setups = 16
   type(setup), save :: setups(max_setups)
   integer, save :: nsetups = 0
+  !> Set-ups made since the last refresh: their indices are taken without asking Icepack.
+  logical, save :: current(max_setups) = .false.
+  !> The strength's options read from Icepack, and whether they are current.
+  type(pressridge_options), save :: strength_options
+  logical, save :: strength_current = .false.
 
 contains
+
+  !> Makes the next call read Icepack's tracer flags, sizes and parameters again: for a host
+  !> that changes them during the run (call it outside OpenMP regions).
+  subroutine pressridge_icepack_refresh()
+    current = .false.
+    strength_current = .false.
+  end subroutine pressridge_icepack_refresh
 
   !> Icepack's icepack_step_ridge (argument names, meanings and optional arguments as in
   !> Icepack 1.5): the complete ridging step of one cell by pressridge. flux_bio is accepted
@@ -78,9 +94,17 @@ contains
     rebin = .true.
     if (present(docleanup)) clean = docleanup
     if (present(dorebin)) rebin = dorebin
-    k = setup_for(size(aicen), size(trcrn, 1), clean, rebin, trcr_depend, trcr_base, &
-         n_trcr_strata, nt_strata)
-    if (k == 0) return
+    ! A current set-up for these sizes and clean-up flags, else Icepack is asked.
+    do k = 1, nsetups
+       if (current(k) .and. setups(k)%ncat == size(aicen) .and. &
+            setups(k)%ntrcr == size(trcrn, 1) .and. (setups(k)%cleanup .eqv. clean) .and. &
+            (setups(k)%rebin .eqv. rebin)) exit
+    end do
+    if (k > nsetups) then
+       k = setup_for(size(aicen), size(trcrn, 1), clean, rebin, trcr_depend, trcr_base, &
+            n_trcr_strata, nt_strata)
+       if (k == 0) return
+    end if
     fa = 0
     fi = 0
     associate (s => setups(k))
@@ -108,18 +132,27 @@ contains
     real(c_double), intent(inout) :: strength
     type(pressridge_options) :: o
     integer :: e, kstrength, kp, kr
-    ! Local options (OpenMP threads may call at once): pressridge's defaults with Icepack's
-    ! present values.
-    call pressridge_get_parameters(o)
-    call icepack_query_parameters(kstrength_out=kstrength, krdg_partic_out=kp, &
-         krdg_redist_out=kr, mu_rdg_out=o%params%mu_rdg, Cf_out=o%cf, Pstar_out=o%params%pstar, &
-         Cstar_out=o%params%cstar, rhoi_out=o%params%rhoi, rhow_out=o%params%rhow, &
-         gravit_out=o%params%gravit)
-    o%strength_law = kstrength
-    o%participation = kp
-    o%redistribution = kr
-    o%cf_source = PRESSRIDGE_CF_SOURCE_CONSTANT
-    call pressridge_ice_strength(aice, vice, aice0, aicen, vicen, strength, e, o)
+    ! The options read from Icepack once (under a critical section: OpenMP threads may call
+    ! at once), then shared read-only: pressridge's defaults with Icepack's values.
+    if (.not. strength_current) then
+       !$omp critical (pressridge_icepack_setup)
+       if (.not. strength_current) then
+          call pressridge_get_parameters(o)
+          call icepack_query_parameters(kstrength_out=kstrength, krdg_partic_out=kp, &
+               krdg_redist_out=kr, mu_rdg_out=o%params%mu_rdg, Cf_out=o%cf, &
+               Pstar_out=o%params%pstar, Cstar_out=o%params%cstar, rhoi_out=o%params%rhoi, &
+               rhow_out=o%params%rhow, gravit_out=o%params%gravit)
+          o%strength_law = kstrength
+          o%participation = kp
+          o%redistribution = kr
+          o%cf_source = PRESSRIDGE_CF_SOURCE_CONSTANT
+          strength_options = o
+          strength_current = .true.
+       end if
+       !$omp end critical (pressridge_icepack_setup)
+    end if
+    call pressridge_ice_strength(aice, vice, aice0, aicen, vicen, strength, e, &
+         strength_options)
     if (e /= PRESSRIDGE_OK) call abort_with('(pressridge_icepack_ice_strength) '// &
          trim(pressridge_last_error_message()))
   end subroutine pressridge_icepack_ice_strength
@@ -147,7 +180,12 @@ contains
          tr_pond_lvl_out=pond_lvl, tr_pond_topo_out=pond_topo, &
          tr_pond_sealvl_out=pond_sealvl, tr_snow_out=snow, tr_brine_out=brine, &
          tr_fsd_out=fsd, tr_iso_out=iso, tr_aero_out=aero)
-    call icepack_query_parameters(krdg_partic_out=kp, krdg_redist_out=kr, mu_rdg_out=mu_rdg)
+    call icepack_query_parameters(krdg_partic_out=kp, krdg_redist_out=kr, mu_rdg_out=mu_rdg, &
+         rhos_out=rhos, rhoi_out=rhoi, Lfresh_out=lfresh, &
+         cp_ice_out=cp_ice, ice_ref_salinity_out=sal, itd_area_min_out=amin, &
+         itd_mass_min_out=mmin, hs_min_out=hsmin, saltflux_option_out=saltflux, &
+         snwredist_out=snwredist, snwgrain_out=snwgrain, rhosnew_out=rhosnew, &
+         rsnw_fall_out=rsnw_fall)
     if (nbtrcr > 0) then
        call abort_with(subname//' pressridge does not carry biogeochemical tracers yet '// &
             '(nbtrcr > 0)')
@@ -169,11 +207,6 @@ contains
     want%flags = [iage, fy, lvl, pond_lvl, snow, pond_topo, pond_sealvl, brine]
     want%cleanup = clean
     want%rebin = rebin
-    call icepack_query_parameters(rhos_out=rhos, rhoi_out=rhoi, Lfresh_out=lfresh, &
-         cp_ice_out=cp_ice, ice_ref_salinity_out=sal, itd_area_min_out=amin, &
-         itd_mass_min_out=mmin, hs_min_out=hsmin, saltflux_option_out=saltflux, &
-         snwredist_out=snwredist, snwgrain_out=snwgrain, rhosnew_out=rhosnew, &
-         rsnw_fall_out=rsnw_fall)
     ! Icepack's refills of the snow tracers where there is no snow.
     if (snow .and. snwredist(1:3) == 'ITD') want%refill(1) = rhosnew
     if (snow .and. snwgrain) want%refill(2:3) = [rhos, rsnw_fall]
@@ -186,14 +219,18 @@ contains
     want%step%itd_mass_min = mmin
     want%step%hs_min = hsmin
     want%step%salt_flux_prognostic = merge(1, 0, trim(saltflux) == 'prognostic')
-    do k = 1, nsetups
-       if (same(setups(k), want)) return
-    end do
     !$omp critical (pressridge_icepack_setup)
     do k = 1, nsetups
        if (same(setups(k), want)) exit
     end do
     if (k > nsetups) k = make(want, rhoi, trcr_depend, trcr_base, n_trcr_strata, nt_strata)
+    if (k > 0) then
+       ! The one current set-up for these sizes and flags.
+       where (setups(1:nsetups)%ncat == ncat .and. setups(1:nsetups)%ntrcr == ntrcr .and. &
+            (setups(1:nsetups)%cleanup .eqv. clean) .and. (setups(1:nsetups)%rebin .eqv. rebin)) &
+            current(1:nsetups) = .false.
+       current(k) = .true.
+    end if
     !$omp end critical (pressridge_icepack_setup)
   end function setup_for
 

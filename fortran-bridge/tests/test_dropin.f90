@@ -1,14 +1,14 @@
 !> The Icepack drop-in (icepack/pressridge_icepack.F90) built against the stand-in of
 !> Icepack's interface (icepack_stub.F90), without Icepack: with Icepack's argument lists it
 !> gives pressridge_step_ridge's and pressridge_ice_strength's answers bit for bit, follows
-!> Icepack's parameters from call to call, and reports what it refuses through Icepack's
+!> a change of Icepack's parameters after pressridge_icepack_refresh, and reports what it refuses through Icepack's
 !> warnings. (The drop-in against Icepack itself, every tracer group included:
 !> bench/icepack/reference/check-dropin.sh.)
 program test_dropin
   use, intrinsic :: iso_c_binding, only: c_double
   use pressridge
   use pressridge_icepack, only: icepack_step_ridge => pressridge_icepack_step_ridge, &
-       icepack_ice_strength => pressridge_icepack_ice_strength
+       icepack_ice_strength => pressridge_icepack_ice_strength, pressridge_icepack_refresh
   use icepack_intfc, only: stub_flags, stub_sizes, stub_krdg_redist, stub_mu_rdg
   use icepack_warnings, only: stub_aborted, stub_message
   implicit none
@@ -49,6 +49,7 @@ program test_dropin
      if (pass == 2) then
         stub_krdg_redist = 0
         stub_mu_rdg = 4.0_c_double
+        call pressridge_icepack_refresh()
         call pressridge_ridger_free(rg)
         call pressridge_init_parameters(krdg_redist=0, mu_rdg=4.0_c_double)
         call pressridge_ridger_init(rg, nc, 7, 1, .true., .true., .true., .true., &
@@ -105,6 +106,7 @@ program test_dropin
   call pressridge_ridger_free(rg)
   stub_krdg_redist = 1
   stub_mu_rdg = 3.0_c_double
+  call pressridge_icepack_refresh()
   ! The strength, Icepack-style, with Icepack's (stub) parameters.
   call pressridge_ice_strength(sum(a1), sum(v1), a01, a1, v1, p1, e)
   p2 = 0
@@ -113,10 +115,12 @@ program test_dropin
        e == PRESSRIDGE_OK .and. p1 == p2 .and. p1 > 0 .and. .not. stub_aborted)
   ! What it refuses, through Icepack's warnings.
   stub_sizes(6) = 2
+  call pressridge_icepack_refresh()
   call refused_call(.true.)
   call check('biogeochemistry (nbtrcr > 0): an abort through Icepack''s warnings naming it', &
        stub_aborted .and. index(stub_message, 'nbtrcr') > 0)
   stub_sizes(6) = 0
+  call pressridge_icepack_refresh()
   stub_aborted = .false.
   dep(24) = 1
   call refused_call(.false.)

@@ -15,6 +15,7 @@ program bench_icepack_ridge
        icepack_init_tracer_flags, icepack_init_tracer_indices, icepack_init_parameters, &
        icepack_warnings_flush, icepack_warnings_aborted
   use pressridge
+  use pressridge_icepack, only: pressridge_icepack_step_ridge, pressridge_icepack_ice_strength
   implicit none
   integer, parameter :: ncat = 5, nilyr = 7, nslyr = 1, ntrcr = 23
   real(c_double), parameter :: hmid(ncat) = [0.3d0, 1.0d0, 1.9d0, 3.0d0, 4.5d0]
@@ -26,8 +27,8 @@ program bench_icepack_ridge
   real(c_double), allocatable :: ia(:, :), iv(:, :), is(:, :), it(:, :, :), ia0(:), iaice(:)
   real(c_double), allocatable :: pa(:, :), pv(:, :), ps(:, :), pt(:, :, :), pa0(:), paice(:)
   real(c_double), allocatable :: fr(:), fs(:), fh(:), fp(:), cv(:), sh(:)
-  real(c_double), allocatable :: sic(:), spc(:), spb(:), ai(:), vi(:)
-  real(c_double) :: r, w(ncat), sw, hin(0:ncat), t, tic, tpc, tpb, diff
+  real(c_double), allocatable :: sic(:), spc(:), spb(:), sdi(:), ai(:), vi(:)
+  real(c_double) :: r, w(ncat), sw, hin(0:ncat), t, tic, tpc, tpb, tdi, diff, ddi
   real(c_double) :: d1, d2, d3, op, fpond, fresh, fhocn, fsalt, aice, faero(1), fbio(1)
   real(c_double) :: aparticn(ncat), krdgn(ncat), aredistn(ncat), vredistn(ncat), &
        dardg1ndt(ncat), dardg2ndt(ncat), dvirdgndt(ncat), araftn(ncat), vraftn(ncat)
@@ -109,6 +110,7 @@ program bench_icepack_ridge
   tic = huge(1.0d0)
   tpc = huge(1.0d0)
   tpb = huge(1.0d0)
+  tdi = huge(1.0d0)
   do rep = 1, 3
      ! Icepack, per cell (as CICE's step_dyn_ridge).
      ia = a
@@ -160,6 +162,35 @@ program bench_icepack_ridge
      tpc = min(tpc, real(t1 - t0, c_double) / rate)
      diff = max(maxval(abs(pa - ia)), maxval(abs(pv - iv)), maxval(abs(ps - is)), &
           maxval(abs(pt - it) / max(1.0d0, abs(it))))
+     ! The drop-in, Icepack's arguments (set-up read through Icepack's queries each call).
+     pa = a
+     pv = v
+     ps = s
+     pt = tr
+     pa0 = a0
+     call system_clock(t0)
+     do c = 1, ncol
+        hin = hin0
+        fpond = 0
+        fresh = 0
+        fhocn = 0
+        fsalt = 0
+        first_ice = .false.
+        call pressridge_icepack_step_ridge(dt=dt, ndtd=1, hin_max=hin, rdg_conv=cv(c), &
+             rdg_shear=sh(c), aicen=pa(:, c), trcrn=pt(:, :, c), vicen=pv(:, c), &
+             vsnon=ps(:, c), aice0=pa0(c), trcr_depend=trcr_depend, trcr_base=trcr_base, &
+             n_trcr_strata=n_trcr_strata, nt_strata=nt_strata, dardg1dt=d1, dardg2dt=d2, &
+             dvirdgdt=d3, opening=op, fpond=fpond, fresh=fresh, fhocn=fhocn, faero_ocn=faero, &
+             aparticn=aparticn, krdgn=krdgn, aredistn=aredistn, vredistn=vredistn, &
+             dardg1ndt=dardg1ndt, dardg2ndt=dardg2ndt, dvirdgndt=dvirdgndt, araftn=araftn, &
+             vraftn=vraftn, aice=paice(c), fsalt=fsalt, first_ice=first_ice, flux_bio=fbio, &
+             Tf=tf)
+     end do
+     call system_clock(t1)
+     tdi = min(tdi, real(t1 - t0, c_double) / rate)
+     if (icepack_warnings_aborted()) error stop 'the drop-in aborted'
+     ddi = max(maxval(abs(pa - ia)), maxval(abs(pv - iv)), maxval(abs(ps - is)), &
+          maxval(abs(pt - it) / max(1.0d0, abs(it))))
      ! pressridge, all cells in one call.
      pa = a
      pv = v
@@ -180,12 +211,14 @@ program bench_icepack_ridge
        ' cells, best of 3 (ns per cell):'
   print '(a, f9.1)', '  Icepack icepack_step_ridge, per cell:        ', 1d9 * tic / ncol
   print '(a, f9.1)', '  pressridge_step_ridge (C ABI), per cell:     ', 1d9 * tpc / ncol
+  print '(a, f9.1)', '  pressridge_icepack_step_ridge (drop-in):     ', 1d9 * tdi / ncol
   print '(a, f9.1)', '  pressridge_step_ridge_cells, one call:       ', 1d9 * tpb / ncol
   print '(a, es10.2)', '  largest difference from Icepack (state, tracers relative): ', diff
+  print '(a, es10.2)', '  the same for the drop-in: ', ddi
   call pressridge_ridger_free(rg)
 
   ! Ice strength, as CICE's step_dyn calls it once per cell; and pressridge batched.
-  allocate(sic(ncol), spc(ncol), spb(ncol), ai(ncol), vi(ncol))
+  allocate(sic(ncol), spc(ncol), spb(ncol), sdi(ncol), ai(ncol), vi(ncol))
   do c = 1, ncol
      ai(c) = sum(a(:, c))
      vi(c) = sum(v(:, c))
@@ -196,9 +229,11 @@ program bench_icepack_ridge
   ! Icepack and pressridge alternate every 2000 cells and are timed in CPU time
   ! (cpu_time), so that both see the same load on a shared machine and time spent
   ! descheduled is not counted; best of 3 repetitions of the sums.
+  tdi = huge(1.0d0)
   do rep = 1, 3
      t = 0
      d1 = 0
+     op = 0
      do k = 1, ncol, 2000
         call cpu_time(d2)
         do c = k, min(k + 1999, ncol)
@@ -213,9 +248,17 @@ program bench_icepack_ridge
         end do
         call cpu_time(d3)
         d1 = d1 + (d3 - d2)
+        call cpu_time(d2)
+        do c = k, min(k + 1999, ncol)
+           sdi(c) = 0
+           call pressridge_icepack_ice_strength(ai(c), vi(c), a0(c), a(:, c), v(:, c), sdi(c))
+        end do
+        call cpu_time(d3)
+        op = op + (d3 - d2)
      end do
      tic = min(tic, t)
      tpc = min(tpc, d1)
+     tdi = min(tdi, op)
      call cpu_time(d2)
      call pressridge_strength(a, v, spb, aice0=a0)
      call cpu_time(d3)
@@ -225,10 +268,12 @@ program bench_icepack_ridge
   print '(a, i0, a)', 'ice strength, ncat = 5, ', ncol, ' cells, best of 3, CPU time (ns per cell):'
   print '(a, f9.1)', '  Icepack icepack_ice_strength, per cell:      ', 1d9 * tic / ncol
   print '(a, f9.1)', '  pressridge_ice_strength, per cell:           ', 1d9 * tpc / ncol
+  print '(a, f9.1)', '  pressridge_icepack_ice_strength (drop-in):   ', 1d9 * tdi / ncol
   print '(a, f9.1)', '  pressridge_strength, one call:               ', 1d9 * tpb / ncol
   print '(a, es10.2)', '  largest relative difference from Icepack: ', &
        max(maxval(abs(spc - sic) / max(1.0d0, abs(sic))), &
-       maxval(abs(spb - sic) / max(1.0d0, abs(sic))))
+       maxval(abs(spb - sic) / max(1.0d0, abs(sic))), &
+       maxval(abs(sdi - sic) / max(1.0d0, abs(sic))))
 
 contains
 

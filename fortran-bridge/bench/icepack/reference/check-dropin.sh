@@ -9,7 +9,9 @@
 # replaced by
 #   use pressridge_icepack, only: icepack_step_ridge => pressridge_icepack_step_ridge, &
 #        icepack_ice_strength => pressridge_icepack_ice_strength
-# (the one line a host changes), then runs the snow, isotope and aerosol cases
+# (the one line a host changes), and a call of pressridge_icepack_refresh() after each case's
+# icepack_init_parameters (the driver changes Icepack's parameters between calls, which a
+# host does not), then runs the snow, isotope and aerosol cases
 # (make_reference.py) through both and compares every output. Prints a line per case and
 # `drop-in: N of N cases bit-identical` last (the typical and hard cases; the stress cases,
 # where Icepack returns negative amounts, are listed with what each does); exit status 1 if
@@ -36,7 +38,8 @@ LIB=$ROOT/target/release
 make -s -C "$ROOT/fortran-bridge" module BUILD="$BUILD" FC="$FC" FFLAGS="-O2"
 $FC $FFLAGS -c "$ROOT/fortran-bridge/icepack/pressridge_icepack.F90" -o dropin_module.o
 # The swap: one line of the driver.
-sed 's/^  use icepack_intfc, only: icepack_step_ridge, icepack_ice_strength, /  use pressridge_icepack, only: icepack_step_ridge => pressridge_icepack_step_ridge, icepack_ice_strength => pressridge_icepack_ice_strength\n  use icepack_intfc, only: /' \
+sed -e 's/^  use icepack_intfc, only: icepack_step_ridge, icepack_ice_strength, /  use pressridge_icepack, only: icepack_step_ridge => pressridge_icepack_step_ridge, icepack_ice_strength => pressridge_icepack_ice_strength, pressridge_icepack_refresh\n  use icepack_intfc, only: /' \
+    -e 's/^     d1 = 0; d2 = 0/     call pressridge_icepack_refresh()\n&/' \
   "$HERE/ridge_reference.f90" > ridge_dropin.f90
 diff "$HERE/ridge_reference.f90" ridge_dropin.f90 | grep '^[<>]' | sed 's/^/  swapped: /' || true
 $FC $FFLAGS -c ridge_dropin.f90 -o ridge_dropin.o
