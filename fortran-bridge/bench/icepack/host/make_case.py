@@ -1,0 +1,60 @@
+#!/usr/bin/env python3
+"""One case of Icepack's column driver (icedrv) as Icepack's scripts set it up.
+
+    make_case.py ICEPACK_DIR CASE DATA_DIR namelist   -> the namelist icepack_in
+    make_case.py ICEPACK_DIR CASE DATA_DIR cppdefs    -> the preprocessor definitions
+
+CASE is `default` or options joined by commas (`alt01`, `thermo1,dyn`, ...), each applied
+over `run1year` as base_suite.ts runs them: the options' set_env.* files change the sizes
+(the -D definitions icepack.build makes from icepack.settings), their set_nml.* files the
+namelist (keys replaced where configuration/scripts/icepack_in has them). The run reads its
+deformation from DATA_DIR/SHEBA/open_clos_lindsay.dat and writes its diagnostics daily.
+"""
+import re
+import sys
+from pathlib import Path
+
+src, case, data, what = Path(sys.argv[1]), sys.argv[2], sys.argv[3], sys.argv[4]
+scripts = src / "configuration" / "scripts"
+options = ["run1year"] + ([] if case == "default" else case.split(","))
+
+if what == "cppdefs":
+    env = {}
+    for line in (scripts / "icepack.settings").read_text().splitlines():
+        m = re.match(r"\s*setenv\s+(\w+)\s+(\S+)", line)
+        if m:
+            env[m.group(1)] = m.group(2)
+    for o in options:
+        f = scripts / "options" / f"set_env.{o}"
+        if f.exists():
+            for line in f.read_text().splitlines():
+                m = re.match(r"\s*setenv\s+(\w+)\s+(\S+)", line)
+                if m:
+                    env[m.group(1)] = m.group(2)
+    keys = ["NICELYR", "NSNWLYR", "NICECAT", "NFSDCAT", "TRAGE", "TRFY", "TRLVL", "TRPND",
+            "TRSNOW", "TRBRI", "NTRISO", "NTRAERO", "NBGCLYR", "TRALG", "TRBGCZ", "TRDOC",
+            "TRDIC", "TRDON", "TRFED", "TRFEP", "TRZAERO", "TRBGCS"]
+    defs = [f"-DNXGLOB={env['ICE_NXGLOB']}"] + [f"-D{k}={env[k]}" for k in keys]
+    print(" ".join(defs + ["-DNO_SNICARHC"]))
+    sys.exit(0)
+
+assert what == "namelist", what
+text = (scripts / "icepack_in").read_text()
+sets = {}
+for o in options:
+    f = scripts / "options" / f"set_nml.{o}"
+    if not f.exists():
+        sys.exit(f"make_case.py: no option set_nml.{o} in {scripts / 'options'}")
+    for line in f.read_text().splitlines():
+        m = re.match(r"\s*(\w+)\s*=\s*(.+?)\s*$", line)
+        if m:
+            sets[m.group(1)] = m.group(2)
+sets["data_dir"] = f"'{data}/'"
+sets["diagfreq"] = sets.get("diagfreq", "24")
+out = []
+for line in text.splitlines():
+    m = re.match(r"(\s*)(\w+)(\s*=\s*)(.+?)\s*$", line)
+    if m and m.group(2) in sets:
+        line = f"{m.group(1)}{m.group(2)}{m.group(3)}{sets[m.group(2)]}"
+    out.append(line)
+print("\n".join(out))
