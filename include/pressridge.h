@@ -376,7 +376,8 @@ typedef struct PressridgeStepParams {
   double tmin;
 } PressridgeStepParams;
 
-// The optional tracers of a ridging set-up ([`pressridge_ridger_new`]); all zero: none.
+// The optional tracers of a ridging set-up ([`pressridge_ridger_new`]); all zero and null:
+// none.
 typedef struct PressridgeTracers {
   // Sum of `PRESSRIDGE_TRACER_*` flags.
   int32_t flags;
@@ -394,6 +395,20 @@ typedef struct PressridgeTracers {
   double smice_empty;
   // See `rhos_empty`.
   double rsnw_empty;
+  // Null, or the host's Icepack tracer tables, `host_ntrcr` tracers (the layout's count):
+  // `trcr_depend(ntrcr)`, `trcr_base(ntrcr, 3)` and `nt_strata(ntrcr, 2)` in Fortran order
+  // (1-based tracer numbers), `n_trcr_strata(ntrcr)`; all four or none. Each tracer is then
+  // carried as they say, as Icepack moves every tracer through them (its roles stay the
+  // layout's).
+  const int32_t *host_trcr_depend;
+  // See `host_trcr_depend`.
+  const double *host_trcr_base;
+  // See `host_trcr_depend`.
+  const int32_t *host_n_trcr_strata;
+  // See `host_trcr_depend`.
+  const int32_t *host_nt_strata;
+  // Number of tracers in the host's tables.
+  int64_t host_ntrcr;
 } PressridgeTracers;
 
 #ifdef __cplusplus
@@ -634,8 +649,9 @@ int32_t pressridge_step_params_default(struct PressridgeStepParams *params);
 // handle to `*ridger`; release it with [`pressridge_ridger_free`].
 //
 // # Safety
-// `tracers`, `options` and `step_params` must be null or valid; `ridger` valid for one
-// write.
+// `tracers`, `options` and `step_params` must be null or valid (with `tracers`' host tables
+// null or holding `host_ntrcr` values each, 3· and 2· for `trcr_base` and `nt_strata`);
+// `ridger` valid for one write.
 int32_t pressridge_ridger_new(int64_t ncat,
                               int64_t nilyr,
                               int64_t nslyr,

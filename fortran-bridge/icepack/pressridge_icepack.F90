@@ -12,9 +12,10 @@
 !> Later calls use it without asking Icepack again (the queries would cost more than a
 !> strength); a host that changes Icepack's parameters or tracer flags during the run calls
 !> pressridge_icepack_refresh() after the change. The host's tracer tables
-!> (trcr_depend, trcr_base, n_trcr_strata, nt_strata) are checked against the layout
-!> pressridge derives from Icepack's flags (every pond scheme, the snow tracers with Icepack's
-!> refills, floe size, isotopes, aerosols, brine). Errors, and biogeochemical tracers, which
+!> (trcr_depend, trcr_base, n_trcr_strata, nt_strata) carry each tracer, as Icepack takes
+!> them; the roles of the tracers (which is an enthalpy, a pond, an aerosol...) come from
+!> Icepack's flags: every pond scheme, the snow tracers with Icepack's refills, floe size,
+!> isotopes, aerosols, brine. Errors, and biogeochemical tracers, which
 !> pressridge does not carry yet, are reported as Icepack reports its own:
 !> icepack_warnings_add and icepack_warnings_setabort.
 module pressridge_icepack
@@ -243,7 +244,7 @@ contains
     real(c_double), intent(in) :: trcr_base(:, :)
     type(setup) :: s
     type(pressridge_options) :: o
-    integer :: e, nt, it, j
+    integer :: e, nt
     integer(c_int32_t), allocatable :: dep(:), nst(:), str(:, :)
     real(c_double), allocatable :: base(:, :)
     character(len=200) :: msg
@@ -260,10 +261,24 @@ contains
     o%params%mu_rdg = want%mu_rdg
     o%params%rhoi = rhoi
     allocate(dep(want%ntrcr), nst(want%ntrcr), str(want%ntrcr, 2), base(want%ntrcr, 3))
+    ! The host's tables, as Icepack takes them (their first ntrcr rows).
+    if (size(trcr_depend) < want%ntrcr .or. size(n_trcr_strata) < want%ntrcr .or. &
+         size(trcr_base, 1) < want%ntrcr .or. size(nt_strata, 1) < want%ntrcr .or. &
+         size(trcr_base, 2) < 3 .or. size(nt_strata, 2) < 2) then
+       write (msg, '(a, i0, a)') ' the tracer tables are shorter than trcrn''s ', &
+            want%ntrcr, ' tracers'
+       call abort_with(subname//trim(msg))
+       return
+    end if
+    dep = int(trcr_depend(1:want%ntrcr), c_int32_t)
+    base = trcr_base(1:want%ntrcr, 1:3)
+    nst = int(n_trcr_strata(1:want%ntrcr), c_int32_t)
+    str = int(nt_strata(1:want%ntrcr, 1:2), c_int32_t)
     call pressridge_ridger_init(s%ridger, want%ncat, want%nilyr, want%nslyr, want%flags(1), &
          want%flags(2), want%flags(3), want%flags(4), options=o, docleanup=want%cleanup, &
-         dorebin=want%rebin, ntrcr=nt, trcr_depend=dep, trcr_base=base, n_trcr_strata=nst, &
-         nt_strata=str, step_params=want%step, tr_snow=want%flags(5), n_iso=want%n_iso, &
+         dorebin=want%rebin, ntrcr=nt, host_trcr_depend=dep, host_trcr_base=base, &
+         host_n_trcr_strata=nst, host_nt_strata=str, step_params=want%step, &
+         tr_snow=want%flags(5), n_iso=want%n_iso, &
          n_aero=want%n_aero, tr_pond_topo=want%flags(6), tr_pond_sealvl=want%flags(7), &
          tr_brine=want%flags(8), nfsd=want%nfsd, rhos_empty=want%refill(1), &
          smice_empty=want%refill(2), rsnw_empty=want%refill(3), ierr=e)
@@ -271,27 +286,6 @@ contains
        call abort_with(subname//' '//trim(pressridge_last_error_message()))
        return
     end if
-    if (nt /= want%ntrcr .or. size(trcr_depend) < nt .or. size(n_trcr_strata) < nt .or. &
-         size(trcr_base, 1) < nt .or. size(nt_strata, 1) < nt) then
-       write (msg, '(a, i0, a, i0, a)') ' Icepack''s tracer flags give ', nt, &
-            ' tracers in pressridge''s layout, trcrn has ', want%ntrcr, &
-            ' (or a tracer table is shorter)'
-       call abort_with(subname//trim(msg))
-       call pressridge_ridger_free(s%ridger)
-       return
-    end if
-    do it = 1, nt
-       if (trcr_depend(it) /= dep(it) .or. n_trcr_strata(it) /= nst(it) .or. &
-            any(bits(trcr_base(it, 1:3)) /= bits(base(it, :))) .or. &
-            any([(nt_strata(it, j) /= str(it, j), j = 1, nst(it))])) then
-          write (msg, '(a, i0, a, i0, a, i0, a)') ' tracer ', it, ': the host''s trcr_depend ', &
-               trcr_depend(it), ', pressridge''s layout ', dep(it), &
-               ' (or trcr_base / the strata differ): the host orders its tracers otherwise'
-          call abort_with(subname//trim(msg))
-          call pressridge_ridger_free(s%ridger)
-          return
-       end if
-    end do
     nsetups = nsetups + 1
     setups(nsetups) = s
     k = nsetups

@@ -136,6 +136,9 @@ module pressridge_cabi_mod
   type, bind(C) :: c_tracers
      integer(c_int32_t) :: flags = 0, n_iso = 0, n_aero = 0, nfsd = 0
      real(c_double) :: rhos_empty = 0, smice_empty = 0, rsnw_empty = 0
+     type(c_ptr) :: host_trcr_depend = c_null_ptr, host_trcr_base = c_null_ptr, &
+          host_n_trcr_strata = c_null_ptr, host_nt_strata = c_null_ptr
+     integer(c_int64_t) :: host_ntrcr = 0
   end type c_tracers
 
   !> PressridgeOceanFluxes.

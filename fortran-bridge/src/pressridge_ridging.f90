@@ -157,17 +157,24 @@ contains
   !> pond scheme at a time), nfsd floe-size categories, n_iso water-isotope (0-3) and n_aero
   !> aerosol (0-6) species, tr_brine (fbri); rhos_empty, smice_empty, rsnw_empty: the snow
   !> tracers where there is no snow (kg/m3, kg/m3, m; 0, or Icepack's refills rhosnew with
-  !> snwredist = 'ITD', rhos and rsnw_fall with snwgrain).
+  !> snwredist = 'ITD', rhos and rsnw_fall with snwgrain). host_trcr_depend(ntrcr),
+  !> host_trcr_base(ntrcr, 3), host_n_trcr_strata(ntrcr), host_nt_strata(ntrcr, 2): the host's
+  !> own Icepack tracer tables (all four or none; ntrcr the layout's): each tracer is then
+  !> carried as they say, as Icepack moves every tracer through them.
   subroutine pressridge_ridger_init(ridger, ncat, nilyr, nslyr, tr_iage, tr_FY, tr_lvl, &
        tr_pond_lvl, options, docleanup, dorebin, ntrcr, trcr_depend, trcr_base, &
        n_trcr_strata, nt_strata, step_params, tr_snow, n_iso, n_aero, tr_pond_topo, &
-       tr_pond_sealvl, tr_brine, nfsd, rhos_empty, smice_empty, rsnw_empty, ierr)
+       tr_pond_sealvl, tr_brine, nfsd, rhos_empty, smice_empty, rsnw_empty, host_trcr_depend, &
+       host_trcr_base, host_n_trcr_strata, host_nt_strata, ierr)
     type(pressridge_ridger), intent(out) :: ridger
     integer, intent(in) :: ncat, nilyr, nslyr
     logical, intent(in) :: tr_iage, tr_FY, tr_lvl, tr_pond_lvl
     logical, intent(in), optional :: tr_snow, tr_pond_topo, tr_pond_sealvl, tr_brine
     integer, intent(in), optional :: n_iso, n_aero, nfsd
     real(c_double), intent(in), optional :: rhos_empty, smice_empty, rsnw_empty
+    integer(c_int32_t), intent(in), optional, contiguous, target :: host_trcr_depend(:), &
+         host_n_trcr_strata(:), host_nt_strata(:, :)
+    real(c_double), intent(in), optional, contiguous, target :: host_trcr_base(:, :)
     type(pressridge_options), intent(in), optional, target :: options
     logical, intent(in), optional :: docleanup, dorebin
     type(pressridge_step_params), intent(in), optional, target :: step_params
@@ -207,6 +214,27 @@ contains
     if (present(rhos_empty)) tr%rhos_empty = rhos_empty
     if (present(smice_empty)) tr%smice_empty = smice_empty
     if (present(rsnw_empty)) tr%rsnw_empty = rsnw_empty
+    if (present(host_trcr_depend) .and. present(host_trcr_base) .and. &
+         present(host_n_trcr_strata) .and. present(host_nt_strata)) then
+       if (size(host_trcr_base, 1) /= size(host_trcr_depend) .or. &
+            size(host_trcr_base, 2) /= 3 .or. size(host_n_trcr_strata) /= size(host_trcr_depend) &
+            .or. size(host_nt_strata, 1) /= size(host_trcr_depend) .or. &
+            size(host_nt_strata, 2) /= 2) then
+          call fail(PRESSRIDGE_ERR_BAD_SIZE, 'host tables: host_trcr_depend(ntrcr), &
+               &host_trcr_base(ntrcr, 3), host_n_trcr_strata(ntrcr), host_nt_strata(ntrcr, 2)', &
+               where, ierr)
+          return
+       end if
+       tr%host_trcr_depend = c_loc(host_trcr_depend)
+       tr%host_trcr_base = c_loc(host_trcr_base)
+       tr%host_n_trcr_strata = c_loc(host_n_trcr_strata)
+       tr%host_nt_strata = c_loc(host_nt_strata)
+       tr%host_ntrcr = size(host_trcr_depend, kind=c_int64_t)
+    else if (present(host_trcr_depend) .or. present(host_trcr_base) .or. &
+         present(host_n_trcr_strata) .or. present(host_nt_strata)) then
+       call fail(PRESSRIDGE_ERR_BAD_VALUE, 'host tables: give all four or none', where, ierr)
+       return
+    end if
     clean = 1
     rebin = 1
     if (present(docleanup)) then

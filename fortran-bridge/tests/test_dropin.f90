@@ -124,7 +124,7 @@ program test_dropin
   stub_aborted = .false.
   dep(24) = 1
   call refused_call(.false.)
-  call check('a host tracer table that differs: an abort naming the tracer', &
+  call check('inconsistent host tables (trcr_depend against trcr_base): an abort naming the tracer', &
        stub_aborted .and. index(stub_message, 'tracer 24') > 0)
   if (failures > 0) then
      print '(i0, a)', failures, ' drop-in checks failed'

@@ -33,9 +33,10 @@ pub const PRESSRIDGE_TRACER_POND_SEALVL: i32 = 64;
 /// Icepack `tr_brine`.
 pub const PRESSRIDGE_TRACER_BRINE: i32 = 128;
 
-/// The optional tracers of a ridging set-up ([`pressridge_ridger_new`]); all zero: none.
+/// The optional tracers of a ridging set-up ([`pressridge_ridger_new`]); all zero and null:
+/// none.
 #[repr(C)]
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PressridgeTracers {
     /// Sum of `PRESSRIDGE_TRACER_*` flags.
     pub flags: i32,
@@ -53,6 +54,39 @@ pub struct PressridgeTracers {
     pub smice_empty: f64,
     /// See `rhos_empty`.
     pub rsnw_empty: f64,
+    /// Null, or the host's Icepack tracer tables, `host_ntrcr` tracers (the layout's count):
+    /// `trcr_depend(ntrcr)`, `trcr_base(ntrcr, 3)` and `nt_strata(ntrcr, 2)` in Fortran order
+    /// (1-based tracer numbers), `n_trcr_strata(ntrcr)`; all four or none. Each tracer is then
+    /// carried as they say, as Icepack moves every tracer through them (its roles stay the
+    /// layout's).
+    pub host_trcr_depend: *const i32,
+    /// See `host_trcr_depend`.
+    pub host_trcr_base: *const f64,
+    /// See `host_trcr_depend`.
+    pub host_n_trcr_strata: *const i32,
+    /// See `host_trcr_depend`.
+    pub host_nt_strata: *const i32,
+    /// Number of tracers in the host's tables.
+    pub host_ntrcr: i64,
+}
+
+impl Default for PressridgeTracers {
+    fn default() -> Self {
+        Self {
+            flags: 0,
+            n_iso: 0,
+            n_aero: 0,
+            nfsd: 0,
+            rhos_empty: 0.0,
+            smice_empty: 0.0,
+            rsnw_empty: 0.0,
+            host_trcr_depend: std::ptr::null(),
+            host_trcr_base: std::ptr::null(),
+            host_n_trcr_strata: std::ptr::null(),
+            host_nt_strata: std::ptr::null(),
+            host_ntrcr: 0,
+        }
+    }
 }
 
 /// Thermodynamic constants and clean-up thresholds of the ridging step (the fields of
@@ -171,8 +205,9 @@ pub(super) fn bad_value(msg: String) -> FfiError {
 /// handle to `*ridger`; release it with [`pressridge_ridger_free`].
 ///
 /// # Safety
-/// `tracers`, `options` and `step_params` must be null or valid; `ridger` valid for one
-/// write.
+/// `tracers`, `options` and `step_params` must be null or valid (with `tracers`' host tables
+/// null or holding `host_ntrcr` values each, 3· and 2· for `trcr_base` and `nt_strata`);
+/// `ridger` valid for one write.
 #[unsafe(no_mangle)]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn pressridge_ridger_new(
@@ -245,6 +280,38 @@ pub unsafe extern "C" fn pressridge_ridger_new(
                 }
                 layout = layout.with_empty_value(name, v)?;
             }
+        }
+        let tables = [
+            t.host_trcr_depend.is_null(),
+            t.host_trcr_base.is_null(),
+            t.host_n_trcr_strata.is_null(),
+            t.host_nt_strata.is_null(),
+        ];
+        if tables.iter().any(|n| !n) {
+            if tables.iter().any(|n| *n) {
+                return Err(bad_value(
+                    "tracers.host_*: give all four host tables or none".to_string(),
+                ));
+            }
+            let nt = layout.ntrcr();
+            if t.host_ntrcr != nt as i64 {
+                return Err(FfiError::new(
+                    PRESSRIDGE_ERR_BAD_SIZE,
+                    format!(
+                        "tracers.host_ntrcr = {}: the layout of these flags has {nt} tracers",
+                        t.host_ntrcr
+                    ),
+                ));
+            }
+            // SAFETY: non-null, and the caller's promise is that each holds host_ntrcr
+            // (trcr_base 3·, nt_strata 2·) values, checked equal to the layout's count above.
+            let (dep, base, nst, st) = (
+                std::slice::from_raw_parts(t.host_trcr_depend, nt),
+                std::slice::from_raw_parts(t.host_trcr_base, 3 * nt),
+                std::slice::from_raw_parts(t.host_n_trcr_strata, nt),
+                std::slice::from_raw_parts(t.host_nt_strata, 2 * nt),
+            );
+            layout = layout.with_host_tables(dep, base, nst, st)?;
         }
         let o = PressridgeOptions::from_ptr(options)?;
         let ro = o.ridge_options()?;

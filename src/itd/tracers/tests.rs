@@ -189,3 +189,51 @@ fn snow_isotope_and_aerosol_tracers_are_detected_from_names() {
         "aeroicessl002"
     );
 }
+
+#[test]
+fn host_tables_carry_each_tracer_as_the_host_says() {
+    let flags = CiceTracerFlags {
+        isotopes: 3,
+        ..CiceTracerFlags::ALL
+    };
+    let l = TracerLayout::cice(7, 1, flags).unwrap();
+    let nt = l.ntrcr();
+    let dep = l.trcr_depend();
+    let base: Vec<f64> = (0..3)
+        .flat_map(|k| l.base_codes().into_iter().map(move |b| f64::from(b == k)))
+        .collect();
+    let nst: Vec<i32> = l.nstrata.iter().map(|&n| i32::from(n)).collect();
+    let st1 = l.strata_one_based();
+    let st: Vec<i32> = (0..2).flat_map(|j| st1.iter().map(move |s| s[j])).collect();
+    // The layout's own tables give the layout back.
+    let same = l.clone().with_host_tables(&dep, &base, &nst, &st).unwrap();
+    assert_eq!(same, l);
+    // Icepack's column driver: only the first isotope species gets its dependency, the
+    // others are area tracers (trcr_depend 0, trcr_base area).
+    let (isno, _) = l.field("isosno").unwrap();
+    let (mut dep2, mut base2) = (dep.clone(), base.clone());
+    for it in [isno + 1, isno + 2] {
+        dep2[it] = 0;
+        base2[it] = 1.0;
+        base2[nt + it] = 0.0;
+        base2[2 * nt + it] = 0.0;
+    }
+    let host = l
+        .clone()
+        .with_host_tables(&dep2, &base2, &nst, &st)
+        .unwrap();
+    assert_eq!(host.trcr_depend(), dep2);
+    assert!(host.area_direct[isno + 1] && !host.area_direct[isno]);
+    assert_eq!(host.iso, l.iso, "the roles stay the layout's");
+    // Inconsistent tables are refused, naming the tracer (1-based).
+    dep2[isno + 1] = 2;
+    let e = l
+        .clone()
+        .with_host_tables(&dep2, &base2, &nst, &st)
+        .unwrap_err();
+    assert!(
+        e.to_string().contains(&format!("tracer {}", isno + 2)),
+        "{e}"
+    );
+    assert!(l.with_host_tables(&dep[1..], &base, &nst, &st).is_err());
+}
