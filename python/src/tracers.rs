@@ -16,13 +16,18 @@ use crate::errors::{BindError, value_err};
 /// what base (the Rust ``pressridge::itd::TracerLayout``, not a copy of it).
 ///
 /// Make one with ``TracerLayout.cice(nilyr, nslyr, *, age=False, first_year=False,
-/// level_ice=False, ponds=False, snow=False, isotopes=0, aerosols=0)``: CICE/Icepack's order ``Tsfc``, ``qice(nilyr)``,
+/// level_ice=False, ponds=False, snow=False, isotopes=0, aerosols=0, pond_topo=False,
+/// pond_sealvl=False, fsd=0, brine=False)``: CICE/Icepack's order ``Tsfc``, ``qice(nilyr)``,
 /// ``qsno(nslyr)``, ``sice(nilyr)``, then ``iage``, ``FY``, ``alvl``, ``vlvl``, ``apnd``,
 /// ``hpnd``, ``ipnd`` as the flags (Icepack's ``tr_iage``, ``tr_FY``, ``tr_lvl``,
 /// ``tr_pond_lvl``) select, then with ``snow=True`` ``smice``, ``smliq``, ``rhos``, ``rsnw``
 /// (``nslyr`` each), with ``isotopes=n`` ``isosno(n)``, ``isoice(n)`` and with
 /// ``aerosols=n`` four tracers per species (``aerosnossl001``, ``aerosnoint001``,
-/// ``aeroicessl001``, ``aeroiceint001``, ...); ``ponds`` needs ``level_ice``. Or with
+/// ``aeroicessl001``, ``aeroiceint001``, ...); ``pond_topo`` or ``pond_sealvl`` give ponds on
+/// the ice area instead (one pond scheme at a time), ``fsd=n`` the floe-size tracers
+/// ``fsd(n)`` after the snow tracers and ``brine`` the brine fraction ``fbri`` last;
+/// ``ponds`` needs ``level_ice``. ``with_empty_value(name, value)`` sets Icepack's snow
+/// refills. Or with
 /// ``TracerLayout.from_fields(fields)`` for any layout the Rust ``TracerLayout::new``
 /// accepts, or ``TracerLayout.detect(names)`` from CICE restart variable names. Units:
 /// ``Tsfc`` degC, enthalpies J m-3 (negative), salinity ppt, age s, fractions 1, pond depth
@@ -220,7 +225,7 @@ impl PyTracerLayout {
     /// The CICE/Icepack layout (`TracerLayout::cice`) for `nilyr` ice and `nslyr` snow layers
     /// (both >= 1) with the optional tracers of `CiceTracerFlags` by keyword.
     #[staticmethod]
-    #[pyo3(signature = (nilyr, nslyr, *, age = false, first_year = false, level_ice = false, ponds = false, snow = false, isotopes = 0, aerosols = 0))]
+    #[pyo3(signature = (nilyr, nslyr, *, age = false, first_year = false, level_ice = false, ponds = false, snow = false, isotopes = 0, aerosols = 0, pond_topo = false, pond_sealvl = false, fsd = 0, brine = false))]
     #[allow(clippy::too_many_arguments)]
     fn cice(
         nilyr: i64,
@@ -232,13 +237,21 @@ impl PyTracerLayout {
         snow: bool,
         isotopes: i64,
         aerosols: i64,
+        pond_topo: bool,
+        pond_sealvl: bool,
+        fsd: i64,
+        brine: bool,
     ) -> PyResult<Self> {
         for (name, v) in [("nilyr", nilyr), ("nslyr", nslyr)] {
             if !(1..=1 << 20).contains(&v) {
                 return Err(value_err(format!("{name} = {v}: must be at least 1")).into());
             }
         }
-        for (name, v, max) in [("isotopes", isotopes, 3), ("aerosols", aerosols, 6)] {
+        for (name, v, max) in [
+            ("isotopes", isotopes, 3),
+            ("aerosols", aerosols, 6),
+            ("fsd", fsd, 1 << 20),
+        ] {
             if !(0..=max).contains(&v) {
                 return Err(value_err(format!("{name} = {v}: must be 0 to {max}")).into());
             }
@@ -251,9 +264,25 @@ impl PyTracerLayout {
             snow,
             isotopes: isotopes as usize,
             aerosols: aerosols as usize,
-            ..CiceTracerFlags::default()
+            pond_topo,
+            pond_sealvl,
+            fsd: fsd as usize,
+            brine,
         };
         let l = TracerLayout::cice(nilyr as usize, nslyr as usize, flags).map_err(value_err)?;
+        Ok(Self { inner: Arc::new(l) })
+    }
+
+    /// This layout with `value` as the field `name`'s value where its base volume is zero
+    /// and in emptied categories (units of the tracer; Rust `TracerLayout::with_empty_value`):
+    /// Icepack's refills of the snow tracers, ``rhos`` = ``rhosnew`` with ``snwredist =
+    /// 'ITD'``, ``smice`` = ``rhos`` and ``rsnw`` = ``rsnw_fall`` with ``snwgrain``. Only for
+    /// ice- and snow-volume tracers.
+    fn with_empty_value(&self, name: &str, value: f64) -> PyResult<Self> {
+        let l = (*self.inner)
+            .clone()
+            .with_empty_value(name, value)
+            .map_err(value_err)?;
         Ok(Self { inner: Arc::new(l) })
     }
 
@@ -322,11 +351,14 @@ impl PyTracerLayout {
             ("level_ice", f.level_ice),
             ("ponds", f.ponds),
             ("snow", f.snow),
+            ("pond_topo", f.pond_topo),
+            ("brine", f.brine),
         ] {
             d.set_item(k, v)?;
         }
         d.set_item("isotopes", f.isotopes)?;
         d.set_item("aerosols", f.aerosols)?;
+        d.set_item("fsd", f.fsd)?;
         Ok(d)
     }
 
@@ -452,6 +484,15 @@ impl PyTracerLayout {
             }
             if f.aerosols > 0 {
                 more += &format!(", aerosols={}", f.aerosols);
+            }
+            if f.pond_topo {
+                more += ", pond_topo=True";
+            }
+            if f.fsd > 0 {
+                more += &format!(", fsd={}", f.fsd);
+            }
+            if f.brine {
+                more += ", brine=True";
             }
             return format!(
                 "TracerLayout.cice(nilyr={}, nslyr={}, age={}, first_year={}, level_ice={}, ponds={}{more}) with {} tracers",

@@ -472,7 +472,7 @@ def test_layout_object():
     assert l.field("hpnd") == (21, 1)
     assert l.units[0] == "degC" and l.units[1] == "J m-3"
     assert l.flags == dict(age=True, first_year=True, level_ice=True, ponds=True, snow=False,
-                           isotopes=0, aerosols=0)
+                           isotopes=0, aerosols=0, pond_topo=False, fsd=0, brine=False)
     import pickle
 
     assert pickle.loads(pickle.dumps(l)) == l
@@ -492,6 +492,18 @@ def test_layout_object():
     assert x.units[-1] == "kg m-3"
     with pytest.raises(ValueError, match="aerosols = 7"):
         pr.TracerLayout.cice(7, 1, aerosols=7)
+    # Topography ponds, floe size, brine and the snow refills (37 tracers, Icepack's order).
+    t = pr.TracerLayout.cice(7, 1, age=True, first_year=True, level_ice=True, pond_topo=True,
+                             snow=True, fsd=3, isotopes=1, aerosols=1, brine=True)
+    assert t.ntrcr == 37 and t.names[-1] == "fbri" and t.field("fsd") == (27, 3)
+    assert t.flags["pond_topo"] and t.flags["brine"] and t.flags["fsd"] == 3
+    assert "pond_topo=True, fsd=3, brine=True" in repr(t)
+    r = t.with_empty_value("rhos", 100.0)
+    assert r != t and r.ntrcr == 37
+    with pytest.raises(ValueError, match="empty value"):
+        t.with_empty_value("fsd", 1.0)
+    with pytest.raises(ValueError, match="one pond scheme"):
+        pr.TracerLayout.cice(7, 1, level_ice=True, ponds=True, pond_topo=True)
     with pytest.raises(ValueError, match="no tracer field `x`"):
         l.field("x")
     assert set(pr.STEP_CELL_OUTPUTS) <= set(pr.RidgeStepResult._fields)
