@@ -196,61 +196,51 @@ fn run(c: &Case, layout: &TracerLayout) -> Stepped {
     step(&col, &c.hin_max, c.forcing, &c.opts, layout)
 }
 
-/// Whether tracer `it` of category `n` has a base (and strata) above puny in `state`.
+/// The base (area, ice or snow volume) tracer `it` of category `n` is carried on in a state,
+/// and whether that is a volume.
+fn base_of(
+    layout: &TracerLayout,
+    it: usize,
+    n: usize,
+    state: (&[f64], &[f64], &[f64]),
+) -> (f64, bool) {
+    let (field, _) = layout.field_of(it).unwrap();
+    match field.base {
+        TracerBase::Area => (state.0[n], false),
+        TracerBase::IceVolume => (state.1[n], true),
+        TracerBase::SnowVolume => (state.2[n], true),
+    }
+}
+
+/// Whether tracer `it` of category `n` has a base (and strata) above puny in a state.
 fn tracer_defined(
     layout: &TracerLayout,
     it: usize,
     n: usize,
-    aicen: &[f64],
-    vicen: &[f64],
-    vsnon: &[f64],
+    state: (&[f64], &[f64], &[f64]),
     trcrn: &[f64],
     puny: f64,
 ) -> bool {
-    let (field, start) = {
-        let mut k = 0;
-        let mut found = None;
-        for f in layout.fields() {
-            if it < k + f.levels {
-                found = Some((f, k));
-                break;
-            }
-            k += f.levels;
-        }
-        found.unwrap()
-    };
-    let _ = start;
-    let base = match field.base {
-        TracerBase::Area => aicen[n],
-        TracerBase::IceVolume => vicen[n],
-        TracerBase::SnowVolume => vsnon[n],
-    };
+    let (field, _) = layout.field_of(it).unwrap();
     let nt = layout.ntrcr();
-    base > puny
+    base_of(layout, it, n, state).0 > puny
         && field.strata.iter().all(|s| {
             let (j, _) = layout.field(s).unwrap();
             trcrn[n * nt + j] > puny
         })
 }
 
-/// Whether tracer `it` of category `n` is a volume tracer with no base volume in the
-/// state: there Icepack writes a definite value (0, or its refill: `fbri` = 1, the snow
-/// tracers with `snwredist`, `snwgrain`).
+/// Whether tracer `it` of category `n` is a volume tracer with no base volume in a state:
+/// there Icepack writes a definite value (0, or its refill: `fbri` = 1, the snow tracers with
+/// `snwredist`, `snwgrain`).
 fn base_is_zero(
     layout: &TracerLayout,
     it: usize,
     n: usize,
-    aicen: &[f64],
-    vicen: &[f64],
-    vsnon: &[f64],
+    state: (&[f64], &[f64], &[f64]),
 ) -> bool {
-    let (field, _) = layout.field_of(it).unwrap();
-    let _ = aicen;
-    match field.base {
-        TracerBase::Area => false,
-        TracerBase::IceVolume => vicen[n] == 0.0,
-        TracerBase::SnowVolume => vsnon[n] == 0.0,
-    }
+    let (base, volume) = base_of(layout, it, n, state);
+    volume && base == 0.0
 }
 
 fn check_typical(c: &Case, layout: &TracerLayout, puny: f64, cmp: &mut Cmp) {
@@ -344,8 +334,9 @@ fn check_typical(c: &Case, layout: &TracerLayout, puny: f64, cmp: &mut Cmp) {
     let nt = layout.ntrcr();
     for n in 0..c.ncat {
         for it in 0..nt {
-            if tracer_defined(layout, it, n, &ea, &ev, &es, &want, puny)
-                || base_is_zero(layout, it, n, &ea, &ev, &es)
+            let state = (&ea[..], &ev[..], &es[..]);
+            if tracer_defined(layout, it, n, state, &want, puny)
+                || base_is_zero(layout, it, n, state)
             {
                 cmp.close(
                     &format!("trcrn[cat {n}, tracer {it}]"),
