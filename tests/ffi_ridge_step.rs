@@ -582,3 +582,88 @@ fn aerosol_and_isotope_fluxes_through_the_c_abi() {
         unsafe { pressridge_ridger_new(5, 7, 1, &two_schemes, null(), null(), 1, 1, &mut bad) };
     assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
 }
+
+/// A host's own tracer tables through the C ABI (`PressridgeTracers.host_*`): the ridger
+/// reports them back as its tables; all four or none; a table that contradicts itself is
+/// refused naming the tracer.
+#[test]
+fn host_tracer_tables_through_the_c_abi() {
+    let base = PressridgeTracers {
+        flags: 15,
+        n_iso: 3,
+        ..Default::default()
+    };
+    let new = |t: &PressridgeTracers| {
+        let mut r = null_mut();
+        // SAFETY: every non-null pointer is a live local or buffer of at least the length
+        // passed; the entry point checks nulls, sizes and handles itself.
+        let rc = unsafe { pressridge_ridger_new(5, 7, 1, t, null(), null(), 1, 1, &mut r) };
+        (rc, r)
+    };
+    let tables = |r: *mut PressridgeRidger, nt: usize| {
+        let (mut dep, mut b, mut nst, mut st) = (
+            vec![0i32; nt],
+            vec![0.0; 3 * nt],
+            vec![0i32; nt],
+            vec![0i32; 2 * nt],
+        );
+        let mut n = 0i64;
+        // SAFETY: as above.
+        let rc = unsafe {
+            pressridge_ridger_tracers(
+                r,
+                &mut n,
+                nt as i64,
+                dep.as_mut_ptr(),
+                b.as_mut_ptr(),
+                nst.as_mut_ptr(),
+                st.as_mut_ptr(),
+            )
+        };
+        assert_eq!((rc, n), (PRESSRIDGE_OK, nt as i64));
+        (dep, b, nst, st)
+    };
+    let (rc, r) = new(&base);
+    assert_eq!(rc, PRESSRIDGE_OK);
+    let nt = 23 + 6;
+    let (mut dep, mut b, nst, st) = tables(r, nt);
+    // SAFETY: a handle from its *_new, freed once and not used after.
+    unsafe { pressridge_ridger_free(r) };
+    // Icepack's column driver: isotope species 2 and 3 (tracers 25, 26) on the area.
+    for it in [24, 25] {
+        dep[it] = 0;
+        b[it] = 1.0;
+        b[2 * nt + it] = 0.0;
+    }
+    let host = PressridgeTracers {
+        host_trcr_depend: dep.as_ptr(),
+        host_trcr_base: b.as_ptr(),
+        host_n_trcr_strata: nst.as_ptr(),
+        host_nt_strata: st.as_ptr(),
+        host_ntrcr: nt as i64,
+        ..base
+    };
+    let (rc, r) = new(&host);
+    assert_eq!(rc, PRESSRIDGE_OK);
+    assert_eq!(tables(r, nt).0, dep, "the host's trcr_depend");
+    // SAFETY: as above.
+    unsafe { pressridge_ridger_free(r) };
+    let partial = PressridgeTracers {
+        host_trcr_base: null(),
+        ..host
+    };
+    assert_eq!(new(&partial).0, PRESSRIDGE_ERR_BAD_VALUE);
+    let short = PressridgeTracers {
+        host_ntrcr: nt as i64 - 1,
+        ..host
+    };
+    assert_eq!(new(&short).0, PRESSRIDGE_ERR_BAD_SIZE);
+    dep[24] = 2;
+    let (rc, _) = new(&host);
+    assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
+    let mut buf = vec![0u8; 256];
+    // SAFETY: as above.
+    unsafe { pressridge_last_error(buf.as_mut_ptr().cast(), 256, null_mut()) };
+    let msg = String::from_utf8_lossy(&buf).to_string();
+    assert!(msg.contains("tracer 25"), "{msg}");
+}
