@@ -8,7 +8,8 @@ CASE is `default` or options joined by commas (`alt01`, `thermo1,dyn`, ...), eac
 over `run1year` as base_suite.ts runs them: the options' set_env.* files change the sizes
 (the -D definitions icepack.build makes from icepack.settings), their set_nml.* files the
 namelist (keys replaced where configuration/scripts/icepack_in has them). The run reads its
-deformation from DATA_DIR/SHEBA/open_clos_lindsay.dat and writes its diagnostics daily.
+deformation from DATA_DIR/SHEBA/open_clos_lindsay.dat, writes its diagnostics daily and its
+NetCDF history (`history_format = 'nc'`).
 """
 import re
 import sys
@@ -50,6 +51,7 @@ for o in options:
         if m:
             sets[m.group(1)] = m.group(2)
 sets["data_dir"] = f"'{data}/'"
+sets["history_format"] = "'nc'"
 sets["diagfreq"] = sets.get("diagfreq", "24")
 out = []
 for line in text.splitlines():

@@ -12,8 +12,9 @@
 # the built-in `clim` atmosphere, and a deformation file in the SHEBA open/close format
 # (make_open_close.py: hourly opening and closing rates whose net closing is 0.3 per year, so
 # that the driver's inflow of new ice does not compound into a column kilometres thick). Runs
-# every case for a year in both builds and compares every output file (the daily diagnostics
-# of the driver's four columns and the monthly restart files) byte for byte, and times each
+# every case for a year in both builds and compares every output file: the daily diagnostics
+# of the driver's four columns and the monthly restart files byte for byte, the NetCDF
+# history (every variable, `history_format = 'nc'`) value for value by ncdump, and times each
 # run (wall seconds for the year, the whole driver: thermodynamics and all). Prints a line per case and
 # `icedrv: N of N cases bit-identical` last; exit status 1 if any differs.
 # Cases (default): the driver's defaults and run1year variants of base_suite.ts that need no
@@ -33,8 +34,10 @@ HERE=$(cd "$(dirname "$0")" && pwd)
 ROOT=$(cd "$HERE/../../../.." && pwd)
 BUILD=${BUILD:-$ROOT/fortran-bridge/build/icedrv}
 FC=${FC:-gfortran}
-# As Icepack's gnu Macros, without the big-endian restart conversion (both builds alike).
-FFLAGS="-O2 -ffree-line-length-none -cpp -DFORTRANUNDERSCORE"
+# As Icepack's gnu Macros, without the big-endian restart conversion (both builds alike),
+# with NetCDF history (USE_NETCDF, the system's netcdf-fortran through nf-config).
+FFLAGS="-O2 -ffree-line-length-none -cpp -DFORTRANUNDERSCORE -DUSE_NETCDF $(nf-config --fflags)"
+NCLIBS=$(nf-config --flibs)
 LIB=$ROOT/target/release
 [ -f "$LIB/libpressridge.so" ] || (cd "$ROOT" && cargo build --release --lib)
 mkdir -p "$BUILD"
@@ -64,7 +67,7 @@ compile_all() {
 # folder holding stock/icepack and swapped/icepack.
 build_for() {
   local defs=$1 key d
-  key=$(echo "$defs" | md5sum | cut -c1-10)
+  key=$(echo "$FFLAGS $defs" | md5sum | cut -c1-10)
   d=$BUILD/build-$key
   for build in stock swapped; do
     mkdir -p "$d/$build"
@@ -78,9 +81,9 @@ build_for() {
   compile_all "$d/stock" "$defs" >&2
   compile_all "$d/swapped" "$defs" >&2
   [ -x "$d/stock/icepack" ] && [ "$d/stock/icepack" -nt "$d/stock/icedrv_MAIN.o" ] \
-    || (cd "$d/stock" && $FC -o icepack *.o)
+    || (cd "$d/stock" && $FC -o icepack *.o $NCLIBS)
   (cd "$d/swapped" && $FC -o icepack *.o "$BUILD"/pressridge/pressridge*.o -L"$LIB" -lpressridge \
-    -Wl,-rpath,"$LIB")
+    -Wl,-rpath,"$LIB" $NCLIBS)
   echo "$d"
 }
 
@@ -101,7 +104,7 @@ for case in "${CASES[@]}"; do
   bin=$(build_for "$(python3 "$HERE/make_case.py" "$SRC" "$case" "$BUILD/data" cppdefs)")
   for build in stock swapped; do
     run=$BUILD/runs/$case/$build
-    rm -rf "$run" && mkdir -p "$run/restart"
+    rm -rf "$run" && mkdir -p "$run/restart" "$run/history"
     python3 "$HERE/make_case.py" "$SRC" "$case" "$BUILD/data" namelist > "$run/icepack_in"
     t0=$(date +%s.%N)
     (cd "$run" && "$bin/$build/icepack" > stdout.txt 2> stderr.txt) || true
@@ -116,7 +119,15 @@ for case in "${CASES[@]}"; do
   fi
   files=$(cd "$a" && find . -type f ! -name stdout.txt ! -name stderr.txt ! -name icepack_in | sort)
   diffs=()
-  for f in $files; do cmp -s "$a/$f" "$b/$f" || diffs+=("$f"); done
+  for f in $files; do
+    case $f in
+      # NetCDF history: every variable and attribute but the file's creation date.
+      *.nc) diff -q <(ncdump "$a/$f" | grep -v -e ':date' -e ':history' -e 'netcdf ') \
+              <(ncdump "$b/$f" | grep -v -e ':date' -e ':history' -e 'netcdf ') > /dev/null \
+              || diffs+=("$f") ;;
+      *) cmp -s "$a/$f" "$b/$f" || diffs+=("$f") ;;
+    esac
+  done
   if [ ${#diffs[@]} -eq 0 ]; then
     same=$((same + 1))
     echo "$case: bit-identical ($(echo "$files" | wc -w) files; $times)"
