@@ -341,36 +341,11 @@ impl TracerLayout {
             self.base[it] = TracerBase::ALL[k as usize];
             self.nstrata[it] = n as u8;
             self.strata[it] = st;
-            self.area_direct[it] = k == 0 && n == 0;
-            self.empty[it] = if k == 0 { 0.0 } else { self.empty[it] };
+            if k == 0 {
+                self.empty[it] = 0.0;
+            }
         }
-        // New ridges get the tracers without strata (not the level-ice ones) and those
-        // carried on the brine fraction alone, as Icepack gives them.
-        let level: Vec<bool> = (0..nt)
-            .map(|it| {
-                self.field_of(it).is_some_and(|(f, _)| {
-                    matches!(f.role, TracerRole::LevelArea | TracerRole::LevelVolume)
-                })
-            })
-            .collect();
-        self.ridge_lists = std::array::from_fn(|k| {
-            (0..nt)
-                .filter(|&it| {
-                    !level[it] && self.nstrata[it] == 0 && self.base_idx[it] as usize == k
-                })
-                .collect()
-        });
-        let fbri = self.nt_fbri;
-        self.ridge_lists_brine = std::array::from_fn(|k| {
-            (0..nt)
-                .filter(|&it| {
-                    self.nstrata[it] > 0
-                        && self.base_idx[it] as usize == k
-                        && (0..self.nstrata[it] as usize).all(|j| Some(self.strata[it][j]) == fbri)
-                })
-                .collect()
-        });
-        self.refilled = (0..nt).filter(|&it| self.empty[it] != 0.0).collect();
+        self.derive_lists();
         Ok(self)
     }
 
@@ -391,10 +366,16 @@ impl TracerLayout {
             )));
         }
         self.fields[i].empty = value;
-        let zap = self.zap_pond_water;
-        let mut l = Self::new(std::mem::take(&mut self.fields))?;
-        l.zap_pond_water = zap;
-        Ok(l)
+        // Its tracers (those a host's tables put on the area stay 0), then the lists; the
+        // layout's other settings and any host tables are kept.
+        let start = self.starts[i];
+        for it in start..start + self.fields[i].levels {
+            if self.base_idx[it] != 0 {
+                self.empty[it] = value;
+            }
+        }
+        self.derive_lists();
+        Ok(self)
     }
 
     /// A layout from explicit fields. Rules: exactly one field each of roles `IceEnthalpy`,
@@ -525,9 +506,6 @@ impl TracerLayout {
         let mut base = Vec::with_capacity(ntrcr);
         let mut nstrata = Vec::with_capacity(ntrcr);
         let mut strata = Vec::with_capacity(ntrcr);
-        let mut to_ridges = Vec::with_capacity(ntrcr);
-        let mut area_direct = Vec::with_capacity(ntrcr);
-        let mut brine_ridges = Vec::with_capacity(ntrcr);
         let mut empty = Vec::with_capacity(ntrcr);
         for (i, f) in fields.iter().enumerate() {
             let mut s = [0usize; 2];
@@ -567,14 +545,7 @@ impl TracerLayout {
                     f.name, expected
                 )));
             }
-            let ridges = !matches!(f.role, TracerRole::LevelArea | TracerRole::LevelVolume)
-                && f.strata.is_empty();
-            let on_brine = !f.strata.is_empty()
-                && f.strata
-                    .iter()
-                    .all(|n| brine.is_some_and(|b| &fields[b].name == n));
             for _ in 0..f.levels {
-                brine_ridges.push(on_brine);
                 empty.push(if f.base == TracerBase::Area {
                     0.0
                 } else {
@@ -583,8 +554,6 @@ impl TracerLayout {
                 base.push(f.base);
                 nstrata.push(f.strata.len() as u8);
                 strata.push(s);
-                to_ridges.push(ridges);
-                area_direct.push(f.base == TracerBase::Area && f.strata.is_empty());
             }
         }
         let base_idx: Vec<u8> = base
@@ -595,20 +564,9 @@ impl TracerLayout {
                 TracerBase::SnowVolume => 2,
             })
             .collect();
-        let ridge_lists = std::array::from_fn(|k| {
-            (0..ntrcr)
-                .filter(|&it| to_ridges[it] && base_idx[it] as usize == k)
-                .collect()
-        });
-        let ridge_lists_brine = std::array::from_fn(|k| {
-            (0..ntrcr)
-                .filter(|&it| brine_ridges[it] && base_idx[it] as usize == k)
-                .collect()
-        });
-        let refilled = (0..ntrcr).filter(|&it| empty[it] != 0.0).collect();
-        Ok(Self {
+        let mut l = Self {
             base_idx,
-            ridge_lists,
+            ridge_lists: Default::default(),
             nt_tsfc: find(TracerRole::SurfaceTemperature).map(|i| starts[i]),
             nt_qice: starts[qice],
             nt_sice: starts[sice],
@@ -623,8 +581,8 @@ impl TracerLayout {
             ponds_on_level_ice: on_level,
             zap_pond_water: false,
             empty,
-            refilled,
-            ridge_lists_brine,
+            refilled: Vec::new(),
+            ridge_lists_brine: Default::default(),
             nt_fbri: brine.map(|i| starts[i]),
             fields,
             starts,
@@ -632,8 +590,47 @@ impl TracerLayout {
             base,
             nstrata,
             strata,
-            area_direct,
-        })
+            area_direct: Vec::new(),
+        };
+        l.derive_lists();
+        Ok(l)
+    }
+
+    /// The per-tracer lists the step uses, from each tracer's base, strata and empty value
+    /// (written once here for a new layout and after a host's tables or an empty value):
+    /// Icepack's area tracers (`trcr_depend = 0`), the tracers new ridges get — those without
+    /// strata but for the level-ice ones, and those carried on the brine fraction alone — and
+    /// those refilled where their base is zero.
+    fn derive_lists(&mut self) {
+        let nt = self.ntrcr;
+        self.area_direct = (0..nt)
+            .map(|it| self.base_idx[it] == 0 && self.nstrata[it] == 0)
+            .collect();
+        let level: Vec<bool> = (0..nt)
+            .map(|it| {
+                self.field_of(it).is_some_and(|(f, _)| {
+                    matches!(f.role, TracerRole::LevelArea | TracerRole::LevelVolume)
+                })
+            })
+            .collect();
+        self.ridge_lists = std::array::from_fn(|k| {
+            (0..nt)
+                .filter(|&it| {
+                    !level[it] && self.nstrata[it] == 0 && self.base_idx[it] as usize == k
+                })
+                .collect()
+        });
+        let fbri = self.nt_fbri;
+        self.ridge_lists_brine = std::array::from_fn(|k| {
+            (0..nt)
+                .filter(|&it| {
+                    self.nstrata[it] > 0
+                        && self.base_idx[it] as usize == k
+                        && (0..self.nstrata[it] as usize).all(|j| Some(self.strata[it][j]) == fbri)
+                })
+                .collect()
+        });
+        self.refilled = (0..nt).filter(|&it| self.empty[it] != 0.0).collect();
     }
 
     /// Number of tracers per category (Icepack `ntrcr`).

@@ -225,6 +225,11 @@ fn host_tables_carry_each_tracer_as_the_host_says() {
     assert_eq!(host.trcr_depend(), dep2);
     assert!(host.area_direct[isno + 1] && !host.area_direct[isno]);
     assert_eq!(host.iso, l.iso, "the roles stay the layout's");
+    // An empty value set afterwards keeps the host's tables, and is not given to the tracers
+    // they put on the area.
+    let e = host.clone().with_empty_value("isosno", 1.0).unwrap();
+    assert_eq!(e.trcr_depend(), dep2);
+    assert_eq!(e.refilled, vec![isno]);
     // Inconsistent tables are refused, naming the tracer (1-based).
     dep2[isno + 1] = 2;
     let e = l
