@@ -152,6 +152,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             hin_max: Some(&bounds),
             fields: &fields,
             category_fields: &[],
+            dim_fields: &[],
             global: &global,
             fill: None,
             history: None,

@@ -79,6 +79,15 @@ class TracerLayout:
         "other"), or a sequence in that order; defaults are Icepack's for the role, the role
         Icepack's for the name (Tsfc, qice, ...), else "other". ValueError names the field."""
     @staticmethod
+    def from_icepack(text: str) -> "TracerLayout":
+        """The CICE layout in Icepack's names, as --tracer-layout takes it: "nilyr=7,nslyr=1,
+        tr_lvl,tr_pond_lvl" (switches tr_iage, tr_FY, tr_lvl, tr_pond_lvl, tr_pond_topo,
+        tr_pond_sealvl, tr_snow, tr_fsd+nfsd, tr_iso+n_iso, tr_aero+n_aero, tr_brine) or the
+        preset "icedrv"; ValueError names the item refused."""
+    @property
+    def icepack(self) -> Optional[str]:
+        """The layout in Icepack's names (from_icepack's text), None if not a CICE layout."""
+    @staticmethod
     def detect(names: Sequence[str]) -> Optional["TracerLayout"]:
         """The CICE layout of these variable names (CICE restart names), as the command
         line tells it; None without snow or tracers; ValueError names a missing variable."""

@@ -405,6 +405,8 @@ def ridge_step(
     cleanup: Optional[bool] = None,
     rebin: Optional[bool] = None,
     salt_flux: Optional[str] = None,
+    tracer_layout: Any = None,
+    tracer_var: Optional[str] = None,
     **params: float,
 ) -> xr.Dataset:
     """One ridging step (``dt`` in s) of the thickness distribution in ``ds``.
@@ -445,10 +447,37 @@ def ridge_step(
     0 m; both present must agree), else CICE's ``kcatbound = 1`` bounds. ``aice0`` defaults to max(1 - sum(aicen), 0). Other options as
     :func:`pressridge.ridge_step`.
 
+    **Packed tracers** (Icepack column driver's history, ``trcrn(time, ncat, ntrcr, ni)``):
+    ``tracer_layout`` names their layout in Icepack's words, as the command line's
+    ``--tracer-layout`` (a string for :meth:`pressridge.TracerLayout.from_icepack`, e.g.
+    ``"icedrv"`` or ``"nilyr=7,nslyr=1,tr_iage,tr_FY,tr_lvl,tr_pond_lvl"``, or a CICE
+    :class:`pressridge.TracerLayout`); ``tracer_var`` (default ``trcrn``) must have the
+    dimensions of ``aicen`` and one more, as long as the layout's tracer count. The result
+    holds the array again in the same dimensions, with the layout in its ``tracer_layout``
+    attribute. A dataset with ``trcrn`` and no tracer under restart names needs
+    ``tracer_layout``.
+
     Returns a copy of ``ds`` (coordinates, attributes and other variables kept) with
     ``aicen``, ``vicen``, ``aice0`` after the step and the rates ``closing``, ``opening``,
     ``dardg1dt``, ``dardg2dt`` (1/s) and ``dvirdgdt`` (m/s); lazy when the input is dask.
     """
+    if tracer_layout is not None:
+        unpacked, layout, repack = _unpack_tracers(ds, tracer_layout, tracer_var or "trcrn")
+        return repack(ridge_step(
+            unpacked, dt=dt, convergence=convergence, shear=shear, hin_max=hin_max,
+            participation=participation, redistribution=redistribution,
+            category_dim=category_dim, mask=mask, layout=layout, closing=closing,
+            opening=opening, tf=tf, ndtd=ndtd, cleanup=cleanup, rebin=rebin,
+            salt_flux=salt_flux, **params,
+        ))
+    if tracer_var is not None:
+        raise ValueError("tracer_var needs tracer_layout, the layout of the packed tracers")
+    if "trcrn" in ds and "Tsfcn" not in ds:
+        raise ValueError(
+            "the dataset holds the packed tracer array `trcrn`: name its layout with "
+            "tracer_layout= in Icepack's names, e.g. tracer_layout='icedrv' for the column "
+            "driver's defaults or 'nilyr=7,nslyr=1,tr_iage,tr_FY,tr_lvl,tr_pond_lvl'"
+        )
     detected = _pr.TracerLayout.detect([str(n) for n in ds.data_vars])
     if layout is None:
         layout = detected
@@ -596,6 +625,73 @@ def ridge_step(
         }
     )
     return out
+
+
+def _unpack_tracers(ds: xr.Dataset, tracer_layout: Any, var: str):
+    """The dataset with the packed tracers ``ds[var]`` split into one variable per tracer
+    (CICE restart names), the layout, and the function that packs a result back into
+    ``var`` with the input's dimensions."""
+    if isinstance(tracer_layout, _pr.TracerLayout):
+        layout = tracer_layout
+        spec = layout.icepack
+        if spec is None:
+            raise ValueError(
+                f"tracer_layout {layout!r} is not a CICE layout: packed tracers are read in "
+                "Icepack's packing order"
+            )
+    elif isinstance(tracer_layout, str):
+        layout = _pr.TracerLayout.from_icepack(tracer_layout)
+        spec = layout.icepack
+    else:
+        raise ValueError(
+            "tracer_layout must be a string in Icepack's names (e.g. 'icedrv') or a "
+            f"pressridge.TracerLayout, got {type(tracer_layout).__name__}"
+        )
+    if var not in ds:
+        raise ValueError(f"tracer_layout is given but the dataset has no packed tracer variable `{var}`")
+    packed = ds[var]
+    base = list(ds["aicen"].dims)
+    extra = [d for d in packed.dims if d not in base]
+    if len(extra) != 1 or [d for d in packed.dims if d != (extra or [None])[0]] != base:
+        raise ValueError(
+            f"`{var}` has dimensions {packed.dims}, expected those of aicen {tuple(base)} with "
+            "one tracer dimension inserted"
+        )
+    tdim = extra[0]
+    names = list(layout.names)
+    if packed.sizes[tdim] != len(names):
+        more = (" (Icepack packs biogeochemical tracers last; pressridge does not carry them)"
+                if packed.sizes[tdim] > len(names) else "")
+        raise ValueError(
+            f"`{var}`: its tracer dimension `{tdim}` holds {packed.sizes[tdim]} tracers, but the "
+            f"layout `{spec}` has {len(names)} ({' '.join(names)}): give the switches that are on "
+            f"in the host's tracer_nml{more}"
+        )
+    clash = [n for n in names if n in ds]
+    if clash:
+        raise ValueError(
+            f"ambiguous tracers: the dataset has both the packed `{var}` and {', '.join(clash)}"
+        )
+    unpacked = ds.drop_vars(var)
+    for i, n in enumerate(names):
+        unpacked[n] = packed.isel({tdim: i}, drop=True)
+
+    def repack(out: xr.Dataset) -> xr.Dataset:
+        stacked = xr.concat([out[n] for n in names], dim=tdim).transpose(*packed.dims)
+        stacked.attrs = dict(packed.attrs)
+        stacked.attrs.update({
+            "tracer_layout": spec,
+            "tracers": " ".join(names),
+            "tracer_units": ", ".join(layout.units),
+        })
+        out = out.drop_vars(names)
+        out[var] = stacked
+        if tdim in ds.coords:
+            out = out.assign_coords({tdim: ds[tdim]})
+        out.attrs["tracer_layout"] = f"{spec} (packed in `{var}`)"
+        return out
+
+    return unpacked, layout, repack
 
 
 def _complete_block(a, v, s, *rest, nt, names, scalars, mask, layout, options):

@@ -8,7 +8,9 @@ use std::sync::Arc;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use pressridge::itd::{CiceTracerFlags, TracerBase, TracerField, TracerLayout, TracerRole};
+use pressridge::itd::{
+    CiceLayoutSpec, CiceTracerFlags, TracerBase, TracerField, TracerLayout, TracerRole,
+};
 
 use crate::errors::{BindError, value_err};
 
@@ -33,7 +35,8 @@ use crate::errors::{BindError, value_err};
 /// ``Tsfc`` degC, enthalpies J m-3 (negative), salinity ppt, age s, fractions 1, pond depth
 /// and lid m.
 ///
-/// Attributes and methods: ``ntrcr``, ``nilyr``, ``nslyr``, ``flags``, ``fields()`` (name,
+/// Attributes and methods: ``ntrcr``, ``nilyr``, ``nslyr``, ``flags``, ``icepack`` (the
+/// layout in Icepack's names, as ``from_icepack`` takes it), ``fields()`` (name,
 /// first index, levels, base, strata, units, long name), ``spec()`` (the fields as
 /// ``from_fields`` takes them), ``field(name)`` (first index, levels), ``names`` (per tracer,
 /// the CICE restart variable name: ``Tsfcn``, ``qice001``...), ``units``, ``long_names``,
@@ -41,41 +44,6 @@ use crate::errors::{BindError, value_err};
 #[pyclass(frozen, name = "TracerLayout", module = "pressridge._core")]
 pub(crate) struct PyTracerLayout {
     pub(crate) inner: Arc<TracerLayout>,
-}
-
-/// The optional CICE tracers a layout carries, from its fields' roles.
-fn flags_of(l: &TracerLayout) -> CiceTracerFlags {
-    let has = |r: TracerRole| l.fields().iter().any(|f| f.role == r);
-    let count = |r: TracerRole| l.fields().iter().filter(|f| f.role == r).count();
-    CiceTracerFlags {
-        age: has(TracerRole::Age),
-        first_year: has(TracerRole::FirstYear),
-        level_ice: has(TracerRole::LevelArea),
-        ponds: l
-            .fields()
-            .iter()
-            .any(|f| f.role == TracerRole::PondArea && !f.strata.is_empty()),
-        pond_topo: l
-            .fields()
-            .iter()
-            .any(|f| f.role == TracerRole::PondArea && f.strata.is_empty()),
-        pond_sealvl: false,
-        fsd: l
-            .fields()
-            .iter()
-            .find(|f| f.role == TracerRole::FloeSize)
-            .map_or(0, |f| f.levels),
-        brine: has(TracerRole::BrineFraction),
-        snow: ["smice", "smliq", "rhos", "rsnw"]
-            .iter()
-            .all(|n| l.field(n).is_some()),
-        isotopes: l
-            .fields()
-            .iter()
-            .find(|f| f.role == TracerRole::IsotopeSnow)
-            .map_or(0, |f| f.levels),
-        aerosols: count(TracerRole::AerosolSnow) / 2,
-    }
 }
 
 /// One field of `from_fields`: a dict (`name`, `levels`, `base`, `strata`, `role`) or a
@@ -273,6 +241,26 @@ impl PyTracerLayout {
         Ok(Self { inner: Arc::new(l) })
     }
 
+    /// The CICE/Icepack layout named in Icepack's words, as the command line's
+    /// `--tracer-layout` takes it (`CiceLayoutSpec`): `nilyr=N,nslyr=N` and the switches
+    /// that are on (`tr_iage`, `tr_FY`, `tr_lvl`, `tr_pond_lvl`, `tr_pond_topo`,
+    /// `tr_pond_sealvl`, `tr_snow`, `tr_fsd,nfsd=N`, `tr_iso,n_iso=N`, `tr_aero,n_aero=N`,
+    /// `tr_brine`), or the preset `icedrv`; in Icepack's packing order. A ValueError names the
+    /// item refused.
+    #[staticmethod]
+    fn from_icepack(text: &str) -> PyResult<Self> {
+        let spec: CiceLayoutSpec = text.parse().map_err(value_err)?;
+        let l = spec.layout().map_err(value_err)?;
+        Ok(Self { inner: Arc::new(l) })
+    }
+
+    /// The layout in Icepack's words (`from_icepack`'s text, canonical), or None when it is
+    /// not exactly a CICE layout.
+    #[getter]
+    fn icepack(&self) -> Option<String> {
+        self.inner.cice_spec().map(|s| s.to_string())
+    }
+
     /// This layout with `value` as the field `name`'s value where its base volume is zero
     /// and in emptied categories (units of the tracer; Rust `TracerLayout::with_empty_value`):
     /// Icepack's refills of the snow tracers, ``rhos`` = ``rhosnew`` with ``snwredist =
@@ -344,7 +332,7 @@ impl PyTracerLayout {
     #[getter]
     fn flags<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
-        let f = flags_of(&self.inner);
+        let f = self.inner.cice_flags();
         for (k, v) in [
             ("age", f.age),
             ("first_year", f.first_year),
@@ -352,6 +340,7 @@ impl PyTracerLayout {
             ("ponds", f.ponds),
             ("snow", f.snow),
             ("pond_topo", f.pond_topo),
+            ("pond_sealvl", f.pond_sealvl),
             ("brine", f.brine),
         ] {
             d.set_item(k, v)?;
@@ -472,8 +461,8 @@ impl PyTracerLayout {
 
     fn __repr__(&self) -> String {
         let l = &*self.inner;
-        let f = flags_of(l);
-        if TracerLayout::cice(l.nilyr(), l.nslyr(), f).is_ok_and(|c| c == *l) {
+        if let Some(spec) = l.cice_spec() {
+            let f = spec.flags;
             // The newer keywords only where set, so the common layouts read as before.
             let mut more = String::new();
             if f.snow {
@@ -487,6 +476,9 @@ impl PyTracerLayout {
             }
             if f.pond_topo {
                 more += ", pond_topo=True";
+            }
+            if f.pond_sealvl {
+                more += ", pond_sealvl=True";
             }
             if f.fsd > 0 {
                 more += &format!(", fsd={}", f.fsd);

@@ -328,3 +328,81 @@ def test_command_line_and_python_take_exactly_the_librarys_names(cli, sample, tm
     groups = [part.split(": ", 1) for part in msg.split("; ")[1:]]
     assert [g[0] for g in groups] == ["ridging parameters", "constants of the complete step"]
     assert [n for g in groups for n in g[1].split(", ")] == names
+
+
+# ---------------------------------------------------------------------------------------
+# Packed tracers (Icepack column driver's history `trcrn(time, ncat, ntrcr, ni)`)
+
+
+def _packed(ds, layout):
+    """``ds`` with its restart-name tracers packed into ``trcrn`` as icedrv writes it: the
+    tracer dimension after the category dimension."""
+    import xarray as xr
+
+    t = xr.concat([ds[n] for n in layout.names], dim="ntrcr").transpose("time", "nc", "ntrcr", "nj", "ni")
+    return ds.drop_vars(layout.names).assign(trcrn=t)
+
+
+def test_icepack_layout_names_round_trip_and_are_refused_by_name():
+    l = pr.TracerLayout.from_icepack("icedrv")
+    assert l.ntrcr == 21 and l.icepack == "nilyr=7,nslyr=1,tr_lvl,tr_pond_lvl"
+    assert l == pr.TracerLayout.cice(7, 1, level_ice=True, ponds=True)
+    s = pr.TracerLayout.cice(2, 1, snow=True, isotopes=1, aerosols=2, pond_topo=True)
+    assert pr.TracerLayout.from_icepack(s.icepack) == s
+    sealvl = pr.TracerLayout.from_icepack("nilyr=2,nslyr=1,tr_pond_sealvl")
+    assert sealvl.flags["pond_sealvl"] and not sealvl.flags["pond_topo"]
+    assert sealvl.icepack.endswith("tr_pond_sealvl")
+    assert pr.TracerLayout.from_fields([("Tsfc",), ("qice", 2), ("qsno", 1), ("sice", 2), ("bgc", 1, "area")]).icepack is None
+    with pytest.raises(ValueError, match="`tr_aero`.*n_aero"):
+        pr.TracerLayout.from_icepack("icedrv,tr_aero")
+    with pytest.raises(ValueError, match="`nslyr`"):
+        pr.TracerLayout.from_icepack("nilyr=7")
+
+
+def test_xarray_packed_tracers_equal_the_named_ones(tmp_path):
+    import pressridge.xr as prx
+
+    ds, layout = _dataset()
+    packed = _packed(ds, layout)
+    spec = layout.icepack
+    want = prx.ridge_step(ds, dt=1800.0, convergence=2e-6, shear=1e-6)
+    for p in (packed, packed.chunk({"nj": 1})):
+        got = prx.ridge_step(p, dt=1800.0, convergence=2e-6, shear=1e-6, tracer_layout=spec)
+        assert got.trcrn.dims == packed.trcrn.dims
+        assert got.trcrn.attrs["tracer_layout"] == spec
+        for it, n in enumerate(layout.names):
+            np.testing.assert_array_equal(got.trcrn.isel(ntrcr=it).values, want[n].values, err_msg=n)
+            assert n not in got
+        for n in ("aicen", "vicen", "vsnon", "fhocn", "fresh"):
+            np.testing.assert_array_equal(got[n].values, want[n].values, err_msg=n)
+    # The layout object does as well as its text.
+    got = prx.ridge_step(packed, dt=1800.0, convergence=2e-6, tracer_layout=layout)
+    assert got.trcrn.attrs["tracer_layout"] == spec
+    with pytest.raises(ValueError, match="name its layout with tracer_layout"):
+        prx.ridge_step(packed, dt=1800.0, convergence=2e-6)
+    with pytest.raises(ValueError, match=r"holds 14 tracers.*has 21"):
+        prx.ridge_step(packed, dt=1800.0, convergence=2e-6, tracer_layout="icedrv")
+    with pytest.raises(ValueError, match="tracer_var needs tracer_layout"):
+        prx.ridge_step(ds, dt=1800.0, convergence=2e-6, tracer_var="trcrn")
+    with pytest.raises(ValueError, match="one tracer dimension"):
+        prx.ridge_step(packed, dt=1800.0, convergence=2e-6, tracer_layout=spec, tracer_var="vsnon")
+
+
+def test_command_line_packed_tracers_equal_xarray(cli, tmp_path):
+    """``pressridge ridge-step --tracer-layout`` and ``xr.ridge_step(tracer_layout=)`` on
+    the same packed file give the same bits."""
+    import xarray as xr
+    import pressridge.xr as prx
+
+    ds, layout = _dataset()
+    packed = _packed(ds, layout).rename({"nc_bounds": "nb"})
+    inp, out = tmp_path / "in.nc", tmp_path / "out.nc"
+    packed.to_netcdf(inp)
+    cli("ridge-step", "--input", inp, "--output", out, "--dt", "1800", "--convergence", "2e-6",
+        "--tracer-layout", layout.icepack)
+    want = prx.ridge_step(packed, dt=1800.0, convergence=2e-6, tracer_layout=layout.icepack)
+    got = xr.open_dataset(out)
+    assert got.trcrn.dims == packed.trcrn.dims
+    for n in ("trcrn", "aicen", "vsnon", "fhocn", "aice0"):
+        np.testing.assert_array_equal(got[n].values, want[n].transpose(*got[n].dims).values, err_msg=n)
+    got.close()

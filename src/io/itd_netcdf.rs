@@ -55,9 +55,11 @@ mod vars;
 pub use cf_table::{read_cf_table, read_cf_table_at_friction, write_cf_table};
 pub use forcing::{CellField, CellUnits, read_cell_field};
 pub use grid::{CoordValues, CoordVar, ItdGrid};
-pub use output::{FieldMeta, NC_FILL_DOUBLE, Output, STRENGTH_META, history_line, write_output};
+pub use output::{
+    DimField, FieldMeta, NC_FILL_DOUBLE, Output, STRENGTH_META, history_line, write_output,
+};
 pub use read::{read_itd, read_itd_with};
-pub use tracers::{SnowTracers, read_snow_tracers};
+pub use tracers::{PackedTracers, SnowTracers, read_packed_tracers, read_snow_tracers};
 use vars::fmt_dims;
 pub use vars::{has_variable, read_field, read_fill};
 

@@ -49,8 +49,8 @@ pub use strength::{
     strength_batch_masked, strength_column,
 };
 pub use tracers::{
-    CiceTracerFlags, LayoutDetectError, MAX_AERO, MAX_ISO, TracerBase, TracerField, TracerLayout,
-    TracerRole,
+    CiceLayoutSpec, CiceTracerFlags, LAYOUT_PRESETS, LayoutDetectError, LayoutSpecError, MAX_AERO,
+    MAX_ISO, TracerBase, TracerField, TracerLayout, TracerRole,
 };
 
 /// What is wrong with one column (no column index: see [`ItdError::Column`]).

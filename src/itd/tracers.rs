@@ -21,7 +21,9 @@
 use super::ItdError;
 
 mod field;
+mod spec;
 pub use field::{TracerBase, TracerField, TracerRole};
+pub use spec::{CiceLayoutSpec, LayoutSpecError, PRESETS as LAYOUT_PRESETS};
 
 /// Most aerosol species a layout may carry (Icepack's `icepack_max_aero`).
 pub const MAX_AERO: usize = 6;
@@ -657,6 +659,46 @@ impl TracerLayout {
     /// Number of snow layers (Icepack `nslyr`).
     pub fn nslyr(&self) -> usize {
         self.nslyr
+    }
+
+    /// The optional CICE tracers this layout carries, told from its fields' roles (sea-level
+    /// ponds from topography ponds by the clean-up's pond-water booking).
+    pub fn cice_flags(&self) -> CiceTracerFlags {
+        use TracerRole::*;
+        let find = |r: TracerRole| self.fields.iter().find(|f| f.role == r);
+        let pond_on_area = self
+            .fields
+            .iter()
+            .any(|f| f.role == PondArea && f.strata.is_empty());
+        CiceTracerFlags {
+            age: find(Age).is_some(),
+            first_year: find(FirstYear).is_some(),
+            level_ice: find(LevelArea).is_some(),
+            ponds: self
+                .fields
+                .iter()
+                .any(|f| f.role == PondArea && !f.strata.is_empty()),
+            snow: [SnowIceMass, SnowLiquidMass, SnowDensity, SnowGrainRadius]
+                .iter()
+                .all(|r| find(*r).is_some()),
+            isotopes: find(IsotopeSnow).map_or(0, |f| f.levels),
+            aerosols: self.aero.len(),
+            pond_topo: pond_on_area && self.zap_pond_water,
+            pond_sealvl: pond_on_area && !self.zap_pond_water,
+            fsd: find(FloeSize).map_or(0, |f| f.levels),
+            brine: find(BrineFraction).is_some(),
+        }
+    }
+
+    /// The layout in Icepack's names ([`CiceLayoutSpec`]) when it is exactly a CICE layout
+    /// ([`TracerLayout::cice`]), else `None` (other fields, host tables, refill values).
+    pub fn cice_spec(&self) -> Option<CiceLayoutSpec> {
+        let spec = CiceLayoutSpec {
+            nilyr: self.nilyr,
+            nslyr: self.nslyr,
+            flags: self.cice_flags(),
+        };
+        spec.layout().is_ok_and(|l| l == *self).then_some(spec)
     }
 
     /// The fields, in storage order.

@@ -1,6 +1,7 @@
 //! `pressridge ridge-step`: one ridging step on a gridded thickness distribution: the
 //! complete step (snow, tracers, ocean fluxes; `itd::ridge_step_batch`) when the input has
-//! snow or tracers under their CICE restart names, else the area-volume step
+//! snow or tracers under their CICE restart names, or packed in one array whose layout
+//! `--tracer-layout` names (Icepack column driver's history), else the area-volume step
 //! (`itd::ridge_batch_masked`). Closing and opening are derived from the deformation (CICE,
 //! `--rates deformation`) or read as the host's rates (SIS2, `--rates host`, always the
 //! complete step); the freezing temperature comes from `--tf`, the file's `Tf` (degC), or
@@ -20,10 +21,12 @@ mod settings;
 use std::path::PathBuf;
 
 use ndarray::{Array1, Array2};
-use pressridge::io::itd_netcdf::{ReadOptions, SnowTracers, read_itd_with, read_snow_tracers};
+use pressridge::io::itd_netcdf::{
+    ReadOptions, SnowTracers, has_variable, read_itd_with, read_packed_tracers, read_snow_tracers,
+};
 use pressridge::io::refuse_output_over_input;
 use pressridge::itd::{
-    CategoryBounds, CiceTracerFlags, RidgeOptions, TracerLayout, category_bounds,
+    CategoryBounds, CiceLayoutSpec, CiceTracerFlags, RidgeOptions, TracerLayout, category_bounds,
 };
 
 use crate::BoxError;
@@ -126,6 +129,18 @@ pub struct Args {
     /// `units` "degC" required), default `Tf` (used when present).
     #[arg(long, value_name = "NAME")]
     pub tf_var: Option<String>,
+    /// The tracers are packed in one array (--tracer-var, default `trcrn`: Icepack column
+    /// driver's history `trcrn(time, ncat, ntrcr, ni)`) in this layout, given by Icepack's
+    /// names: `nilyr=N,nslyr=N` and the switches that are on (`tr_iage`, `tr_FY`, `tr_lvl`,
+    /// `tr_pond_lvl`, `tr_pond_topo`, `tr_pond_sealvl`, `tr_snow`, `tr_fsd,nfsd=N`,
+    /// `tr_iso,n_iso=N`, `tr_aero,n_aero=N`, `tr_brine`), or the preset `icedrv` (the
+    /// column driver's defaults: nilyr=7,nslyr=1,tr_lvl,tr_pond_lvl). The output holds the
+    /// array again, in the same dimensions.
+    #[arg(long, value_name = "SPEC")]
+    pub tracer_layout: Option<String>,
+    /// With --tracer-layout: the packed tracer variable (default `trcrn`).
+    #[arg(long, value_name = "NAME")]
+    pub tracer_var: Option<String>,
     /// Complete step only: skip Icepack's clean-up after ridging (`docleanup = false`).
     #[arg(long)]
     pub no_cleanup: bool,
@@ -185,6 +200,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
     )?;
     let ncol = grid.ncol();
     let ncat = grid.ncat();
+    let snow = read_tracers(&args, &grid)?;
     let forcing = if host {
         host_rates(&args, &grid)?
     } else {
@@ -206,7 +222,6 @@ pub fn run(args: Args) -> Result<(), BoxError> {
             Array1::from_iter((0..ncol).map(|c| f64::max(1.0 - grid.aicen.column(c).sum(), 0.0)))
         }
     };
-    let snow = read_snow_tracers(&args.input, &grid)?;
     let all = parse_all_params(&args)?;
     let o = RidgeOptions {
         participation: args.participation.into(),
@@ -235,6 +250,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
                 trcrn: ndarray::Array3::zeros((ncat, nt, ncol)),
                 missing: None,
                 fill_value: None,
+                packed: None,
             };
             complete::run_complete(
                 &args,
@@ -254,5 +270,54 @@ pub fn run(args: Args) -> Result<(), BoxError> {
             aice0,
             (o, all),
         ),
+    }
+}
+
+/// Packed tracer variable read when `--tracer-var` is not given.
+const TRACER_VAR_DEFAULT: &str = "trcrn";
+
+/// The snow and tracers of the input: packed in the layout of `--tracer-layout`, else under
+/// CICE restart names (`None`: the file has neither). A packed `trcrn` with no
+/// `--tracer-layout` is refused with the way to name its layout.
+fn read_tracers(
+    args: &Args,
+    grid: &pressridge::io::itd_netcdf::ItdGrid,
+) -> Result<Option<SnowTracers>, BoxError> {
+    let var = args.tracer_var.as_deref().unwrap_or(TRACER_VAR_DEFAULT);
+    match &args.tracer_layout {
+        Some(text) => {
+            let spec: CiceLayoutSpec = text.parse().map_err(|e| format!("--tracer-layout: {e}"))?;
+            if !has_variable(&args.input, var)? {
+                return Err(format!(
+                    "--tracer-layout is given but {} has no packed tracer variable `{var}`{}",
+                    args.input.display(),
+                    if args.tracer_var.is_some() {
+                        ""
+                    } else {
+                        " (name it with --tracer-var)"
+                    }
+                )
+                .into());
+            }
+            Ok(Some(read_packed_tracers(&args.input, grid, var, &spec)?))
+        }
+        None => {
+            if args.tracer_var.is_some() {
+                return Err(
+                    "--tracer-var needs --tracer-layout, the layout of the packed tracers".into(),
+                );
+            }
+            if has_variable(&args.input, var)? && !has_variable(&args.input, "Tsfcn")? {
+                return Err(format!(
+                    "{} holds the packed tracer array `{var}`: name its layout with \
+                     --tracer-layout in Icepack's names, e.g. `--tracer-layout icedrv` for the \
+                     column driver's defaults or `--tracer-layout \
+                     nilyr=7,nslyr=1,tr_iage,tr_FY,tr_lvl,tr_pond_lvl`",
+                    args.input.display()
+                )
+                .into());
+            }
+            Ok(read_snow_tracers(&args.input, grid)?)
+        }
     }
 }

@@ -300,6 +300,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
             hin_max: None,
             fields: &[(STRENGTH_META, p.as_slice().expect("contiguous"))],
             category_fields: &[],
+            dim_fields: &[],
             global: &global,
             fill: grid.valid.as_ref().map(|_| fill),
             history: Some(&history_line()),

@@ -18,6 +18,20 @@ pub struct FieldMeta<'a> {
     pub standard_name: Option<&'a str>,
 }
 
+/// A field on dimensions of its own (e.g. a packed tracer array `trcrn(time, ncat, ntrcr,
+/// ni)`): values in the file's order of `dims`; dimensions the grid does not have are added.
+#[derive(Debug, Clone)]
+pub struct DimField<'a> {
+    /// Variable name.
+    pub name: &'a str,
+    /// Dimensions (name, length) in file order.
+    pub dims: Vec<(String, usize)>,
+    /// Values in C order over `dims`.
+    pub data: &'a [f64],
+    /// Attributes (name, text), e.g. `long_name` (no `units` for fields of mixed units).
+    pub attrs: Vec<(&'a str, String)>,
+}
+
 /// What to write: an optional distribution (with bounds) and any number of 2-D fields.
 #[derive(Debug, Clone, Copy)]
 pub struct Output<'a> {
@@ -34,6 +48,8 @@ pub struct Output<'a> {
     /// Extra fields on the category and spatial dimensions (as `aicen`), `ncat·ncol` values
     /// each in C order (category slowest); written after `fields`.
     pub category_fields: &'a [(FieldMeta<'a>, &'a [f64])],
+    /// Fields on dimensions of their own, written last.
+    pub dim_fields: &'a [DimField<'a>],
     /// Global attributes (name, value): options used.
     pub global: &'a [(String, String)],
     /// Fill value for masked columns (`grid.valid` false): written as `_FillValue` of every
@@ -91,6 +107,17 @@ fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), Netc
                 var: meta.name.into(),
                 expected: format!("{ncol} values"),
                 found: format!("{} values", data.len()),
+            });
+        }
+    }
+    for d in out.dim_fields {
+        let n: usize = d.dims.iter().map(|x| x.1).product();
+        if d.data.len() != n {
+            return Err(NetcdfError::Shape {
+                path: path.to_path_buf(),
+                var: d.name.into(),
+                expected: format!("{n} values ({})", fmt_dims(&d.dims)),
+                found: format!("{} values", d.data.len()),
             });
         }
     }
@@ -210,6 +237,35 @@ fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), Netc
             f.add_dimension(&bdim, h.len()).map_err(&e)?;
         }
     }
+    for d in out.dim_fields {
+        for (n, l) in &d.dims {
+            match f.dimension(n) {
+                Some(have) if have.len() == *l => {}
+                Some(have) => {
+                    return Err(NetcdfError::Shape {
+                        path: path.to_path_buf(),
+                        var: d.name.into(),
+                        expected: format!("dimension {n}={}", have.len()),
+                        found: format!("{n}={l}"),
+                    });
+                }
+                None => {
+                    f.add_dimension(n, *l).map_err(&e)?;
+                }
+            }
+        }
+        let names: Vec<&str> = d.dims.iter().map(|x| x.0.as_str()).collect();
+        let mut var = f.add_variable::<f64>(d.name, &names).map_err(&e)?;
+        for (k, v) in &d.attrs {
+            var.put_attribute(k, v.as_str()).map_err(&e)?;
+        }
+        if let Some(fill) = out.fill {
+            var.put_attribute("_FillValue", fill).map_err(&e)?;
+        }
+        if let Some(c) = &coordinates {
+            var.put_attribute("coordinates", c.as_str()).map_err(&e)?;
+        }
+    }
     for (meta, dims, _) in &items {
         let mut var = f.add_variable::<f64>(meta.name, dims).map_err(&e)?;
         var.put_attribute("units", meta.units).map_err(&e)?;
@@ -258,6 +314,10 @@ fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), Netc
     for (meta, _, data) in &items {
         let mut var = f.variable_mut(meta.name).expect("just defined");
         var.put_values(data, ..).map_err(&e)?;
+    }
+    for d in out.dim_fields {
+        let mut var = f.variable_mut(d.name).expect("just defined");
+        var.put_values(d.data, ..).map_err(&e)?;
     }
     for c in &coords {
         let mut var = f.variable_mut(&c.name).expect("just defined");

@@ -1,13 +1,15 @@
-//! Snow and tracers of a gridded distribution for the complete ridging step
-//! ([`read_snow_tracers`]), under CICE restart names, the layout told from the names.
+//! Snow and tracers of a gridded distribution for the complete ridging step: under CICE
+//! restart names, the layout told from the names ([`read_snow_tracers`]), or packed in one
+//! array whose layout is given ([`read_packed_tracers`]: Icepack column driver's history
+//! `trcrn(time, ncat, ntrcr, ni)`).
 
 use std::path::Path;
 
-use ndarray::{Array1, Array2, Array3};
+use ndarray::{Array1, Array2, Array3, ArrayD, Axis, IxDyn};
 
 use super::vars::{all_dims, fill_of, fmt_dims, is_fill, nc_err, read_f64};
 use super::{ItdGrid, NetcdfError};
-use crate::itd::{CiceTracerFlags, TracerLayout};
+use crate::itd::{CiceLayoutSpec, CiceTracerFlags, TracerLayout};
 
 /// Snow and tracers of a gridded distribution, for the complete ridging step. Variable names
 /// are CICE restart names ([`TracerLayout::cice_restart_names`]): `vsnon` (m), `Tsfcn`,
@@ -27,6 +29,159 @@ pub struct SnowTracers {
     pub missing: Option<Array1<bool>>,
     /// The fill value of those variables, if any has one.
     pub fill_value: Option<f64>,
+    /// Where the tracers were packed in one array ([`read_packed_tracers`]); `None`: one
+    /// variable per tracer under its CICE restart name.
+    pub packed: Option<PackedTracers>,
+}
+
+/// A packed tracer array as the file holds it: what is needed to write it back the same way.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PackedTracers {
+    /// The variable (e.g. `trcrn`).
+    pub var: String,
+    /// Its dimensions in file order: those of `aicen` with the tracer dimension inserted.
+    pub dims: Vec<(String, usize)>,
+    /// The position of the tracer dimension among `dims`.
+    pub axis: usize,
+    /// The layout it was read with.
+    pub spec: CiceLayoutSpec,
+}
+
+impl PackedTracers {
+    /// `trcrn` `(ncat, ntrcr, ncol)` back into the file's order of `dims`.
+    pub fn to_file_order(&self, grid: &ItdGrid, trcrn: &Array3<f64>) -> Vec<f64> {
+        let shape: Vec<usize> = self.dims.iter().map(|d| d.1).collect();
+        let mut out = ArrayD::<f64>::zeros(IxDyn(&shape));
+        for it in 0..trcrn.shape()[1] {
+            let cat = trcrn
+                .index_axis(Axis(1), it)
+                .as_standard_layout()
+                .into_owned();
+            let file = grid.to_file_order(cat.as_slice().expect("standard layout"));
+            let mut slot = out.index_axis_mut(Axis(self.axis), it);
+            for (x, v) in slot.iter_mut().zip(file) {
+                *x = v;
+            }
+        }
+        out.iter().copied().collect()
+    }
+}
+
+/// Reads `vsnon` (zeros when absent) and the tracers packed in the variable `var` (Icepack
+/// column driver's history: `trcrn(time, ncat, ntrcr, ni)`) in the layout `spec`
+/// ([`CiceLayoutSpec`], Icepack's packing order). `var` must have the dimensions of `aicen`
+/// with one more, the tracer dimension, anywhere among them, as long as the layout's tracer
+/// count. Errors name the variable, its dimensions and the layout.
+pub fn read_packed_tracers(
+    path: &Path,
+    grid: &ItdGrid,
+    var: &str,
+    spec: &CiceLayoutSpec,
+) -> Result<SnowTracers, NetcdfError> {
+    let value_err = |msg: String| NetcdfError::Value {
+        path: path.to_path_buf(),
+        var: var.into(),
+        msg,
+    };
+    let layout = spec
+        .layout()
+        .map_err(|e| value_err(format!("the layout `{spec}`: {e}")))?;
+    let file = netcdf::open(path).map_err(nc_err(path))?;
+    let v = file
+        .variable(var)
+        .ok_or_else(|| NetcdfError::MissingVariable {
+            path: path.to_path_buf(),
+            var: var.into(),
+        })?;
+    let dims = all_dims(&v);
+    let cat_dims = grid.category_dims();
+    let axis = (0..dims.len()).find(|&p| {
+        let mut rest = dims.clone();
+        rest.remove(p);
+        rest == cat_dims
+    });
+    let Some(axis) = axis else {
+        return Err(NetcdfError::Shape {
+            path: path.to_path_buf(),
+            var: var.into(),
+            expected: format!(
+                "those of aicen {} with one tracer dimension inserted",
+                fmt_dims(&cat_dims)
+            ),
+            found: fmt_dims(&dims),
+        });
+    };
+    let nt = layout.ntrcr();
+    let names = layout.cice_restart_names();
+    if dims[axis].1 != nt {
+        let more = if dims[axis].1 > nt {
+            " (Icepack packs biogeochemical tracers last; pressridge does not carry them)"
+        } else {
+            ""
+        };
+        return Err(value_err(format!(
+            "its tracer dimension `{}` holds {} tracers, but the layout `{spec}` has {nt} \
+             ({}): give the switches that are on in the host's tracer_nml{more}",
+            dims[axis].0,
+            dims[axis].1,
+            names.join(" ")
+        )));
+    }
+    let fill = fill_of(&v);
+    let shape: Vec<usize> = dims.iter().map(|d| d.1).collect();
+    let all = ArrayD::from_shape_vec(IxDyn(&shape), read_f64(path, &v)?)
+        .expect("the library returns the variable's size");
+    let (ncat, ncol) = (grid.ncat(), grid.ncol());
+    let mut trcrn = Array3::zeros((ncat, nt, ncol));
+    let mut missing = vec![false; ncol];
+    for it in 0..nt {
+        let a = grid.to_category_major(all.index_axis(Axis(axis), it).iter().copied().collect());
+        for (c, m) in missing.iter_mut().enumerate() {
+            if a.column(c).iter().any(|&x| is_fill(x, fill)) {
+                *m = true;
+            }
+        }
+        trcrn.index_axis_mut(Axis(1), it).assign(&a);
+    }
+    let mut fill_value = fill;
+    let vsnon = match file.variable("vsnon") {
+        None => Array2::zeros((ncat, ncol)),
+        Some(s) => {
+            let d = all_dims(&s);
+            if d != cat_dims {
+                return Err(NetcdfError::Shape {
+                    path: path.to_path_buf(),
+                    var: "vsnon".into(),
+                    expected: fmt_dims(&cat_dims),
+                    found: fmt_dims(&d),
+                });
+            }
+            let f = fill_of(&s);
+            fill_value = fill_value.or(f);
+            let a = grid.to_category_major(read_f64(path, &s)?);
+            for (c, m) in missing.iter_mut().enumerate() {
+                if a.column(c).iter().any(|&x| is_fill(x, f)) {
+                    *m = true;
+                }
+            }
+            a
+        }
+    };
+    let any_missing = missing.iter().any(|m| *m);
+    Ok(SnowTracers {
+        layout,
+        flags: spec.flags,
+        vsnon,
+        trcrn,
+        missing: any_missing.then(|| missing.into_iter().map(|m| !m).collect()),
+        fill_value,
+        packed: Some(PackedTracers {
+            var: var.into(),
+            dims,
+            axis,
+            spec: *spec,
+        }),
+    })
 }
 
 /// Reads the snow and tracers that go with `grid` (read from the same file by
@@ -91,5 +246,6 @@ pub fn read_snow_tracers(path: &Path, grid: &ItdGrid) -> Result<Option<SnowTrace
         trcrn,
         missing: any_missing.then(|| missing.into_iter().map(|m| !m).collect()),
         fill_value,
+        packed: None,
     }))
 }

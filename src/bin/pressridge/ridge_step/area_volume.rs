@@ -122,6 +122,7 @@ pub(super) fn run(
             hin_max: Some(&hin_max),
             fields: &fields,
             category_fields: &[],
+            dim_fields: &[],
             global: &global,
             fill: grid.valid.as_ref().map(|_| fill),
             history: Some(&history_line()),

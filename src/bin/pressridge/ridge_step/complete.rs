@@ -6,7 +6,7 @@ use std::path::Path;
 
 use ndarray::{Array1, Array2, ArrayViewMut1, ArrayViewMut2};
 use pressridge::io::itd_netcdf::{
-    CellUnits, FieldMeta, ItdGrid, NC_FILL_DOUBLE, Output, SnowTracers, history_line,
+    CellUnits, DimField, FieldMeta, ItdGrid, NC_FILL_DOUBLE, Output, SnowTracers, history_line,
     read_cell_field, write_output,
 };
 use pressridge::itd::{
@@ -72,6 +72,7 @@ pub(super) fn run_complete(
         mut trcrn,
         missing,
         fill_value,
+        packed,
         ..
     } = st;
     let nt = layout.ntrcr();
@@ -261,8 +262,30 @@ pub(super) fn run_complete(
             vsnon_c.as_slice().expect("standard layout"),
         ));
     }
+    // Tracers as they came: packed in one array, or one variable each.
+    let packed_data = packed.as_ref().map(|p| p.to_file_order(&grid, &trcrn));
+    let dim_fields: Vec<DimField<'_>> = match (&packed, &packed_data) {
+        (Some(p), Some(data)) => vec![DimField {
+            name: &p.var,
+            dims: p.dims.clone(),
+            data,
+            attrs: vec![
+                (
+                    "long_name",
+                    "tracers of each thickness category, packed (Icepack trcrn)".into(),
+                ),
+                ("tracer_layout", p.spec.to_string()),
+                ("tracers", names.join(" ")),
+                (
+                    "tracer_units",
+                    units.iter().map(|u| u.0).collect::<Vec<_>>().join(", "),
+                ),
+            ],
+        }],
+        _ => Vec::new(),
+    };
     for ((name, (u, ln)), data) in names.iter().zip(&units).zip(&tracer_data) {
-        if !write_tracers {
+        if !write_tracers || packed.is_some() {
             break;
         }
         category_fields.push((
@@ -375,6 +398,12 @@ pub(super) fn run_complete(
     global.push(("tf".into(), tf_desc));
     global.push(("cleanup".into(), (!args.no_cleanup).to_string()));
     global.push(("rebin".into(), (!args.no_rebin).to_string()));
+    if let Some(p) = &packed {
+        global.push((
+            "tracer_layout".into(),
+            format!("{} (packed in `{}`)", p.spec, p.var),
+        ));
+    }
     global.push((
         "tracers".into(),
         if write_tracers {
@@ -391,6 +420,7 @@ pub(super) fn run_complete(
             hin_max: Some(&hin_max),
             fields: &fields,
             category_fields: &category_fields,
+            dim_fields: &dim_fields,
             global: &global,
             fill: grid.valid.as_ref().map(|_| fill),
             history: Some(&history_line()),
