@@ -35,9 +35,10 @@ impl From<ItdError> for FfiError {
             ItdError::Parameter { value, .. } if !value.is_finite() => {
                 (PRESSRIDGE_ERR_NOT_FINITE, None)
             }
-            ItdError::Bounds(_) | ItdError::Parameter { .. } | ItdError::CfTable(_) => {
-                (PRESSRIDGE_ERR_BAD_VALUE, None)
-            }
+            ItdError::Bounds(_)
+            | ItdError::Parameter { .. }
+            | ItdError::CfTable(_)
+            | ItdError::Layout(_) => (PRESSRIDGE_ERR_BAD_VALUE, None),
         };
         let mut message = e.to_string();
         if let Some(c) = column {

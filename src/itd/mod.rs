@@ -224,6 +224,9 @@ pub enum ItdError {
     /// A C_f table is unusable.
     #[error("invalid C_f table: {0}")]
     CfTable(String),
+    /// A tracer layout (its fields, a host's tracer tables, a refill value) is unusable.
+    #[error("invalid tracer layout: {0}")]
+    Layout(String),
 }
 
 /// Reusable scratch space for the per-column routines, sized once for `ncat` categories.

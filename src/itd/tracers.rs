@@ -288,7 +288,7 @@ impl TracerLayout {
         nt_strata: &[i32],
     ) -> Result<Self, ItdError> {
         let nt = self.ntrcr;
-        let bad = |msg: String| ItdError::Bounds(format!("host tracer tables: {msg}"));
+        let bad = |msg: String| ItdError::Layout(format!("host tracer tables: {msg}"));
         if trcr_depend.len() != nt
             || trcr_base.len() != 3 * nt
             || n_trcr_strata.len() != nt
@@ -360,10 +360,10 @@ impl TracerLayout {
             .fields
             .iter()
             .position(|f| f.name == name)
-            .ok_or_else(|| ItdError::Bounds(format!("tracer layout: no tracer field `{name}`")))?;
+            .ok_or_else(|| ItdError::Layout(format!("no tracer field `{name}`")))?;
         if self.fields[i].base == TracerBase::Area || !value.is_finite() {
-            return Err(ItdError::Bounds(format!(
-                "tracer layout: `{name}`: an empty value is for finite values of ice- and \
+            return Err(ItdError::Layout(format!(
+                "`{name}`: an empty value is for finite values of ice- and \
                  snow-volume tracers"
             )));
         }
@@ -386,7 +386,7 @@ impl TracerLayout {
     /// single-level fields; field names unique; level-ice and pond roles as in
     /// [`TracerLayout::cice`].
     pub fn new(fields: Vec<TracerField>) -> Result<Self, ItdError> {
-        let bad = |msg: String| ItdError::Bounds(format!("tracer layout: {msg}"));
+        let bad = ItdError::Layout;
         let mut starts = Vec::with_capacity(fields.len());
         let mut ntrcr = 0;
         for (i, f) in fields.iter().enumerate() {
