@@ -5,7 +5,9 @@
 #   scripts/check-ub.sh asan     the C and Fortran tests built with -fsanitize=address,undefined
 #                                against the static library built with Rust's AddressSanitizer
 #   scripts/check-ub.sh tsan     the thread tests of tests/ffi.rs under ThreadSanitizer
-#   scripts/check-ub.sh fuzz     each libFuzzer target of fuzz/ for FUZZ_SECONDS (default 30)
+#   scripts/check-ub.sh fuzz     each libFuzzer target of fuzz/ for FUZZ_SECONDS (default 30),
+#                                FUZZ_JOBS (default 2) at a time, FUZZ_TARGETS (default all);
+#                                the stable toolchain suffices
 #
 # Installs what it needs: the nightly toolchain's miri and rust-src components (rustup).
 # Miri interprets the program and reports any undefined behaviour it executes: out-of-bounds
@@ -93,20 +95,65 @@ case "$stage" in
     echo "== tsan: clean in $SECONDS s"
     ;;
   fuzz)
-    command -v cargo-fuzz > /dev/null || cargo install cargo-fuzz --locked
     secs=${FUZZ_SECONDS:-30}
-    # Each target with its seeds from the repository's own files; what libFuzzer finds goes
-    # to the ignored fuzz/corpus/<target>, a failing input to fuzz/artifacts/<target>.
-    # Inputs that once failed (fuzz/findings/<target>) run first, every time.
-    for ts in scene_toml:data/scenes strength_cell:fuzz/seeds/strength_cell; do
-      t=${ts%%:*} seeds=(${ts#*:})
+    jobs=${FUZZ_JOBS:-2}
+    # The libFuzzer targets of fuzz/ (its own workspace), built as cargo-fuzz builds them
+    # (AddressSanitizer, coverage counters, debug assertions) but with cargo itself, so that
+    # neither cargo-fuzz nor the nightly toolchain is needed: RUSTC_BOOTSTRAP=1 lets the
+    # stable compiler take -Zsanitizer (a fresh machine has only the stable toolchain).
+    # `cargo +nightly fuzz run TARGET` does the same for long runs.
+    target=x86_64-unknown-linux-gnu
+    cov="-Cpasses=sancov-module -Cllvm-args=-sanitizer-coverage-level=4"
+    cov+=" -Cllvm-args=-sanitizer-coverage-inline-8bit-counters -Cllvm-args=-sanitizer-coverage-pc-table"
+    cov+=" -Cllvm-args=-sanitizer-coverage-trace-compares -Cllvm-args=-sanitizer-coverage-stack-depth"
+    echo "== fuzz: building the targets ($SECONDS s)"
+    RUSTC_BOOTSTRAP=1 RUSTFLAGS="$cov --cfg fuzzing -Zsanitizer=address -Cdebug-assertions" \
+      ASAN_OPTIONS=detect_odr_violation=0 \
+      cargo build --manifest-path fuzz/Cargo.toml --target $target --profile smoke --bins \
+      --target-dir fuzz/target/ub
+    bin=fuzz/target/ub/$target/smoke
+    # Each target with its seeds (the repository's own files, or inputs made from them);
+    # what libFuzzer finds goes to the ignored fuzz/corpus/<target>, a failing input to
+    # fuzz/artifacts/<target>. Inputs that once failed (fuzz/findings/<target>) run first.
+    run_target() {
+      local t=$1; shift
+      local seeds=("$@")
       [ -d "fuzz/findings/$t" ] && seeds+=("fuzz/findings/$t")
-      echo "== fuzz: $t for $secs s ($SECONDS s)"
-      mkdir -p "fuzz/corpus/$t"
-      cargo +nightly fuzz run "$t" "fuzz/corpus/$t" "${seeds[@]}" -- \
-        -max_total_time="$secs" -print_final_stats=1 2>&1 | grep -E "^(Done|stat::number_of_executed_units|#[0-9]+ *DONE)|ERROR|panicked" || true
-      [ -z "$(ls -A "fuzz/artifacts/$t" 2>/dev/null)" ] || { echo "fuzz: $t found a failing input in fuzz/artifacts/$t" >&2; exit 1; }
+      mkdir -p "fuzz/corpus/$t" "fuzz/artifacts/$t"
+      ASAN_OPTIONS=detect_odr_violation=0 "$bin/$t" "fuzz/corpus/$t" "${seeds[@]}" \
+        -max_total_time="$secs" -print_final_stats=1 -artifact_prefix="fuzz/artifacts/$t/" \
+        > "fuzz/artifacts/$t.log" 2>&1 || true
+      local runs
+      runs=$(grep -o "stat::number_of_executed_units: *[0-9]*" "fuzz/artifacts/$t.log" | grep -o "[0-9]*$" || echo 0)
+      if [ -n "$(ls -A "fuzz/artifacts/$t" 2>/dev/null)" ] || grep -qE "ERROR: |panicked" "fuzz/artifacts/$t.log"; then
+        grep -E "ERROR|panicked|SUMMARY" "fuzz/artifacts/$t.log" | head -5 >&2
+        echo "fuzz: $t FAILED: a failing input in fuzz/artifacts/$t (log fuzz/artifacts/$t.log)" >&2
+        return 1
+      fi
+      echo "fuzz: $t: $runs inputs in $secs s, no finding"
+    }
+    targets=(
+      "scene_toml data/scenes"
+      "strength_cell fuzz/seeds/strength_cell"
+      "strength_grid fuzz/seeds/strength_grid"
+      "ridge_cell fuzz/seeds/ridge_cell"
+      "itd_netcdf fuzz/seeds/itd_netcdf"
+      "cf_table fuzz/seeds/cf_table"
+    )
+    echo "== fuzz: ${#targets[@]} targets for $secs s each, $jobs at a time ($SECONDS s)"
+    fail=0 pids=()
+    for ts in "${targets[@]}"; do
+      # FUZZ_TARGETS="a b" runs only those.
+      [ -z "${FUZZ_TARGETS:-}" ] || [[ " $FUZZ_TARGETS " == *" ${ts%% *} "* ]] || continue
+      # shellcheck disable=SC2086
+      run_target $ts & pids+=($!)
+      if [ "${#pids[@]}" -ge "$jobs" ]; then
+        wait "${pids[0]}" || fail=1
+        pids=("${pids[@]:1}")
+      fi
     done
+    for p in "${pids[@]}"; do wait "$p" || fail=1; done
+    [ "$fail" = 0 ] || exit 1
     echo "== fuzz: clean in $SECONDS s"
     ;;
   *)

@@ -24,4 +24,8 @@ if [ -f python/pyproject.toml ]; then
   echo "== Python tests ($SECONDS s)"
   scripts/test-python.sh
 fi
+if [ -f fuzz/Cargo.toml ]; then
+  echo "== fuzz smoke: every libFuzzer target for 30 s ($SECONDS s)"
+  FUZZ_SECONDS=30 scripts/check-ub.sh fuzz
+fi
 echo "== all checks passed in $SECONDS s"

@@ -35,9 +35,8 @@ fuzz_target!(|input: &[u8]| {
     let v: Vec<f64> = (0..ncat).map(|_| next(&mut data)).collect();
     let mut p = f64::NAN;
     // SAFETY: `a` and `v` hold `ncat` values, `o` and `p` are live locals.
-    let rc = unsafe {
-        pressridge_strength_cell(ncat as i64, a.as_ptr(), v.as_ptr(), aice0, &o, &mut p)
-    };
+    let rc =
+        unsafe { pressridge_strength_cell(ncat as i64, a.as_ptr(), v.as_ptr(), aice0, &o, &mut p) };
     if rc == PRESSRIDGE_OK {
         assert!(p.is_finite(), "strength {p} reported as computed");
     }
