@@ -1,0 +1,86 @@
+//! A host's own tracer tables (Icepack's `trcr_depend`, `trcr_base`, `n_trcr_strata`,
+//! `nt_strata`) laid over a layout ([`TracerLayout::with_host_tables`]).
+
+use super::{TracerBase, TracerLayout};
+use crate::itd::ItdError;
+
+impl TracerLayout {
+    /// The layout with each tracer carried as a host's tables say (Icepack's `trcr_depend`,
+    /// `trcr_base(ntrcr, 3)` in Fortran order, `n_trcr_strata`, `nt_strata(ntrcr, 2)` in
+    /// Fortran order, 1-based tracer numbers), as Icepack moves every tracer through them:
+    /// the base and strata of each tracer are the host's, the roles (which tracer is an
+    /// enthalpy, a pond, an aerosol...) stay the layout's. For a host whose tables differ from
+    /// those the layout derives (e.g. Icepack's column driver gives only the first isotope
+    /// species its dependency; the others are area tracers there). Each `trcr_base` row must
+    /// hold one 1 and two 0; a stratum must be an earlier single tracer.
+    pub fn with_host_tables(
+        mut self,
+        trcr_depend: &[i32],
+        trcr_base: &[f64],
+        n_trcr_strata: &[i32],
+        nt_strata: &[i32],
+    ) -> Result<Self, ItdError> {
+        let nt = self.ntrcr;
+        let bad = |msg: String| ItdError::Layout(format!("host tracer tables: {msg}"));
+        if trcr_depend.len() != nt
+            || trcr_base.len() != 3 * nt
+            || n_trcr_strata.len() != nt
+            || nt_strata.len() != 2 * nt
+        {
+            return Err(bad(format!(
+                "need trcr_depend({nt}), trcr_base({nt}, 3), n_trcr_strata({nt}), \
+                 nt_strata({nt}, 2)"
+            )));
+        }
+        for it in 0..nt {
+            let row = [trcr_base[it], trcr_base[nt + it], trcr_base[2 * nt + it]];
+            let k = match row {
+                [1.0, 0.0, 0.0] => 0u8,
+                [0.0, 1.0, 0.0] => 1,
+                [0.0, 0.0, 1.0] => 2,
+                _ => {
+                    return Err(bad(format!(
+                        "tracer {}: trcr_base {row:?} is not one of area, ice volume, snow volume",
+                        it + 1
+                    )));
+                }
+            };
+            let n = n_trcr_strata[it];
+            if !(0..=2).contains(&n) {
+                return Err(bad(format!("tracer {}: n_trcr_strata = {n}", it + 1)));
+            }
+            let mut st = [0usize; 2];
+            for j in 0..n as usize {
+                let s1 = nt_strata[j * nt + it];
+                if !(1..=it as i32).contains(&s1) {
+                    return Err(bad(format!(
+                        "tracer {}: stratum {s1} must be an earlier tracer (1-based)",
+                        it + 1
+                    )));
+                }
+                st[j] = s1 as usize - 1;
+            }
+            let d = trcr_depend[it];
+            let expect = if n > 0 {
+                2 + st[n as usize - 1] as i32 + 1
+            } else {
+                k as i32
+            };
+            if d != expect {
+                return Err(bad(format!(
+                    "tracer {}: trcr_depend = {d} but its base and strata make {expect}",
+                    it + 1
+                )));
+            }
+            self.base_idx[it] = k;
+            self.base[it] = TracerBase::ALL[k as usize];
+            self.nstrata[it] = n as u8;
+            self.strata[it] = st;
+            if k == 0 {
+                self.empty[it] = 0.0;
+            }
+        }
+        self.derive_lists();
+        Ok(self)
+    }
+}
