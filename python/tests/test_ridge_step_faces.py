@@ -144,8 +144,8 @@ def test_layout_from_fields():
            ("dust", 1, "snow_volume", [], "other")])
     assert g.ntrcr == 8 and g.names[-3:] == ["bgc001", "bgc002", "dust"]
     assert g.flags == dict(age=False, first_year=False, level_ice=False, ponds=False,
-                           snow=False, isotopes=0, aerosols=0, pond_topo=False, fsd=0,
-                           brine=False)
+                           snow=False, isotopes=0, aerosols=0, pond_topo=False,
+                           pond_sealvl=False, fsd=0, brine=False)
     assert "from_fields" in repr(g) and pickle.loads(pickle.dumps(g)) == g
     assert hash(pickle.loads(pickle.dumps(g))) == hash(g)
     assert g.spec()[3] == dict(name="bgc", levels=2, base="ice_volume", strata=[], role="other")

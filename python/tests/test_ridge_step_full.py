@@ -472,7 +472,8 @@ def test_layout_object():
     assert l.field("hpnd") == (21, 1)
     assert l.units[0] == "degC" and l.units[1] == "J m-3"
     assert l.flags == dict(age=True, first_year=True, level_ice=True, ponds=True, snow=False,
-                           isotopes=0, aerosols=0, pond_topo=False, fsd=0, brine=False)
+                           isotopes=0, aerosols=0, pond_topo=False, pond_sealvl=False, fsd=0,
+                           brine=False)
     import pickle
 
     assert pickle.loads(pickle.dumps(l)) == l
