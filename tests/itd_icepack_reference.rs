@@ -304,6 +304,7 @@ fn check_typical(c: &Case, layout: &TracerLayout, puny: f64, cmp: &mut Cmp) {
     for (key, ours) in [
         ("faero_ocn", &r.fluxes.faero_ocn[..]),
         ("fiso_ocn", &r.fluxes.fiso_ocn[..]),
+        ("flux_bio", &r.fluxes.flux_bio[..]),
     ] {
         let theirs = if o[key].is_null() {
             vec![]
@@ -474,6 +475,19 @@ fn icepack_reference_with_snow_isotope_and_aerosol_tracers() {
 #[test]
 fn icepack_reference_with_topography_ponds_snow_refills_floe_size_and_brine() {
     every_case(common::icepack::TOPO_FILE);
+}
+
+/// Vertically resolved bio tracers (`z_tracers`: three levels in the ice on the brine
+/// fraction, two in the snow) carried by Icepack's own tracer tables, with `flux_bio`.
+#[test]
+fn icepack_reference_with_vertical_bio_tracers() {
+    every_case(common::icepack::BGC_FILE);
+}
+
+/// Skeletal bio tracers (`skl_bgc`, on the ice area), with `flux_bio`.
+#[test]
+fn icepack_reference_with_skeletal_bio_tracers() {
+    every_case(common::icepack::SKL_FILE);
 }
 
 fn every_case(file: &str) {

@@ -296,6 +296,9 @@ pub unsafe extern "C" fn pressridge_ridge_cell(
                 dpnd_ridge: f.dpnd_ridge,
                 faero_ocn: f.faero_ocn,
                 fiso_ocn: f.fiso_ocn,
+                // The C set-up carries no bio tracers (pressridge_ridger_new), so the step
+                // leaves flux_bio at zero.
+                ..OceanFluxes::default()
             }
         };
         with_step_scratch(ncat, nt, |ws| -> FfiResult<()> {

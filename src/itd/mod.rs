@@ -49,8 +49,9 @@ pub use strength::{
     strength_batch_masked, strength_column,
 };
 pub use tracers::{
-    CiceLayoutSpec, CiceTracerFlags, LAYOUT_PRESETS, LayoutDetectError, LayoutSpecError, MAX_AERO,
-    MAX_ISO, TracerBase, TracerField, TracerLayout, TracerRole,
+    BgcKind, BgcTracers, CiceLayoutSpec, CiceTracerFlags, LAYOUT_PRESETS, LayoutDetectError,
+    LayoutSpecError, MAX_AERO, MAX_ISO, MAX_NBTRCR, TracerBase, TracerField, TracerLayout,
+    TracerRole,
 };
 
 /// What is wrong with one column (no column index: see [`ItdError::Column`]).

@@ -38,7 +38,7 @@ pub use workspace::StepWorkspace;
 
 use super::ColumnError;
 use super::params::{ItdParams, Participation, Redistribution};
-use super::tracers::{MAX_AERO, MAX_ISO, TracerLayout};
+use super::tracers::{MAX_AERO, MAX_ISO, MAX_NBTRCR, TracerLayout};
 use checks::{check_inputs, check_outputs};
 use passes::step;
 use workspace::Saved;
@@ -190,6 +190,11 @@ pub struct OceanFluxes {
     /// Water isotopes into the ocean per species (kg m⁻² s⁻¹, over `ndtd·dt`; Icepack
     /// `fiso_ocn`), as `faero_ocn`.
     pub fiso_ocn: [f64; MAX_ISO],
+    /// Biogeochemical tracers into the ocean per bio tracer (the tracer's unit times m s⁻¹,
+    /// e.g. mmol m⁻² s⁻¹, over `ndtd·dt`; Icepack `flux_bio`), as `faero_ocn`: with ridged
+    /// snow (vertical bio tracers) and with zapped ice and snow
+    /// ([`TracerLayout::with_bgc`](crate::itd::TracerLayout::with_bgc)).
+    pub flux_bio: [f64; MAX_NBTRCR],
 }
 
 /// Cell diagnostics of one step.

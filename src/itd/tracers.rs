@@ -20,10 +20,12 @@
 
 use super::ItdError;
 
+mod bgc;
 mod cice;
 mod field;
 mod host;
 mod spec;
+pub use bgc::{BgcKind, BgcTracers, MAX_NBTRCR};
 pub use cice::{CiceTracerFlags, LayoutDetectError};
 pub use field::{TracerBase, TracerField, TracerRole};
 pub use spec::{CiceLayoutSpec, LayoutSpecError, PRESETS as LAYOUT_PRESETS};
@@ -80,6 +82,8 @@ pub struct TracerLayout {
     /// new ridges get with it (Icepack gives ridges the tracers whose strata are `fbri` only).
     pub(crate) ridge_lists_brine: [Vec<usize>; 3],
     pub(crate) nt_fbri: Option<usize>,
+    /// Biogeochemical tracers whose fluxes to the ocean the step books ([`BgcTracers`]).
+    pub(crate) bgc: Option<BgcTracers>,
 }
 
 impl TracerLayout {
@@ -318,6 +322,7 @@ impl TracerLayout {
             refilled: Vec::new(),
             ridge_lists_brine: Default::default(),
             nt_fbri: brine.map(|i| starts[i]),
+            bgc: None,
             fields,
             starts,
             ntrcr,

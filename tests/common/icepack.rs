@@ -2,7 +2,8 @@
 //! (`tests/data/icepack/ridge_step_cases.jsonl`, described in the README next to it).
 
 use pressridge::itd::{
-    CiceTracerFlags, Participation, Redistribution, RidgeStepOptions, TracerLayout,
+    BgcKind, BgcTracers, CiceTracerFlags, Participation, Redistribution, RidgeStepOptions,
+    TracerLayout,
 };
 use serde_json::Value;
 
@@ -22,6 +23,20 @@ pub const TRACERS_FILE: &str = concat!(
 pub const TOPO_FILE: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
     "/tests/data/icepack/ridge_step_tracers_topo.jsonl"
+);
+
+/// The topography-pond layout with two vertically resolved bio tracers (`z_tracers`,
+/// `nblyr = 2`; 47 tracers) and Icepack's tracer tables.
+pub const BGC_FILE: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/tests/data/icepack/ridge_step_tracers_bgc.jsonl"
+);
+
+/// The topography-pond layout with two skeletal bio tracers (`skl_bgc`; 39 tracers) and
+/// Icepack's tracer tables.
+pub const SKL_FILE: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/tests/data/icepack/ridge_step_tracers_skl.jsonl"
 );
 
 /// The first reference file's first line (the parameters) and its cases.
@@ -86,6 +101,31 @@ pub fn layout(params: &Value) -> TracerLayout {
         },
     )
     .unwrap();
+    // Bio tracers after every other: their kind, and the tracers' carriage as Icepack was
+    // given it.
+    let bgc = &params["bgc"];
+    if !bgc.is_null() {
+        let cice = layout.ntrcr();
+        let extra = params["ntrcr"].as_u64().unwrap() as usize - cice;
+        let kind = match bgc["kind"].as_str().unwrap() {
+            "z_tracers" => BgcKind::Vertical {
+                nblyr: bgc["nblyr"].as_u64().unwrap() as usize,
+            },
+            "skl_bgc" => BgcKind::Skeletal {
+                sk_l: num(&bgc["sk_l"]),
+            },
+            k => panic!("bgc kind {k}"),
+        };
+        let bio_index = bgc["bio_index"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|b| b.as_u64().unwrap() as usize - 1)
+            .collect();
+        layout = layout
+            .with_bgc(extra, BgcTracers { kind, bio_index })
+            .unwrap();
+    }
     // Icepack's refills of the snow tracers (snwredist = 'ITD', snwgrain).
     for (name, key) in [
         ("rhos", "rhos_empty"),
@@ -95,6 +135,31 @@ pub fn layout(params: &Value) -> TracerLayout {
         if let Some(v) = flags[key].as_f64() {
             layout = layout.with_empty_value(name, v).unwrap();
         }
+    }
+    let t = &params["host_tables"];
+    if !t.is_null() {
+        let ints = |k: &str| -> Vec<i32> {
+            t[k].as_array()
+                .unwrap()
+                .iter()
+                .map(|x| x.as_i64().unwrap() as i32)
+                .collect()
+        };
+        // trcr_base(ntrcr, 3) and nt_strata(ntrcr, 2) in Fortran order.
+        let fortran = |k: &str, cols: usize| -> Vec<Value> {
+            let rows = t[k].as_array().unwrap();
+            (0..cols)
+                .flat_map(|j| rows.iter().map(move |r| r[j].clone()))
+                .collect()
+        };
+        let base: Vec<f64> = fortran("trcr_base", 3).iter().map(num).collect();
+        let strata: Vec<i32> = fortran("nt_strata", 2)
+            .iter()
+            .map(|x| x.as_i64().unwrap() as i32)
+            .collect();
+        layout = layout
+            .with_host_tables(&ints("trcr_depend"), &base, &ints("n_trcr_strata"), &strata)
+            .unwrap();
     }
     layout
 }

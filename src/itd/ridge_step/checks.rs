@@ -119,6 +119,7 @@ pub(super) fn check_outputs(col: &ColumnMut<'_>, f: &OceanFluxes) -> Result<(), 
     }
     let aero = f.faero_ocn.iter().map(|&x| ("faero_ocn", x));
     let iso = f.fiso_ocn.iter().map(|&x| ("fiso_ocn", x));
+    let bio = f.flux_bio.iter().map(|&x| ("flux_bio", x));
     for (var, x) in [
         ("aice0", *col.aice0),
         ("fresh", f.fresh),
@@ -129,6 +130,7 @@ pub(super) fn check_outputs(col: &ColumnMut<'_>, f: &OceanFluxes) -> Result<(), 
     .into_iter()
     .chain(aero)
     .chain(iso)
+    .chain(bio)
     {
         if !x.is_finite() || (var == "aice0" && x < 0.0) {
             return Err(ColumnError::Unphysical {

@@ -13,7 +13,7 @@
 
 use super::{ColumnMut, OceanFluxes, RidgeStepParams, SaltFlux, StepWorkspace};
 use crate::itd::ColumnError;
-use crate::itd::tracers::{MAX_AERO, MAX_ISO, TracerLayout};
+use crate::itd::tracers::{BgcKind, MAX_AERO, MAX_ISO, MAX_NBTRCR, TracerLayout};
 
 /// Zapped-ice fluxes accumulated during the clean-up (Icepack's `dfresh`, `dfsalt`,
 /// `dfhocn`, `dfpond`, `dfaero_ocn`, `dfiso_ocn`), kg m⁻² s⁻¹, kg m⁻² s⁻¹, W m⁻², m,
@@ -26,6 +26,8 @@ struct Zapped {
     fpond: f64,
     aero: [f64; MAX_AERO],
     iso: [f64; MAX_ISO],
+    /// Bio tracers (Icepack's `dflux_bio`; tracer unit × m s⁻¹).
+    bio: [f64; MAX_NBTRCR],
     /// Ice and snow volume put into the ocean (m).
     vice: f64,
     vsno: f64,
@@ -77,6 +79,9 @@ pub(crate) fn cleanup_itd(
         *f += d;
     }
     for (f, d) in fluxes.fiso_ocn.iter_mut().zip(&z.iso) {
+        *f += d;
+    }
+    for (f, d) in fluxes.flux_bio.iter_mut().zip(&z.bio) {
         *f += d;
     }
     Ok((z.vice, z.vsno))
@@ -268,6 +273,7 @@ fn zap_small_areas(
                 z.iso[k] += v * trc[iice + k] / dt;
             }
         }
+        zap_bio_ice(trc, BioZap::Category { area: a }, v, dt, layout, z);
         for k in 0..layout.nilyr {
             let q = &mut trc[layout.nt_qice + k];
             z.fhocn += *q / dt * v / nilyr;
@@ -318,6 +324,30 @@ fn zap_small_areas(
             if let Some((isno, iice, niso)) = layout.iso {
                 for k in 0..niso {
                     z.iso[k] += (s * trc[isno + k] + v * trc[iice + k]) * (aice - 1.0) / aice / dt;
+                }
+            }
+            zap_bio_ice(
+                trc,
+                BioZap::Excess {
+                    frac: (aice - 1.0) / aice,
+                },
+                v,
+                dt,
+                layout,
+                z,
+            );
+            if let Some(b) = &layout.bgc
+                && let BgcKind::Vertical { nblyr } = b.kind
+            {
+                // The snow's bio tracers go with the excess ice (its surface layer and
+                // interior).
+                let dvssl = 0.5 * s / layout.nslyr as f64;
+                let dvint = s - dvssl;
+                for (d, &bi) in z.bio.iter_mut().zip(&b.bio_index) {
+                    *d += (trc[bi + nblyr + 1] * dvssl + trc[bi + nblyr + 2] * dvint)
+                        * (aice - 1.0)
+                        / aice
+                        / dt;
                 }
             }
             for k in 0..layout.nilyr {
@@ -379,6 +409,15 @@ fn zap_snow(
             z.iso[k] += *vsnon * trc[isno + k] / dt;
         }
     }
+    if let Some(b) = &layout.bgc
+        && let BgcKind::Vertical { nblyr } = b.kind
+    {
+        let dvssl = 0.5 * *vsnon / nslyr;
+        let dvint = *vsnon - dvssl;
+        for (d, &bi) in z.bio.iter_mut().zip(&b.bio_index) {
+            *d += (trc[bi + nblyr + 1] * dvssl + trc[bi + nblyr + 2] * dvint) / dt;
+        }
+    }
     for k in 0..layout.nslyr {
         let q = &mut trc[layout.nt_qsno + k];
         z.fhocn += *q / dt * *vsnon / nslyr;
@@ -422,6 +461,52 @@ fn zap_snow_temperature(
         if l_zap {
             let (trc, vs) = (&mut col.trcrn[n * nt..(n + 1) * nt], &mut col.vsnon[n]);
             zap_snow(trc, vs, dt, c, layout, z);
+        }
+    }
+}
+
+/// Which ice [`zap_bio_ice`] puts into the ocean.
+#[derive(Clone, Copy)]
+enum BioZap {
+    /// A whole category of this area (Icepack's first loop of `zap_small_areas`).
+    Category { area: f64 },
+    /// This fraction of every category, the excess of a total area above 1 (its second loop).
+    Excess { frac: f64 },
+}
+
+/// Icepack `zap_small_bgc` over a zapped category's bio tracers in the ice (`trc`, ice volume
+/// `v`): the skeletal layer holds `area · sk_l` of water per unit area (for the excess,
+/// Icepack's `(aice − 1)/aice · sk_l`); the vertical grid `vicen/nblyr · fbri` per level (for
+/// the excess, times `(aice − 1)/aice`), half at its two ends.
+fn zap_bio_ice(trc: &[f64], what: BioZap, v: f64, dt: f64, layout: &TracerLayout, z: &mut Zapped) {
+    let Some(b) = &layout.bgc else { return };
+    match b.kind {
+        BgcKind::Skeletal { sk_l } => {
+            let bvol = match what {
+                BioZap::Category { area } => area * sk_l,
+                BioZap::Excess { frac } => frac * sk_l,
+            };
+            for (d, &bi) in z.bio.iter_mut().zip(&b.bio_index) {
+                *d += trc[bi] * bvol / dt;
+            }
+        }
+        BgcKind::Vertical { nblyr } => {
+            let fbri = trc[layout.nt_fbri.expect("checked by with_bgc")];
+            let full = match what {
+                BioZap::Category { .. } => v / nblyr as f64 * fbri,
+                BioZap::Excess { frac } => frac * v / nblyr as f64 * fbri,
+            };
+            let nlev = nblyr + 1;
+            for (d, &bi) in z.bio.iter_mut().zip(&b.bio_index) {
+                for k in 0..nlev {
+                    let bvol = if k == 0 || k == nlev - 1 {
+                        0.5 * full
+                    } else {
+                        full
+                    };
+                    *d += trc[bi + k] * bvol / dt;
+                }
+            }
         }
     }
 }

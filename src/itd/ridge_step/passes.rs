@@ -14,7 +14,7 @@ use crate::itd::ColumnError;
 use crate::itd::params::Redistribution;
 use crate::itd::redistribution::{RidgeGeometry, category_fractions_all};
 use crate::itd::ridging::{asum_ridging, close_and_open};
-use crate::itd::tracers::{MAX_AERO, MAX_ISO, TracerLayout};
+use crate::itd::tracers::{BgcKind, MAX_AERO, MAX_ISO, MAX_NBTRCR, TracerLayout};
 
 /// Sums of one ridging pass and of the whole step (Icepack `ridge_ice` locals).
 #[derive(Default)]
@@ -30,6 +30,8 @@ struct Sums {
     /// Aerosol and isotope mass put into the ocean with ridged snow (kg m⁻²).
     maero: [f64; MAX_AERO],
     miso: [f64; MAX_ISO],
+    /// Bio tracer mass put into the ocean with ridged snow (tracer unit × m).
+    mbio: [f64; MAX_NBTRCR],
 }
 
 pub(super) fn step(
@@ -116,6 +118,9 @@ pub(super) fn step(
         *f += m * dti;
     }
     for (f, m) in fluxes.fiso_ocn.iter_mut().zip(&s.miso) {
+        *f += m * dti;
+    }
+    for (f, m) in fluxes.flux_bio.iter_mut().zip(&s.mbio) {
         *f += m * dti;
     }
     fluxes.fpond -= s.mpond;
@@ -249,6 +254,18 @@ fn ridge_shift(
             // Icepack counts the ice's isotopes with the snow's here.
             for k in 0..niso {
                 s.miso[k] += vsrdgn * one_minus_f * (trc[isno + k] + trc[iice + k]);
+            }
+        }
+        // Vertical bio tracers in the ridged snow: its surface layer (half the top snow
+        // layer) and interior, as fractions of the snow depth (Icepack's dzssl, dzint).
+        if let Some(b) = &layout.bgc
+            && let BgcKind::Vertical { nblyr } = b.kind
+        {
+            let dzssl = 0.5 / layout.nslyr as f64;
+            let dzint = 1.0 - dzssl;
+            for (m, &bi) in s.mbio.iter_mut().zip(&b.bio_index) {
+                let snow = trc[bi + nblyr + 1] * dzssl + trc[bi + nblyr + 2] * dzint;
+                *m += vsrdgn * one_minus_f * snow;
             }
         }
         // Pond water on the ridging ice (Icepack's diagnostic of every pond scheme).

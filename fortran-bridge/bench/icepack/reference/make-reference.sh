@@ -10,7 +10,9 @@
 # into $BUILD (default fortran-bridge/build/icepack-reference), then make_reference.py runs
 # the cases of tests/data/icepack/ridge_step_cases.jsonl with the added tracers through it.
 # Default output: tests/data/icepack/ridge_step_tracers.jsonl (VARIANT aero); VARIANT topo
-# (topography ponds, snow refills, floe size, brine) goes to ridge_step_tracers_topo.jsonl.
+# (topography ponds, snow refills, floe size, brine) goes to ridge_step_tracers_topo.jsonl,
+# VARIANT bgc (topo with vertically resolved bio tracers) to ridge_step_tracers_bgc.jsonl and
+# VARIANT skl (topo with skeletal bio tracers) to ridge_step_tracers_skl.jsonl.
 set -euo pipefail
 if [ $# -lt 1 ] || [ ! -d "$1/columnphysics" ]; then
   echo "usage: $0 ICEPACK_SOURCE_DIR [OUT.jsonl]  (the directory holding columnphysics/)" >&2

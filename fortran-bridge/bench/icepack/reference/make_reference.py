@@ -13,7 +13,10 @@ the same JSONL schema with the extended layout and the fluxes faero_ocn and fiso
 VARIANT `aero` (default): the layout above. `topo`: topography ponds instead of level-ice
 ponds (apnd on the area, hpnd and ipnd on apnd), the snow tracers with Icepack's refills
 (snwredist = 'ITD', snwgrain), three floe-size categories, one isotope and one aerosol
-species, and the brine fraction fbri.
+species, and the brine fraction fbri. `bgc`: `topo` with two vertically resolved bio tracers
+(z_tracers, nblyr = 2: three levels in the ice on fbri, two in the snow) after fbri, as
+Icepack's driver lays them out (init_bgc_trcr); `skl`: `topo` with two skeletal bio tracers
+(skl_bgc, one level each, on the ice area). Both book Icepack's flux_bio.
 """
 import json
 import re
@@ -21,14 +24,25 @@ import subprocess
 import sys
 
 N_ISO, N_AERO, NFSD, TOPO = 3, 2, 0, False
+# Bio tracers: kind (0 none, 1 skl_bgc, 2 z_tracers), bio grid layers, number.
+BGC, NBLYR, NBTRCR = 0, 1, 0
 
 
 def set_variant(v):
-    global N_ISO, N_AERO, NFSD, TOPO
-    if v == "topo":
+    global N_ISO, N_AERO, NFSD, TOPO, BGC, NBLYR, NBTRCR
+    if v in ("topo", "bgc", "skl"):
         N_ISO, N_AERO, NFSD, TOPO = 1, 1, 3, True
     else:
         assert v == "aero", v
+    if v == "bgc":
+        BGC, NBLYR, NBTRCR = 2, 2, 2
+    elif v == "skl":
+        BGC, NBLYR, NBTRCR = 1, 1, 2
+
+
+def bio_levels():
+    """Tracers per bio tracer: nblyr + 1 in the ice and 2 in the snow, or 1 (skeletal)."""
+    return NBLYR + 3 if BGC == 2 else 1
 
 
 def layout(params):
@@ -44,6 +58,8 @@ def layout(params):
               (f"aeroicessl{k:03d}", 1), (f"aeroiceint{k:03d}", 1)]
     if TOPO:
         f += [("fbri", 1)]
+    if NBTRCR:
+        f += [("bgc", NBTRCR * bio_levels())]
     start, i = {}, 0
     for name, lev in f:
         start[name] = i
@@ -71,6 +87,22 @@ def depend(name, start):
     return 0, [1, 0, 0], []
 
 
+def rows(name, lev, start):
+    """Icepack's table rows (trcr_depend, trcr_base, strata) of each level of a field: the
+    bio tracers as Icepack's driver sets them (init_bgc_trcr), the rest by depend()."""
+    if name != "bgc":
+        return [depend(name, start)] * lev
+    out = []
+    for _ in range(NBTRCR):
+        if BGC == 2:
+            fb = start["fbri"] + 1
+            out += [(2 + fb, [0, 1, 0], [fb])] * (NBLYR + 1)
+            out += [(2, [0, 0, 1], [])] * 2
+        else:
+            out += [(0, [1, 0, 0], [])]
+    return out
+
+
 def extra(name, k, n, area):
     """A deterministic value of an added tracer (level k, category n); zero without ice.
     Snow tracers in kg m-3 and m, isotopes and aerosols in kg m-3 of their base."""
@@ -82,6 +114,8 @@ def extra(name, k, n, area):
         return 1.0e-6 * (1 + int(name[-3:])) * (n + 1) * scale[name[:10]]
     if name == "fsd":
         return [0.5, 0.3, 0.2][k]
+    if name == "bgc":
+        return 1.0 + 0.1 * k + 0.5 * n
     return {"smice": 250.0 + 5.0 * x, "smliq": 2.0 + 0.5 * x, "rhos": 300.0 + 3.0 * x,
             "rsnw": 1.0e-4 * (1 + 0.1 * x), "isosno": 1.0e-3 * (1 + 0.3 * x),
             "isoice": 2.0e-3 * (1 + 0.2 * x), "fbri": 0.8 + 0.02 * n}[name]
@@ -104,12 +138,20 @@ def main():
     out = [f"{params['nilyr']} {params['nslyr']} {ntrcr} {N_AERO} {N_ISO} {NFSD}",
            " ".join(str(v) for v in nt.values()) + f" {start['aerosnossl001'] + 1}"
            + f" {start['fsd'] + 1 if NFSD else 0} {start['fbri'] + 1 if TOPO else 0}",
-           ("1 1 1 0 1 1 1 1 1 1 1" if TOPO else "1 1 1 1 1 1 1 0 0 0 0")]
+           ("1 1 1 0 1 1 1 1 1 1 1" if TOPO else "1 1 1 1 1 1 1 0 0 0 0"),
+           f"{NBLYR} {NBTRCR} {BGC}"]
+    bio_index = [start["bgc"] + 1 + j * bio_levels() for j in range(NBTRCR)]
+    if NBTRCR:
+        out.append(" ".join(str(b) for b in bio_index))
+    tables = {"trcr_depend": [], "trcr_base": [], "n_trcr_strata": [], "nt_strata": []}
     for name, lev in fields:
-        d, base, strata = depend(name, start)
-        s = (strata + [0, 0])[:2]
-        for _ in range(lev):
+        for d, base, strata in rows(name, lev, start):
+            s = (strata + [0, 0])[:2]
             out.append(f"{d} {base[0]} {base[1]} {base[2]} {len(strata)} {s[0]} {s[1]}")
+            tables["trcr_depend"].append(d)
+            tables["trcr_base"].append(base)
+            tables["n_trcr_strata"].append(len(strata))
+            tables["nt_strata"].append(s)
     out.append(str(len(cases)))
     for c in cases:
         i = c["inputs"]
@@ -185,6 +227,11 @@ def main():
         flags.update(tr_pond_lvl=False, tr_pond_topo=True, tr_brine=True, tr_fsd=True,
                      nfsd=NFSD, snwredist="ITD", snwgrain=True, rhos_empty=refill[0],
                      smice_empty=refill[1], rsnw_empty=refill[2])
+    if NBTRCR:
+        # The bio tracers and the tables Icepack was given for every tracer (1-based).
+        params["bgc"] = {"kind": "z_tracers" if BGC == 2 else "skl_bgc", "nblyr": NBLYR,
+                         "bio_index": bio_index, "sk_l": 0.03}
+        params["host_tables"] = tables
     params["tracer_flags"] = flags
     params["generator"] = ("fortran-bridge/bench/icepack/reference/make-reference.sh from "
                            "tests/data/icepack/ridge_step_cases.jsonl")
@@ -196,7 +243,7 @@ def main():
             o = {"aborted": p["aborted"], "warnings": "\n".join(warnings.get(k, []))}
             for key in ("hin_max", "aicen", "vicen", "vsnon", "dardg1ndt", "dardg2ndt",
                         "dvirdgndt", "aparticn", "krdgn", "aredistn", "vredistn", "araftn",
-                        "vraftn", "faero_ocn", "fiso_ocn"):
+                        "vraftn", "faero_ocn", "fiso_ocn", "flux_bio"):
                 o[key] = [num(x) for x in p[key]]
             for key in ("aice0", "aice", "opening", "dardg1dt", "dardg2dt", "dvirdgdt", "fresh",
                         "fsalt", "fhocn", "fpond", "dpnd_ridge", "strength"):

@@ -9,6 +9,7 @@
 !>     nt_fbri (0: absent)
 !>   11 flags (0/1) tr_iage tr_FY tr_lvl tr_pond_lvl tr_snow tr_iso tr_aero tr_pond_topo
 !>     tr_brine tr_fsd, and snow refills (snwredist = 'ITD' with snwgrain)
+!>   nblyr nbtrcr bgc (0 none, 1 skl_bgc, 2 z_tracers), then, with nbtrcr > 0, bio_index(nbtrcr)
 !>   ntrcr rows: trcr_depend trcr_base(1:3) n_trcr_strata nt_strata(1:2)
 !>   ncase, then per case: ncat ndtd krdg_partic krdg_redist has_closing docleanup dorebin;
 !>   dt rdg_conv rdg_shear mu_rdg Tf aice0 aice closing opening; hin_max(0:ncat); aicen;
@@ -23,6 +24,8 @@ program ridge_reference
   implicit none
   integer, parameter :: dp = kind(1.0d0)
   integer :: nilyr, nslyr, ntrcr, n_aero, n_iso, nfsd, nt(20), fl(11), ncase, k, it, n
+  integer :: nblyr, nbtrcr, bgc
+  integer, allocatable :: bio_index(:)
   integer :: ncat, ndtd, kp, kr, hasc, docl, dore
   integer, allocatable :: trcr_depend(:), n_trcr_strata(:), nt_strata(:, :), fi(:)
   real(dp), allocatable :: trcr_base(:, :), hin(:), a(:), v(:), s(:), tr(:, :)
@@ -30,12 +33,17 @@ program ridge_reference
        dardg2ndt(:), dvirdgndt(:), araftn(:), vraftn(:)
   logical, allocatable :: first_ice(:)
   real(dp) :: dt, conv, shear, mu_rdg, tf, aice0, aice, closing, opening
-  real(dp) :: d1, d2, d3, fpond, fresh, fhocn, fsalt, dpnd, faero(6), fiso(3), fbio(1), str
+  real(dp) :: d1, d2, d3, fpond, fresh, fhocn, fsalt, dpnd, faero(6), fiso(3), str
+  real(dp), allocatable :: fbio(:)
   real(dp) :: rhosnew, rhos, rsnw_fall
 
   read (*, *) nilyr, nslyr, ntrcr, n_aero, n_iso, nfsd
   read (*, *) nt
   read (*, *) fl
+  read (*, *) nblyr, nbtrcr, bgc
+  allocate(bio_index(max(nbtrcr, 1)), fbio(max(nbtrcr, 1)))
+  bio_index = 0
+  if (nbtrcr > 0) read (*, *) bio_index(1:nbtrcr)
   allocate(trcr_depend(ntrcr), n_trcr_strata(ntrcr), nt_strata(ntrcr, 2), trcr_base(ntrcr, 3))
   do it = 1, ntrcr
      read (*, *) trcr_depend(it), trcr_base(it, :), n_trcr_strata(it), nt_strata(it, :)
@@ -50,6 +58,10 @@ program ridge_reference
        nt_apnd_in=nt(9), nt_hpnd_in=nt(10), nt_ipnd_in=nt(11), nt_smice_in=nt(12), &
        nt_smliq_in=nt(13), nt_rhos_in=nt(14), nt_rsnw_in=nt(15), nt_isosno_in=nt(16), &
        nt_isoice_in=nt(17), nt_aero_in=nt(18), nt_fsd_in=nt(19), nt_fbri_in=nt(20))
+  if (nbtrcr > 0) then
+     call icepack_init_tracer_indices(bio_index_in=bio_index(1:nbtrcr))
+     call icepack_init_parameters(skl_bgc_in=bgc == 1, z_tracers_in=bgc == 2)
+  end if
   open (7, file='warnings.txt', status='replace')
   read (*, *) ncase
   do k = 1, ncase
@@ -69,7 +81,7 @@ program ridge_reference
      call icepack_init_parameters(krdg_partic_in=kp, krdg_redist_in=kr, mu_rdg_in=mu_rdg)
      if (fl(11) == 1) call icepack_init_parameters(snwredist_in='ITD', snwgrain_in=.true.)
      call icepack_init_tracer_sizes(ncat_in=ncat, nilyr_in=nilyr, nslyr_in=nslyr, &
-          nblyr_in=1, ntrcr_in=ntrcr, nbtrcr_in=0, n_aero_in=n_aero, n_iso_in=n_iso, &
+          nblyr_in=nblyr, ntrcr_in=ntrcr, nbtrcr_in=nbtrcr, n_aero_in=n_aero, n_iso_in=n_iso, &
           nfsd_in=max(nfsd, 1))
      if (k == 1) then
         call icepack_query_parameters(rhosnew_out=rhosnew, rhos_out=rhos, &
@@ -122,6 +134,7 @@ program ridge_reference
      call put('strength', [str])
      call put('faero_ocn', faero(1:n_aero))
      call put('fiso_ocn', fiso(1:n_iso))
+     call put('flux_bio', fbio(1:nbtrcr))
      write (*, '(a, *(1x, i0))') 'first_ice', (merge(1, 0, first_ice(n)), n = 1, ncat)
      write (7, '(a, i0)') 'case ', k
      call icepack_warnings_flush(7)
