@@ -146,26 +146,7 @@ pub fn read_packed_tracers(
     let mut fill_value = fill;
     let vsnon = match file.variable("vsnon") {
         None => Array2::zeros((ncat, ncol)),
-        Some(s) => {
-            let d = all_dims(&s);
-            if d != cat_dims {
-                return Err(NetcdfError::Shape {
-                    path: path.to_path_buf(),
-                    var: "vsnon".into(),
-                    expected: fmt_dims(&cat_dims),
-                    found: fmt_dims(&d),
-                });
-            }
-            let f = fill_of(&s);
-            fill_value = fill_value.or(f);
-            let a = grid.to_category_major(read_f64(path, &s)?);
-            for (c, m) in missing.iter_mut().enumerate() {
-                if a.column(c).iter().any(|&x| is_fill(x, f)) {
-                    *m = true;
-                }
-            }
-            a
-        }
+        Some(s) => read_category(path, grid, &s, &mut missing, &mut fill_value)?,
     };
     let any_missing = missing.iter().any(|m| *m);
     Ok(SnowTracers {
@@ -203,29 +184,11 @@ pub fn read_snow_tracers(path: &Path, grid: &ItdGrid) -> Result<Option<SnowTrace
     };
     let names = layout.cice_restart_names();
     let (ncat, ncol) = (grid.ncat(), grid.ncol());
-    let dims = grid.category_dims();
     let mut fill_value = None;
     let mut missing = vec![false; ncol];
     let mut read_cat = |name: &str| -> Result<Array2<f64>, NetcdfError> {
         let v = file.variable(name).expect("presence checked");
-        let d = all_dims(&v);
-        if d != dims {
-            return Err(NetcdfError::Shape {
-                path: path.to_path_buf(),
-                var: name.into(),
-                expected: fmt_dims(&dims),
-                found: fmt_dims(&d),
-            });
-        }
-        let fill = fill_of(&v);
-        fill_value = fill_value.or(fill);
-        let a = grid.to_category_major(read_f64(path, &v)?);
-        for (c, m) in missing.iter_mut().enumerate() {
-            if a.column(c).iter().any(|&x| is_fill(x, fill)) {
-                *m = true;
-            }
-        }
-        Ok(a)
+        read_category(path, grid, &v, &mut missing, &mut fill_value)
     };
     let vsnon = if has("vsnon") {
         read_cat("vsnon")?
@@ -248,4 +211,34 @@ pub fn read_snow_tracers(path: &Path, grid: &ItdGrid) -> Result<Option<SnowTrace
         fill_value,
         packed: None,
     }))
+}
+
+/// A variable with the dimensions of `aicen` as `(ncat, ncol)`; its fill value, if any,
+/// becomes `fill_value` where none was found yet, and marks the columns where it occurs in
+/// `missing`. An error names the variable and its dimensions.
+fn read_category(
+    path: &Path,
+    grid: &ItdGrid,
+    v: &netcdf::Variable<'_>,
+    missing: &mut [bool],
+    fill_value: &mut Option<f64>,
+) -> Result<Array2<f64>, NetcdfError> {
+    let (d, dims) = (all_dims(v), grid.category_dims());
+    if d != dims {
+        return Err(NetcdfError::Shape {
+            path: path.to_path_buf(),
+            var: v.name(),
+            expected: fmt_dims(&dims),
+            found: fmt_dims(&d),
+        });
+    }
+    let fill = fill_of(v);
+    *fill_value = fill_value.or(fill);
+    let a = grid.to_category_major(read_f64(path, v)?);
+    for (c, m) in missing.iter_mut().enumerate() {
+        if a.column(c).iter().any(|&x| is_fill(x, fill)) {
+            *m = true;
+        }
+    }
+    Ok(a)
 }
