@@ -432,6 +432,10 @@ class RidgeStepResult(NamedTuple):
     faero_ocn: Any = None
     #: Water-isotope flux to the ocean per species (kg m-2 s-1; ``fiso_ocn``), (n_iso, ...).
     fiso_ocn: Any = None
+    #: Biogeochemical flux to the ocean per bio tracer (the tracer's unit times m s-1, e.g.
+    #: mmol m-2 s-1; Icepack ``flux_bio``), (nbtrcr, ...): none without bio tracers
+    #: (:meth:`TracerLayout.with_bgc`).
+    flux_bio: Any = None
     #: Per-category diagnostics, shape (ncat, ...) each, Icepack's names and units
     #: (:data:`STEP_CATEGORY_OUTPUTS`): ``dardg1ndt``, ``dardg2ndt``, ``dvirdgndt``,
     #: ``aparticn``, ``krdgn``, ``araftn``, ``vraftn``, ``aredistn``, ``vredistn``,
@@ -707,6 +711,7 @@ def ridge_step(
         niter=c["niter"],
         faero_ocn=sp["faero_ocn"],
         fiso_ocn=sp["fiso_ocn"],
+        flux_bio=sp["flux_bio"],
         categories=dict(cats),
     )
 

@@ -87,6 +87,17 @@ class TracerLayout:
     @property
     def icepack(self) -> Optional[str]:
         """The layout in Icepack's names (from_icepack's text), None if not a CICE layout."""
+    def with_bgc(self, extra: int, kind: str, bio_index: Sequence[int], *, nblyr: int = 1,
+                 sk_l: float = 0.03) -> "TracerLayout":
+        """extra biogeochemical tracers after every other: kind "z_tracers" (nblyr + 1 levels
+        on the brine grid and 2 in the snow) or "skl_bgc"; bio_index 0-based; the step books
+        flux_bio."""
+    def with_host_tables(self, trcr_depend: Sequence[int], trcr_base: Sequence[Sequence[float]],
+                         n_trcr_strata: Sequence[int],
+                         nt_strata: Sequence[Sequence[int]]) -> "TracerLayout":
+        """Each tracer carried as Icepack's tables say (1-based tracer numbers)."""
+    @property
+    def nbtrcr(self) -> int: ...
     @staticmethod
     def detect(names: Sequence[str]) -> Optional["TracerLayout"]:
         """The CICE layout of these variable names (CICE restart names), as the command

@@ -13,7 +13,7 @@ use pyo3::prelude::*;
 use pressridge::itd::{
     BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, CategoryBounds, CiceTracerFlags,
     NamedParams, RidgeStepOptions, RidgeStepParams, SPECIES_OUTPUTS, SaltFlux, StepBatchMut,
-    TracerLayout, category_bounds, ridge_step_batch,
+    TracerLayout, category_bounds, ridge_step_batch, species_counts,
 };
 
 use crate::arrays::{
@@ -200,7 +200,7 @@ pub(crate) fn ridge_step_full<'py>(
         .iter()
         .map(|_| new_array(py, &full, order))
         .collect();
-    let species: Vec<Bound<'py, PyArrayDyn<f64>>> = [layout.n_aero(), layout.n_iso()]
+    let species: Vec<Bound<'py, PyArrayDyn<f64>>> = species_counts(&layout)
         .iter()
         .map(|&n| {
             let mut shape = vec![n];

@@ -9,7 +9,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use pressridge::itd::{
-    CiceLayoutSpec, CiceTracerFlags, TracerBase, TracerField, TracerLayout, TracerRole,
+    BgcKind, BgcTracers, CiceLayoutSpec, CiceTracerFlags, TracerBase, TracerField, TracerLayout, TracerRole,
 };
 
 use crate::errors::{BindError, value_err};
@@ -259,6 +259,64 @@ impl PyTracerLayout {
     #[getter]
     fn icepack(&self) -> Option<String> {
         self.inner.cice_spec().map(|s| s.to_string())
+    }
+
+    /// This layout with `extra` biogeochemical tracers after every other (Rust
+    /// `TracerLayout::with_bgc`): `kind` `"z_tracers"` (Icepack's vertically resolved bio
+    /// tracers: `nblyr + 1` levels on the brine grid, which needs the brine fraction, and two
+    /// in the snow) or `"skl_bgc"` (the skeletal layer, `sk_l` m thick, default 0.03);
+    /// `bio_index`: per bio tracer its first tracer, 0-based. The step books their flux to
+    /// the ocean in `flux_bio`. Give the host's tables with `with_host_tables` after this.
+    #[pyo3(signature = (extra, kind, bio_index, *, nblyr = 1, sk_l = 0.03))]
+    fn with_bgc(
+        &self,
+        extra: usize,
+        kind: &str,
+        bio_index: Vec<usize>,
+        nblyr: usize,
+        sk_l: f64,
+    ) -> PyResult<Self> {
+        let kind = match kind {
+            "z_tracers" => BgcKind::Vertical { nblyr },
+            "skl_bgc" => BgcKind::Skeletal { sk_l },
+            k => {
+                return Err(value_err(format!(
+                    "kind = {k:?}: \"z_tracers\" or \"skl_bgc\""
+                ))
+                .into());
+            }
+        };
+        let l = (*self.inner)
+            .clone()
+            .with_bgc(extra, BgcTracers { kind, bio_index })
+            .map_err(value_err)?;
+        Ok(Self { inner: Arc::new(l) })
+    }
+
+    /// This layout with each tracer carried as a host's tables say (Rust
+    /// `TracerLayout::with_host_tables`; Icepack's `trcr_depend`, `trcr_base` (ntrcr, 3),
+    /// `n_trcr_strata`, `nt_strata` (ntrcr, 2), 1-based tracer numbers as Icepack has them).
+    fn with_host_tables(
+        &self,
+        trcr_depend: Vec<i32>,
+        trcr_base: Vec<[f64; 3]>,
+        n_trcr_strata: Vec<i32>,
+        nt_strata: Vec<[i32; 2]>,
+    ) -> PyResult<Self> {
+        // Fortran order, as Icepack's arrays are.
+        let base: Vec<f64> = (0..3).flat_map(|j| trcr_base.iter().map(move |r| r[j])).collect();
+        let strata: Vec<i32> = (0..2).flat_map(|j| nt_strata.iter().map(move |r| r[j])).collect();
+        let l = (*self.inner)
+            .clone()
+            .with_host_tables(&trcr_depend, &base, &n_trcr_strata, &strata)
+            .map_err(value_err)?;
+        Ok(Self { inner: Arc::new(l) })
+    }
+
+    /// Number of bio tracers (Icepack `nbtrcr`; 0 without them).
+    #[getter]
+    fn nbtrcr(&self) -> usize {
+        self.inner.n_bio()
     }
 
     /// This layout with `value` as the field `name`'s value where its base volume is zero

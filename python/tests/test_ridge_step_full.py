@@ -352,7 +352,7 @@ def test_snow_isotope_and_aerosol_tracers_equal_icepack_bit_for_bit():
                     assert list(got) == [_num(x) for x in per_cat[n]], (c["case"], name, n)
                     checked += levels
     assert checked > 100
-    assert set(pr.STEP_SPECIES_OUTPUTS) == {"faero_ocn", "fiso_ocn"}
+    assert set(pr.STEP_SPECIES_OUTPUTS) == {"faero_ocn", "fiso_ocn", "flux_bio"}
 
 
 # ---------------------------------------------------------------------------------------
@@ -637,3 +637,48 @@ def test_xarray_complete_step_with_time_before_categories():
     np.testing.assert_array_equal(auto.ipnd.values, r.ipnd.values)
     with pytest.raises(ValueError, match="qice002"):
         prx.ridge_step(ds.drop_vars("qice002"), dt=1800.0, convergence=1e-6, layout=layout)
+
+
+def test_bio_tracers_and_flux_bio_equal_icepack_bit_for_bit():
+    """The vertically resolved bio tracers (tests/data/icepack/ridge_step_tracers_bgc.jsonl):
+    a layout made with TracerLayout.with_bgc and Icepack's own tables (with_host_tables)
+    gives Icepack's flux_bio and bio tracers bit for bit."""
+    lines = [json.loads(l) for l in (ROOT / "tests/data/icepack/ridge_step_tracers_bgc.jsonl").open()]
+    params, cases = lines[0], lines[1:]
+    f, b, t = params["tracer_flags"], params["bgc"], params["host_tables"]
+    layout = pr.TracerLayout.cice(params["nilyr"], params["nslyr"], age=True, first_year=True,
+                                  level_ice=True, snow=True, isotopes=f["n_iso"],
+                                  aerosols=f["n_aero"], pond_topo=True, fsd=f["nfsd"],
+                                  brine=True)
+    extra = params["ntrcr"] - layout.ntrcr
+    layout = layout.with_bgc(extra, "z_tracers", [i - 1 for i in b["bio_index"]],
+                             nblyr=b["nblyr"])
+    for name, key in (("rhos", "rhos_empty"), ("smice", "smice_empty"), ("rsnw", "rsnw_empty")):
+        layout = layout.with_empty_value(name, f[key])
+    layout = layout.with_host_tables(t["trcr_depend"], t["trcr_base"], t["n_trcr_strata"],
+                                     t["nt_strata"])
+    assert layout.ntrcr == 47 and layout.nbtrcr == 2
+    start, levels = layout.field("bgc")
+    nonzero = 0
+    for c in cases:
+        o = c["outputs"]
+        if c["group"] == "stress" or o["aborted"]:
+            continue
+        i = c["inputs"]
+        # Case reads the 23-tracer fields; the whole layout's tracers are set below.
+        i23 = dict(i, trcrn={f["name"]: i["trcrn"][f["name"]] for f in LAYOUT.spec()})
+        case = Case(dict(c, inputs=i23))
+        trcrn = np.zeros((case.ncat, layout.ntrcr))
+        for name, per_cat in i["trcrn"].items():
+            s, n = layout.field(name)
+            trcrn[:, s : s + n] = per_cat
+        k = case.kwargs()
+        k["layout"] = layout
+        r = pr.ridge_step(case.aicen, case.vicen, case.aice0, vsnon=case.vsnon, trcrn=trcrn,
+                          aice=case.aice, **k)
+        assert r.flux_bio.shape == (2,)
+        assert list(r.flux_bio) == [_num(x) for x in o["flux_bio"]], c["case"]
+        nonzero += any(x != 0 for x in r.flux_bio)
+        assert r.trcrn[:, start : start + levels].tolist() == [
+            [_num(x) for x in per_cat] for per_cat in o["trcrn"]["bgc"]], c["case"]
+    assert nonzero >= 5

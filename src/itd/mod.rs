@@ -38,7 +38,7 @@ pub use ridge_step::{
 };
 pub use ridge_step_batch::{
     BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, OutputMeta, SPECIES_OUTPUTS,
-    StepBatchMut, ridge_step_batch,
+    StepBatchMut, ridge_step_batch, species_counts,
 };
 pub use ridging::{
     RidgeDiagnostics, RidgeForcing, RidgeOptions, RidgeRatesMut, ridge_batch, ridge_batch_masked,

@@ -136,7 +136,7 @@ pub const CATEGORY_OUTPUTS: [OutputMeta; 10] = [
 /// The per-species outputs of [`ridge_step_batch`], in the order of its `species` argument:
 /// `(n_aero, ncol)` and `(n_iso, ncol)` ([`TracerLayout::n_aero`], [`TracerLayout::n_iso`]),
 /// one step's values averaged over `ndtd·dt`.
-pub const SPECIES_OUTPUTS: [OutputMeta; 2] = [
+pub const SPECIES_OUTPUTS: [OutputMeta; 3] = [
     meta(
         "faero_ocn",
         "kg m-2 s-1",
@@ -147,7 +147,19 @@ pub const SPECIES_OUTPUTS: [OutputMeta; 2] = [
         "kg m-2 s-1",
         "water isotope flux to the ocean from ridging (snow) and clean-up (ice and snow), per species",
     ),
+    meta(
+        "flux_bio",
+        "mmol m-2 s-1",
+        "biogeochemical flux to the ocean from ridging (snow) and clean-up (ice and snow), per \
+         bio tracer (the tracer's unit times m s-1: kg m-2 s-1 for zaerosols)",
+    ),
 ];
+
+/// Rows of each of the [`SPECIES_OUTPUTS`] for a layout: its aerosol species, isotope
+/// species and bio tracers.
+pub fn species_counts(layout: &TracerLayout) -> [usize; 3] {
+    [layout.n_aero(), layout.n_iso(), layout.n_bio()]
+}
 
 /// Per-column closing and opening of [`ridge_step_batch`] (1/s, `ncol` values each): the two
 /// calling conventions of [`Closing`].
@@ -275,7 +287,7 @@ pub fn ridge_step_batch(
             check_shape(m.name, o.shape(), &[ncat, ncol])?;
         }
     }
-    let nspecies = [layout.n_aero(), layout.n_iso()];
+    let nspecies = species_counts(layout);
     if let Some(sp) = species.as_deref() {
         check_len("species outputs", sp.len(), SPECIES_OUTPUTS.len())?;
         for ((m, o), n) in SPECIES_OUTPUTS.iter().zip(sp.iter()).zip(nspecies) {
@@ -392,7 +404,8 @@ pub fn ridge_step_batch(
             }
         }
         if let Some(sp) = species.as_deref_mut() {
-            for (o, xs) in sp.iter_mut().zip([&fl.faero_ocn[..], &fl.fiso_ocn[..]]) {
+            let rows = [&fl.faero_ocn[..], &fl.fiso_ocn[..], &fl.flux_bio[..]];
+            for (o, xs) in sp.iter_mut().zip(rows) {
                 for k in 0..o.nrows() {
                     o[[k, c]] = xs[k];
                 }

@@ -12,6 +12,7 @@ use pressridge::io::itd_netcdf::{
 use pressridge::itd::{
     BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, OutputMeta, RidgeOptions,
     RidgeStepOptions, RidgeStepParams, SPECIES_OUTPUTS, SaltFlux, StepBatchMut, ridge_step_batch,
+    species_counts,
 };
 
 use super::forcing::Forcing;
@@ -155,8 +156,8 @@ pub(super) fn run_complete(
         .iter()
         .map(|_| Array2::zeros((ncat, ncol)))
         .collect();
-    // Aerosol and isotope fluxes, one row per species of the layout.
-    let mut species: Vec<Array2<f64>> = [layout.n_aero(), layout.n_iso()]
+    // Aerosol, isotope and bio fluxes, one row per species or bio tracer of the layout.
+    let mut species: Vec<Array2<f64>> = species_counts(&layout)
         .iter()
         .map(|&n| Array2::zeros((n, ncol)))
         .collect();
