@@ -9,7 +9,8 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use pressridge::itd::{
-    BgcKind, BgcTracers, CiceLayoutSpec, CiceTracerFlags, TracerBase, TracerField, TracerLayout, TracerRole,
+    BgcKind, BgcTracers, CiceLayoutSpec, CiceTracerFlags, TracerBase, TracerField, TracerLayout,
+    TracerRole,
 };
 
 use crate::errors::{BindError, value_err};
@@ -280,10 +281,9 @@ impl PyTracerLayout {
             "z_tracers" => BgcKind::Vertical { nblyr },
             "skl_bgc" => BgcKind::Skeletal { sk_l },
             k => {
-                return Err(value_err(format!(
-                    "kind = {k:?}: \"z_tracers\" or \"skl_bgc\""
-                ))
-                .into());
+                return Err(
+                    value_err(format!("kind = {k:?}: \"z_tracers\" or \"skl_bgc\"")).into(),
+                );
             }
         };
         let l = (*self.inner)
@@ -304,8 +304,12 @@ impl PyTracerLayout {
         nt_strata: Vec<[i32; 2]>,
     ) -> PyResult<Self> {
         // Fortran order, as Icepack's arrays are.
-        let base: Vec<f64> = (0..3).flat_map(|j| trcr_base.iter().map(move |r| r[j])).collect();
-        let strata: Vec<i32> = (0..2).flat_map(|j| nt_strata.iter().map(move |r| r[j])).collect();
+        let base: Vec<f64> = (0..3)
+            .flat_map(|j| trcr_base.iter().map(move |r| r[j]))
+            .collect();
+        let strata: Vec<i32> = (0..2)
+            .flat_map(|j| nt_strata.iter().map(move |r| r[j]))
+            .collect();
         let l = (*self.inner)
             .clone()
             .with_host_tables(&trcr_depend, &base, &n_trcr_strata, &strata)
