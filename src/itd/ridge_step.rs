@@ -319,7 +319,7 @@ pub fn ridge_step_column(
     let saved = Saved::take(col, ws);
     let mut f = *fluxes;
     let r = step(col, hin_max, forcing, opts, layout, &mut f, ws).and_then(|d| {
-        check_outputs(col, &f)?;
+        check_outputs(col, &f, layout.n_bio())?;
         Ok(d)
     });
     match r {

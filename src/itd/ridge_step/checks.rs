@@ -101,7 +101,11 @@ pub(super) fn check_inputs(
     Ok(())
 }
 
-pub(super) fn check_outputs(col: &ColumnMut<'_>, f: &OceanFluxes) -> Result<(), ColumnError> {
+pub(super) fn check_outputs(
+    col: &ColumnMut<'_>,
+    f: &OceanFluxes,
+    n_bio: usize,
+) -> Result<(), ColumnError> {
     for (var, xs) in [
         ("aicen", &*col.aicen),
         ("vicen", &*col.vicen),
@@ -119,7 +123,7 @@ pub(super) fn check_outputs(col: &ColumnMut<'_>, f: &OceanFluxes) -> Result<(), 
     }
     let aero = f.faero_ocn.iter().map(|&x| ("faero_ocn", x));
     let iso = f.fiso_ocn.iter().map(|&x| ("fiso_ocn", x));
-    let bio = f.flux_bio.iter().map(|&x| ("flux_bio", x));
+    let bio = f.flux_bio[..n_bio].iter().map(|&x| ("flux_bio", x));
     for (var, x) in [
         ("aice0", *col.aice0),
         ("fresh", f.fresh),

@@ -81,7 +81,7 @@ pub(crate) fn cleanup_itd(
     for (f, d) in fluxes.fiso_ocn.iter_mut().zip(&z.iso) {
         *f += d;
     }
-    for (f, d) in fluxes.flux_bio.iter_mut().zip(&z.bio) {
+    for (f, d) in fluxes.flux_bio.iter_mut().zip(&z.bio).take(layout.n_bio()) {
         *f += d;
     }
     Ok((z.vice, z.vsno))

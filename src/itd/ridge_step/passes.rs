@@ -120,7 +120,7 @@ pub(super) fn step(
     for (f, m) in fluxes.fiso_ocn.iter_mut().zip(&s.miso) {
         *f += m * dti;
     }
-    for (f, m) in fluxes.flux_bio.iter_mut().zip(&s.mbio) {
+    for (f, m) in fluxes.flux_bio.iter_mut().zip(&s.mbio).take(layout.n_bio()) {
         *f += m * dti;
     }
     fluxes.fpond -= s.mpond;
