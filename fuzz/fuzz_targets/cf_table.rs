@@ -5,6 +5,8 @@
 //! C_f at any thickness.
 #![no_main]
 
+#[path = "bytes.rs"]
+mod bytes;
 #[path = "nc_input.rs"]
 mod nc_input;
 
@@ -44,7 +46,7 @@ fuzz_target!(|input: &[u8]| {
     let friction = match d.byte() % 3 {
         0 => None,
         1 => Some((1.0, 0.6)),
-        _ => Some((d.f64(), d.f64())),
+        _ => Some((d.f64_from(&nc_input::NICE), d.f64_from(&nc_input::NICE))),
     };
     if !write(&path, &mut d, DIMS, VARS, UNITS) {
         return;

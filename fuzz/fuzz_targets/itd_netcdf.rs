@@ -5,6 +5,8 @@
 //! value or an error, never a panic; what is read has the shapes it claims.
 #![no_main]
 
+#[path = "bytes.rs"]
+mod bytes;
 #[path = "nc_input.rs"]
 mod nc_input;
 

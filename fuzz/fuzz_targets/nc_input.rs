@@ -4,52 +4,31 @@
 //! and `coordinates`. The file is well-formed NetCDF, so what is fuzzed is pressridge's
 //! reading of its structure and values, not the NetCDF C library's parser.
 
+#![allow(dead_code)]
+
 use std::path::{Path, PathBuf};
 
-/// The input, read front to back; zeros once it runs out.
-pub struct Bytes<'a>(pub &'a [u8]);
+pub use crate::bytes::Bytes;
 
-impl Bytes<'_> {
-    pub fn byte(&mut self) -> u8 {
-        let (b, rest) = self.0.split_first().map_or((0, &[][..]), |(b, r)| (*b, r));
-        self.0 = rest;
-        b
-    }
-    /// One of `items`.
-    pub fn pick<'b, T>(&mut self, items: &'b [T]) -> &'b T {
-        &items[usize::from(self.byte()) % items.len()]
-    }
-    /// An f64: one of a few values a sea-ice file holds (first byte even), or any bits.
-    pub fn f64(&mut self) -> f64 {
-        let tag = self.byte();
-        if tag & 1 == 0 {
-            const NICE: [f64; 16] = [
-                0.0,
-                1e-12,
-                0.01,
-                0.1,
-                0.25,
-                0.5,
-                1.0,
-                2.5,
-                3.0,
-                10.0,
-                -1.8,
-                1e30,
-                -9999.0,
-                9.969_209_968_386_869e36,
-                1e-6,
-                4.0,
-            ];
-            return NICE[usize::from(tag >> 1) % NICE.len()] * (1.0 + f64::from(tag >> 5) / 8.0);
-        }
-        let mut b = [0u8; 8];
-        for x in &mut b {
-            *x = self.byte();
-        }
-        f64::from_le_bytes(b)
-    }
-}
+/// Values a sea-ice file holds (fill values included), for [`Bytes::f64_from`].
+pub const NICE: [f64; 16] = [
+    0.0,
+    1e-12,
+    0.01,
+    0.1,
+    0.25,
+    0.5,
+    1.0,
+    2.5,
+    3.0,
+    10.0,
+    -1.8,
+    1e30,
+    -9999.0,
+    9.969_209_968_386_869e36,
+    1e-6,
+    4.0,
+];
 
 /// A scratch file of this process.
 pub fn scratch(name: &str) -> PathBuf {
@@ -112,7 +91,7 @@ pub fn write(path: &Path, d: &mut Bytes<'_>, dims: &[&str], vars: &[&str], units
             let _ = var.put_attribute("units", *d.pick(units));
         }
         if attrs & 2 != 0 {
-            let fill = d.f64();
+            let fill = d.f64_from(&NICE);
             let _ = match ty {
                 0 => var.put_attribute("_FillValue", fill),
                 1 => var.put_attribute("_FillValue", fill as f32),
@@ -121,7 +100,7 @@ pub fn write(path: &Path, d: &mut Bytes<'_>, dims: &[&str], vars: &[&str], units
             };
         }
         if attrs & 4 != 0 {
-            let _ = var.put_attribute("missing_value", d.f64());
+            let _ = var.put_attribute("missing_value", d.f64_from(&NICE));
         }
         if attrs & 8 != 0 {
             let _ = var.put_attribute("coordinates", *d.pick(&["TLON TLAT", "ni", "x", ""]));
@@ -133,7 +112,7 @@ pub fn write(path: &Path, d: &mut Bytes<'_>, dims: &[&str], vars: &[&str], units
     }
     for (name, vd, ty) in &defined {
         let n: usize = vd.iter().map(|x| x.1).product();
-        let vals: Vec<f64> = (0..n).map(|_| d.f64()).collect();
+        let vals: Vec<f64> = (0..n).map(|_| d.f64_from(&NICE)).collect();
         let mut var = f.variable_mut(name).expect("just defined");
         let ok = match ty {
             0 => var.put_values(&vals, ..).is_ok(),

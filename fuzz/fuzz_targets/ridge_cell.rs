@@ -7,6 +7,10 @@
 //! area, volume or snow.
 #![no_main]
 
+#[path = "bytes.rs"]
+mod bytes;
+
+use bytes::Bytes;
 use libfuzzer_sys::fuzz_target;
 use pressridge::ffi::PRESSRIDGE_OK;
 use pressridge::ffi::itd::PressridgeOptions;
@@ -16,33 +20,10 @@ use pressridge::ffi::ridge_step::{
     pressridge_ridger_new, pressridge_ridger_tracers,
 };
 
-/// The input, read front to back; zeros once it runs out.
-struct Bytes<'a>(&'a [u8]);
-
-impl Bytes<'_> {
-    fn byte(&mut self) -> u8 {
-        let (b, rest) = self.0.split_first().map_or((0, &[][..]), |(b, r)| (*b, r));
-        self.0 = rest;
-        b
-    }
-    /// An f64: either one of a few values a sea-ice state holds (the first byte's low bit
-    /// clear), so that most cells get past the checks, or any bits.
-    fn f64(&mut self) -> f64 {
-        let tag = self.byte();
-        if tag & 1 == 0 {
-            const NICE: [f64; 16] = [
-                0.0, 1e-12, 1e-6, 0.01, 0.1, 0.25, 0.5, 0.9, 1.0, 2.5, 10.0, -1.8, -2.0e8, 3600.0,
-                1e-7, 4.0,
-            ];
-            return NICE[usize::from(tag >> 1) % NICE.len()] * (1.0 + f64::from(tag >> 5) / 8.0);
-        }
-        let mut b = [0u8; 8];
-        for x in &mut b {
-            *x = self.byte();
-        }
-        f64::from_le_bytes(b)
-    }
-}
+/// Values a sea-ice state holds, for [`Bytes::f64_from`].
+const NICE: [f64; 16] = [
+    0.0, 1e-12, 1e-6, 0.01, 0.1, 0.25, 0.5, 0.9, 1.0, 2.5, 10.0, -1.8, -2.0e8, 3600.0, 1e-7, 4.0,
+];
 
 fuzz_target!(|input: &[u8]| {
     let mut d = Bytes(input);
@@ -61,8 +42,8 @@ fuzz_target!(|input: &[u8]| {
     o.participation = i32::from(codes & 3);
     o.redistribution = i32::from((codes >> 2) & 3);
     if codes & 16 != 0 {
-        o.params.mu_rdg = d.f64();
-        o.params.cs = d.f64();
+        o.params.mu_rdg = d.f64_from(&NICE);
+        o.params.cs = d.f64_from(&NICE);
     }
     let (cleanup, rebin, host_rates) = (codes & 32 != 0, codes & 64 != 0, codes & 128 != 0);
     let mut ridger: *mut PressridgeRidger = std::ptr::null_mut();
@@ -100,16 +81,16 @@ fuzz_target!(|input: &[u8]| {
     };
     assert_eq!(rc, PRESSRIDGE_OK);
     let nt = usize::try_from(nt).expect("a tracer count");
-    let (dt, ndtd) = (d.f64(), i32::from(d.byte() % 4));
-    let (conv, shear, tf) = (d.f64(), d.f64(), d.f64());
-    let closing = d.f64();
-    let mut opening = d.f64();
-    let mut hin_max: Vec<f64> = (0..=ncat).map(|_| d.f64()).collect();
-    let mut a: Vec<f64> = (0..ncat).map(|_| d.f64()).collect();
-    let mut v: Vec<f64> = (0..ncat).map(|_| d.f64()).collect();
-    let mut s: Vec<f64> = (0..ncat).map(|_| d.f64()).collect();
-    let mut tr: Vec<f64> = (0..nt * ncat).map(|_| d.f64()).collect();
-    let (mut aice0, mut aice) = (d.f64(), d.f64());
+    let (dt, ndtd) = (d.f64_from(&NICE), i32::from(d.byte() % 4));
+    let (conv, shear, tf) = (d.f64_from(&NICE), d.f64_from(&NICE), d.f64_from(&NICE));
+    let closing = d.f64_from(&NICE);
+    let mut opening = d.f64_from(&NICE);
+    let mut hin_max: Vec<f64> = (0..=ncat).map(|_| d.f64_from(&NICE)).collect();
+    let mut a: Vec<f64> = (0..ncat).map(|_| d.f64_from(&NICE)).collect();
+    let mut v: Vec<f64> = (0..ncat).map(|_| d.f64_from(&NICE)).collect();
+    let mut s: Vec<f64> = (0..ncat).map(|_| d.f64_from(&NICE)).collect();
+    let mut tr: Vec<f64> = (0..nt * ncat).map(|_| d.f64_from(&NICE)).collect();
+    let (mut aice0, mut aice) = (d.f64_from(&NICE), d.f64_from(&NICE));
     let before = ((), a.clone(), v.clone(), s.clone(), tr.clone(), aice0, aice);
     let mut fluxes = PressridgeOceanFluxes::default();
     let mut diag = PressridgeStepDiagnostics::default();

@@ -11,9 +11,12 @@ use libfuzzer_sys::fuzz_target;
 use pressridge::ffi::itd::{PressridgeOptions, pressridge_strength, pressridge_strength_cell};
 use pressridge::ffi::{PRESSRIDGE_OK, PressridgeGrid};
 
-#[path = "nc_input.rs"]
-mod nc_input;
-use nc_input::Bytes;
+#[path = "bytes.rs"]
+mod bytes;
+use bytes::Bytes;
+
+/// Values of ice area fractions and thicknesses, for [`Bytes::f64_from`].
+const NICE: [f64; 8] = [0.0, 1e-12, 0.01, 0.1, 0.25, 0.5, 1.0, 2.5];
 
 /// A grid number: small, or (rarely) anything.
 fn size(d: &mut Bytes<'_>) -> i64 {
@@ -51,12 +54,14 @@ fuzz_target!(|input: &[u8]| {
     }
     let cap = |n: i64| usize::try_from(n).unwrap_or(0);
     let (n2, n1) = (cap(g.len), cap(g.len_1d));
-    let mut a: Vec<f64> = (0..n2).map(|_| d.f64().abs().min(1.0) * 0.2).collect();
+    let mut a: Vec<f64> = (0..n2)
+        .map(|_| d.f64_from(&NICE).abs().min(1.0) * 0.2)
+        .collect();
     let v: Vec<f64> = a
         .iter()
         .map(|x| x * (0.1 + f64::from(d.byte()) / 32.0))
         .collect();
-    let a0: Vec<f64> = (0..n1).map(|_| d.f64()).collect();
+    let a0: Vec<f64> = (0..n1).map(|_| d.f64_from(&NICE)).collect();
     let valid: Vec<i32> = (0..n1).map(|_| i32::from(d.byte() % 3 != 0)).collect();
     let mut s = vec![f64::NAN; n1];
     let mut clamped = -1i64;
