@@ -502,7 +502,11 @@ mod tests {
         let mut cats: Vec<Array2<f64>> = (0..CATEGORY_OUTPUTS.len())
             .map(|_| Array2::zeros((ncat, ncol)))
             .collect();
-        let mut sp = [Array2::zeros((2, ncol)), Array2::zeros((1, ncol))];
+        let mut sp = [
+            Array2::zeros((2, ncol)),
+            Array2::zeros((1, ncol)),
+            Array2::zeros((0, ncol)),
+        ];
         let mut cell_views: Vec<_> = cells.iter_mut().map(|x| x.view_mut()).collect();
         let mut cat_views: Vec<_> = cats.iter_mut().map(|x| x.view_mut()).collect();
         let mut sp_views: Vec<_> = sp.iter_mut().map(|x| x.view_mut()).collect();
