@@ -4,7 +4,8 @@
 #   scripts/check-ub.sh [miri]   Miri runs the unit and C-ABI tests that reach unsafe code
 #   scripts/check-ub.sh asan     the C and Fortran tests built with -fsanitize=address,undefined
 #                                against the static library built with Rust's AddressSanitizer
-#   scripts/check-ub.sh tsan     the thread tests of tests/ffi.rs under ThreadSanitizer
+#   scripts/check-ub.sh tsan     the thread tests of tests/ffi.rs and the C test's 8 threads
+#                                under ThreadSanitizer (installs clang-16 for the C test)
 #   scripts/check-ub.sh fuzz     each libFuzzer target of fuzz/ for FUZZ_SECONDS (default 30),
 #                                FUZZ_JOBS (default 2) at a time, FUZZ_TARGETS (default all);
 #                                the stable toolchain suffices
@@ -92,6 +93,21 @@ case "$stage" in
     RUSTFLAGS="-Zsanitizer=thread" TSAN_OPTIONS=halt_on_error=1 \
       cargo +nightly test -Zbuild-std --target $target --profile ci --target-dir target/tsan \
       --test ffi -- per_cell_calls_from_16_threads calls_from_many_threads
+    echo "== tsan: the C test, 8 threads sharing a C_f table, on the instrumented library ($SECONDS s)"
+    # clang 16's runtime: gcc 12's libtsan lacks __tsan_memcpy, which Rust's instrumented
+    # code calls (docs/failure.md).
+    command -v clang-16 > /dev/null || {
+      sudo=""; [ "$(id -u)" = 0 ] || sudo=sudo
+      $sudo apt-get install -y -q clang-16 libclang-rt-16-dev > /dev/null
+    }
+    RUSTFLAGS="-Zsanitizer=thread" cargo +nightly build -Zbuild-std --target $target --lib \
+      --profile ci --target-dir target/tsan
+    rm -rf fortran-bridge/build/tsan
+    make -C fortran-bridge BUILD=build/tsan PROFILE=ci CARGO_BUILD=true CC=clang-16 \
+      LIBDIR="$PWD/target/tsan/$target/ci" LDEXTRA="-fsanitize=thread" \
+      CFLAGS="-O1 -g -std=c11 -Wall -Wextra -Werror -fsanitize=thread -fno-omit-frame-pointer" \
+      build/tsan/test_capi_static
+    TSAN_OPTIONS=halt_on_error=1 fortran-bridge/build/tsan/test_capi_static | tail -n 1
     echo "== tsan: clean in $SECONDS s"
     ;;
   fuzz)
