@@ -336,18 +336,13 @@ fn zap_small_areas(
                 layout,
                 z,
             );
-            if let Some(b) = &layout.bgc
-                && let BgcKind::Vertical { nblyr } = b.kind
-            {
+            if let Some(b) = &layout.bgc {
                 // The snow's bio tracers go with the excess ice (its surface layer and
                 // interior).
                 let dvssl = 0.5 * s / layout.nslyr as f64;
                 let dvint = s - dvssl;
-                for (d, &bi) in z.bio.iter_mut().zip(&b.bio_index) {
-                    *d += (trc[bi + nblyr + 1] * dvssl + trc[bi + nblyr + 2] * dvint)
-                        * (aice - 1.0)
-                        / aice
-                        / dt;
+                for (d, snow) in z.bio.iter_mut().zip(b.snow_content(trc, dvssl, dvint)) {
+                    *d += snow * (aice - 1.0) / aice / dt;
                 }
             }
             for k in 0..layout.nilyr {
@@ -409,13 +404,11 @@ fn zap_snow(
             z.iso[k] += *vsnon * trc[isno + k] / dt;
         }
     }
-    if let Some(b) = &layout.bgc
-        && let BgcKind::Vertical { nblyr } = b.kind
-    {
+    if let Some(b) = &layout.bgc {
         let dvssl = 0.5 * *vsnon / nslyr;
         let dvint = *vsnon - dvssl;
-        for (d, &bi) in z.bio.iter_mut().zip(&b.bio_index) {
-            *d += (trc[bi + nblyr + 1] * dvssl + trc[bi + nblyr + 2] * dvint) / dt;
+        for (d, snow) in z.bio.iter_mut().zip(b.snow_content(trc, dvssl, dvint)) {
+            *d += snow / dt;
         }
     }
     for k in 0..layout.nslyr {

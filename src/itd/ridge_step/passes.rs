@@ -14,7 +14,7 @@ use crate::itd::ColumnError;
 use crate::itd::params::Redistribution;
 use crate::itd::redistribution::{RidgeGeometry, category_fractions_all};
 use crate::itd::ridging::{asum_ridging, close_and_open};
-use crate::itd::tracers::{BgcKind, MAX_AERO, MAX_ISO, MAX_NBTRCR, TracerLayout};
+use crate::itd::tracers::{MAX_AERO, MAX_ISO, MAX_NBTRCR, TracerLayout};
 
 /// Sums of one ridging pass and of the whole step (Icepack `ridge_ice` locals).
 #[derive(Default)]
@@ -258,13 +258,10 @@ fn ridge_shift(
         }
         // Vertical bio tracers in the ridged snow: its surface layer (half the top snow
         // layer) and interior, as fractions of the snow depth (Icepack's dzssl, dzint).
-        if let Some(b) = &layout.bgc
-            && let BgcKind::Vertical { nblyr } = b.kind
-        {
+        if let Some(b) = &layout.bgc {
             let dzssl = 0.5 / layout.nslyr as f64;
             let dzint = 1.0 - dzssl;
-            for (m, &bi) in s.mbio.iter_mut().zip(&b.bio_index) {
-                let snow = trc[bi + nblyr + 1] * dzssl + trc[bi + nblyr + 2] * dzint;
+            for (m, snow) in s.mbio.iter_mut().zip(b.snow_content(trc, dzssl, dzint)) {
                 *m += vsrdgn * one_minus_f * snow;
             }
         }

@@ -50,6 +50,25 @@ impl BgcTracers {
             BgcKind::Vertical { nblyr } => nblyr + 3,
         }
     }
+
+    /// Per bio tracer, its content in the snow of one category (`trc`, the category's
+    /// tracers): `ssl` times its snow surface-layer value plus `int` times its interior value
+    /// (Icepack's `dzssl`/`dzint` or `dvssl`/`dvint`). None for skeletal tracers, which have
+    /// no snow levels.
+    pub(crate) fn snow_content<'a>(
+        &'a self,
+        trc: &'a [f64],
+        ssl: f64,
+        int: f64,
+    ) -> impl Iterator<Item = f64> + 'a {
+        let (nblyr, count) = match self.kind {
+            BgcKind::Vertical { nblyr } => (nblyr, self.bio_index.len()),
+            BgcKind::Skeletal { .. } => (0, 0),
+        };
+        self.bio_index[..count]
+            .iter()
+            .map(move |&bi| trc[bi + nblyr + 1] * ssl + trc[bi + nblyr + 2] * int)
+    }
 }
 
 impl TracerLayout {
