@@ -134,8 +134,8 @@ pub const CATEGORY_OUTPUTS: [OutputMeta; 10] = [
 ];
 
 /// The per-species outputs of [`ridge_step_batch`], in the order of its `species` argument:
-/// `(n_aero, ncol)` and `(n_iso, ncol)` ([`TracerLayout::n_aero`], [`TracerLayout::n_iso`]),
-/// one step's values averaged over `ndtd·dt`.
+/// `(n_aero, ncol)`, `(n_iso, ncol)` and `(nbtrcr, ncol)` ([`species_counts`]), one step's
+/// values averaged over `ndtd·dt`.
 pub const SPECIES_OUTPUTS: [OutputMeta; 3] = [
     meta(
         "faero_ocn",

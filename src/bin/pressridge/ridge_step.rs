@@ -245,7 +245,6 @@ pub fn run(args: Args) -> Result<(), BoxError> {
             let nt = layout.ntrcr();
             let st = SnowTracers {
                 layout,
-                flags: CiceTracerFlags::default(),
                 vsnon: Array2::zeros((ncat, ncol)),
                 trcrn: ndarray::Array3::zeros((ncat, nt, ncol)),
                 missing: None,

@@ -9,7 +9,7 @@ use ndarray::{Array1, Array2, Array3, ArrayD, Axis, IxDyn};
 
 use super::vars::{all_dims, fill_of, fmt_dims, is_fill, nc_err, read_f64};
 use super::{ItdGrid, NetcdfError};
-use crate::itd::{CiceLayoutSpec, CiceTracerFlags, TracerLayout};
+use crate::itd::{CiceLayoutSpec, TracerLayout};
 
 /// Snow and tracers of a gridded distribution, for the complete ridging step. Variable names
 /// are CICE restart names ([`TracerLayout::cice_restart_names`]): `vsnon` (m), `Tsfcn`,
@@ -17,10 +17,8 @@ use crate::itd::{CiceLayoutSpec, CiceTracerFlags, TracerLayout};
 /// `ipnd` where present, each with the dimensions of `aicen`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SnowTracers {
-    /// The CICE layout found in the file.
+    /// The CICE layout found in the file (its optional tracers: `layout.cice_flags()`).
     pub layout: TracerLayout,
-    /// The optional tracers found.
-    pub flags: CiceTracerFlags,
     /// Snow volume per unit area (m), `(ncat, ncol)`; zeros when the file has no `vsnon`.
     pub vsnon: Array2<f64>,
     /// Tracers `(ncat, ntrcr, ncol)` in the layout's order and units.
@@ -151,7 +149,6 @@ pub fn read_packed_tracers(
     let any_missing = missing.iter().any(|m| *m);
     Ok(SnowTracers {
         layout,
-        flags: spec.flags,
         vsnon,
         trcrn,
         missing: any_missing.then(|| missing.into_iter().map(|m| !m).collect()),
@@ -173,12 +170,11 @@ pub fn read_packed_tracers(
 pub fn read_snow_tracers(path: &Path, grid: &ItdGrid) -> Result<Option<SnowTracers>, NetcdfError> {
     let file = netcdf::open(path).map_err(nc_err(path))?;
     let has = |n: &str| file.variable(n).is_some();
-    let Some((layout, flags)) =
-        TracerLayout::detect_cice(&has).map_err(|e| NetcdfError::Value {
-            path: path.to_path_buf(),
-            var: e.var.clone(),
-            msg: e.to_string(),
-        })?
+    let Some((layout, _)) = TracerLayout::detect_cice(&has).map_err(|e| NetcdfError::Value {
+        path: path.to_path_buf(),
+        var: e.var.clone(),
+        msg: e.to_string(),
+    })?
     else {
         return Ok(None);
     };
@@ -204,7 +200,6 @@ pub fn read_snow_tracers(path: &Path, grid: &ItdGrid) -> Result<Option<SnowTrace
     let any_missing = missing.iter().any(|m| *m);
     Ok(Some(SnowTracers {
         layout,
-        flags,
         vsnon,
         trcrn,
         missing: any_missing.then(|| missing.into_iter().map(|m| !m).collect()),

@@ -234,7 +234,10 @@ pub(super) fn run_complete(
     grid.valid = valid;
     // Category fields in C order (category slowest, then the columns).
     let names = layout.cice_restart_names();
-    let tracer_data: Vec<Vec<f64>> = (0..nt)
+    // One variable per tracer, unless the tracers came packed (then one array, below) or
+    // the file had none.
+    let per_variable = write_tracers && packed.is_none();
+    let tracer_data: Vec<Vec<f64>> = (0..if per_variable { nt } else { 0 })
         .map(|it| {
             trcrn
                 .index_axis(ndarray::Axis(1), it)
@@ -286,9 +289,6 @@ pub(super) fn run_complete(
         _ => Vec::new(),
     };
     for ((name, (u, ln)), data) in names.iter().zip(&units).zip(&tracer_data) {
-        if !write_tracers || packed.is_some() {
-            break;
-        }
         category_fields.push((
             FieldMeta {
                 name,
