@@ -50,13 +50,12 @@ impl Range {
     /// `None` when `value` lies in the range, else why not: the value, the range and its
     /// reason, e.g. `1000000 is out of range: must lie in (0, 5] m/s (...)`.
     pub fn violation(&self, value: f64) -> Option<String> {
-        (!self.contains(value)).then(|| {
-            format!(
-                "{value} is out of range: must lie in {} ({})",
-                self.describe(),
-                self.why
-            )
-        })
+        (!self.contains(value)).then(|| format!("{value} is out of range: {}", self.rule()))
+    }
+
+    /// The rule with its reason, e.g. `must lie in (0, 5] m/s (...)`.
+    pub fn rule(&self) -> String {
+        format!("must lie in {} ({})", self.describe(), self.why)
     }
 }
 
@@ -157,15 +156,17 @@ pub const MAX_SEEDS: u32 = 1000;
 pub const MAX_RUNS: usize = 100_000;
 
 /// Frictional factor C_f of the Rothrock strength (dimensionless, the ratio of ridging work
-/// to potential-energy gain): published values are 2 (Hibler 1980) to 17 (CICE); W/ΔPE
-/// cannot be below 1 by much in a physical ridge, and above 1000 it has no physical
-/// meaning (and products of it overflow no sooner).
+/// to potential-energy gain): the work pays for the gain and for what friction dissipates,
+/// so C_f ≥ 1; published values are 2 (Hibler 1980) to 17 (CICE), and above 1000 W/ΔPE
+/// has no physical meaning (and products of it overflow no sooner). The lower bound also
+/// keeps interpolated table values off subnormal numbers that round to 0.
 pub const CF: Range = Range {
-    min: 0.0,
-    min_inclusive: false,
+    min: 1.0,
+    min_inclusive: true,
     max: 1000.0,
     unit: "",
-    why: "published values are 2-17; W/ΔPE above 1000 has no physical meaning",
+    why: "ridging work includes the potential-energy gain, so C_f >= 1; published values are \
+          2-17, and above 1000 W/ΔPE has no physical meaning",
 };
 /// Mean thickness of a category of a gridded thickness distribution, vicen / aicen: no
 /// sea ice is thicker than some tens of metres (the deepest ridge keels reach ~50 m);

@@ -374,14 +374,18 @@ fn bad_input_names_variable_and_column() {
     let e = strength_batch(aicen.view(), v2.view(), None, &o, out.view_mut()).unwrap_err();
     assert!(matches!(e, ItdError::Shape { var: "vicen", .. }));
     // Bad C_f.
-    let bad = StrengthOptions {
-        cf: Cf::Constant(f64::NAN),
-        ..Default::default()
-    };
-    assert!(matches!(
-        strength_batch(aicen.view(), vicen.view(), None, &bad, out.view_mut()),
-        Err(ItdError::Parameter { name: "cf", .. })
-    ));
+    // Bad C_f: not finite, below the work's own potential-energy gain, or so large that
+    // C_f·C_p·Σ overflows (the fuzzer's find: C_f = 2e307 gave a NaN strength).
+    for c in [f64::NAN, 0.0, 0.5, 1001.0, 2e307] {
+        let bad = StrengthOptions {
+            cf: Cf::Constant(c),
+            ..Default::default()
+        };
+        assert!(matches!(
+            strength_batch(aicen.view(), vicen.view(), None, &bad, out.view_mut()),
+            Err(ItdError::Parameter { name: "cf", .. })
+        ));
+    }
 }
 
 #[test]
@@ -429,6 +433,20 @@ fn cf_table_interpolates_clamps_and_flags() {
     assert!(t.lookup(9.0).clamped);
     assert!(CfTable::new(vec![1.0, 1.0], vec![2.0, 3.0]).is_err());
     assert!(CfTable::new(vec![1.0], vec![-2.0]).is_err());
+    // Finite but unphysical nodes are refused by name (the fuzzer's finds: a spacing of
+    // 3e308 m made the interpolation weight NaN, C_f near 1e-323 rounded to 0 between
+    // nodes): C_f within [1, 1000] (limits::CF), thickness within [0, 1000] m.
+    for (h, c, what) in [
+        (vec![0.5, 1.0], vec![10.0, 2e307], "cf[1] = "),
+        (vec![0.5, 1.0], vec![10.0, 0.5], "cf[1] = "),
+        (vec![0.5, 1.0], vec![1e-323, 10.0], "cf[0] = "),
+        (vec![-1.5e308, 1.5e308], vec![10.0, 12.0], "thickness[0] = "),
+        (vec![0.5, 2e3], vec![10.0, 12.0], "thickness[1] = "),
+    ] {
+        let e = CfTable::new(h, c).unwrap_err().to_string();
+        assert!(e.contains(what) && e.contains("out of range"), "{e}");
+    }
+    assert!(CfTable::new(vec![0.0, 1000.0], vec![1.0, 1000.0]).is_ok());
 
     // A flat table equals the constant, and a table is evaluated at each category's h.
     let a = [0.08, 0.25, 0.35, 0.2, 0.1];
@@ -716,4 +734,33 @@ fn batch_block_path_is_bit_identical_to_the_column_routine() {
             }
         }
     ));
+}
+
+/// A custom C_f provider is checked at each lookup (tables are checked when built): a value
+/// outside [1, 1000] is an error naming the category and thickness, never a NaN strength.
+#[test]
+fn custom_cf_provider_out_of_range_is_refused() {
+    #[derive(Debug)]
+    struct Wild;
+    impl CfProvider for Wild {
+        fn lookup(&self, h: f64) -> pressridge::itd::CfLookup {
+            pressridge::itd::CfLookup {
+                value: if h > 1.0 { f64::NAN } else { 12.0 },
+                clamped: false,
+            }
+        }
+    }
+    let a = [0.08, 0.25, 0.35, 0.2, 0.1];
+    let v = [0.024, 0.25, 0.63, 0.6, 0.45];
+    let o = StrengthOptions {
+        cf: Cf::Custom(Arc::new(Wild)),
+        ..Default::default()
+    };
+    let mut ws = Workspace::new(5);
+    let e = strength_column(&a, &v, Some(0.02), &o, &mut ws).unwrap_err();
+    assert!(
+        matches!(e, ColumnError::CfOutOfRange { category: 2, value, .. } if value.is_nan()),
+        "{e:?}"
+    );
+    assert!(e.to_string().contains("[1, 1000]"), "{e}");
 }

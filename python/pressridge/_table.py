@@ -157,8 +157,9 @@ class Table:
         return int(self._core.friction_set(float(mu), float(mu_w)))
 
     def cf_nodes(self, set: Union[int, str] = 0) -> Tuple[np.ndarray, np.ndarray]:
-        """The (thickness in m, C_f) nodes of a set where C_f is finite and positive: what
-        ``pressridge.strength(..., cf=table)`` interpolates (the first set)."""
+        """The (thickness in m, C_f) nodes of a set where C_f is not NaN (a NaN marks a
+        thickness no run reached): what ``pressridge.strength(..., cf=table)`` interpolates
+        (the first set)."""
         return self._core.cf_nodes(self._set_index(set))
 
     def to_xarray(self) -> Any:

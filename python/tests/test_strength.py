@@ -168,8 +168,12 @@ def test_bad_arguments(itd):
         pr.strength(a, v, mu=3.0)
     with pytest.raises(ValueError, match="invalid parameter mu_rdg = -1: must be positive"):
         pr.strength(a, v, mu_rdg=-1)
-    with pytest.raises(ValueError, match="invalid parameter cf = 0: must be finite and positive"):
+    with pytest.raises(ValueError, match=r"invalid parameter cf = 0: must lie in \[1, 1000\]"):
         pr.strength(a, v, cf=0.0)
+    with pytest.raises(ValueError, match=r"invalid parameter cf = 2000+: must lie in \[1, 1000\]"):
+        pr.strength(a, v, cf=2e307)
+    with pytest.raises(ValueError, match=r"cf\[1\] = 0.5 is out of range"):
+        pr.strength(a, v, cf=([0.5, 1.0], [10.0, 0.5]))
     with pytest.raises(ValueError, match="neither a C_f preset"):
         pr.strength(a, v, cf="cice2")
     with pytest.raises(ValueError, match="strictly increasing"):

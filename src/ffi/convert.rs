@@ -17,6 +17,7 @@ fn column_code(e: &ColumnError) -> i32 {
         }
         ColumnError::Negative { .. }
         | ColumnError::TooThick { .. }
+        | ColumnError::CfOutOfRange { .. }
         | ColumnError::AreaSum { .. }
         | ColumnError::IceAreaAboveOne { .. }
         | ColumnError::AreaTooLarge { .. } => PRESSRIDGE_ERR_BAD_VALUE,

@@ -460,7 +460,8 @@ pub unsafe extern "C" fn pressridge_ridge_table_cf(
 }
 
 /// A new C_f table handle holding the C_f of set `set` (0-based) of a ridging lookup table
-/// (the thicknesses where it is finite and positive), for `PressridgeOptions::cf_table`.
+/// (the thicknesses where it is not NaN, a NaN marking a node no run reached), for
+/// `PressridgeOptions::cf_table`.
 /// The new handle is independent of `table` and must be freed with
 /// [`pressridge_cf_table_free`].
 ///

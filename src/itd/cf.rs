@@ -9,6 +9,7 @@ use std::sync::Arc;
 
 use super::ItdError;
 use crate::interp::{bracket, check_axis, lerp};
+use crate::limits;
 
 /// Named constant values of C_f (dimensionless).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -65,8 +66,9 @@ pub struct CfTable {
 }
 
 impl CfTable {
-    /// Builds a table from node thicknesses (m; finite, strictly increasing) and C_f values
-    /// (finite, positive). At least one node.
+    /// Builds a table from node thicknesses (m; strictly increasing, in
+    /// [`limits::CATEGORY_THICKNESS`]) and C_f values (dimensionless, in [`limits::CF`]).
+    /// At least one node.
     pub fn new(thickness: Vec<f64>, cf: Vec<f64>) -> Result<Self, ItdError> {
         if thickness.is_empty() {
             return Err(ItdError::CfTable("the table has no nodes".into()));
@@ -79,14 +81,19 @@ impl CfTable {
             )));
         }
         check_axis("thickness", &thickness).map_err(ItdError::CfTable)?;
-        if let Some((i, c)) = cf
-            .iter()
-            .enumerate()
-            .find(|(_, c)| !(c.is_finite() && **c > 0.0))
-        {
-            return Err(ItdError::CfTable(format!(
-                "cf[{i}] = {c} is not finite and positive"
-            )));
+        // Finite but absurd nodes would overflow the interpolation (a spacing of 1e308 m)
+        // or the strength (C_f·C_p·h² beyond f64): each must be physical.
+        for (name, values, range) in [
+            ("thickness", &thickness, limits::CATEGORY_THICKNESS),
+            ("cf", &cf, limits::CF),
+        ] {
+            if let Some((i, why)) = values
+                .iter()
+                .enumerate()
+                .find_map(|(i, &v)| range.violation(v).map(|why| (i, why)))
+            {
+                return Err(ItdError::CfTable(format!("{name}[{i}] = {why}")));
+            }
         }
         Ok(Self {
             thickness,
@@ -214,12 +221,12 @@ impl Cf {
 
     pub(crate) fn validate(&self) -> Result<(), ItdError> {
         if let Cf::Constant(c) = *self
-            && !(c.is_finite() && c > 0.0)
+            && !limits::CF.contains(c)
         {
             return Err(ItdError::Parameter {
                 name: "cf",
                 value: c,
-                reason: "must be finite and positive",
+                reason: limits::CF.rule().into(),
             });
         }
         Ok(())

@@ -95,6 +95,21 @@ pub enum ColumnError {
         /// The largest accepted value (m).
         max: f64,
     },
+    /// A custom C_f provider ([`Cf::Custom`]) gave a value outside [`crate::limits::CF`]
+    /// (tables are checked when built).
+    #[error(
+        "the C_f provider gave {value} for ridging ice {thickness} m thick (category {category}): \
+         {}",
+        crate::limits::CF.describe()
+    )]
+    CfOutOfRange {
+        /// Category index (0-based) of the ridging ice.
+        category: usize,
+        /// Its thickness (m).
+        thickness: f64,
+        /// The value the provider gave (dimensionless).
+        value: f64,
+    },
     /// The total area differs from 1 by more than the tolerance (strength input).
     #[error(
         "total area aice0 + sum(aicen) = {total} differs from 1 by more than {tolerance}; \
@@ -220,7 +235,7 @@ pub enum ItdError {
         /// Its value.
         value: f64,
         /// Why it is rejected.
-        reason: &'static str,
+        reason: std::borrow::Cow<'static, str>,
     },
     /// A C_f table is unusable.
     #[error("invalid C_f table: {0}")]

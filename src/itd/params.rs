@@ -219,7 +219,7 @@ impl ItdParams {
                 .copied()
                 .unwrap_or("unknown"),
             value,
-            reason,
+            reason: reason.into(),
         };
         if !value.is_finite() {
             return Err(bad("must be finite"));

@@ -167,7 +167,17 @@ pub fn strength_column(
                 if aicen[n] > p.puny && ap > 0.0 {
                     let l = match &opts.cf {
                         Cf::Table(t) => t.lookup(ws.hi[n]),
-                        Cf::Custom(c) => c.lookup(ws.hi[n]),
+                        Cf::Custom(c) => {
+                            let l = c.lookup(ws.hi[n]);
+                            if !crate::limits::CF.contains(l.value) {
+                                return Err(ColumnError::CfOutOfRange {
+                                    category: n,
+                                    thickness: ws.hi[n],
+                                    value: l.value,
+                                });
+                            }
+                            l
+                        }
                         Cf::Constant(_) => unreachable!(),
                     };
                     let part = l.value * ap * term(ws, n);

@@ -172,7 +172,7 @@ impl RidgeStepParams {
                 return Err(ItdError::Parameter {
                     name: "unknown",
                     value,
-                    reason: "unknown ridging-step constant (see RidgeStepParams::FIELDS)",
+                    reason: "unknown ridging-step constant (see RidgeStepParams::FIELDS)".into(),
                 });
             }
         };
@@ -189,7 +189,7 @@ impl RidgeStepParams {
             Err(ItdError::Parameter {
                 name,
                 value,
-                reason,
+                reason: reason.into(),
             })
         };
         for (name, v) in [

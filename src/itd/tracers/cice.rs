@@ -83,7 +83,7 @@ impl TracerLayout {
             return Err(ItdError::Parameter {
                 name: "ponds",
                 value: 1.0,
-                reason: "melt ponds are carried on level ice: turn on level_ice too",
+                reason: "melt ponds are carried on level ice: turn on level_ice too".into(),
             });
         }
         if [flags.ponds, flags.pond_topo, flags.pond_sealvl]
@@ -95,7 +95,8 @@ impl TracerLayout {
             return Err(ItdError::Parameter {
                 name: "pond_topo",
                 value: 1.0,
-                reason: "one pond scheme at a time: ponds (level ice), pond_topo or pond_sealvl",
+                reason: "one pond scheme at a time: ponds (level ice), pond_topo or pond_sealvl"
+                    .into(),
             });
         }
         let mut f = vec![
@@ -149,7 +150,7 @@ impl TracerLayout {
             return Err(ItdError::Parameter {
                 name: "isotopes",
                 value: flags.isotopes as f64,
-                reason: "at most 3 isotope species (Icepack's icepack_max_iso)",
+                reason: "at most 3 isotope species (Icepack's icepack_max_iso)".into(),
             });
         }
         if flags.isotopes > 0 {
@@ -172,7 +173,7 @@ impl TracerLayout {
             return Err(ItdError::Parameter {
                 name: "aerosols",
                 value: flags.aerosols as f64,
-                reason: "at most 6 aerosol species (Icepack's icepack_max_aero)",
+                reason: "at most 6 aerosol species (Icepack's icepack_max_aero)".into(),
             });
         }
         for k in 1..=flags.aerosols {
