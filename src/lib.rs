@@ -20,7 +20,7 @@
 //! - [`itd`] — thickness-distribution physics: category bounds, participation, ridged-ice
 //!   redistribution, ice strength, the ridging step, on plain per-column slices;
 //! - [`io`] — files (JSON states and summaries, CSV time series, NetCDF distributions);
-//! - [`plot`] — figures;
+//! - `plot` — figures (feature `plot`, on by default with `cli`);
 //! - [`ffi`] — the C ABI (`include/pressridge.h`) for C and Fortran host models;
 //! - [`table`] — regressions of ridging ensembles (work and potential energy against ridged
 //!   volume, eqs 13–16) for tabulation.
@@ -129,6 +129,7 @@ pub mod io;
 pub mod itd;
 pub mod limits;
 pub mod observe;
+#[cfg(feature = "plot")]
 pub mod plot;
 pub mod record;
 pub mod scene;
