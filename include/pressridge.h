@@ -52,7 +52,7 @@
 
 // Version of the C ABI (the layout of the structs and the function signatures). Bumped on
 // every incompatible change; compare with [`pressridge_abi_version`] at run time.
-#define PRESSRIDGE_ABI_VERSION 1
+#define PRESSRIDGE_ABI_VERSION 2
 
 // Participation function of Thorndike et al. (1975), G* (CICE `krdg_partic = 0`).
 #define PRESSRIDGE_PARTICIPATION_THORNDIKE 0
@@ -114,6 +114,18 @@
 // Tracer flag: brine height fraction `fbri` (on ice volume; 1 where there is no ice),
 // Icepack `tr_brine`.
 #define PRESSRIDGE_TRACER_BRINE 128
+
+// `PressridgeTracers::bgc_kind`: no biogeochemical tracers.
+#define PRESSRIDGE_BGC_NONE 0
+
+// `PressridgeTracers::bgc_kind`: skeletal-layer bio tracers, one value each on ice area,
+// Icepack `skl_bgc`.
+#define PRESSRIDGE_BGC_SKELETAL 1
+
+// `PressridgeTracers::bgc_kind`: vertically resolved bio tracers, `nblyr + 1` values on the
+// brine grid and two in the snow each, Icepack `z_tracers` (needs
+// `PRESSRIDGE_TRACER_BRINE`).
+#define PRESSRIDGE_BGC_VERTICAL 2
 
 // A C_f table: C_f (dimensionless) against the ridging ice's thickness (m), linear between
 // nodes, clamped (and flagged) outside. Opaque; create with [`pressridge_cf_table_open`] or
@@ -265,6 +277,10 @@ typedef struct PressridgeOceanFluxes {
   // Water isotopes into the ocean per species (kg m⁻² s⁻¹), Icepack `fiso_ocn`; the first
   // `n_iso` values are added to.
   double fiso_ocn[3];
+  // Biogeochemical flux into the ocean per bio tracer (the tracer's unit times m s⁻¹:
+  // mmol m⁻² s⁻¹, kg m⁻² s⁻¹ for aerosols), Icepack `flux_bio`; the first `nbtrcr` values
+  // are added to.
+  double flux_bio[29];
 } PressridgeOceanFluxes;
 
 // Cell diagnostics of one ridging step (all written).
@@ -347,6 +363,9 @@ typedef struct PressridgeCellArrays {
   // Water-isotope flux to the ocean (kg m⁻² s⁻¹), `n_iso·ncol` values
   // (`fiso_ocn(n_iso, ncol)`), added to. Null: not returned.
   double *fiso_ocn;
+  // Biogeochemical flux to the ocean (mmol or kg m⁻² s⁻¹), `nbtrcr·ncol` values
+  // (`flux_bio(nbtrcr, ncol)`), added to. Null: not returned.
+  double *flux_bio;
 } PressridgeCellArrays;
 
 // Thermodynamic constants and clean-up thresholds of the ridging step (the fields of
@@ -409,6 +428,22 @@ typedef struct PressridgeTracers {
   const int32_t *host_nt_strata;
   // Number of tracers in the host's tables.
   int64_t host_ntrcr;
+  // Biogeochemical tracers: `PRESSRIDGE_BGC_NONE` (0, the fields below unused),
+  // `PRESSRIDGE_BGC_SKELETAL` or `PRESSRIDGE_BGC_VERTICAL`.
+  int32_t bgc_kind;
+  // Tracers appended after every other for the biogeochemistry (Icepack's
+  // `ntrcr - ntrcr_o`: the bio tracers and what goes with them, e.g. `zbgc_frac`); they
+  // are carried on ice volume unless the host tables say otherwise.
+  int32_t bgc_ntrcr;
+  // Bio grid layers in the ice, Icepack `nblyr` (≥ 1; vertical tracers only).
+  int32_t nblyr;
+  // Skeletal layer thickness (m, > 0), Icepack `sk_l` (skeletal tracers only).
+  double sk_l;
+  // Number of bio tracers, Icepack `nbtrcr` (1–29), the length of `bio_index`.
+  int32_t nbtrcr;
+  // Per bio tracer, its first tracer number (1-based, among all the tracers), Icepack
+  // `bio_index(1:nbtrcr)`; each lies among the `bgc_ntrcr` appended tracers.
+  const int32_t *bio_index;
 } PressridgeTracers;
 
 #ifdef __cplusplus
@@ -642,7 +677,7 @@ int32_t pressridge_step_params_default(struct PressridgeStepParams *params);
 // `iage`, `FY`, `alvl`, `vlvl`, `apnd`, `hpnd`, `ipnd`, `smice(nslyr)`, `smliq(nslyr)`,
 // `rhos(nslyr)`, `rsnw(nslyr)`, `fsd(nfsd)`, `isosno(n_iso)`, `isoice(n_iso)`, four aerosol
 // tracers per species (snow surface layer and interior, ice surface layer and interior),
-// `fbri`. `options` (null: CICE
+// `fbri`, then `tracers.bgc_ntrcr` biogeochemical tracers (`bgc_kind`). `options` (null: CICE
 // defaults) gives the participation, redistribution and ridging parameters (its strength
 // fields are not used), `step_params` (null: Icepack defaults) the thermodynamic constants;
 // `cleanup` and `rebin` are Icepack's `docleanup`, `dorebin` (nonzero = true). Writes the
@@ -650,8 +685,9 @@ int32_t pressridge_step_params_default(struct PressridgeStepParams *params);
 //
 // # Safety
 // `tracers`, `options` and `step_params` must be null or valid (with `tracers`' host tables
-// null or holding `host_ntrcr` values each, 3· and 2· for `trcr_base` and `nt_strata`);
-// `ridger` valid for one write.
+// null or holding `host_ntrcr` values each, 3· and 2· for `trcr_base` and `nt_strata`, and
+// `bio_index` holding `nbtrcr` values when `bgc_kind` is not 0); `ridger` valid for one
+// write.
 int32_t pressridge_ridger_new(int64_t ncat,
                               int64_t nilyr,
                               int64_t nslyr,

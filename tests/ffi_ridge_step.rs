@@ -243,6 +243,7 @@ fn batched_cells_equal_cell_calls_and_errors_name_the_cell() {
         dvirdgdt: null_mut(),
         faero_ocn: null_mut(),
         fiso_ocn: null_mut(),
+        flux_bio: null_mut(),
     };
     // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
     // entry point checks nulls, sizes and handles itself (the C ABI's contract).
@@ -504,6 +505,7 @@ fn aerosol_and_isotope_fluxes_through_the_c_abi() {
         dvirdgdt: null_mut(),
         faero_ocn: faero.as_mut_ptr(),
         fiso_ocn: fiso.as_mut_ptr(),
+        flux_bio: null_mut(),
     };
     // SAFETY: as above.
     let rc = unsafe {

@@ -23,7 +23,7 @@ module pressridge_icepack
   use, intrinsic :: iso_fortran_env, only: int64
   use pressridge
   use icepack_intfc, only: icepack_query_tracer_flags, icepack_query_tracer_sizes, &
-       icepack_query_parameters
+       icepack_query_tracer_indices, icepack_query_parameters, icepack_max_nbtrcr
   ! Icepack's own error reporting (module icepack_warnings; icepack_intfc does not re-export
   ! these two).
   use icepack_warnings, only: icepack_warnings_add, icepack_warnings_setabort
@@ -37,6 +37,10 @@ module pressridge_icepack
   type :: setup
      integer :: ncat = -1, ntrcr = -1, nilyr = -1, nslyr = -1, n_aero = -1, n_iso = -1
      integer :: nfsd = -1, kp = -1, kr = -1
+     ! Biogeochemistry: PRESSRIDGE_BGC_*, tracers after ntrcr_o, nblyr, bio_index(1:nbtrcr).
+     integer :: bgc_kind = 0, bgc_ntrcr = 0, nblyr = 0, nbtrcr = 0
+     integer, allocatable :: bio_index(:)
+     real(c_double) :: sk_l = 0
      real(c_double) :: mu_rdg = -1, refill(3) = 0
      !> tr_iage, tr_FY, tr_lvl, tr_pond_lvl, tr_snow, tr_pond_topo, tr_pond_sealvl, tr_brine
      logical :: flags(8) = .false., cleanup = .true., rebin = .true.
@@ -63,8 +67,8 @@ contains
   end subroutine pressridge_icepack_refresh
 
   !> Icepack's icepack_step_ridge (argument names, meanings and optional arguments as in
-  !> Icepack 1.5): the complete ridging step of one cell by pressridge. flux_bio is accepted
-  !> and left unchanged (biogeochemical tracers are refused).
+  !> Icepack 1.5): the complete ridging step of one cell by pressridge, biogeochemical
+  !> tracers (skl_bgc or z_tracers) and their flux_bio included.
   subroutine pressridge_icepack_step_ridge(dt, ndtd, hin_max, rdg_conv, rdg_shear, aicen, &
        trcrn, vicen, vsnon, aice0, trcr_depend, trcr_base, n_trcr_strata, nt_strata, &
        dardg1dt, dardg2dt, dvirdgdt, opening, fpond, fresh, fhocn, faero_ocn, fiso_ocn, &
@@ -111,11 +115,16 @@ contains
     associate (s => setups(k))
       fa(1:s%n_aero) = faero_ocn(1:s%n_aero)
       if (present(fiso_ocn)) fi(1:s%n_iso) = fiso_ocn(1:s%n_iso)
+      if (size(flux_bio) < s%nbtrcr) then
+         call abort_with(subname//' flux_bio is shorter than nbtrcr')
+         return
+      end if
       call pressridge_step_ridge(s%ridger, dt, ndtd, hin_max, rdg_conv, rdg_shear, aicen, &
            trcrn, vicen, vsnon, aice0, dardg1dt, dardg2dt, dvirdgdt, opening, fpond, fresh, &
            fhocn, aparticn, krdgn, aredistn, vredistn, dardg1ndt, dardg2ndt, dvirdgndt, &
            araftn, vraftn, aice, fsalt, first_ice, closing, Tf, dpnd_ridge, &
-           faero_ocn=fa(1:s%n_aero), fiso_ocn=fi(1:s%n_iso), ierr=e)
+           faero_ocn=fa(1:s%n_aero), fiso_ocn=fi(1:s%n_iso), &
+           flux_bio=flux_bio(1:s%nbtrcr), ierr=e)
       if (e /= PRESSRIDGE_OK) then
          call abort_with(subname//' '//trim(pressridge_last_error_message()))
          return
@@ -168,15 +177,17 @@ contains
     real(c_double), intent(in) :: trcr_base(:, :)
     type(setup) :: want
     logical :: iage, fy, lvl, pond_lvl, snow, pond_topo, pond_sealvl, brine, fsd, iso, aero
-    integer :: nilyr, nslyr, nblyr, n_aero, n_iso, nbtrcr, nfsd, kp, kr
+    integer :: nilyr, nslyr, nblyr, n_aero, n_iso, nbtrcr, nfsd, kp, kr, ntrcr_o
+    integer :: bio_index(icepack_max_nbtrcr)
     real(c_double) :: mu_rdg, rhos, rhoi, lfresh, cp_ice, sal, amin, mmin, hsmin, rhosnew, &
-         rsnw_fall
-    logical :: snwgrain
+         rsnw_fall, sk_l
+    logical :: snwgrain, skl_bgc, z_tracers
     character(len=32) :: saltflux, snwredist
     character(len=*), parameter :: subname = '(pressridge_icepack_step_ridge)'
     k = 0
     call icepack_query_tracer_sizes(nilyr_out=nilyr, nslyr_out=nslyr, nblyr_out=nblyr, &
-         n_aero_out=n_aero, n_iso_out=n_iso, nbtrcr_out=nbtrcr, nfsd_out=nfsd)
+         n_aero_out=n_aero, n_iso_out=n_iso, nbtrcr_out=nbtrcr, nfsd_out=nfsd, &
+         ntrcr_o_out=ntrcr_o)
     call icepack_query_tracer_flags(tr_iage_out=iage, tr_FY_out=fy, tr_lvl_out=lvl, &
          tr_pond_lvl_out=pond_lvl, tr_pond_topo_out=pond_topo, &
          tr_pond_sealvl_out=pond_sealvl, tr_snow_out=snow, tr_brine_out=brine, &
@@ -186,11 +197,25 @@ contains
          cp_ice_out=cp_ice, ice_ref_salinity_out=sal, itd_area_min_out=amin, &
          itd_mass_min_out=mmin, hs_min_out=hsmin, saltflux_option_out=saltflux, &
          snwredist_out=snwredist, snwgrain_out=snwgrain, rhosnew_out=rhosnew, &
-         rsnw_fall_out=rsnw_fall)
+         rsnw_fall_out=rsnw_fall, skl_bgc_out=skl_bgc, z_tracers_out=z_tracers, sk_l_out=sk_l)
+    ! Biogeochemistry: the tracers after ntrcr_o, the bio tracers among them by bio_index.
     if (nbtrcr > 0) then
-       call abort_with(subname//' pressridge does not carry biogeochemical tracers yet '// &
-            '(nbtrcr > 0)')
-       return
+       if (skl_bgc) then
+          want%bgc_kind = PRESSRIDGE_BGC_SKELETAL
+          want%sk_l = sk_l
+       else if (z_tracers) then
+          want%bgc_kind = PRESSRIDGE_BGC_VERTICAL
+          want%nblyr = nblyr
+       else
+          call abort_with(subname//' nbtrcr > 0 with neither skl_bgc nor z_tracers')
+          return
+       end if
+       call icepack_query_tracer_indices(bio_index_out=bio_index)
+       want%bgc_ntrcr = ntrcr - ntrcr_o
+       want%nbtrcr = nbtrcr
+       want%bio_index = bio_index(1:nbtrcr)
+    else
+       allocate(want%bio_index(0))
     end if
     if (.not. iso) n_iso = 0
     if (.not. aero) n_aero = 0
@@ -281,7 +306,10 @@ contains
          tr_snow=want%flags(5), n_iso=want%n_iso, &
          n_aero=want%n_aero, tr_pond_topo=want%flags(6), tr_pond_sealvl=want%flags(7), &
          tr_brine=want%flags(8), nfsd=want%nfsd, rhos_empty=want%refill(1), &
-         smice_empty=want%refill(2), rsnw_empty=want%refill(3), ierr=e)
+         smice_empty=want%refill(2), rsnw_empty=want%refill(3), bgc_ntrcr=want%bgc_ntrcr, &
+         skl_bgc=want%bgc_kind == PRESSRIDGE_BGC_SKELETAL, &
+         z_tracers=want%bgc_kind == PRESSRIDGE_BGC_VERTICAL, nblyr=want%nblyr, &
+         sk_l=want%sk_l, bio_index=want%bio_index, ierr=e)
     if (e /= PRESSRIDGE_OK) then
        call abort_with(subname//' '//trim(pressridge_last_error_message()))
        return
@@ -297,6 +325,9 @@ contains
     same = a%ncat == b%ncat .and. a%ntrcr == b%ntrcr .and. a%nilyr == b%nilyr .and. &
          a%nslyr == b%nslyr .and. a%n_aero == b%n_aero .and. a%n_iso == b%n_iso .and. &
          a%nfsd == b%nfsd .and. a%kp == b%kp .and. a%kr == b%kr .and. all(a%flags .eqv. b%flags) .and. &
+         a%bgc_kind == b%bgc_kind .and. a%bgc_ntrcr == b%bgc_ntrcr .and. a%nblyr == b%nblyr .and. &
+         a%nbtrcr == b%nbtrcr .and. bits(a%sk_l) == bits(b%sk_l) .and. &
+         same_ints(a%bio_index, b%bio_index) .and. &
          (a%cleanup .eqv. b%cleanup) .and. (a%rebin .eqv. b%rebin) .and. &
          a%step%salt_flux_prognostic == b%step%salt_flux_prognostic .and. &
          all(bits(a%refill) == bits(b%refill)) .and. all(bits([a%mu_rdg, a%step%rhos, a%step%lfresh, a%step%cp_ice, &
@@ -304,6 +335,13 @@ contains
          bits([b%mu_rdg, b%step%rhos, b%step%lfresh, b%step%cp_ice, &
          b%step%ice_ref_salinity, b%step%itd_area_min, b%step%itd_mass_min, b%step%hs_min]))
   end function same
+
+  !> Whether two integer arrays have the same size and values.
+  logical function same_ints(a, b)
+    integer, intent(in) :: a(:), b(:)
+    same_ints = size(a) == size(b)
+    if (same_ints) same_ints = all(a == b)
+  end function same_ints
 
   elemental integer(int64) function bits(x)
     real(c_double), intent(in) :: x

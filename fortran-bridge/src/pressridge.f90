@@ -42,7 +42,8 @@ module pressridge
        PRESSRIDGE_CF_HIBLER1980, PRESSRIDGE_CF_FLATO1991, PRESSRIDGE_CF_CICE, &
        PRESSRIDGE_TRACER_AGE, PRESSRIDGE_TRACER_FIRST_YEAR, PRESSRIDGE_TRACER_LEVEL_ICE, &
        PRESSRIDGE_TRACER_PONDS, PRESSRIDGE_TRACER_SNOW, PRESSRIDGE_TRACER_POND_TOPO, &
-       PRESSRIDGE_TRACER_POND_SEALVL, PRESSRIDGE_TRACER_BRINE, &
+       PRESSRIDGE_TRACER_POND_SEALVL, PRESSRIDGE_TRACER_BRINE, PRESSRIDGE_BGC_NONE, &
+       PRESSRIDGE_BGC_SKELETAL, PRESSRIDGE_BGC_VERTICAL, &
        pressridge_params, pressridge_options, pressridge_cf_table, pressridge_ridge_table, &
        pressridge_run, pressridge_ridger, pressridge_step_params
   use pressridge_base_mod, only: pressridge_last_error_message, pressridge_last_error_column, &

@@ -27,7 +27,7 @@ module pressridge_cabi_mod
   integer, parameter, public :: PRESSRIDGE_ERR_NUMERICAL = 9
   integer, parameter, public :: PRESSRIDGE_ERR_PANIC = 10
   !> C ABI version these bindings were written for.
-  integer, parameter, public :: PRESSRIDGE_ABI_VERSION = 1
+  integer, parameter, public :: PRESSRIDGE_ABI_VERSION = 2
 
   ! Option codes: the values of CICE's krdg_partic, krdg_redist and kstrength.
   integer(c_int32_t), parameter, public :: PRESSRIDGE_PARTICIPATION_THORNDIKE = 0
@@ -52,6 +52,10 @@ module pressridge_cabi_mod
   integer(c_int32_t), parameter, public :: PRESSRIDGE_TRACER_POND_TOPO = 32
   integer(c_int32_t), parameter, public :: PRESSRIDGE_TRACER_POND_SEALVL = 64
   integer(c_int32_t), parameter, public :: PRESSRIDGE_TRACER_BRINE = 128
+  ! Biogeochemical tracers of the complete ridging step (Icepack skl_bgc, z_tracers).
+  integer(c_int32_t), parameter, public :: PRESSRIDGE_BGC_NONE = 0
+  integer(c_int32_t), parameter, public :: PRESSRIDGE_BGC_SKELETAL = 1
+  integer(c_int32_t), parameter, public :: PRESSRIDGE_BGC_VERTICAL = 2
 
   !> Physical constants and tunables (C struct PressridgeParams). The initial values are
   !> CICE's defaults, the same as pressridge_default_options returns (checked by the tests).
@@ -128,6 +132,7 @@ module pressridge_cabi_mod
      integer :: ntrcr = 0  !< tracers per category
      integer :: n_aero = 0 !< aerosol species
      integer :: n_iso = 0  !< water-isotope species
+     integer :: nbtrcr = 0 !< biogeochemical tracers
   end type pressridge_ridger
 
   ! The C structs the wrappers fill; not re-exported by `pressridge`.
@@ -139,12 +144,16 @@ module pressridge_cabi_mod
      type(c_ptr) :: host_trcr_depend = c_null_ptr, host_trcr_base = c_null_ptr, &
           host_n_trcr_strata = c_null_ptr, host_nt_strata = c_null_ptr
      integer(c_int64_t) :: host_ntrcr = 0
+     integer(c_int32_t) :: bgc_kind = 0, bgc_ntrcr = 0, nblyr = 0
+     real(c_double) :: sk_l = 0
+     integer(c_int32_t) :: nbtrcr = 0
+     type(c_ptr) :: bio_index = c_null_ptr
   end type c_tracers
 
   !> PressridgeOceanFluxes.
   type, bind(C) :: c_fluxes
      real(c_double) :: fresh = 0, fsalt = 0, fhocn = 0, fpond = 0, dpnd_ridge = 0
-     real(c_double) :: faero_ocn(6) = 0, fiso_ocn(3) = 0
+     real(c_double) :: faero_ocn(6) = 0, fiso_ocn(3) = 0, flux_bio(29) = 0
   end type c_fluxes
 
   !> PressridgeStepDiagnostics.
@@ -167,7 +176,7 @@ module pressridge_cabi_mod
           opening = c_null_ptr, tf = c_null_ptr, valid = c_null_ptr, fresh = c_null_ptr, &
           fsalt = c_null_ptr, fhocn = c_null_ptr, fpond = c_null_ptr, dardg1dt = c_null_ptr, &
           dardg2dt = c_null_ptr, dvirdgdt = c_null_ptr, faero_ocn = c_null_ptr, &
-          fiso_ocn = c_null_ptr
+          fiso_ocn = c_null_ptr, flux_bio = c_null_ptr
   end type c_cell_arrays
 
   !> PressridgeGrid: the layout of the per-category and per-column arrays.

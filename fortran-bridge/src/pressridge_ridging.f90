@@ -160,12 +160,17 @@ contains
   !> snwredist = 'ITD', rhos and rsnw_fall with snwgrain). host_trcr_depend(ntrcr),
   !> host_trcr_base(ntrcr, 3), host_n_trcr_strata(ntrcr), host_nt_strata(ntrcr, 2): the host's
   !> own Icepack tracer tables (all four or none; ntrcr the layout's): each tracer is then
-  !> carried as they say, as Icepack moves every tracer through them.
+  !> carried as they say, as Icepack moves every tracer through them. Biogeochemistry
+  !> (Icepack's tracers after ntrcr_o): bgc_ntrcr more tracers (ntrcr - ntrcr_o), of which
+  !> bio_index(1:nbtrcr) (1-based tracer numbers, Icepack's) start the bio tracers, skeletal
+  !> (skl_bgc, with sk_l in m) or vertically resolved (z_tracers, with nblyr; needs
+  !> tr_brine); their fluxes to the ocean go to flux_bio of the step.
   subroutine pressridge_ridger_init(ridger, ncat, nilyr, nslyr, tr_iage, tr_FY, tr_lvl, &
        tr_pond_lvl, options, docleanup, dorebin, ntrcr, trcr_depend, trcr_base, &
        n_trcr_strata, nt_strata, step_params, tr_snow, n_iso, n_aero, tr_pond_topo, &
        tr_pond_sealvl, tr_brine, nfsd, rhos_empty, smice_empty, rsnw_empty, host_trcr_depend, &
-       host_trcr_base, host_n_trcr_strata, host_nt_strata, ierr)
+       host_trcr_base, host_n_trcr_strata, host_nt_strata, bgc_ntrcr, skl_bgc, z_tracers, &
+       nblyr, sk_l, bio_index, ierr)
     type(pressridge_ridger), intent(out) :: ridger
     integer, intent(in) :: ncat, nilyr, nslyr
     logical, intent(in) :: tr_iage, tr_FY, tr_lvl, tr_pond_lvl
@@ -175,6 +180,10 @@ contains
     integer(c_int32_t), intent(in), optional, contiguous, target :: host_trcr_depend(:), &
          host_n_trcr_strata(:), host_nt_strata(:, :)
     real(c_double), intent(in), optional, contiguous, target :: host_trcr_base(:, :)
+    integer, intent(in), optional :: bgc_ntrcr, nblyr
+    logical, intent(in), optional :: skl_bgc, z_tracers
+    real(c_double), intent(in), optional :: sk_l       !< m
+    integer, intent(in), optional :: bio_index(:)
     type(pressridge_options), intent(in), optional, target :: options
     logical, intent(in), optional :: docleanup, dorebin
     type(pressridge_step_params), intent(in), optional, target :: step_params
@@ -189,6 +198,7 @@ contains
     integer(c_int64_t) :: nt, len
     type(c_ptr) :: o, sp
     type(array_arg) :: arrays(4)
+    integer(c_int32_t), allocatable, target :: bio(:)
     integer :: i
     flags = 0
     if (tr_iage) flags = flags + PRESSRIDGE_TRACER_AGE
@@ -235,6 +245,32 @@ contains
        call fail(PRESSRIDGE_ERR_BAD_VALUE, 'host tables: give all four or none', where, ierr)
        return
     end if
+    if (present(skl_bgc)) then
+       if (skl_bgc) tr%bgc_kind = PRESSRIDGE_BGC_SKELETAL
+    end if
+    if (present(z_tracers)) then
+       if (z_tracers) then
+          if (tr%bgc_kind /= PRESSRIDGE_BGC_NONE) then
+             call fail(PRESSRIDGE_ERR_BAD_VALUE, 'skl_bgc and z_tracers: one at a time', &
+                  where, ierr)
+             return
+          end if
+          tr%bgc_kind = PRESSRIDGE_BGC_VERTICAL
+       end if
+    end if
+    if (tr%bgc_kind /= PRESSRIDGE_BGC_NONE) then
+       if (.not. (present(bgc_ntrcr) .and. present(bio_index))) then
+          call fail(PRESSRIDGE_ERR_BAD_VALUE, 'biogeochemical tracers need bgc_ntrcr and &
+               &bio_index', where, ierr)
+          return
+       end if
+       tr%bgc_ntrcr = int(bgc_ntrcr, c_int32_t)
+       if (present(nblyr)) tr%nblyr = int(nblyr, c_int32_t)
+       if (present(sk_l)) tr%sk_l = sk_l
+       bio = int(bio_index, c_int32_t)
+       tr%nbtrcr = size(bio, kind=c_int32_t)
+       if (size(bio) > 0) tr%bio_index = c_loc(bio)
+    end if
     clean = 1
     rebin = 1
     if (present(docleanup)) then
@@ -258,6 +294,7 @@ contains
     ridger%ntrcr = int(nt)
     ridger%n_iso = int(tr%n_iso)
     ridger%n_aero = int(tr%n_aero)
+    ridger%nbtrcr = int(tr%nbtrcr)
     if (present(ntrcr)) ntrcr = int(nt)
     ! The tracer arrays, present ones passed on: all of the same first size, the length the C
     ! call is told (the library writes ntrcr rows), trcr_base with 3 columns, nt_strata with 2.
@@ -305,11 +342,13 @@ contains
   !> fresh, fsalt, fhocn, fpond are added to; the other diagnostics are overwritten;
   !> first_ice is set .true. for categories emptied by the clean-up. The optional
   !> per-category arrays (aparticn ... vraftn, first_ice) have ncat values each; faero_ocn
-  !> and fiso_ocn (kg m-2 s-1, added to) at least the ridger's n_aero and n_iso values.
+  !> and fiso_ocn (kg m-2 s-1, added to) at least the ridger's n_aero and n_iso values,
+  !> flux_bio (mmol or kg m-2 s-1, added to) at least its nbtrcr.
   subroutine pressridge_step_ridge(ridger, dt, ndtd, hin_max, rdg_conv, rdg_shear, aicen, &
        trcrn, vicen, vsnon, aice0, dardg1dt, dardg2dt, dvirdgdt, opening, fpond, fresh, &
        fhocn, aparticn, krdgn, aredistn, vredistn, dardg1ndt, dardg2ndt, dvirdgndt, araftn, &
-       vraftn, aice, fsalt, first_ice, closing, Tf, dpnd_ridge, faero_ocn, fiso_ocn, ierr)
+       vraftn, aice, fsalt, first_ice, closing, Tf, dpnd_ridge, faero_ocn, fiso_ocn, flux_bio, &
+       ierr)
     type(pressridge_ridger), intent(in) :: ridger
     real(c_double), intent(in) :: dt                     !< dynamics time step (s)
     integer, intent(in) :: ndtd                          !< dynamics subcycles
@@ -328,6 +367,7 @@ contains
     real(c_double), intent(in) :: Tf                     !< freezing temperature (degC)
     real(c_double), intent(out), optional :: dpnd_ridge  !< m
     real(c_double), intent(inout), optional :: faero_ocn(:), fiso_ocn(:) !< kg m-2 s-1
+    real(c_double), intent(inout), optional :: flux_bio(:) !< mmol (kg) m-2 s-1
     integer, intent(out), optional :: ierr
     character(len=*), parameter :: where = 'pressridge_step_ridge'
     type(c_fluxes) :: fl
@@ -362,12 +402,19 @@ contains
           return
        end if
     end if
+    if (present(flux_bio)) then
+       if (size(flux_bio) < ridger%nbtrcr) then
+          call fail(PRESSRIDGE_ERR_BAD_SIZE, 'flux_bio needs nbtrcr values', where, ierr)
+          return
+       end if
+    end if
     fl%fresh = fresh
     fl%fsalt = fsalt
     fl%fhocn = fhocn
     fl%fpond = fpond
     if (present(faero_ocn)) fl%faero_ocn(1:ridger%n_aero) = faero_ocn(1:ridger%n_aero)
     if (present(fiso_ocn)) fl%fiso_ocn(1:ridger%n_iso) = fiso_ocn(1:ridger%n_iso)
+    if (present(flux_bio)) fl%flux_bio(1:ridger%nbtrcr) = flux_bio(1:ridger%nbtrcr)
     zapped = 0
     if (present(aparticn)) cd%aparticn = c_loc(aparticn)
     if (present(krdgn)) cd%krdgn = c_loc(krdgn)
@@ -392,6 +439,7 @@ contains
        if (present(dpnd_ridge)) dpnd_ridge = fl%dpnd_ridge
        if (present(faero_ocn)) faero_ocn(1:ridger%n_aero) = fl%faero_ocn(1:ridger%n_aero)
        if (present(fiso_ocn)) fiso_ocn(1:ridger%n_iso) = fl%fiso_ocn(1:ridger%n_iso)
+       if (present(flux_bio)) flux_bio(1:ridger%nbtrcr) = fl%flux_bio(1:ridger%nbtrcr)
        if (present(dardg1dt)) dardg1dt = d%dardg1dt
        if (present(dardg2dt)) dardg2dt = d%dardg2dt
        if (present(dvirdgdt)) dvirdgdt = d%dvirdgdt
@@ -405,11 +453,11 @@ contains
   !> (default -1.8), fluxes fresh, fsalt, fhocn, fpond(ncol) (added to), rates dardg1dt,
   !> dardg2dt, dvirdgdt(ncol), and closing with opening (ncol, SIS2 convention; opening is
   !> also returned in the CICE convention), each optional array of ncol values, and the
-  !> aerosol and isotope fluxes faero_ocn(n_aero, ncol), fiso_ocn(n_iso, ncol) (added to).
-  !> hin_max(0:ncat) is not modified.
+  !> aerosol, isotope and biogeochemical fluxes faero_ocn(n_aero, ncol), fiso_ocn(n_iso,
+  !> ncol), flux_bio(nbtrcr, ncol) (added to). hin_max(0:ncat) is not modified.
   subroutine pressridge_step_ridge_cells(ridger, dt, ndtd, hin_max, rdg_conv, rdg_shear, &
        aicen, trcrn, vicen, vsnon, aice0, aice, Tf, fresh, fsalt, fhocn, fpond, dardg1dt, &
-       dardg2dt, dvirdgdt, closing, opening, faero_ocn, fiso_ocn, ierr)
+       dardg2dt, dvirdgdt, closing, opening, faero_ocn, fiso_ocn, flux_bio, ierr)
     type(pressridge_ridger), intent(in) :: ridger
     real(c_double), intent(in) :: dt
     integer, intent(in) :: ndtd
@@ -422,7 +470,7 @@ contains
     real(c_double), intent(out), optional, contiguous, target :: dardg1dt(:), dardg2dt(:), &
          dvirdgdt(:)
     real(c_double), intent(inout), optional, contiguous, target :: faero_ocn(:, :), &
-         fiso_ocn(:, :)
+         fiso_ocn(:, :), flux_bio(:, :)
     integer, intent(out), optional :: ierr
     character(len=*), parameter :: where = 'pressridge_step_ridge_cells'
     type(c_cell_arrays) :: c
@@ -457,6 +505,13 @@ contains
           return
        end if
        if (ridger%n_iso > 0) c%fiso_ocn = c_loc(fiso_ocn)
+    end if
+    if (present(flux_bio)) then
+       if (any(shape(flux_bio) /= [ridger%nbtrcr, ncol])) then
+          call fail(PRESSRIDGE_ERR_BAD_SIZE, 'flux_bio must be (nbtrcr, ncol)', where, ierr)
+          return
+       end if
+       if (ridger%nbtrcr > 0) c%flux_bio = c_loc(flux_bio)
     end if
     c%rdg_conv = c_loc(rdg_conv)
     c%rdg_shear = c_loc(rdg_shear)

@@ -25,7 +25,9 @@ end module icepack_warnings
 module icepack_intfc
   implicit none
   private
-  public :: icepack_query_tracer_flags, icepack_query_tracer_sizes, icepack_query_parameters
+  public :: icepack_query_tracer_flags, icepack_query_tracer_sizes, icepack_query_parameters, &
+       icepack_query_tracer_indices
+  integer, parameter, public :: icepack_max_nbtrcr = 29
   integer, parameter :: dp = kind(1.0d0)
   !> Tracer flags: iage, FY, lvl, pond_lvl, pond_topo, pond_sealvl, snow, brine, fsd, iso, aero.
   logical, public, save :: stub_flags(11) = .false.
@@ -33,6 +35,11 @@ module icepack_intfc
   integer, public, save :: stub_sizes(7) = [7, 1, 1, 0, 0, 0, 1]
   integer, public, save :: stub_kstrength = 1, stub_krdg_partic = 1, stub_krdg_redist = 1
   real(dp), public, save :: stub_mu_rdg = 3.0_dp
+  ! Biogeochemistry: ntrcr_o (0: none set), skl_bgc, z_tracers, sk_l (m), bio_index.
+  integer, public, save :: stub_ntrcr_o = 0
+  logical, public, save :: stub_skl_bgc = .false., stub_z_tracers = .false.
+  real(dp), public, save :: stub_sk_l = 0.03_dp
+  integer, public, save :: stub_bio_index(icepack_max_nbtrcr) = 0
 contains
   subroutine icepack_query_tracer_flags(tr_iage_out, tr_FY_out, tr_lvl_out, tr_pond_lvl_out, &
        tr_pond_topo_out, tr_pond_sealvl_out, tr_snow_out, tr_brine_out, tr_fsd_out, &
@@ -54,9 +61,10 @@ contains
   end subroutine icepack_query_tracer_flags
 
   subroutine icepack_query_tracer_sizes(nilyr_out, nslyr_out, nblyr_out, n_aero_out, &
-       n_iso_out, nbtrcr_out, nfsd_out)
+       n_iso_out, nbtrcr_out, nfsd_out, ntrcr_o_out)
     integer, intent(out), optional :: nilyr_out, nslyr_out, nblyr_out, n_aero_out, &
-         n_iso_out, nbtrcr_out, nfsd_out
+         n_iso_out, nbtrcr_out, nfsd_out, ntrcr_o_out
+    if (present(ntrcr_o_out)) ntrcr_o_out = stub_ntrcr_o
     if (present(nilyr_out)) nilyr_out = stub_sizes(1)
     if (present(nslyr_out)) nslyr_out = stub_sizes(2)
     if (present(nblyr_out)) nblyr_out = stub_sizes(3)
@@ -66,18 +74,26 @@ contains
     if (present(nfsd_out)) nfsd_out = stub_sizes(7)
   end subroutine icepack_query_tracer_sizes
 
+  subroutine icepack_query_tracer_indices(bio_index_out)
+    integer, intent(out), optional :: bio_index_out(:)
+    if (present(bio_index_out)) bio_index_out = stub_bio_index
+  end subroutine icepack_query_tracer_indices
+
   !> Icepack's defaults for every value the drop-in reads.
   subroutine icepack_query_parameters(kstrength_out, krdg_partic_out, krdg_redist_out, &
        mu_rdg_out, Cf_out, Pstar_out, Cstar_out, rhoi_out, rhow_out, rhos_out, gravit_out, &
        Lfresh_out, cp_ice_out, ice_ref_salinity_out, itd_area_min_out, itd_mass_min_out, &
        hs_min_out, saltflux_option_out, snwredist_out, snwgrain_out, rhosnew_out, &
-       rsnw_fall_out)
+       rsnw_fall_out, skl_bgc_out, z_tracers_out, sk_l_out)
     integer, intent(out), optional :: kstrength_out, krdg_partic_out, krdg_redist_out
     real(dp), intent(out), optional :: mu_rdg_out, Cf_out, Pstar_out, Cstar_out, rhoi_out, &
          rhow_out, rhos_out, gravit_out, Lfresh_out, cp_ice_out, ice_ref_salinity_out, &
-         itd_area_min_out, itd_mass_min_out, hs_min_out, rhosnew_out, rsnw_fall_out
+         itd_area_min_out, itd_mass_min_out, hs_min_out, rhosnew_out, rsnw_fall_out, sk_l_out
     character(len=*), intent(out), optional :: saltflux_option_out, snwredist_out
-    logical, intent(out), optional :: snwgrain_out
+    logical, intent(out), optional :: snwgrain_out, skl_bgc_out, z_tracers_out
+    if (present(skl_bgc_out)) skl_bgc_out = stub_skl_bgc
+    if (present(z_tracers_out)) z_tracers_out = stub_z_tracers
+    if (present(sk_l_out)) sk_l_out = stub_sk_l
     if (present(kstrength_out)) kstrength_out = stub_kstrength
     if (present(krdg_partic_out)) krdg_partic_out = stub_krdg_partic
     if (present(krdg_redist_out)) krdg_redist_out = stub_krdg_redist

@@ -1,7 +1,8 @@
 !> The Icepack drop-in (icepack/pressridge_icepack.F90) built against the stand-in of
 !> Icepack's interface (icepack_stub.F90), without Icepack: with Icepack's argument lists it
 !> gives pressridge_step_ridge's and pressridge_ice_strength's answers bit for bit, follows
-!> a change of Icepack's parameters after pressridge_icepack_refresh, and reports what it refuses through Icepack's
+!> a change of Icepack's parameters after pressridge_icepack_refresh, carries vertically
+!> resolved bio tracers and their flux_bio, and reports what it refuses through Icepack's
 !> warnings. (The drop-in against Icepack itself, every tracer group included:
 !> bench/icepack/reference/check-dropin.sh.)
 program test_dropin
@@ -9,7 +10,8 @@ program test_dropin
   use pressridge
   use pressridge_icepack, only: icepack_step_ridge => pressridge_icepack_step_ridge, &
        icepack_ice_strength => pressridge_icepack_ice_strength, pressridge_icepack_refresh
-  use icepack_intfc, only: stub_flags, stub_sizes, stub_krdg_redist, stub_mu_rdg
+  use icepack_intfc, only: stub_flags, stub_sizes, stub_krdg_redist, stub_mu_rdg, &
+       stub_ntrcr_o, stub_z_tracers, stub_bio_index
   use icepack_warnings, only: stub_aborted, stub_message
   implicit none
   integer, parameter :: nc = 5
@@ -17,7 +19,9 @@ program test_dropin
   type(pressridge_ridger) :: rg
   integer :: dep(64), nst(64), str(64, 2)
   real(c_double) :: base(64, 3), hb(0:nc), h1(0:nc), h2(0:nc)
-  real(c_double), allocatable :: t1(:, :), t2(:, :)
+  real(c_double), allocatable :: t1(:, :), t2(:, :), t3(:, :), t4(:, :)
+  real(c_double) :: fbio1(2), fbio2(29)
+  integer :: nto
   real(c_double) :: a1(nc), v1(nc), s1(nc), a2(nc), v2(nc), s2(nc), x0(nc), a01, a02, ai1, &
        ai2, fa1(2), fa2(2), fi1(1), fi2(1), fb(1), d(3, 2), op(2), fp(2), fr(2), fh(2), fs(2), &
        p1, p2, cat(nc, 9, 2), conv, shear
@@ -113,12 +117,82 @@ program test_dropin
   call icepack_ice_strength(sum(a1), sum(v1), a01, a1, v1, p2)
   call check('strength drop-in = pressridge_ice_strength (CICE defaults)', &
        e == PRESSRIDGE_OK .and. p1 == p2 .and. p1 > 0 .and. .not. stub_aborted)
-  ! What it refuses, through Icepack's warnings.
+  ! Biogeochemistry: the same layout with the brine fraction and two vertically resolved bio
+  ! tracers (z_tracers, nblyr = 1: 4 tracers each) after Icepack's ntrcr_o tracers.
+  stub_flags(8) = .true.
+  call pressridge_ridger_init(rg, nc, 7, 1, .true., .true., .true., .true., ntrcr=nto, &
+       tr_snow=.true., n_iso=1, n_aero=2, tr_brine=.true., ierr=e)
+  call pressridge_ridger_free(rg)
+  call pressridge_ridger_init(rg, nc, 7, 1, .true., .true., .true., .true., ntrcr=nt, &
+       trcr_depend=dep, trcr_base=base, n_trcr_strata=nst, nt_strata=str, tr_snow=.true., &
+       n_iso=1, n_aero=2, tr_brine=.true., bgc_ntrcr=8, z_tracers=.true., nblyr=1, &
+       bio_index=[nto + 1, nto + 5], ierr=e)
+  call check('explicit ridger with vertical bio tracers: 38 + 8 tracers', &
+       e == PRESSRIDGE_OK .and. nto == 38 .and. nt == 46)
   stub_sizes(6) = 2
+  stub_ntrcr_o = nto
+  stub_z_tracers = .true.
+  stub_bio_index(1:2) = [nto + 1, nto + 5]
+  call pressridge_icepack_refresh()
+  allocate(t3(nt, nc), t4(nt, nc))
+  do k = 1, nc
+     t3(1:37, k) = t1(1:37, k)
+     t3(38, k) = 1.0_c_double
+     t3(39:, k) = [(0.5_c_double + 0.1_c_double * (i + k), i = 39, nt)]
+  end do
+  t4 = t3
+  a1 = [(0.18_c_double, k = 1, nc)]
+  v1 = [(a1(k) * (0.3_c_double + 0.9_c_double * (k - 1)), k = 1, nc)]
+  s1 = 0.1_c_double * v1
+  a2 = a1
+  v2 = v1
+  s2 = s1
+  a01 = 1 - sum(a1)
+  a02 = a01
+  ai1 = sum(a1)
+  ai2 = ai1
+  h1 = hb
+  h2 = hb
+  fbio1 = 0
+  fbio2 = 0
+  fa1 = 0
+  fa2 = 0
+  fr = 0
+  fh = 0
+  fs = 0
+  fp = 0
+  first1 = .false.
+  first2 = .false.
+  call pressridge_step_ridge(rg, 3600.0_c_double, 1, h1, conv, shear, a1, t3, v1, s1, a01, &
+       d(1, 1), d(2, 1), d(3, 1), op(1), fp(1), fr(1), fh(1), aice=ai1, fsalt=fs(1), &
+       first_ice=first1, Tf=-1.8_c_double, faero_ocn=fa1, flux_bio=fbio1, ierr=e)
+  call check('explicit call with bio tracers steps the cell', e == PRESSRIDGE_OK)
+  call icepack_step_ridge(dt=3600.0_c_double, ndtd=1, hin_max=h2, rdg_conv=conv, &
+       rdg_shear=shear, aicen=a2, trcrn=t4, vicen=v2, vsnon=s2, aice0=a02, &
+       trcr_depend=dep(1:nt), trcr_base=base(1:nt, :), n_trcr_strata=nst(1:nt), &
+       nt_strata=str(1:nt, :), dardg1dt=d(1, 2), dardg2dt=d(2, 2), dvirdgdt=d(3, 2), &
+       opening=op(2), fpond=fp(2), fresh=fr(2), fhocn=fh(2), faero_ocn=fa2, &
+       aparticn=x0, krdgn=x0, aredistn=x0, vredistn=x0, dardg1ndt=x0, dardg2ndt=x0, &
+       dvirdgndt=x0, araftn=x0, vraftn=x0, aice=ai2, fsalt=fs(2), first_ice=first2, &
+       flux_bio=fbio2, Tf=-1.8_c_double)
+  call check('drop-in with bio tracers = explicit call, flux_bio included, bit for bit', &
+       .not. stub_aborted .and. all(a1 == a2) .and. all(v1 == v2) .and. all(s1 == s2) .and. &
+       all(t3 == t4) .and. a01 == a02 .and. fr(1) == fr(2) .and. fs(1) == fs(2) .and. &
+       all(fbio1 == fbio2(1:2)) .and. all(fbio2(3:) == 0) .and. all(fbio1 > 0))
+  call pressridge_ridger_free(rg)
+  stub_flags(8) = .false.
+  stub_ntrcr_o = 0
+  stub_bio_index = 0
+  ! Back to the 37-tracer layout (its tables are the first 37 rows of these).
+  nt = size(t2, 1)
+
+  ! What it refuses, through Icepack's warnings.
+  stub_z_tracers = .false.
   call pressridge_icepack_refresh()
   call refused_call(.true.)
-  call check('biogeochemistry (nbtrcr > 0): an abort through Icepack''s warnings naming it', &
-       stub_aborted .and. index(stub_message, 'nbtrcr') > 0)
+  call check('bio tracers of no known kind (nbtrcr > 0, neither skl_bgc nor z_tracers): an &
+       &abort through Icepack''s warnings naming them', &
+       stub_aborted .and. index(stub_message, 'skl_bgc') > 0)
   stub_sizes(6) = 0
   call pressridge_icepack_refresh()
   stub_aborted = .false.

@@ -11,17 +11,18 @@ use std::cell::RefCell;
 use super::layout::{Region, check_disjoint, check_ptr};
 use super::{FfiError, FfiResult, PRESSRIDGE_ERR_BAD_SIZE, guard, put};
 use crate::itd::{
-    Closing, ColumnMut, ItdError, MAX_AERO, MAX_ISO, OceanFluxes, StepDiagnostics, StepForcing,
-    StepWorkspace, ridge_step_column,
+    Closing, ColumnMut, ItdError, MAX_AERO, MAX_ISO, MAX_NBTRCR, OceanFluxes, StepDiagnostics,
+    StepForcing, StepWorkspace, ridge_step_column, species_counts,
 };
 
 mod ridger;
 pub use ridger::{
-    PRESSRIDGE_TRACER_AGE, PRESSRIDGE_TRACER_BRINE, PRESSRIDGE_TRACER_FIRST_YEAR,
-    PRESSRIDGE_TRACER_LEVEL_ICE, PRESSRIDGE_TRACER_POND_SEALVL, PRESSRIDGE_TRACER_POND_TOPO,
-    PRESSRIDGE_TRACER_PONDS, PRESSRIDGE_TRACER_SNOW, PressridgeRidger, PressridgeStepParams,
-    PressridgeTracers, pressridge_ridger_free, pressridge_ridger_new,
-    pressridge_ridger_tracer_field, pressridge_ridger_tracers, pressridge_step_params_default,
+    PRESSRIDGE_BGC_NONE, PRESSRIDGE_BGC_SKELETAL, PRESSRIDGE_BGC_VERTICAL, PRESSRIDGE_TRACER_AGE,
+    PRESSRIDGE_TRACER_BRINE, PRESSRIDGE_TRACER_FIRST_YEAR, PRESSRIDGE_TRACER_LEVEL_ICE,
+    PRESSRIDGE_TRACER_POND_SEALVL, PRESSRIDGE_TRACER_POND_TOPO, PRESSRIDGE_TRACER_PONDS,
+    PRESSRIDGE_TRACER_SNOW, PressridgeRidger, PressridgeStepParams, PressridgeTracers,
+    pressridge_ridger_free, pressridge_ridger_new, pressridge_ridger_tracer_field,
+    pressridge_ridger_tracers, pressridge_step_params_default,
 };
 use ridger::{bad_value, ridger_ref};
 
@@ -46,10 +47,14 @@ pub struct PressridgeOceanFluxes {
     /// Water isotopes into the ocean per species (kg m⁻² s⁻¹), Icepack `fiso_ocn`; the first
     /// `n_iso` values are added to.
     pub fiso_ocn: [f64; 3],
+    /// Biogeochemical flux into the ocean per bio tracer (the tracer's unit times m s⁻¹:
+    /// mmol m⁻² s⁻¹, kg m⁻² s⁻¹ for aerosols), Icepack `flux_bio`; the first `nbtrcr` values
+    /// are added to.
+    pub flux_bio: [f64; 29],
 }
 
 // The C struct's arrays hold every species a layout may have.
-const _: () = assert!(MAX_AERO == 6 && MAX_ISO == 3);
+const _: () = assert!(MAX_AERO == 6 && MAX_ISO == 3 && MAX_NBTRCR == 29);
 
 /// Cell diagnostics of one ridging step (all written).
 #[repr(C)]
@@ -296,9 +301,7 @@ pub unsafe extern "C" fn pressridge_ridge_cell(
                 dpnd_ridge: f.dpnd_ridge,
                 faero_ocn: f.faero_ocn,
                 fiso_ocn: f.fiso_ocn,
-                // The C set-up carries no bio tracers (pressridge_ridger_new), so the step
-                // leaves flux_bio at zero.
-                ..OceanFluxes::default()
+                flux_bio: f.flux_bio,
             }
         };
         with_step_scratch(ncat, nt, |ws| -> FfiResult<()> {
@@ -317,6 +320,7 @@ pub unsafe extern "C" fn pressridge_ridge_cell(
                     dpnd_ridge: fl.dpnd_ridge,
                     faero_ocn: fl.faero_ocn,
                     fiso_ocn: fl.fiso_ocn,
+                    flux_bio: fl.flux_bio,
                 });
             }
             if !diag.is_null() {
@@ -368,6 +372,9 @@ pub struct PressridgeCellArrays {
     /// Water-isotope flux to the ocean (kg m⁻² s⁻¹), `n_iso·ncol` values
     /// (`fiso_ocn(n_iso, ncol)`), added to. Null: not returned.
     pub fiso_ocn: *mut f64,
+    /// Biogeochemical flux to the ocean (mmol or kg m⁻² s⁻¹), `nbtrcr·ncol` values
+    /// (`flux_bio(nbtrcr, ncol)`), added to. Null: not returned.
+    pub flux_bio: *mut f64,
 }
 
 /// The ridging step of `ncol` cells in one call (arrays Fortran-ordered and contiguous:
@@ -430,6 +437,7 @@ pub unsafe extern "C" fn pressridge_ridge_cells(
             Region::new(c.dvirdgdt, n, "cells.dvirdgdt"),
             Region::new(c.faero_ocn, r.layout.n_aero() * n, "cells.faero_ocn"),
             Region::new(c.fiso_ocn, r.layout.n_iso() * n, "cells.fiso_ocn"),
+            Region::new(c.flux_bio, r.layout.n_bio() * n, "cells.flux_bio"),
         ];
         let read = [
             Region::new(hin_max, ncat + 1, "hin_max"),
@@ -483,7 +491,7 @@ pub unsafe extern "C" fn pressridge_ridge_cells(
             opt_out(c.fhocn, "cells.fhocn")?,
             opt_out(c.fpond, "cells.fpond")?,
         ];
-        let (na, ni) = (r.layout.n_aero(), r.layout.n_iso());
+        let [na, ni, nb] = species_counts(&r.layout);
         let species_out = |p: *mut f64, k: usize, what: &str| -> FfiResult<Option<&mut [f64]>> {
             if p.is_null() || k == 0 {
                 Ok(None)
@@ -493,6 +501,7 @@ pub unsafe extern "C" fn pressridge_ridge_cells(
         };
         let mut faero = species_out(c.faero_ocn, na, "cells.faero_ocn")?;
         let mut fiso = species_out(c.fiso_ocn, ni, "cells.fiso_ocn")?;
+        let mut fbio = species_out(c.flux_bio, nb, "cells.flux_bio")?;
         let mut rates = [
             opt_out(c.dardg1dt, "cells.dardg1dt")?,
             opt_out(c.dardg2dt, "cells.dardg2dt")?,
@@ -533,6 +542,9 @@ pub unsafe extern "C" fn pressridge_ridge_cells(
                 if let Some(x) = fiso.as_ref() {
                     fl.fiso_ocn[..ni].copy_from_slice(&x[i * ni..(i + 1) * ni]);
                 }
+                if let Some(x) = fbio.as_ref() {
+                    fl.flux_bio[..nb].copy_from_slice(&x[i * nb..(i + 1) * nb]);
+                }
                 let mut col = ColumnMut {
                     aicen: &mut a[i * ncat..(i + 1) * ncat],
                     vicen: &mut v[i * ncat..(i + 1) * ncat],
@@ -564,6 +576,9 @@ pub unsafe extern "C" fn pressridge_ridge_cells(
                 }
                 if let Some(x) = fiso.as_mut() {
                     x[i * ni..(i + 1) * ni].copy_from_slice(&fl.fiso_ocn[..ni]);
+                }
+                if let Some(x) = fbio.as_mut() {
+                    x[i * nb..(i + 1) * nb].copy_from_slice(&fl.flux_bio[..nb]);
                 }
             }
             Ok(())

@@ -10,7 +10,10 @@ use super::super::layout::check_ptr;
 use super::super::{
     FfiError, FfiResult, PRESSRIDGE_ERR_BAD_SIZE, PRESSRIDGE_ERR_BAD_VALUE, guard, put,
 };
-use crate::itd::{CiceTracerFlags, RidgeStepOptions, RidgeStepParams, SaltFlux, TracerLayout};
+use crate::itd::{
+    BgcKind, BgcTracers, CiceTracerFlags, MAX_NBTRCR, RidgeStepOptions, RidgeStepParams, SaltFlux,
+    TracerLayout,
+};
 
 /// Tracer flag: ice age `iage` (s, on ice volume), Icepack `tr_iage`.
 pub const PRESSRIDGE_TRACER_AGE: i32 = 1;
@@ -32,6 +35,16 @@ pub const PRESSRIDGE_TRACER_POND_SEALVL: i32 = 64;
 /// Tracer flag: brine height fraction `fbri` (on ice volume; 1 where there is no ice),
 /// Icepack `tr_brine`.
 pub const PRESSRIDGE_TRACER_BRINE: i32 = 128;
+
+/// `PressridgeTracers::bgc_kind`: no biogeochemical tracers.
+pub const PRESSRIDGE_BGC_NONE: i32 = 0;
+/// `PressridgeTracers::bgc_kind`: skeletal-layer bio tracers, one value each on ice area,
+/// Icepack `skl_bgc`.
+pub const PRESSRIDGE_BGC_SKELETAL: i32 = 1;
+/// `PressridgeTracers::bgc_kind`: vertically resolved bio tracers, `nblyr + 1` values on the
+/// brine grid and two in the snow each, Icepack `z_tracers` (needs
+/// `PRESSRIDGE_TRACER_BRINE`).
+pub const PRESSRIDGE_BGC_VERTICAL: i32 = 2;
 
 /// The optional tracers of a ridging set-up ([`pressridge_ridger_new`]); all zero and null:
 /// none.
@@ -68,6 +81,22 @@ pub struct PressridgeTracers {
     pub host_nt_strata: *const i32,
     /// Number of tracers in the host's tables.
     pub host_ntrcr: i64,
+    /// Biogeochemical tracers: `PRESSRIDGE_BGC_NONE` (0, the fields below unused),
+    /// `PRESSRIDGE_BGC_SKELETAL` or `PRESSRIDGE_BGC_VERTICAL`.
+    pub bgc_kind: i32,
+    /// Tracers appended after every other for the biogeochemistry (Icepack's
+    /// `ntrcr - ntrcr_o`: the bio tracers and what goes with them, e.g. `zbgc_frac`); they
+    /// are carried on ice volume unless the host tables say otherwise.
+    pub bgc_ntrcr: i32,
+    /// Bio grid layers in the ice, Icepack `nblyr` (≥ 1; vertical tracers only).
+    pub nblyr: i32,
+    /// Skeletal layer thickness (m, > 0), Icepack `sk_l` (skeletal tracers only).
+    pub sk_l: f64,
+    /// Number of bio tracers, Icepack `nbtrcr` (1–29), the length of `bio_index`.
+    pub nbtrcr: i32,
+    /// Per bio tracer, its first tracer number (1-based, among all the tracers), Icepack
+    /// `bio_index(1:nbtrcr)`; each lies among the `bgc_ntrcr` appended tracers.
+    pub bio_index: *const i32,
 }
 
 impl Default for PressridgeTracers {
@@ -85,6 +114,12 @@ impl Default for PressridgeTracers {
             host_n_trcr_strata: std::ptr::null(),
             host_nt_strata: std::ptr::null(),
             host_ntrcr: 0,
+            bgc_kind: PRESSRIDGE_BGC_NONE,
+            bgc_ntrcr: 0,
+            nblyr: 0,
+            sk_l: 0.0,
+            nbtrcr: 0,
+            bio_index: std::ptr::null(),
         }
     }
 }
@@ -198,7 +233,7 @@ pub(super) fn bad_value(msg: String) -> FfiError {
 /// `iage`, `FY`, `alvl`, `vlvl`, `apnd`, `hpnd`, `ipnd`, `smice(nslyr)`, `smliq(nslyr)`,
 /// `rhos(nslyr)`, `rsnw(nslyr)`, `fsd(nfsd)`, `isosno(n_iso)`, `isoice(n_iso)`, four aerosol
 /// tracers per species (snow surface layer and interior, ice surface layer and interior),
-/// `fbri`. `options` (null: CICE
+/// `fbri`, then `tracers.bgc_ntrcr` biogeochemical tracers (`bgc_kind`). `options` (null: CICE
 /// defaults) gives the participation, redistribution and ridging parameters (its strength
 /// fields are not used), `step_params` (null: Icepack defaults) the thermodynamic constants;
 /// `cleanup` and `rebin` are Icepack's `docleanup`, `dorebin` (nonzero = true). Writes the
@@ -206,8 +241,9 @@ pub(super) fn bad_value(msg: String) -> FfiError {
 ///
 /// # Safety
 /// `tracers`, `options` and `step_params` must be null or valid (with `tracers`' host tables
-/// null or holding `host_ntrcr` values each, 3· and 2· for `trcr_base` and `nt_strata`);
-/// `ridger` valid for one write.
+/// null or holding `host_ntrcr` values each, 3· and 2· for `trcr_base` and `nt_strata`, and
+/// `bio_index` holding `nbtrcr` values when `bgc_kind` is not 0); `ridger` valid for one
+/// write.
 #[unsafe(no_mangle)]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn pressridge_ridger_new(
@@ -267,6 +303,8 @@ pub unsafe extern "C" fn pressridge_ridger_new(
             brine: tracer_flags & PRESSRIDGE_TRACER_BRINE != 0,
         };
         let mut layout = TracerLayout::cice(nilyr as usize, nslyr as usize, flags)?;
+        // SAFETY: bgc_layout reads `bio_index` only as the caller promised.
+        layout = bgc_layout(layout, &t)?;
         for (name, v) in [
             ("rhos", t.rhos_empty),
             ("smice", t.smice_empty),
@@ -352,6 +390,53 @@ pub unsafe extern "C" fn pressridge_ridger_free(ridger: *mut PressridgeRidger) -
         }
         Ok(())
     })
+}
+
+/// `layout` with the biogeochemical tracers of `t` (none when `t.bgc_kind` is 0).
+///
+/// # Safety
+/// With `t.bgc_kind` not 0, `t.bio_index` must be null or hold `t.nbtrcr` values.
+unsafe fn bgc_layout(layout: TracerLayout, t: &PressridgeTracers) -> FfiResult<TracerLayout> {
+    let kind = match t.bgc_kind {
+        PRESSRIDGE_BGC_NONE => return Ok(layout),
+        PRESSRIDGE_BGC_SKELETAL => BgcKind::Skeletal { sk_l: t.sk_l },
+        PRESSRIDGE_BGC_VERTICAL => BgcKind::Vertical {
+            nblyr: usize::try_from(t.nblyr)
+                .map_err(|_| bad_value(format!("tracers.nblyr = {}: must be >= 1", t.nblyr)))?,
+        },
+        k => {
+            return Err(bad_value(format!(
+                "tracers.bgc_kind = {k}: must be PRESSRIDGE_BGC_NONE (0), _SKELETAL (1) or \
+                 _VERTICAL (2)"
+            )));
+        }
+    };
+    if !(1..=MAX_NBTRCR as i32).contains(&t.nbtrcr) {
+        return Err(bad_value(format!(
+            "tracers.nbtrcr = {}: must be 1 to {MAX_NBTRCR} with bio tracers",
+            t.nbtrcr
+        )));
+    }
+    let extra = usize::try_from(t.bgc_ntrcr)
+        .map_err(|_| bad_value(format!("tracers.bgc_ntrcr = {}: must be >= 0", t.bgc_ntrcr)))?;
+    check_ptr(t.bio_index, "tracers.bio_index")?;
+    // SAFETY: non-null, and holds nbtrcr (1..=29, checked) values by the caller's promise.
+    let one_based = unsafe { std::slice::from_raw_parts(t.bio_index, t.nbtrcr as usize) };
+    let bio_index = one_based
+        .iter()
+        .enumerate()
+        .map(|(m, &b)| {
+            usize::try_from(b)
+                .ok()
+                .and_then(|b| b.checked_sub(1))
+                .ok_or_else(|| {
+                    bad_value(format!(
+                        "tracers.bio_index[{m}] = {b}: tracer numbers count from 1"
+                    ))
+                })
+        })
+        .collect::<FfiResult<Vec<_>>>()?;
+    Ok(layout.with_bgc(extra, BgcTracers { kind, bio_index })?)
 }
 
 pub(super) unsafe fn ridger_ref<'a>(r: *const PressridgeRidger) -> FfiResult<&'a PressridgeRidger> {

@@ -11,8 +11,9 @@
 #        icepack_ice_strength => pressridge_icepack_ice_strength
 # (the one line a host changes), and a call of pressridge_icepack_refresh() after each case's
 # icepack_init_parameters (the driver changes Icepack's parameters between calls, which a
-# host does not), then runs the snow, isotope and aerosol cases
-# (make_reference.py) through both and compares every output. Prints a line per case and
+# host does not), then runs the reference cases (make_reference.py) in four tracer layouts
+# (snow, isotopes and aerosols; topography ponds, floe size and brine; the latter with
+# vertically resolved and with skeletal bio tracers) through both and compares every output. Prints a line per case and
 # `drop-in: N of N cases bit-identical` last (the typical and hard cases; the stress cases,
 # where Icepack returns negative amounts, are listed with what each does); exit status 1 if
 # any differs.
@@ -30,11 +31,14 @@ FFLAGS="-O2 -ffree-line-length-none"
 mkdir -p "$BUILD"
 # Icepack as the reference data were built, and the reference driver on it.
 BUILD=$BUILD/icepack "$HERE/make-reference.sh" "$SRC" "$BUILD/icepack.jsonl" > /dev/null
-BUILD=$BUILD/icepack "$HERE/make-reference.sh" "$SRC" "$BUILD/icepack_topo.jsonl" topo > /dev/null
+for variant in topo bgc skl; do
+  BUILD=$BUILD/icepack "$HERE/make-reference.sh" "$SRC" "$BUILD/icepack_$variant.jsonl" $variant > /dev/null
+done
 cd "$BUILD"
 cp icepack/icepack_*.o icepack/*.mod .
 LIB=$ROOT/target/release
-[ -f "$LIB/libpressridge.so" ] || (cd "$ROOT" && cargo build --release --lib)
+# The library as a host builds it (a no-op when it is current).
+(cd "$ROOT" && cargo build --release --lib --no-default-features)
 make -s -C "$ROOT/fortran-bridge" module BUILD="$BUILD" FC="$FC" FFLAGS="-O2"
 $FC $FFLAGS -c "$ROOT/fortran-bridge/icepack/pressridge_icepack.F90" -o dropin_module.o
 # The swap: one line of the driver.
@@ -45,16 +49,19 @@ diff "$HERE/ridge_reference.f90" ridge_dropin.f90 | grep '^[<>]' | sed 's/^/  sw
 $FC $FFLAGS -c ridge_dropin.f90 -o ridge_dropin.o
 $FC -o ridge_dropin ridge_dropin.o dropin_module.o pressridge*.o icepack_*.o \
   -L"$LIB" -lpressridge -Wl,-rpath,"$LIB"
-for variant in aero topo; do
+for variant in aero topo bgc skl; do
   python3 "$HERE/make_reference.py" "$BUILD/ridge_dropin" \
     "$ROOT/tests/data/icepack/ridge_step_cases.jsonl" "$BUILD/dropin_$variant.jsonl" $variant > /dev/null
 done
 python3 - "$BUILD" <<'PY'
 import json, sys
 same = n = 0
-for variant, ref in (("aero", "icepack.jsonl"), ("topo", "icepack_topo.jsonl")):
+for variant, ref in (("aero", "icepack.jsonl"), ("topo", "icepack_topo.jsonl"),
+                     ("bgc", "icepack_bgc.jsonl"), ("skl", "icepack_skl.jsonl")):
     print(f"== {variant}: " + {"aero": "41 tracers, level-ice ponds, snow, 3 isotope and 2 aerosol species",
-                                "topo": "37 tracers, topography ponds, snow refills, floe size, brine"}[variant])
+                                "topo": "37 tracers, topography ponds, snow refills, floe size, brine",
+                                "bgc": "47 tracers, the topo layout and 2 vertically resolved bio tracers",
+                                "skl": "39 tracers, the topo layout and 2 skeletal bio tracers"}[variant])
     a = [json.loads(l) for l in open(f"{sys.argv[1]}/{ref}")][1:]
     b = [json.loads(l) for l in open(f"{sys.argv[1]}/dropin_{variant}.jsonl")][1:]
     for x, y in zip(a, b):

@@ -80,9 +80,11 @@ program ridge_reference
      call icepack_warnings_clear()
      call icepack_init_parameters(krdg_partic_in=kp, krdg_redist_in=kr, mu_rdg_in=mu_rdg)
      if (fl(11) == 1) call icepack_init_parameters(snwredist_in='ITD', snwgrain_in=.true.)
+     ! ntrcr_o, the tracers before the bio ones (Icepack's ridging does not read it; a
+     ! host's driver sets it, and the pressridge drop-in asks for it).
      call icepack_init_tracer_sizes(ncat_in=ncat, nilyr_in=nilyr, nslyr_in=nslyr, &
           nblyr_in=nblyr, ntrcr_in=ntrcr, nbtrcr_in=nbtrcr, n_aero_in=n_aero, n_iso_in=n_iso, &
-          nfsd_in=max(nfsd, 1))
+          nfsd_in=max(nfsd, 1), ntrcr_o_in=ntrcr - nbtrcr * merge(nblyr + 3, 1, bgc == 2))
      if (k == 1) then
         call icepack_query_parameters(rhosnew_out=rhosnew, rhos_out=rhos, &
              rsnw_fall_out=rsnw_fall)
