@@ -202,14 +202,20 @@ fn every_case(file: &str) -> usize {
         let hin = nums(&i["hin_max"]);
         let want = step(&col, &hin, forcing, &icepack::options(i), &layout);
 
+        // A fresh copy of the case's column: aicen, vicen, vsnon, trcrn, aice0, aice.
+        let fresh = || {
+            (
+                nums(&i["aicen"]),
+                nums(&i["vicen"]),
+                nums(&i["vsnon"]),
+                trcrn.clone(),
+                num(&i["aice0"]),
+                num(&i["aice"]),
+            )
+        };
         // One cell.
-        let (mut a, mut v, mut sn, mut t) = (
-            nums(&i["aicen"]),
-            nums(&i["vicen"]),
-            nums(&i["vsnon"]),
-            trcrn.clone(),
-        );
-        let (mut a0, mut ai, mut h) = (num(&i["aice0"]), num(&i["aice"]), hin.clone());
+        let (mut a, mut v, mut sn, mut t, mut a0, mut ai) = fresh();
+        let mut h = hin.clone();
         let mut opening = closing.map_or(0.0, |c| c.1);
         let cl = closing.map(|c| c.0);
         let mut fl = PressridgeOceanFluxes::default();
@@ -269,13 +275,7 @@ fn every_case(file: &str) -> usize {
         }
 
         // The same cell through the batched call, its flux_bio (nbtrcr, 1) added to.
-        let (mut a, mut v, mut sn, mut t) = (
-            nums(&i["aicen"]),
-            nums(&i["vicen"]),
-            nums(&i["vsnon"]),
-            trcrn.clone(),
-        );
-        let (mut a0, mut ai) = (num(&i["aice0"]), num(&i["aice"]));
+        let (mut a, mut v, mut sn, mut t, mut a0, mut ai) = fresh();
         let mut fbio = vec![0.5; nb];
         let mut op = [closing.map_or(0.0, |c| c.1)];
         let cells = PressridgeCellArrays {

@@ -60,30 +60,8 @@ program test_dropin
              tr_snow=.true., n_iso=1, n_aero=2, ierr=e)
         call pressridge_init_parameters(krdg_redist=1, mu_rdg=3.0_c_double)
      end if
-     a2 = a1
-     v2 = v1
-     s2 = s1
      t2 = t1
-     a01 = 1 - sum(a1)
-     a02 = a01
-     ai1 = sum(a1)
-     ai2 = ai1
-     h1 = hb
-     h2 = hb
-     fa1 = 0
-     fa2 = 0
-     fi1 = 0
-     fi2 = 0
-     d = 0
-     op = 0
-     fp = 0
-     fr = 0
-     fh = 0
-     fs = 0
-     first1 = .false.
-     first2 = .false.
-     cat = 0
-     x0 = 0
+     call second_copy()
      call pressridge_step_ridge(rg, 3600.0_c_double, 1, h1, 2.0e-6_c_double, 1.0e-6_c_double, &
           a1, t1, v1, s1, a01, d(1, 1), d(2, 1), d(3, 1), op(1), fp(1), fr(1), fh(1), &
           cat(:, 1, 1), cat(:, 2, 1), cat(:, 3, 1), cat(:, 4, 1), cat(:, 5, 1), cat(:, 6, 1), &
@@ -144,25 +122,9 @@ program test_dropin
   a1 = [(0.18_c_double, k = 1, nc)]
   v1 = [(a1(k) * (0.3_c_double + 0.9_c_double * (k - 1)), k = 1, nc)]
   s1 = 0.1_c_double * v1
-  a2 = a1
-  v2 = v1
-  s2 = s1
-  a01 = 1 - sum(a1)
-  a02 = a01
-  ai1 = sum(a1)
-  ai2 = ai1
-  h1 = hb
-  h2 = hb
+  call second_copy()
   fbio1 = 0
   fbio2 = 0
-  fa1 = 0
-  fa2 = 0
-  fr = 0
-  fh = 0
-  fs = 0
-  fp = 0
-  first1 = .false.
-  first2 = .false.
   call pressridge_step_ridge(rg, 3600.0_c_double, 1, h1, conv, shear, a1, t3, v1, s1, a01, &
        d(1, 1), d(2, 1), d(3, 1), op(1), fp(1), fr(1), fh(1), aice=ai1, fsalt=fs(1), &
        first_ice=first1, Tf=-1.8_c_double, faero_ocn=fa1, flux_bio=fbio1, ierr=e)
@@ -207,6 +169,34 @@ program test_dropin
   print '(a)', 'drop-in (Icepack stand-in): all checks passed'
 
 contains
+
+  !> The column's second copy (a2, v2, s2 of a1, v1, s1; the tracers are the caller's), its
+  !> open water and area, the bounds, and every output zeroed.
+  subroutine second_copy()
+    a2 = a1
+    v2 = v1
+    s2 = s1
+    a01 = 1 - sum(a1)
+    a02 = a01
+    ai1 = sum(a1)
+    ai2 = ai1
+    h1 = hb
+    h2 = hb
+    fa1 = 0
+    fa2 = 0
+    fi1 = 0
+    fi2 = 0
+    d = 0
+    op = 0
+    fp = 0
+    fr = 0
+    fh = 0
+    fs = 0
+    first1 = .false.
+    first2 = .false.
+    cat = 0
+    x0 = 0
+  end subroutine second_copy
 
   !> The drop-in with Icepack's arguments on the second copy of the column (a call it is
   !> expected to refuse).
