@@ -295,7 +295,7 @@ pub unsafe extern "C" fn pressridge_strength_cell(
 /// the same checks and give the same results (NaN included), and values equal as numbers but
 /// not in bits (±0) are checked again. Safe code in place of a comparison of the struct's
 /// bytes, which relied on its having no padding; it costs 18 instructions more per call of
-/// about 1 400 (docs/performance.md).
+/// about 1 400 (docs/notes/performance-itd.md).
 fn same_options(a: &PressridgeOptions, b: &PressridgeOptions) -> bool {
     // Names every field (no `..`): one added to either struct stops the build here.
     let PressridgeOptions {
