@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Every check a clean checkout must pass: formatting, lints, Rust tests (unit, integration,
-# doc), and the Python, Fortran and C suites where present. CI runs exactly this (.ci/run).
+# Every check a clean checkout must pass: formatting, lints, the API docs' links, Rust tests
+# (unit, integration, doc), and the Python, Fortran and C suites where present. CI runs exactly this (.ci/run).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh $( [ -f python/pyproject.toml ] && echo --python )
@@ -9,6 +9,8 @@ echo "== cargo fmt --check ($SECONDS s)"
 cargo fmt --all -- --check
 echo "== cargo clippy --all-targets -- -D warnings ($SECONDS s)"
 cargo clippy --all-targets -- -D warnings
+echo "== cargo doc --no-deps --lib, warnings denied (broken links) ($SECONDS s)"
+RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --lib
 # One build for everything below: the `ci` profile (Cargo.toml) serves the Rust tests, the
 # Fortran/C bridge, the command line and the Python extension.
 export PRESSRIDGE_PROFILE=ci

@@ -86,7 +86,7 @@ pub struct CampaignSpec {
 }
 
 /// One planned run. It serialises (JSON) so that a run can be sent to another process or
-/// machine and run there with [`run_planned`].
+/// machine and run there with [`run_planned`](super::run_planned).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct PlannedRun {
