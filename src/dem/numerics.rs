@@ -34,7 +34,7 @@ pub enum Dashpot {
 /// Eq (3) takes the rate as (Aⁿ − Aⁿ⁻¹)/Δt. A contact begins somewhere within the step, so in
 /// its first step Aⁿ⁻¹ = 0 and Aⁿ/Δt is on average half the rate at which the overlap grows
 /// by then: the first step of every impact is under-damped, an error of first order in Δt
-/// that makes impacts more elastic at larger steps (`docs/speed-vs-error.md`).
+/// that makes impacts more elastic at larger steps (`docs/notes/speed-vs-error-former-model.md`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum ContactOnset {

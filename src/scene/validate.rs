@@ -235,10 +235,13 @@ impl Scene {
         if !(self.joint.crack_speed > 0.0 && self.joint.crack_speed.is_finite()) {
             return bad("joint.crack_speed", "must be positive (m/s)");
         }
-        if let Some(t) = self.joint.incubation_time
+        if let Some(t) = self.experimental.incubation_time
             && !(t > 0.0 && t.is_finite())
         {
-            return bad("joint.incubation_time", "must be positive (s) when given");
+            return bad(
+                "experimental.incubation_time",
+                "must be positive (s) when given",
+            );
         }
         if self.output.snapshot_interval.is_nan() || self.output.snapshot_interval < 0.0 {
             return bad("output.snapshot_interval", "must be non-negative (s)");

@@ -32,7 +32,7 @@ pub struct WorldParams {
     /// How the joints' viscous stress of eq (1) is advanced in time. Default
     /// [`Dashpot::Explicit`] (the paper's form, at the half-step velocities); `Implicit`
     /// centres it at the mid-step velocities (experimental; see `Joint::apply_viscous`
-    /// and docs/speed-vs-error.md, "Fracture and the time step"). Absent from states and
+    /// and docs/notes/speed-vs-error-former-model.md, "Fracture and the time step"). Absent from states and
     /// scenes when explicit.
     #[serde(
         default = "Dashpot::explicit",
@@ -48,7 +48,7 @@ pub struct WorldParams {
     /// with the other contacts' viscous and friction forces left out (a Jacobi step, as
     /// [`Dashpot::Implicit`] describes); n ≥ 1 sweeps the contacts n times in order, each
     /// seeing the others' latest viscous and friction forces, towards the coupled solution
-    /// for a block with several contacts. Experimental (docs/speed-vs-error.md, "Fracture
+    /// for a block with several contacts. Experimental (docs/notes/speed-vs-error-former-model.md, "Fracture
     /// and the time step"); absent from states and scenes when 0.
     #[serde(default, skip_serializing_if = "is_zero")]
     pub contact_dashpot_sweeps: u32,
@@ -56,7 +56,7 @@ pub struct WorldParams {
     /// docs/model.md ("Fracture").
     pub crack_speed: f64,
     /// Incubation time of crack initiation (s), or `None` for the paper's instantaneous
-    /// test; see [`crate::scene::JointSection::incubation_time`].
+    /// test; see [`crate::scene::ExperimentalSection::incubation_time`].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub incubation_time: Option<f64>,
     /// Mass-proportional numerical damping γ (1/s): F = −γ·m·v, M = −γ·I·ω. Default 0;
@@ -94,7 +94,7 @@ pub(crate) fn is_zero(n: &u32) -> bool {
 }
 
 /// Default safety factor on the stable time step (dimensionless): see docs/model.md ("Time
-/// step") and docs/speed-vs-error.md for the ensembles that chose it.
+/// step") and docs/notes/speed-vs-error-former-model.md for the ensembles that chose it.
 pub const DEFAULT_TIME_STEP_SAFETY: f64 = 0.8;
 
 /// An error in a world's parameters or bodies.
