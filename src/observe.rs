@@ -6,7 +6,11 @@
 //! the sail height max(top − level, 0) and the keel depth max(level − bottom, 0); a line
 //! without ice counts 0. The strip value is the mean over its lines ("the mean height and
 //! depth of ice in each strip"). Two profiles are kept: of all ice (sheet, floe, rubble: what
-//! the paper's Figure 8 boxes show) and of rubble alone.
+//! the paper's Figure 8 boxes show) and of rubble alone. For the ridged-ice thickness
+//! distribution (module `ridged`), each line also gives the solid rubble on it (the sum of
+//! the rubble pieces' vertical extents) and the rubble column (its lowest to its highest
+//! rubble point, less the intact ice inside that span): their strip means are the ridge's
+//! solid thickness and its thickness with voids.
 //!
 //! **Metrics** (from the rubble profile and the rubble blocks):
 //! - maximum sail height and keel depth (m): the largest strip values;
@@ -39,6 +43,17 @@ pub struct Profile {
     pub rubble_sail: Vec<f64>,
     /// Mean keel depth per strip, rubble only (m).
     pub rubble_keel: Vec<f64>,
+    /// Solid rubble thickness per strip (m): the rubble's area in the strip over its width,
+    /// the ridged ice as a host model books it (volume per area). Empty in records written
+    /// before it was kept (2026-11-28).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub ridge_ice: Vec<f64>,
+    /// Thickness of the rubble column per strip, voids included (m): on each line, from the
+    /// rubble's lowest to its highest point, less the intact ice (sheet, floe) inside that
+    /// span. `1 − Σ ridge_ice / Σ ridge_envelope` is the ridge's porosity. Empty in records
+    /// written before it was kept.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub ridge_envelope: Vec<f64>,
 }
 
 /// Ridge metrics of one state or of an averaged profile.
@@ -113,13 +128,19 @@ pub fn profile(s: &Snapshot, x0: f64, dx: f64, strips: usize, lines: usize) -> P
         keel: vec![0.0; strips],
         rubble_sail: vec![0.0; strips],
         rubble_keel: vec![0.0; strips],
+        ridge_ice: vec![0.0; strips],
+        ridge_envelope: vec![0.0; strips],
     };
     let lines = lines.max(1);
+    // The intact ice's extents on the current line, to take out of the rubble column.
+    let mut intact: Vec<(f64, f64)> = Vec::new();
     for k in 0..strips {
         for l in 0..lines {
             let x = x0 + (k as f64 + (l as f64 + 0.5) / lines as f64) * dx;
             let (mut top, mut bot) = (f64::NEG_INFINITY, f64::INFINITY);
             let (mut rtop, mut rbot) = (f64::NEG_INFINITY, f64::INFINITY);
+            let mut solid = 0.0;
+            intact.clear();
             for (role, v, lo, hi) in &outlines {
                 if x < *lo || x > *hi {
                     continue;
@@ -130,6 +151,9 @@ pub fn profile(s: &Snapshot, x0: f64, dx: f64, strips: usize, lines: usize) -> P
                     if *role == Role::Rubble {
                         rtop = rtop.max(b);
                         rbot = rbot.min(a);
+                        solid += b - a;
+                    } else {
+                        intact.push((a, b));
                     }
                 }
             }
@@ -141,6 +165,12 @@ pub fn profile(s: &Snapshot, x0: f64, dx: f64, strips: usize, lines: usize) -> P
             if rtop.is_finite() {
                 p.rubble_sail[k] += w * (rtop - level).max(0.0);
                 p.rubble_keel[k] += w * (level - rbot).max(0.0);
+                let inside: f64 = intact
+                    .iter()
+                    .map(|&(a, b)| (b.min(rtop) - a.max(rbot)).max(0.0))
+                    .sum();
+                p.ridge_ice[k] += w * solid;
+                p.ridge_envelope[k] += w * (rtop - rbot - inside).max(solid);
             }
         }
     }
@@ -163,6 +193,11 @@ pub fn mean_profile(ps: &[Profile]) -> Option<Profile> {
             .map(|i| ps.iter().map(|p| f(p)[i]).sum::<f64>() * k)
             .collect()
     };
+    // The ridge columns only where every profile has them (records before they were kept
+    // have none).
+    let ridged = ps
+        .iter()
+        .all(|p| p.ridge_ice.len() == n && p.ridge_envelope.len() == n);
     Some(Profile {
         x0: first.x0,
         dx: first.dx,
@@ -170,6 +205,16 @@ pub fn mean_profile(ps: &[Profile]) -> Option<Profile> {
         keel: avg(|p| &p.keel),
         rubble_sail: avg(|p| &p.rubble_sail),
         rubble_keel: avg(|p| &p.rubble_keel),
+        ridge_ice: if ridged {
+            avg(|p| &p.ridge_ice)
+        } else {
+            Vec::new()
+        },
+        ridge_envelope: if ridged {
+            avg(|p| &p.ridge_envelope)
+        } else {
+            Vec::new()
+        },
     })
 }
 
@@ -198,6 +243,16 @@ pub fn profile_spread(ps: &[Profile]) -> Option<Profile> {
         keel: sd(|p| &p.keel),
         rubble_sail: sd(|p| &p.rubble_sail),
         rubble_keel: sd(|p| &p.rubble_keel),
+        ridge_ice: if mean.ridge_ice.is_empty() {
+            Vec::new()
+        } else {
+            sd(|p| &p.ridge_ice)
+        },
+        ridge_envelope: if mean.ridge_envelope.is_empty() {
+            Vec::new()
+        } else {
+            sd(|p| &p.ridge_envelope)
+        },
     })
 }
 
@@ -318,6 +373,8 @@ mod tests {
             keel: vec![v; 2],
             rubble_sail: vec![0.0; 2],
             rubble_keel: vec![v; 2],
+            ridge_ice: Vec::new(),
+            ridge_envelope: Vec::new(),
         };
         let m = mean_profile(&[p(1.0), p(3.0)]).unwrap();
         let s = profile_spread(&[p(1.0), p(3.0)]).unwrap();
@@ -325,6 +382,46 @@ mod tests {
         assert_eq!(s.sail, vec![2f64.sqrt(), 8f64.sqrt()]);
         assert_eq!(s.rubble_sail, vec![0.0; 2]);
         assert_eq!(profile_spread(&[p(1.0)]).unwrap().keel, vec![0.0; 2]);
+    }
+
+    /// A floe 2 m thick with rubble on it (two 0.3-m pieces, 0.1 m apart) and under it (one):
+    /// the solid rubble is 0.9 m, its column 3.0 m less the floe's 2.0 m = 1.0 m, so the
+    /// porosity is the 0.1-m gap over 1.0 m; outside the rubble both are 0.
+    #[test]
+    fn ridge_columns_of_rubble_stacked_around_a_floe() {
+        use crate::dem::{Block, Drive, World, WorldParams};
+        let mut w = World::new(WorldParams::default()).unwrap();
+        let rect = |width, thickness| Block {
+            width,
+            thickness,
+            bevel: [0.0; 4],
+        };
+        let mut add = |b: Block, x: f64, y: f64, role| {
+            w.add_rect(b, V2::new(x, y), 0.0, Drive::FREE, role)
+                .unwrap();
+        };
+        add(rect(8.0, 2.0), 4.0, -0.8, Role::Floe);
+        add(rect(4.0, 0.3), 2.0, 0.35, Role::Rubble);
+        add(rect(4.0, 0.3), 2.0, 0.75, Role::Rubble);
+        add(rect(4.0, 0.3), 2.0, -1.95, Role::Rubble);
+        let p = profile(&w.snapshot(), 0.0, 1.0, 6, 10);
+        for k in 0..4 {
+            assert!(
+                (p.ridge_ice[k] - 0.9).abs() < 1e-12,
+                "{k}: {:?}",
+                p.ridge_ice
+            );
+            assert!(
+                (p.ridge_envelope[k] - 1.0).abs() < 1e-12,
+                "{:?}",
+                p.ridge_envelope
+            );
+        }
+        assert_eq!(&p.ridge_ice[4..], &[0.0, 0.0]);
+        assert_eq!(&p.ridge_envelope[4..], &[0.0, 0.0]);
+        let r = crate::table::redistribution::RidgedIce::of(&p, 0.3).unwrap();
+        assert_eq!(r.ice.len(), 4);
+        assert!((r.porosity() - 0.1).abs() < 1e-12);
     }
 
     #[test]

@@ -14,6 +14,8 @@
 //! - [`findings`] — the paper's stated findings tested on ensembles (the statement table of
 //!   `pressridge findings`);
 //! - [`rafting`] — which runs rafted over the floe instead of ridging against it;
+//! - [`redistribution`] — the thickness distribution of the simulated ridged ice, with
+//!   Lipscomb's exponential (μ_rdg) and Hibler's uniform (H*) fitted to it;
 //! - [`fit::student_t_cdf`], [`fit::student_t_quantile`] — Student's t CDF and quantile for
 //!   the confidence intervals;
 //! - [`lookup`] — interpolation in a tabulated campaign (clamped and flagged outside its
@@ -26,5 +28,6 @@ pub mod findings;
 pub mod fit;
 pub mod lookup;
 pub mod rafting;
+pub mod redistribution;
 pub(crate) mod student_t;
 pub mod tabulate;

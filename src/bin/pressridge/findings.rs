@@ -34,7 +34,7 @@ pub struct Args {
 }
 
 /// The campaign directories at or directly below `dir`.
-fn campaigns(dir: &Path) -> Result<Vec<PathBuf>, BoxError> {
+pub(crate) fn campaigns(dir: &Path) -> Result<Vec<PathBuf>, BoxError> {
     if dir.join("campaign.json").is_file() {
         return Ok(vec![dir.to_path_buf()]);
     }
@@ -69,7 +69,7 @@ fn register(dir: &Path) -> Result<String, BoxError> {
     Ok(effects(&base, &probes))
 }
 
-fn write(text: &str, out: Option<PathBuf>) -> Result<(), BoxError> {
+pub(crate) fn write(text: &str, out: Option<PathBuf>) -> Result<(), BoxError> {
     match out {
         // Through a temporary file and a rename: an interrupted write leaves the old file.
         Some(p) => pressridge::io::write_atomic(&p, text.as_bytes())

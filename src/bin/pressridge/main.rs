@@ -12,6 +12,7 @@ mod findings;
 mod params;
 mod plot_strength;
 mod progress;
+mod redistribution;
 mod render;
 mod ridge_step;
 mod simulate;
@@ -55,6 +56,8 @@ enum Command {
     Tabulate(tabulate::Args),
     /// The paper's stated findings tested on campaign records (a Markdown table).
     Findings(findings::Args),
+    /// The thickness distribution of the simulated ridged ice, with μ_rdg and H* fitted.
+    Redistribution(redistribution::Args),
     /// Ice strength P (N/m) of a gridded thickness distribution (NetCDF in and out).
     Strength(strength::Args),
     /// One ridging step on a gridded thickness distribution (NetCDF in and out).
@@ -84,6 +87,7 @@ fn main() {
         Command::Campaign(a) => campaign::run(a),
         Command::Tabulate(a) => tabulate::run(a),
         Command::Findings(a) => findings::run(a),
+        Command::Redistribution(a) => redistribution::run(a),
         Command::Strength(a) => strength::run(a),
         Command::RidgeStep(a) => ridge_step::run(a),
         Command::PlotStrength(a) => plot_strength::run(a),

@@ -1,0 +1,60 @@
+//! `pressridge redistribution`: the thickness distribution of the simulated ridged ice per
+//! ensemble, with Lipscomb's μ_rdg and Hibler's H* fitted to it
+//! (`pressridge::table::redistribution`, docs/tables.md).
+
+use crate::BoxError;
+use crate::findings::{campaigns, write};
+use pressridge::campaign::{RunRecord, read_campaign};
+use pressridge::table::redistribution::{ensembles, markdown};
+use std::path::PathBuf;
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// A campaign directory, or a directory of campaign directories; repeatable. Runs are
+    /// grouped by lead-ice thickness and friction; a run two directories share is counted
+    /// once, and runs whose records predate the ridge columns are counted and left out.
+    #[arg(long, required = true)]
+    records: Vec<PathBuf>,
+    /// Write the table here (Markdown) instead of to standard output.
+    #[arg(long)]
+    out: Option<PathBuf>,
+}
+
+pub fn run(a: Args) -> Result<(), BoxError> {
+    let mut records: Vec<RunRecord> = Vec::new();
+    let mut dirs = Vec::new();
+    for d in &a.records {
+        for c in campaigns(d)? {
+            for r in read_campaign(&c, true)?.records {
+                if !records
+                    .iter()
+                    .any(|o| o.scene == r.scene && o.seed == r.seed)
+                {
+                    records.push(r);
+                }
+            }
+            dirs.push(c.display().to_string());
+        }
+    }
+    let (rows, without) = ensembles(&records);
+    if rows.is_empty() {
+        return Err(format!(
+            "--records: no run with ridge columns among {} ({} written before they were kept: run them again)",
+            records.len(),
+            without
+        )
+        .into());
+    }
+    let text = format!(
+        "{}\nFrom {} runs of: {}{}.\n",
+        markdown(&rows),
+        records.len() - without,
+        dirs.join(", "),
+        if without > 0 {
+            format!(" ({without} runs without ridge columns left out)")
+        } else {
+            String::new()
+        }
+    );
+    write(&text, a.out)
+}

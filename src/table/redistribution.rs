@@ -1,0 +1,319 @@
+//! The thickness distribution of the simulated ridges, and the two shapes host models
+//! redistribute ridged ice with, fitted to it.
+//!
+//! **Ridged ice of a run** ([`RidgedIce::of`]): the strips of its final profile that hold
+//! rubble (`observe`, module docs), each with its solid rubble thickness (area over strip
+//! width, m) and the thickness of its rubble column with voids (m). Strips are 1 m wide by
+//! default (the paper's), so each is one sample of equal area. The solid thickness is what a
+//! host model's ridged ice is: Icepack conserves volume, so its ridged thickness is volume per
+//! area; the voids are the ridge's porosity, `1 − Σ solid / Σ column`.
+//!
+//! **The host models' shapes** (Icepack `ridge_itd`; parent thickness h, m):
+//! - Lipscomb et al. (2007), `krdg_redist = 1`: g(H) ∝ exp(−(H − H_min)/λ) for H ≥ H_min,
+//!   with H_min = min(2h, h + maxraft) and λ = μ_rdg·√h (μ_rdg in m^½, 3 by default in
+//!   Icepack); mean H_min + λ;
+//! - Hibler (1980), `krdg_redist = 0`: uniform on [H_min, 2·√(H*·h)] (H* in m, 25 by default);
+//!   mean (H_min + H_max)/2.
+//!
+//! **The fits** match the mean: the host conserves volume through the mean ridged thickness
+//! alone (Icepack's `krdg` = mean / h), so a shape whose mean differs moves area, whatever it
+//! does to the tail. λ = H̄ − H_min, μ_rdg = λ/√h; H_max = 2H̄ − H_min, H* = (H_max/2)²/h. The
+//! goodness of fit is the Kolmogorov–Smirnov distance between the area-weighted empirical
+//! distribution and the fitted one (0: the same; 1: disjoint); strips thinner than H_min, which
+//! neither shape allows, count against both. The ensemble intervals are Student-t 95 % over
+//! the runs' own fits (the seed-to-seed spread), the pooled fit is over all strips at once.
+
+use crate::observe::Profile;
+use crate::record::RunRecord;
+use crate::table::ensemble::Stat;
+
+/// Icepack's `maxraft` (m): the thickest ice that rafts; ridged ice starts at
+/// H_min = min(2h, h + maxraft).
+pub const MAX_RAFT: f64 = 1.0;
+
+/// The ridged ice of one run, or of several pooled.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RidgedIce {
+    /// Thickness of the parent (lead) ice h (m).
+    pub parent_thickness: f64,
+    /// Width of a strip (m).
+    pub strip_width: f64,
+    /// Solid rubble thickness of each ridged strip (m).
+    pub ice: Vec<f64>,
+    /// Thickness of each ridged strip's rubble column, voids included (m).
+    pub column: Vec<f64>,
+}
+
+/// The two shapes fitted to a distribution of ridged thickness (m unless said).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ShapeFit {
+    /// Mean ridged thickness H̄ (m).
+    pub mean: f64,
+    /// Thinnest ridged ice of both shapes, H_min = min(2h, h + maxraft) (m).
+    pub h_min: f64,
+    /// Lipscomb's e-folding thickness λ = H̄ − H_min (m).
+    pub lambda: f64,
+    /// Lipscomb's μ_rdg = λ/√h (m^½).
+    pub mu_rdg: f64,
+    /// Kolmogorov–Smirnov distance of the exponential fit (dimensionless, 0–1).
+    pub ks_exponential: f64,
+    /// Hibler's thickest ridged ice H_max = 2H̄ − H_min (m).
+    pub h_max: f64,
+    /// Hibler's H* = (H_max/2)²/h (m).
+    pub h_star: f64,
+    /// Kolmogorov–Smirnov distance of the uniform fit (dimensionless, 0–1).
+    pub ks_uniform: f64,
+}
+
+/// An error in the ridged-ice analysis, naming what is missing or wrong.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum RidgedError {
+    /// The profile has no ridge columns (a record written before they were kept).
+    #[error(
+        "the profile has no ridge columns (`ridge_ice`, `ridge_envelope`): its record was written before they were kept; run it again"
+    )]
+    NoColumns,
+    /// No strip holds rubble.
+    #[error("no strip of the profile holds rubble: nothing was ridged")]
+    NoRidge,
+    /// The parent thickness is not positive and finite.
+    #[error("parent thickness h = {0} m: must be positive and finite")]
+    Thickness(f64),
+}
+
+impl RidgedIce {
+    /// The ridged strips of profile `p` of a run whose lead ice was `h` m thick.
+    pub fn of(p: &Profile, h: f64) -> Result<RidgedIce, RidgedError> {
+        if !(h.is_finite() && h > 0.0) {
+            return Err(RidgedError::Thickness(h));
+        }
+        if p.ridge_ice.len() != p.sail.len() || p.ridge_envelope.len() != p.sail.len() {
+            return Err(RidgedError::NoColumns);
+        }
+        let (ice, column): (Vec<f64>, Vec<f64>) = p
+            .ridge_ice
+            .iter()
+            .zip(&p.ridge_envelope)
+            .filter(|(i, _)| **i > 0.0)
+            .map(|(i, c)| (*i, c.max(*i)))
+            .unzip();
+        if ice.is_empty() {
+            return Err(RidgedError::NoRidge);
+        }
+        Ok(RidgedIce {
+            parent_thickness: h,
+            strip_width: p.dx,
+            ice,
+            column,
+        })
+    }
+
+    /// Several runs of one parent thickness as one sample (their strips together).
+    pub fn pooled(runs: &[RidgedIce]) -> Option<RidgedIce> {
+        let first = runs.first()?;
+        Some(RidgedIce {
+            parent_thickness: first.parent_thickness,
+            strip_width: first.strip_width,
+            ice: runs.iter().flat_map(|r| r.ice.iter().copied()).collect(),
+            column: runs.iter().flat_map(|r| r.column.iter().copied()).collect(),
+        })
+    }
+
+    /// Width of the ridged strips together (m): per metre along the ridge, its area (m²/m).
+    pub fn width(&self) -> f64 {
+        self.ice.len() as f64 * self.strip_width
+    }
+
+    /// Mean solid thickness of the ridged ice (m): its volume over its area.
+    pub fn mean_thickness(&self) -> f64 {
+        self.ice.iter().sum::<f64>() / self.ice.len() as f64
+    }
+
+    /// Porosity of the ridge (dimensionless): the voids' share of its rubble columns.
+    pub fn porosity(&self) -> f64 {
+        1.0 - self.ice.iter().sum::<f64>() / self.column.iter().sum::<f64>()
+    }
+
+    /// Fraction of the ridged area in each bin `[edges[i], edges[i + 1])` of solid thickness
+    /// (m); the last bin includes its upper edge.
+    pub fn histogram(&self, edges: &[f64]) -> Vec<f64> {
+        let nb = edges.len().saturating_sub(1);
+        let mut f = vec![0.0; nb];
+        let w = 1.0 / self.ice.len() as f64;
+        for &x in &self.ice {
+            if let Some(i) = (0..nb).find(|&i| {
+                x >= edges[i] && (x < edges[i + 1] || (i + 1 == nb && x == edges[i + 1]))
+            }) {
+                f[i] += w;
+            }
+        }
+        f
+    }
+
+    /// Lipscomb's and Hibler's shapes fitted to the solid thicknesses (module docs).
+    pub fn fit(&self) -> ShapeFit {
+        let h = self.parent_thickness;
+        let mean = self.mean_thickness();
+        let h_min = (2.0 * h).min(h + MAX_RAFT);
+        let lambda = mean - h_min;
+        let h_max = 2.0 * mean - h_min;
+        let exponential = |x: f64| {
+            if x < h_min || lambda <= 0.0 {
+                f64::from(u8::from(x >= h_min))
+            } else {
+                1.0 - (-(x - h_min) / lambda).exp()
+            }
+        };
+        let uniform = |x: f64| ((x - h_min) / (h_max - h_min)).clamp(0.0, 1.0);
+        ShapeFit {
+            mean,
+            h_min,
+            lambda,
+            mu_rdg: lambda / h.sqrt(),
+            ks_exponential: ks_distance(&self.ice, exponential),
+            h_max,
+            h_star: (h_max / 2.0).powi(2) / h,
+            ks_uniform: ks_distance(&self.ice, uniform),
+        }
+    }
+}
+
+/// The Kolmogorov–Smirnov distance sup |F_n(x) − F(x)| between the empirical distribution of
+/// `xs` (equal weights) and the distribution function `cdf` (dimensionless).
+pub fn ks_distance(xs: &[f64], cdf: impl Fn(f64) -> f64) -> f64 {
+    let mut s = xs.to_vec();
+    s.sort_by(f64::total_cmp);
+    let n = s.len() as f64;
+    s.iter()
+        .enumerate()
+        .map(|(i, &x)| {
+            let f = cdf(x);
+            (f - i as f64 / n).abs().max((f - (i + 1) as f64 / n).abs())
+        })
+        .fold(0.0, f64::max)
+}
+
+/// The ridged ice of an ensemble of runs of one parent thickness: the pooled fit and the
+/// seed-to-seed statistics of each run's own.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RidgedEnsemble {
+    /// The runs' strips together.
+    pub pooled: RidgedIce,
+    /// The shapes fitted to the pooled strips.
+    pub fit: ShapeFit,
+    /// Mean solid thickness per run (m).
+    pub mean_thickness: Stat,
+    /// Porosity per run (dimensionless).
+    pub porosity: Stat,
+    /// Ridged width per run (m).
+    pub width: Stat,
+    /// λ per run (m).
+    pub lambda: Stat,
+    /// μ_rdg per run (m^½).
+    pub mu_rdg: Stat,
+    /// H* per run (m).
+    pub h_star: Stat,
+}
+
+impl RidgedEnsemble {
+    /// The ensemble of `runs` (`None` when empty).
+    pub fn of(runs: &[RidgedIce]) -> Option<RidgedEnsemble> {
+        let pooled = RidgedIce::pooled(runs)?;
+        let fits: Vec<ShapeFit> = runs.iter().map(RidgedIce::fit).collect();
+        let stat = |f: &dyn Fn(&ShapeFit) -> f64| Stat::of(&fits.iter().map(f).collect::<Vec<_>>());
+        Some(RidgedEnsemble {
+            fit: pooled.fit(),
+            mean_thickness: stat(&|f| f.mean),
+            porosity: Stat::of(&runs.iter().map(RidgedIce::porosity).collect::<Vec<_>>()),
+            width: Stat::of(&runs.iter().map(RidgedIce::width).collect::<Vec<_>>()),
+            lambda: stat(&|f| f.lambda),
+            mu_rdg: stat(&|f| f.mu_rdg),
+            h_star: stat(&|f| f.h_star),
+            pooled,
+        })
+    }
+}
+
+/// The setting an ensemble of campaign runs shares: lead-ice thickness (m) and the friction
+/// coefficients above and below the water line (dimensionless).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Setting {
+    /// Lead-ice thickness h (m).
+    pub thickness: f64,
+    /// Friction coefficient μ above the water line.
+    pub mu: f64,
+    /// Friction coefficient μ_w below it.
+    pub mu_water: f64,
+}
+
+/// The ridged-ice ensembles of campaign runs, one per [`Setting`] (in the order first met),
+/// and the number of runs left out because their records have no ridge columns.
+pub fn ensembles(records: &[RunRecord]) -> (Vec<(Setting, RidgedEnsemble)>, usize) {
+    let mut groups: Vec<(Setting, Vec<RidgedIce>)> = Vec::new();
+    let mut without = 0;
+    for r in records {
+        let Some(sheet) = &r.scene.sheet else {
+            continue;
+        };
+        let key = Setting {
+            thickness: sheet.thickness,
+            mu: r.scene.contact.mu,
+            mu_water: r.scene.contact.mu_water,
+        };
+        match RidgedIce::of(&r.profile, sheet.thickness) {
+            Ok(ice) => match groups.iter_mut().find(|(k, _)| *k == key) {
+                Some((_, v)) => v.push(ice),
+                None => groups.push((key, vec![ice])),
+            },
+            Err(RidgedError::NoColumns) => without += 1,
+            Err(_) => {}
+        }
+    }
+    let rows = groups
+        .into_iter()
+        .filter_map(|(k, v)| RidgedEnsemble::of(&v).map(|e| (k, e)))
+        .collect();
+    (rows, without)
+}
+
+/// A Markdown table of ridged-ice ensembles: per setting the runs, the ridged width, the mean
+/// solid thickness and porosity, and each shape's parameter (mean ± 95 % over the runs' own
+/// fits, then the pooled fit) with its Kolmogorov–Smirnov distance on the pooled strips.
+pub fn markdown(rows: &[(Setting, RidgedEnsemble)]) -> String {
+    let pm = |s: &Stat, d: usize| {
+        let h = s.half_width_95();
+        if h.is_finite() {
+            format!("{:.d$} ± {:.d$}", s.mean, h)
+        } else {
+            format!("{:.d$}", s.mean)
+        }
+    };
+    let mut t = String::from(
+        "| h (m) | μ | μ_w | runs | strips | ridged width (m) | mean H (m) | porosity | λ (m) | μ_rdg (m^½): runs; pooled | KS exp. | H* (m): runs; pooled | KS unif. |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+    );
+    for (k, e) in rows {
+        t += &format!(
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {}; {:.2} | {:.2} | {}; {:.1} | {:.2} |\n",
+            k.thickness,
+            k.mu,
+            k.mu_water,
+            e.lambda.n,
+            e.pooled.ice.len(),
+            pm(&e.width, 1),
+            pm(&e.mean_thickness, 2),
+            pm(&e.porosity, 2),
+            pm(&e.lambda, 2),
+            pm(&e.mu_rdg, 2),
+            e.fit.mu_rdg,
+            e.fit.ks_exponential,
+            pm(&e.h_star, 1),
+            e.fit.h_star,
+            e.fit.ks_uniform,
+        );
+    }
+    t
+}
+
+#[cfg(test)]
+mod tests;
