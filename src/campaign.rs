@@ -30,7 +30,7 @@
 use crate::dem::Snapshot;
 use crate::io::IoError;
 use crate::io::state::{read_json, save_state, write_json};
-use crate::observe;
+use crate::observe::{self, RidgeSummary};
 pub use crate::record::{RunDigest, RunRecord, RunSample};
 
 mod spec;
@@ -145,9 +145,14 @@ pub(crate) fn run_one(
     progress: &dyn Fn(f64),
 ) -> Result<(RunRecord, Snapshot), CampaignError> {
     let mut last = 0.0;
+    let ps = &spec.profile;
+    let strips = |s: &Snapshot| observe::profile(s, ps.x0, ps.dx, ps.strips, ps.lines_per_strip);
+    // The ridged ice at each sample time: the run calls back at each sample it takes.
+    let mut ridge: Vec<(f64, Option<RidgeSummary>)> = Vec::new();
     let out = simulation::run(&plan.scene, &mut |w| {
         progress(w.time() - last);
         last = w.time();
+        ridge.push((w.time(), RidgeSummary::of(&strips(&w.snapshot()))));
         true
     })
     .map_err(|e| CampaignError::Scene {
@@ -159,19 +164,22 @@ pub(crate) fn run_one(
         .sheet
         .as_ref()
         .map_or((0.0, 0.0), |s| (s.speed, s.thickness));
+    let profile = strips(&out.final_state);
     let samples = out
         .series
         .iter()
-        .map(|x| RunSample::of(x, speed * h * x.energy.time))
+        .map(|x| RunSample {
+            ridge: if x.energy.time == out.summary.time {
+                RidgeSummary::of(&profile)
+            } else {
+                ridge
+                    .iter()
+                    .find(|r| r.0 == x.energy.time)
+                    .and_then(|r| r.1)
+            },
+            ..RunSample::of(x, speed * h * x.energy.time)
+        })
         .collect();
-    let ps = &spec.profile;
-    let profile = observe::profile(
-        &out.final_state,
-        ps.x0,
-        ps.dx,
-        ps.strips,
-        ps.lines_per_strip,
-    );
     let metrics = observe::metrics(
         &profile,
         Some((&out.final_state, &out.summary.rubble_block_lengths, h)),

@@ -177,6 +177,41 @@ pub fn profile(s: &Snapshot, x0: f64, dx: f64, strips: usize, lines: usize) -> P
     p
 }
 
+/// The ridged ice of a profile in three numbers, kept at each sample time of a campaign
+/// run (the whole distribution is kept for the final state, in its profile).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct RidgeSummary {
+    /// Width of the strips that hold rubble (m).
+    pub width: f64,
+    /// Mean solid thickness of those strips (m): the ridged ice's volume over its area.
+    pub mean_thickness: f64,
+    /// Porosity of their rubble columns (dimensionless): 1 − Σ solid / Σ column.
+    pub porosity: f64,
+}
+
+impl RidgeSummary {
+    /// The summary of profile `p`; `None` when it has no ridge columns or no rubble.
+    pub fn of(p: &Profile) -> Option<RidgeSummary> {
+        let ridged: Vec<(f64, f64)> = p
+            .ridge_ice
+            .iter()
+            .zip(&p.ridge_envelope)
+            .filter(|(i, _)| **i > 0.0)
+            .map(|(i, c)| (*i, c.max(*i)))
+            .collect();
+        if ridged.is_empty() {
+            return None;
+        }
+        let solid: f64 = ridged.iter().map(|r| r.0).sum();
+        let column: f64 = ridged.iter().map(|r| r.1).sum();
+        Some(RidgeSummary {
+            width: ridged.len() as f64 * p.dx,
+            mean_thickness: solid / ridged.len() as f64,
+            porosity: 1.0 - solid / column,
+        })
+    }
+}
+
 /// The strip-by-strip mean of several profiles on the same strips (the ensemble profile).
 pub fn mean_profile(ps: &[Profile]) -> Option<Profile> {
     let first = ps.first()?;
@@ -422,6 +457,10 @@ mod tests {
         let r = crate::table::redistribution::RidgedIce::of(&p, 0.3).unwrap();
         assert_eq!(r.ice.len(), 4);
         assert!((r.porosity() - 0.1).abs() < 1e-12);
+        let s = RidgeSummary::of(&p).unwrap();
+        assert_eq!(s.width, 4.0);
+        assert!((s.mean_thickness - 0.9).abs() < 1e-12 && (s.porosity - 0.1).abs() < 1e-12);
+        assert_eq!(RidgeSummary::of(&Profile::default()), None);
     }
 
     #[test]

@@ -6,7 +6,7 @@
 
 use crate::dem::EnergyBudget;
 use crate::dem::ledger::{Keep, LedgerTerm, TermSet, Terms};
-use crate::observe::{Profile, RidgeMetrics};
+use crate::observe::{Profile, RidgeMetrics, RidgeSummary};
 use crate::scene::Scene;
 use crate::simulation::{self, Summary};
 use serde::{Deserialize, Serialize};
@@ -25,6 +25,10 @@ pub struct RunSample {
     pub ledger: Terms<Sampled>,
     /// Mean ridging force over the interval ending here, Δwork/(U·Δt) (N/m).
     pub mean_force: f64,
+    /// The ridged ice at this time, from the profile on the campaign's strips; absent
+    /// without rubble and in records written before it was kept (2026-11-28).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ridge: Option<RidgeSummary>,
 }
 
 /// The terms of [`RunSample::ledger`]: the column [`LedgerTerm::sample`] of the table.
@@ -45,6 +49,7 @@ impl RunSample {
             volume,
             ledger: Terms::of(&x.energy),
             mean_force: x.mean_force,
+            ridge: None,
         }
     }
 

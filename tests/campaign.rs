@@ -93,6 +93,17 @@ fn tiny_campaign_is_resumable_and_complete() {
         assert!((last.time - 3.0).abs() <= r.summary.dt);
         assert!(last.energy().work > 0.0);
         assert_eq!(r.profile.sail.len(), 32);
+        // The ridge columns of the final profile, and the ridged ice at each sample: none at
+        // the start, and at the end the final profile's.
+        assert_eq!(r.profile.ridge_ice.len(), 32);
+        assert_eq!(r.profile.ridge_envelope.len(), 32);
+        assert_eq!(r.samples[0].ridge, None);
+        assert_eq!(
+            last.ridge,
+            pressridge::observe::RidgeSummary::of(&r.profile),
+            "{}",
+            r.id
+        );
         assert!(out.join("runs").join(&r.id).join("state.json").is_file());
         // The rafting diagnostic: the largest overrun over the run bounds the final one, and
         // a sheet that breaks against the floe stays within the rafting reach.
