@@ -149,3 +149,40 @@ fn svg_state_text_lies_inside_the_canvas_at_two_sizes() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The ridged-ice figure draws the simulated density and the three shapes, each named with
+/// its parameter in the legend, as SVG and PNG.
+#[test]
+fn ridged_ice_figure_names_its_fits() {
+    use crate::table::redistribution::{RidgedEnsemble, RidgedIce, Setting};
+    let run = |ice: Vec<f64>| RidgedIce {
+        parent_thickness: 0.3,
+        strip_width: 1.0,
+        column: ice.iter().map(|x| x / 0.7).collect(),
+        ice,
+    };
+    let e = RidgedEnsemble::of(&[run(vec![0.4, 0.9, 1.3, 2.0]), run(vec![0.7, 1.1, 2.6])]).unwrap();
+    let k = Setting {
+        thickness: 0.3,
+        mu: 1.0,
+        mu_water: 0.6,
+    };
+    let dir = std::env::temp_dir().join(format!("pressridge-ridged-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let svg = dir.join("ridged.svg");
+    crate::plot::redistribution::plot_redistribution(&k, &e, &svg).unwrap();
+    let text = std::fs::read_to_string(&svg).unwrap();
+    for want in [
+        "μ_rdg = ",
+        "H* = ",
+        "Icepack default",
+        "porosity 0.30",
+        "7 strips of 2 runs",
+    ] {
+        assert!(text.contains(want), "{want}");
+    }
+    let png = dir.join("ridged.png");
+    crate::plot::redistribution::plot_redistribution(&k, &e, &png).unwrap();
+    assert!(std::fs::metadata(&png).unwrap().len() > 10_000);
+    std::fs::remove_dir_all(&dir).unwrap();
+}

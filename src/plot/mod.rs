@@ -21,6 +21,7 @@ pub mod animate;
 mod figure_tests;
 pub(crate) mod gif;
 pub(crate) mod layout;
+pub mod redistribution;
 pub mod render;
 pub mod series;
 pub mod strength_map;

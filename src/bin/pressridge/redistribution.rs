@@ -5,6 +5,7 @@
 use crate::BoxError;
 use crate::findings::{campaigns, write};
 use pressridge::campaign::{RunRecord, read_campaign};
+use pressridge::plot::redistribution::plot_redistribution;
 use pressridge::table::redistribution::{ensembles, markdown};
 use std::path::PathBuf;
 
@@ -18,6 +19,10 @@ pub struct Args {
     /// Write the table here (Markdown) instead of to standard output.
     #[arg(long)]
     out: Option<PathBuf>,
+    /// Draw each ensemble's distribution with the fitted shapes into this directory, as
+    /// `ridged-h<h>-mu<μ>-muw<μ_w>.png` and `.svg`.
+    #[arg(long, value_name = "DIR")]
+    figures: Option<PathBuf>,
 }
 
 pub fn run(a: Args) -> Result<(), BoxError> {
@@ -56,5 +61,14 @@ pub fn run(a: Args) -> Result<(), BoxError> {
             String::new()
         }
     );
+    if let Some(dir) = &a.figures {
+        std::fs::create_dir_all(dir).map_err(|e| format!("--figures {}: {e}", dir.display()))?;
+        for (k, e) in &rows {
+            for ext in ["png", "svg"] {
+                let name = format!("ridged-h{}-mu{}-muw{}.{ext}", k.thickness, k.mu, k.mu_water);
+                plot_redistribution(k, e, &dir.join(name))?;
+            }
+        }
+    }
     write(&text, a.out)
 }

@@ -1,0 +1,146 @@
+//! The thickness distribution of the simulated ridged ice, with the shapes host models
+//! redistribute it by (`crate::table::redistribution`).
+
+use super::layout::{Axis, Layout};
+use super::{PlotError, draw_err, write_figure};
+use crate::table::redistribution::{RidgedEnsemble, Setting};
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use std::path::Path;
+
+/// Icepack's defaults drawn for comparison: μ_rdg = 3 m^½, H* = 25 m.
+const ICEPACK_MU_RDG: f64 = 3.0;
+
+/// The ridged-ice thickness distribution of ensemble `e` at setting `k`: the pooled strips'
+/// solid thickness as a probability density (bars, 1/m), the exponential and the uniform
+/// fitted to it, and Lipscomb's exponential with Icepack's μ_rdg = 3 m^½.
+pub fn plot_redistribution(k: &Setting, e: &RidgedEnsemble, path: &Path) -> Result<(), PlotError> {
+    write_figure(path, |tmp| to_file!(tmp, (900, 560), draw(k, e)))
+}
+
+fn draw<DB: DrawingBackend>(
+    root: DrawingArea<DB, Shift>,
+    k: &Setting,
+    e: &RidgedEnsemble,
+) -> Result<(), PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    root.fill(&WHITE).map_err(draw_err)?;
+    let f = &e.fit;
+    let h = k.thickness;
+    let top = e
+        .pooled
+        .ice
+        .iter()
+        .copied()
+        .fold(f.h_max, f64::max)
+        .max(f.h_min + 3.0 * f.lambda.max(0.0))
+        * 1.05;
+    let bins = 20usize;
+    let width = top / bins as f64;
+    let edges: Vec<f64> = (0..=bins).map(|i| i as f64 * width).collect();
+    let density: Vec<f64> = e
+        .pooled
+        .histogram(&edges)
+        .into_iter()
+        .map(|p| p / width)
+        .collect();
+    let exponential = |x: f64, lambda: f64| {
+        if x < f.h_min || lambda <= 0.0 {
+            0.0
+        } else {
+            (-(x - f.h_min) / lambda).exp() / lambda
+        }
+    };
+    let uniform_height = if f.h_max > f.h_min {
+        1.0 / (f.h_max - f.h_min)
+    } else {
+        0.0
+    };
+    let icepack_lambda = ICEPACK_MU_RDG * h.sqrt();
+    let ymax = density
+        .iter()
+        .copied()
+        .chain([
+            exponential(f.h_min, f.lambda),
+            uniform_height,
+            exponential(f.h_min, icepack_lambda),
+        ])
+        .filter(|x| x.is_finite())
+        .fold(0.0, f64::max)
+        * 1.15;
+    let title = format!(
+        "Ridged ice, h = {h} m, μ = {}, μ_w = {}: {} strips of {} runs",
+        k.mu,
+        k.mu_water,
+        e.pooled.ice.len(),
+        e.lambda.n
+    );
+    let x = Axis::new(0.0, top, "solid ridged-ice thickness H (m)");
+    let y = Axis::new(0.0, ymax.max(1e-3), "probability density (1/m)");
+    let (layout, mut chart) = Layout::canvas_chart(&root, &x, &y, &title)?;
+    let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
+    let bar = RGBColor(150, 170, 200);
+    chart
+        .draw_series(
+            edges
+                .windows(2)
+                .zip(&density)
+                .map(|(w, d)| Rectangle::new([(w[0], 0.0), (w[1], *d)], bar.mix(0.7).filled())),
+        )
+        .map_err(draw_err)?
+        .label(format!(
+            "simulated, porosity {:.2}, mean H {:.2} m",
+            e.pooled.porosity(),
+            f.mean
+        ))
+        .legend(move |(x, y)| Rectangle::new([(x, y - 4), (x + key, y + 4)], bar.filled()));
+    let n = 200;
+    let curve = |lambda: f64| -> Vec<(f64, f64)> {
+        (0..=n)
+            .map(|i| {
+                let xv = top * i as f64 / n as f64;
+                (xv, exponential(xv, lambda))
+            })
+            .collect()
+    };
+    let blue = RGBColor(31, 119, 180);
+    let orange = RGBColor(255, 127, 14);
+    let grey = RGBColor(90, 90, 90);
+    chart
+        .draw_series(LineSeries::new(curve(f.lambda), blue.stroke_width(line)))
+        .map_err(draw_err)?
+        .label(format!(
+            "exponential fit, μ_rdg = {:.2} m^½ (KS {:.2})",
+            f.mu_rdg, f.ks_exponential
+        ))
+        .legend(move |(x, y)| PathElement::new([(x, y), (x + key, y)], blue.stroke_width(2)));
+    chart
+        .draw_series(LineSeries::new(
+            [
+                (f.h_min, 0.0),
+                (f.h_min, uniform_height),
+                (f.h_max, uniform_height),
+                (f.h_max, 0.0),
+            ],
+            orange.stroke_width(line),
+        ))
+        .map_err(draw_err)?
+        .label(format!(
+            "uniform fit, H* = {:.1} m (KS {:.2})",
+            f.h_star, f.ks_uniform
+        ))
+        .legend(move |(x, y)| PathElement::new([(x, y), (x + key, y)], orange.stroke_width(2)));
+    chart
+        .draw_series(DashedLineSeries::new(
+            curve(icepack_lambda),
+            layout.fonts.px(8.0),
+            layout.fonts.px(5.0),
+            grey.stroke_width(layout.fonts.px(1.5)),
+        ))
+        .map_err(draw_err)?
+        .label("Icepack default, μ_rdg = 3 m^½")
+        .legend(move |(x, y)| PathElement::new([(x, y), (x + key, y)], grey.stroke_width(1)));
+    layout.finish(&root, &mut chart, SeriesLabelPosition::UpperRight)
+}
