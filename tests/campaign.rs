@@ -320,6 +320,20 @@ fn tiny_campaign_is_resumable_and_complete() {
         assert_eq!(mem.friction(), disk.friction());
         let names: Vec<&str> = disk.variables().collect();
         assert_eq!(mem.variables().collect::<Vec<_>>(), names);
+        // The ridged-ice fields: per thickness, the runs whose final profile holds rubble,
+        // and μ_rdg from their ensemble (what `pressridge redistribution` reports).
+        let (ens, without) = pressridge::table::redistribution::ensembles(&records);
+        assert_eq!(without, 0);
+        assert!(!ens.is_empty(), "the tiny runs break the sheet at the floe");
+        for (k, e) in &ens {
+            let hi = t.thickness.iter().position(|&h| h == k.thickness).unwrap();
+            let got = t.ridged[[0, hi]].as_ref().unwrap();
+            assert_eq!(got.mu_rdg, e.mu_rdg);
+            let f = disk.field("mu_rdg").unwrap();
+            assert_eq!(f.data.iter().filter(|x| **x == e.mu_rdg.mean).count(), 1);
+            let n = disk.field("ridged_runs").unwrap();
+            assert!(n.data.iter().any(|x| *x == e.lambda.n as f64));
+        }
         for n in names {
             let (a, b) = (mem.field(n).unwrap(), disk.field(n).unwrap());
             assert_eq!(

@@ -112,7 +112,7 @@ fn write_ridge_table_at(
                 "mu" => (n, vec!["mu"], u, l, Cow::Owned(g.mu.clone())),
                 "mu_w" => (n, vec!["mu_w"], u, l, Cow::Owned(g.mu_w.clone())),
                 _ if d.first() == Some(&"set") => {
-                    let count = matches!(n, "runs" | "cf_runs");
+                    let count = matches!(n, "runs" | "cf_runs" | "ridged_runs");
                     let fill = if count { 0.0 } else { f64::NAN };
                     let (dims, data) = g.spread(&d[1..], x, fill, (nh, nv));
                     (n, dims, u, l, Cow::Owned(data))

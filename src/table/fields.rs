@@ -93,6 +93,9 @@ impl RidgeTable {
             }
             owned(x)
         };
+        let ridged = |g: &dyn Fn(&super::redistribution::RidgedEnsemble) -> f64| {
+            owned(t.ridged.map(|e| e.as_ref().map_or(f64::NAN, g)))
+        };
         const S3: &[&str] = &["set", "thickness", "volume"];
         const S2: &[&str] = &["set", "thickness"];
         const SV: &[&str] = &["set", "volume"];
@@ -233,6 +236,72 @@ impl RidgeTable {
                 "1",
                 "number of runs behind cf_by_set",
                 owned(t.cf_runs.mapv(f64::from)),
+            ),
+            (
+                "ridged_runs",
+                S2,
+                "1",
+                "number of runs behind the ridged-ice fields (records with the ridge columns)",
+                owned(
+                    t.ridged
+                        .map(|e| e.as_ref().map_or(0.0, |e| e.lambda.n as f64)),
+                ),
+            ),
+            (
+                "ridged_thickness",
+                S2,
+                "m",
+                "ensemble mean of the mean solid thickness of the ridged ice (the strips of the final profile holding rubble)",
+                ridged(&|e| e.mean_thickness.mean),
+            ),
+            (
+                "ridged_porosity",
+                S2,
+                "1",
+                "ensemble mean of the porosity of the ridged ice (voids over rubble-column thickness)",
+                ridged(&|e| e.porosity.mean),
+            ),
+            (
+                "mu_rdg",
+                S2,
+                "m^0.5",
+                "ensemble mean of Lipscomb's e-folding parameter fitted to the ridged ice, (mean thickness - min(2h, h + 1 m))/sqrt(h)",
+                ridged(&|e| e.mu_rdg.mean),
+            ),
+            (
+                "mu_rdg_std",
+                S2,
+                "m^0.5",
+                "ensemble standard deviation of mu_rdg over the runs",
+                ridged(&|e| e.mu_rdg.std),
+            ),
+            (
+                "h_star",
+                S2,
+                "m",
+                "ensemble mean of Hibler's H* fitted to the ridged ice, ((2 mean thickness - min(2h, h + 1 m))/2)^2/h",
+                ridged(&|e| e.h_star.mean),
+            ),
+            (
+                "h_star_std",
+                S2,
+                "m",
+                "ensemble standard deviation of h_star over the runs",
+                ridged(&|e| e.h_star.std),
+            ),
+            (
+                "ks_exponential",
+                S2,
+                "1",
+                "Kolmogorov-Smirnov distance of the exponential fitted to the runs' ridged strips together",
+                ridged(&|e| e.fit.ks_exponential),
+            ),
+            (
+                "ks_uniform",
+                S2,
+                "1",
+                "Kolmogorov-Smirnov distance of the uniform fitted to the runs' ridged strips together",
+                ridged(&|e| e.fit.ks_uniform),
             ),
             (
                 "cf",

@@ -28,6 +28,7 @@
 
 use super::ensemble::{Stat, dissipation_violation};
 use super::fit::{Band, FitError, QuadFit, fit_through_origin, force, ratio, student_t_quantile};
+use super::redistribution::{RidgedEnsemble, RidgedIce};
 use crate::record::RunRecord;
 use ndarray::{Array2, Array3, s};
 
@@ -101,6 +102,10 @@ pub struct RidgeTable {
     /// Each run's final W/ΔPE, `(set, thickness)`, in the runs' order (the seed spread
     /// behind `cf`, as many as `cf_runs`; dimensionless).
     pub cf_finals: Array2<Vec<f64>>,
+    /// The simulated ridged ice per `(set, thickness)`: the thickness distribution of the
+    /// runs' final profiles with Lipscomb's and Hibler's shapes fitted
+    /// ([`super::redistribution`]); `None` where no run's record has the ridge columns.
+    pub ridged: Array2<Option<RidgedEnsemble>>,
     /// The set of every run tabulated: (run id, set index).
     pub run_set: Vec<(String, usize)>,
     /// Seeds used.
@@ -460,6 +465,7 @@ pub fn tabulate_scaled(
         cf_conf: Array2::from_elem((ns, nh), (f64::NAN, f64::NAN)),
         cf_runs: Array2::zeros((ns, nh)),
         cf_finals: Array2::from_elem((ns, nh), Vec::new()),
+        ridged: Array2::from_elem((ns, nh), None),
         run_set: recs
             .iter()
             .zip(&set_index)
@@ -558,6 +564,11 @@ pub fn tabulate_scaled(
                 }
             }
             t.cf_finals[[si, hi]] = finals;
+            let ridged: Vec<RidgedIce> = group
+                .iter()
+                .filter_map(|r| RidgedIce::of(&r.profile, h).ok())
+                .collect();
+            t.ridged[[si, hi]] = RidgedEnsemble::of(&ridged);
             if let (Ok(work), Ok(pe)) = (fit_through_origin(&fv, &fw), fit_through_origin(&fv, &fp))
             {
                 t.fits[[si, hi]] = Some(SetFits {
