@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Undefined-behaviour checks of the library's unsafe code (issue 32, docs/reliability.md).
+# Undefined-behaviour checks of the library's unsafe code (issue 32, docs/failure.md).
 #
 #   scripts/check-ub.sh [miri]   Miri runs the unit and C-ABI tests that reach unsafe code
 #   scripts/check-ub.sh asan     the C and Fortran tests built with -fsanitize=address,undefined
@@ -15,7 +15,7 @@
 # or misaligned reads, use after free, invalid values, data races, leaks. It cannot run calls
 # into C libraries (NetCDF) or the AVX2 intrinsics' runtime detection; under Miri the feature
 # checks report no AVX2, so the portable lanes, which compute the same bits, run instead.
-# What runs and what is left out, with the reason: docs/reliability.md, "Undefined behaviour".
+# What runs and what is left out, with the reason: docs/failure.md, "Undefined behaviour: what the tools check".
 set -euo pipefail
 cd "$(dirname "$0")/.."
 stage=${1:-miri}
