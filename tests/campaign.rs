@@ -334,6 +334,17 @@ fn tiny_campaign_is_resumable_and_complete() {
             let n = disk.field("ridged_runs").unwrap();
             assert!(n.data.iter().any(|x| *x == e.lambda.n as f64));
         }
+        // The binned distribution, per bin of H/h: each thickness's fractions add to one.
+        let file = netcdf::open(&table).unwrap();
+        let v = file.variable("ridged_fraction").unwrap();
+        let dims: Vec<String> = v.dimensions().iter().map(|d| d.name()).collect();
+        assert_eq!(dims, ["thickness", "mu", "mu_w", "ridged_bin"]);
+        let x: Vec<f64> = v.get_values(..).unwrap();
+        for (cell, k) in x.chunks(40).zip(0..) {
+            let sum: f64 = cell.iter().sum();
+            assert!((sum - 1.0).abs() < 1e-12, "cell {k}: {sum}");
+        }
+        assert_eq!(file.variable("ridged_bin_bounds").unwrap().len(), 80);
         for n in names {
             let (a, b) = (mem.field(n).unwrap(), disk.field(n).unwrap());
             assert_eq!(

@@ -6,7 +6,7 @@ These functions take already-normalised arguments; the documented API is in
 """
 
 from os import PathLike
-from typing import Any, Callable, List, Optional, Sequence, Tuple, TypedDict, Union
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, TypedDict, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -212,6 +212,9 @@ def tabulate(
     scaled_keys: List[str] = ...,
 ) -> Tuple[List[Tuple[str, float, float]], List[str]]:
     """([(set, thickness (m), C_f)], [warning]) (``campaign::tabulation::tabulate_campaigns``)."""
+
+def redistribution(campaign_dirs: List[_Path]) -> Tuple[List[Dict[str, float]], int]:
+    """([row per (thickness, mu, mu_w)], runs without ridge columns) (``table::redistribution``)."""
 
 class RidgeLookup:
     @staticmethod

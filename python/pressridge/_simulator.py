@@ -314,3 +314,30 @@ def tabulate(
     for w in warnings:
         _warnings.warn(w, UserWarning, stacklevel=2)
     return Table.open(outp)
+
+
+def redistribution(campaign_dir: Union[PathLike, Sequence[PathLike]]) -> "list[dict[str, float]]":
+    """The thickness distribution of the simulated ridged ice, as ``pressridge
+    redistribution`` (``table::redistribution``): one dict per lead-ice thickness and friction
+    pair of the campaigns' runs, with ``thickness`` (m), ``mu``, ``mu_w``, ``runs``,
+    ``strips``; for ``width`` (ridged width, m), ``mean_thickness`` (mean solid thickness, m),
+    ``porosity``, ``lambda`` (m), ``mu_rdg`` (Lipscomb's parameter, m^0.5) and ``h_star``
+    (Hibler's H*, m) the mean over the runs' own fits, ``_std`` (seed spread) and ``_ci95``
+    (half-width of the 95 % Student-t interval); ``pooled_mu_rdg``, ``pooled_h_star`` and the
+    Kolmogorov-Smirnov distances ``ks_exponential``, ``ks_uniform`` of the shapes fitted to
+    all strips together, and ``below_h_min``, the area share of strips thinner than H_min. Runs whose records predate the ridge columns are left out with a
+    ``UserWarning``; none with them raises ``ValueError``."""
+    if isinstance(campaign_dir, (str, bytes, _os.PathLike)):
+        dirs = [_os.fspath(campaign_dir)]
+    else:
+        dirs = [_os.fspath(d) for d in campaign_dir]
+    rows, without = _core.redistribution(dirs)
+    if without:
+        _warnings.warn(
+            f"{without} runs have no ridge columns (recorded before they were kept) and are left out",
+            UserWarning,
+            stacklevel=2,
+        )
+    if not rows:
+        raise ValueError(f"no run with ridge columns in {dirs!r}: run the campaign again")
+    return rows

@@ -227,3 +227,65 @@ pub(crate) fn tabulate(
         Ok((lines, warnings))
     })
 }
+
+/// One row of `redistribution`: the setting, the counts and each quantity's ensemble mean
+/// with the half-width of its 95 % interval.
+type RidgedRow = std::collections::BTreeMap<String, f64>;
+
+/// The simulated ridged ice per (thickness, μ, μ_w) of campaign directories' records, as
+/// `pressridge redistribution` (`table::redistribution::ensembles`); returns (rows, runs left
+/// out for want of the ridge columns).
+#[pyfunction]
+pub(crate) fn redistribution(
+    py: Python<'_>,
+    campaign_dirs: Vec<PathBuf>,
+) -> PyResult<(Vec<RidgedRow>, usize)> {
+    detached(py, || {
+        let mut records: Vec<pressridge::campaign::RunRecord> = Vec::new();
+        for d in &campaign_dirs {
+            file_missing(d)?;
+            for r in pressridge::campaign::read_campaign(d, true)?.records {
+                if !records
+                    .iter()
+                    .any(|o| o.scene == r.scene && o.seed == r.seed)
+                {
+                    records.push(r);
+                }
+            }
+        }
+        let (rows, without) = pressridge::table::redistribution::ensembles(&records);
+        let rows = rows
+            .iter()
+            .map(|(k, e)| {
+                let mut m = RidgedRow::new();
+                let mut put = |name: &str, v: f64| {
+                    m.insert(name.to_string(), v);
+                };
+                put("thickness", k.thickness);
+                put("mu", k.mu);
+                put("mu_w", k.mu_water);
+                put("runs", e.lambda.n as f64);
+                put("strips", e.pooled.ice.len() as f64);
+                for (name, s) in [
+                    ("width", &e.width),
+                    ("mean_thickness", &e.mean_thickness),
+                    ("porosity", &e.porosity),
+                    ("lambda", &e.lambda),
+                    ("mu_rdg", &e.mu_rdg),
+                    ("h_star", &e.h_star),
+                ] {
+                    put(name, s.mean);
+                    put(&format!("{name}_std"), s.std);
+                    put(&format!("{name}_ci95"), s.half_width_95());
+                }
+                put("pooled_mu_rdg", e.fit.mu_rdg);
+                put("pooled_h_star", e.fit.h_star);
+                put("below_h_min", e.fit.below_min);
+                put("ks_exponential", e.fit.ks_exponential);
+                put("ks_uniform", e.fit.ks_uniform);
+                m
+            })
+            .collect();
+        Ok((rows, without))
+    })
+}

@@ -83,6 +83,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(campaigns::campaign_adopt, m)?)?;
     m.add_function(wrap_pyfunction!(campaigns::campaign_run_planned, m)?)?;
     m.add_function(wrap_pyfunction!(campaigns::tabulate, m)?)?;
+    m.add_function(wrap_pyfunction!(campaigns::redistribution, m)?)?;
     m.add_class::<lookup::PyRidgeLookup>()?;
     m.add_function(wrap_pyfunction!(errors::panic_for_test, m)?)?;
     Ok(())

@@ -247,3 +247,22 @@ def test_tabulate_takes_the_keys_scaled_with_the_thickness_of_the_command_line(
     assert "scaled_with_thickness=['floe.thickness', 'sheet.length']" in attrs["history"]
     with pytest.raises(ValueError, match="floe.thicknes"):
         pr.tabulate(src, tmp_path / "bad.nc", points=11, scaled_with_thickness=["floe.thicknes"])
+
+
+def test_redistribution_agrees_with_the_command_line_and_names_what_it_lacks(cli, cli_campaign, tmp_path):
+    """The simulated ridged ice per thickness, as ``pressridge redistribution`` prints it: one
+    row per thickness of the tiny campaign, with μ_rdg and H* from the same fits; a directory
+    that is no campaign is an error naming it."""
+    out, _ = cli_campaign
+    rows = pr.redistribution(out)
+    assert [r["thickness"] for r in rows] == [0.25, 0.35]
+    md = tmp_path / "ridged.md"
+    cli("redistribution", "--records", out, "--out", md)
+    text = md.read_text()
+    for r in rows:
+        assert r["runs"] == 2 and r["strips"] >= 2
+        assert 0.0 <= r["porosity"] < 1.0 and r["ks_exponential"] <= 1.0
+        assert r["mu_rdg"] == pytest.approx((r["mean_thickness"] - 2 * r["thickness"]) / r["thickness"] ** 0.5)
+        assert f"| {r['thickness']} | 1 | 0.6 | 2 |" in text
+    with pytest.raises((ValueError, OSError), match="nowhere"):
+        pr.redistribution(tmp_path / "nowhere")

@@ -137,6 +137,7 @@ fn write_ridge_table_at(
             v.put_attribute("mu_w", t.mu_w[ds]).map_err(&e)?;
         }
     }
+    let ridged = define_ridged_distribution(&mut f, t, grid.as_ref(), &e)?;
     f.add_attribute("Conventions", "CF-1.8").map_err(&e)?;
     f.add_attribute(
         "title",
@@ -205,6 +206,10 @@ fn write_ridge_table_at(
     for (name, _, _, _, data) in &vars {
         let mut v = f.variable_mut(name).expect("just defined");
         v.put_values(data.as_ref(), ..).map_err(&e)?;
+    }
+    for (name, data) in &ridged {
+        let mut v = f.variable_mut(name).expect("just defined");
+        v.put_values(data, ..).map_err(&e)?;
     }
     f.close().map_err(&e)?;
     Ok(())
@@ -303,6 +308,73 @@ impl FrictionGrid {
         }
         out
     }
+}
+
+/// The binned ridged-ice distribution of every set and thickness (issue 34):
+/// `ridged_fraction(thickness, mu, mu_w, ridged_bin)` (or `(set, thickness, ridged_bin)`),
+/// the area fraction of the ridged ice per bin of H/h, with the bin centres as the coordinate
+/// `ridged_bin` and their edges in `ridged_bin_bounds` (CF bounds). NaN where no run has the
+/// ridge columns. Not a lookup field: [`crate::table::lookup::RidgeLookup::open`] passes it by.
+/// Defines the variables (the file in define mode) and returns their values, (name, data),
+/// for the caller to put once it leaves define mode.
+fn define_ridged_distribution(
+    f: &mut netcdf::FileMut,
+    t: &RidgeTable,
+    grid: Option<&FrictionGrid>,
+    e: &impl Fn(netcdf::Error) -> NetcdfError,
+) -> Result<Vec<(&'static str, Vec<f64>)>, NetcdfError> {
+    let edges = crate::table::redistribution::table_bin_edges();
+    let nb = edges.len() - 1;
+    f.add_dimension("ridged_bin", nb).map_err(e)?;
+    f.add_dimension("bounds2", 2).map_err(e)?;
+    let centres: Vec<f64> = edges.windows(2).map(|w| 0.5 * (w[0] + w[1])).collect();
+    let bounds: Vec<f64> = edges.windows(2).flat_map(|w| [w[0], w[1]]).collect();
+    let mut v = f
+        .add_variable::<f64>("ridged_bin", &["ridged_bin"])
+        .map_err(e)?;
+    v.put_attribute("units", "1").map_err(e)?;
+    v.put_attribute(
+        "long_name",
+        "solid ridged-ice thickness over parent (lead) ice thickness, H/h, bin centre",
+    )
+    .map_err(e)?;
+    v.put_attribute("bounds", "ridged_bin_bounds").map_err(e)?;
+    let mut v = f
+        .add_variable::<f64>("ridged_bin_bounds", &["ridged_bin", "bounds2"])
+        .map_err(e)?;
+    v.put_attribute("units", "1").map_err(e)?;
+    let (ns, nh) = (t.sets.len(), t.thickness.len());
+    let mut data = vec![f64::NAN; ns * nh * nb];
+    for ((si, hi), x) in t.ridged.indexed_iter() {
+        if let Some(x) = x {
+            let at = (si * nh + hi) * nb;
+            data[at..at + nb].copy_from_slice(&x.pooled.table_histogram());
+        }
+    }
+    let (dims, data): (Vec<&str>, Vec<f64>) = match grid {
+        Some(g) => {
+            let (mut d, x) = g.spread(&["thickness", "volume"], &data, f64::NAN, (nh, nb));
+            *d.last_mut().expect("spread keeps the trailing axis") = "ridged_bin";
+            (d, x)
+        }
+        None => (vec!["set", "thickness", "ridged_bin"], data),
+    };
+    let mut v = f.add_variable::<f64>("ridged_fraction", &dims).map_err(e)?;
+    v.put_attribute("units", "1").map_err(e)?;
+    v.put_attribute(
+        "long_name",
+        "area fraction of the simulated ridged ice (the runs' strips together) per bin of H/h",
+    )
+    .map_err(e)?;
+    v.put_attribute("_FillValue", f64::NAN).map_err(e)?;
+    if grid.is_none() {
+        v.put_attribute("coordinates", "mu mu_w").map_err(e)?;
+    }
+    Ok(vec![
+        ("ridged_bin", centres),
+        ("ridged_bin_bounds", bounds),
+        ("ridged_fraction", data),
+    ])
 }
 
 impl crate::table::lookup::RidgeLookup {

@@ -31,6 +31,13 @@ use crate::table::ensemble::Stat;
 /// H_min = min(2h, h + maxraft).
 pub const MAX_RAFT: f64 = 1.0;
 
+/// Edges of the bins of a ridging table's binned distribution (`ridged_fraction`), in units of
+/// the parent thickness (H/h, dimensionless): 0 to 20 by 0.5; strips thicker than 20h fall in
+/// the last bin. Relative to h, Lipscomb's shape starts at 2 and falls by e over μ_rdg/√h.
+pub fn table_bin_edges() -> Vec<f64> {
+    (0..=40).map(|i| 0.5 * f64::from(i)).collect()
+}
+
 /// The ridged ice of one run, or of several pooled.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RidgedIce {
@@ -51,6 +58,9 @@ pub struct ShapeFit {
     pub mean: f64,
     /// Thinnest ridged ice of both shapes, H_min = min(2h, h + maxraft) (m).
     pub h_min: f64,
+    /// Area fraction of the strips thinner than H_min, which neither shape allows (the
+    /// ridge's flanks; dimensionless).
+    pub below_min: f64,
     /// Lipscomb's e-folding thickness λ = H̄ − H_min (m).
     pub lambda: f64,
     /// Lipscomb's μ_rdg = λ/√h (m^½).
@@ -150,6 +160,20 @@ impl RidgedIce {
         f
     }
 
+    /// Fraction of the ridged area in each bin of [`table_bin_edges`] (H/h), the strips
+    /// thicker than the last edge in the last bin (dimensionless; sums to 1).
+    pub fn table_histogram(&self) -> Vec<f64> {
+        let edges = table_bin_edges();
+        let h = self.parent_thickness;
+        let top = edges[edges.len() - 1] * h;
+        let capped = RidgedIce {
+            ice: self.ice.iter().map(|&x| x.min(top)).collect(),
+            ..self.clone()
+        };
+        let abs: Vec<f64> = edges.iter().map(|e| e * h).collect();
+        capped.histogram(&abs)
+    }
+
     /// Lipscomb's and Hibler's shapes fitted to the solid thicknesses (module docs).
     pub fn fit(&self) -> ShapeFit {
         let h = self.parent_thickness;
@@ -168,6 +192,8 @@ impl RidgedIce {
         ShapeFit {
             mean,
             h_min,
+            below_min: self.ice.iter().filter(|&&x| x < h_min).count() as f64
+                / self.ice.len() as f64,
             lambda,
             mu_rdg: lambda / h.sqrt(),
             ks_exponential: ks_distance(&self.ice, exponential),
@@ -289,12 +315,12 @@ pub fn markdown(rows: &[(Setting, RidgedEnsemble)]) -> String {
         }
     };
     let mut t = String::from(
-        "| h (m) | μ | μ_w | runs | strips | ridged width (m) | mean H (m) | porosity | λ (m) | μ_rdg (m^½): runs; pooled | KS exp. | H* (m): runs; pooled | KS unif. |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| h (m) | μ | μ_w | runs | strips | ridged width (m) | mean H (m) | porosity | below H_min | λ (m) | μ_rdg (m^½): runs; pooled | KS exp. | H* (m): runs; pooled | KS unif. |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     for (k, e) in rows {
         t += &format!(
-            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {}; {:.2} | {:.2} | {}; {:.1} | {:.2} |\n",
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {:.2} | {} | {}; {:.2} | {:.2} | {}; {:.1} | {:.2} |\n",
             k.thickness,
             k.mu,
             k.mu_water,
@@ -303,6 +329,7 @@ pub fn markdown(rows: &[(Setting, RidgedEnsemble)]) -> String {
             pm(&e.width, 1),
             pm(&e.mean_thickness, 2),
             pm(&e.porosity, 2),
+            e.fit.below_min,
             pm(&e.lambda, 2),
             pm(&e.mu_rdg, 2),
             e.fit.mu_rdg,

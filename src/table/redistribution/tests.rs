@@ -66,6 +66,7 @@ fn thick_parents_start_at_h_plus_maxraft_and_thin_strips_count_against_the_fit()
         .unwrap()
         .fit();
     assert!(f.ks_exponential >= 0.5 && f.ks_uniform >= 0.5, "{f:?}");
+    assert_eq!(f.below_min, 0.5);
 }
 
 /// The empirical distance of a sample from its own distribution is at most 1/n; from a
@@ -117,4 +118,15 @@ fn an_ensemble_pools_strips_and_spreads_run_fits() {
     assert!((e.porosity.mean - 0.3).abs() < 1e-12);
     assert_eq!(e.width.mean, 2.5);
     assert!(RidgedEnsemble::of(&[]).is_none());
+}
+
+/// The table's bins are in units of h; a strip beyond 20h lands in the last bin.
+#[test]
+fn table_histogram_is_in_units_of_h_and_catches_the_tail() {
+    let r = RidgedIce::of(&profile(&[0.1, 0.25, 0.7, 9.0], 0.0), 0.2).unwrap();
+    let f = r.table_histogram();
+    assert_eq!(f.len(), 40);
+    // H/h = 0.5, 1.25, 3.5, 45.
+    assert_eq!((f[1], f[2], f[7], f[39]), (0.25, 0.25, 0.25, 0.25));
+    assert!((f.iter().sum::<f64>() - 1.0).abs() < 1e-15);
 }
