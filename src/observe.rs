@@ -189,16 +189,22 @@ pub struct RidgeSummary {
     pub porosity: f64,
 }
 
+/// The ridged strips of profile `p`, those holding rubble, in strip order: (solid rubble
+/// thickness, rubble-column thickness) (m), the column never below the solid. Empty when the
+/// profile has no ridge columns (a record written before they were kept) or no rubble.
+pub fn ridged_strips(p: &Profile) -> Vec<(f64, f64)> {
+    p.ridge_ice
+        .iter()
+        .zip(&p.ridge_envelope)
+        .filter(|(i, _)| **i > 0.0)
+        .map(|(i, c)| (*i, c.max(*i)))
+        .collect()
+}
+
 impl RidgeSummary {
     /// The summary of profile `p`; `None` when it has no ridge columns or no rubble.
     pub fn of(p: &Profile) -> Option<RidgeSummary> {
-        let ridged: Vec<(f64, f64)> = p
-            .ridge_ice
-            .iter()
-            .zip(&p.ridge_envelope)
-            .filter(|(i, _)| **i > 0.0)
-            .map(|(i, c)| (*i, c.max(*i)))
-            .collect();
+        let ridged = ridged_strips(p);
         if ridged.is_empty() {
             return None;
         }

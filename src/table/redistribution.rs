@@ -23,7 +23,7 @@
 //! neither shape allows, count against both. The ensemble intervals are Student-t 95 % over
 //! the runs' own fits (the seed-to-seed spread), the pooled fit is over all strips at once.
 
-use crate::observe::Profile;
+use crate::observe::{Profile, ridged_strips};
 use crate::record::RunRecord;
 use crate::table::ensemble::Stat;
 
@@ -100,13 +100,7 @@ impl RidgedIce {
         if p.ridge_ice.len() != p.sail.len() || p.ridge_envelope.len() != p.sail.len() {
             return Err(RidgedError::NoColumns);
         }
-        let (ice, column): (Vec<f64>, Vec<f64>) = p
-            .ridge_ice
-            .iter()
-            .zip(&p.ridge_envelope)
-            .filter(|(i, _)| **i > 0.0)
-            .map(|(i, c)| (*i, c.max(*i)))
-            .unzip();
+        let (ice, column): (Vec<f64>, Vec<f64>) = ridged_strips(p).into_iter().unzip();
         if ice.is_empty() {
             return Err(RidgedError::NoRidge);
         }

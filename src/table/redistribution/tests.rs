@@ -123,10 +123,10 @@ fn an_ensemble_pools_strips_and_spreads_run_fits() {
 /// The table's bins are in units of h; a strip beyond 20h lands in the last bin.
 #[test]
 fn table_histogram_is_in_units_of_h_and_catches_the_tail() {
-    let r = RidgedIce::of(&profile(&[0.1, 0.25, 0.7, 9.0], 0.0), 0.2).unwrap();
+    let r = RidgedIce::of(&profile(&[0.1, 0.25, 0.75, 9.0], 0.0), 0.2).unwrap();
     let f = r.table_histogram();
     assert_eq!(f.len(), 40);
-    // H/h = 0.5, 1.25, 3.5, 45.
+    // H/h = 0.5, 1.25, 3.75, 45.
     assert_eq!((f[1], f[2], f[7], f[39]), (0.25, 0.25, 0.25, 0.25));
     assert!((f.iter().sum::<f64>() - 1.0).abs() < 1e-15);
 }
