@@ -460,9 +460,7 @@ mod tests {
         }
         assert_eq!(&p.ridge_ice[4..], &[0.0, 0.0]);
         assert_eq!(&p.ridge_envelope[4..], &[0.0, 0.0]);
-        let r = crate::table::redistribution::RidgedIce::of(&p, 0.3).unwrap();
-        assert_eq!(r.ice.len(), 4);
-        assert!((r.porosity() - 0.1).abs() < 1e-12);
+        assert_eq!(ridged_strips(&p).len(), 4);
         let s = RidgeSummary::of(&p).unwrap();
         assert_eq!(s.width, 4.0);
         assert!((s.mean_thickness - 0.9).abs() < 1e-12 && (s.porosity - 0.1).abs() < 1e-12);

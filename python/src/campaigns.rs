@@ -257,32 +257,10 @@ pub(crate) fn redistribution(
         let rows = rows
             .iter()
             .map(|(k, e)| {
-                let mut m = RidgedRow::new();
-                let mut put = |name: &str, v: f64| {
-                    m.insert(name.to_string(), v);
-                };
-                put("thickness", k.thickness);
-                put("mu", k.mu);
-                put("mu_w", k.mu_water);
-                put("runs", e.lambda.n as f64);
-                put("strips", e.pooled.ice.len() as f64);
-                for (name, s) in [
-                    ("width", &e.width),
-                    ("mean_thickness", &e.mean_thickness),
-                    ("porosity", &e.porosity),
-                    ("lambda", &e.lambda),
-                    ("mu_rdg", &e.mu_rdg),
-                    ("h_star", &e.h_star),
-                ] {
-                    put(name, s.mean);
-                    put(&format!("{name}_std"), s.std);
-                    put(&format!("{name}_ci95"), s.half_width_95());
-                }
-                put("pooled_mu_rdg", e.fit.mu_rdg);
-                put("pooled_h_star", e.fit.h_star);
-                put("below_h_min", e.fit.below_min);
-                put("ks_exponential", e.fit.ks_exponential);
-                put("ks_uniform", e.fit.ks_uniform);
+                let mut m: RidgedRow = e.columns().into_iter().collect();
+                m.insert("thickness".into(), k.thickness);
+                m.insert("mu".into(), k.mu);
+                m.insert("mu_w".into(), k.mu_water);
                 m
             })
             .collect();

@@ -254,6 +254,42 @@ impl RidgedEnsemble {
     }
 }
 
+impl RidgedEnsemble {
+    /// The ensemble as named numbers, the faces' one spelling (Python's `redistribution`):
+    /// `runs`, `strips`; for `width` (m), `mean_thickness` (m), `porosity`, `lambda` (m),
+    /// `mu_rdg` (m^½) and `h_star` (m) the mean over the runs' own fits, `<name>_std` and
+    /// `<name>_ci95` (half-width of the 95 % Student-t interval); `pooled_mu_rdg`,
+    /// `pooled_h_star`, `below_h_min`, `ks_exponential`, `ks_uniform` of the pooled fit.
+    pub fn columns(&self) -> Vec<(String, f64)> {
+        let mut c = vec![
+            ("runs".to_string(), self.lambda.n as f64),
+            ("strips".to_string(), self.pooled.ice.len() as f64),
+        ];
+        for (name, s) in [
+            ("width", &self.width),
+            ("mean_thickness", &self.mean_thickness),
+            ("porosity", &self.porosity),
+            ("lambda", &self.lambda),
+            ("mu_rdg", &self.mu_rdg),
+            ("h_star", &self.h_star),
+        ] {
+            c.push((name.to_string(), s.mean));
+            c.push((format!("{name}_std"), s.std));
+            c.push((format!("{name}_ci95"), s.half_width_95()));
+        }
+        for (name, v) in [
+            ("pooled_mu_rdg", self.fit.mu_rdg),
+            ("pooled_h_star", self.fit.h_star),
+            ("below_h_min", self.fit.below_min),
+            ("ks_exponential", self.fit.ks_exponential),
+            ("ks_uniform", self.fit.ks_uniform),
+        ] {
+            c.push((name.to_string(), v));
+        }
+        c
+    }
+}
+
 /// The setting an ensemble of campaign runs shares: lead-ice thickness (m) and the friction
 /// coefficients above and below the water line (dimensionless).
 #[derive(Clone, Copy, Debug, PartialEq)]

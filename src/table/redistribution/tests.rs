@@ -117,6 +117,13 @@ fn an_ensemble_pools_strips_and_spreads_run_fits() {
     assert_eq!(e.mu_rdg.mean, (2.0 + 5.0) / 2.0);
     assert!((e.porosity.mean - 0.3).abs() < 1e-12);
     assert_eq!(e.width.mean, 2.5);
+    let c = e.columns();
+    let get = |n: &str| c.iter().find(|x| x.0 == n).unwrap().1;
+    assert_eq!((get("runs"), get("strips")), (2.0, 5.0));
+    assert_eq!(get("mu_rdg"), e.mu_rdg.mean);
+    assert_eq!(get("h_star_ci95"), e.h_star.half_width_95());
+    assert_eq!(get("pooled_mu_rdg"), e.fit.mu_rdg);
+    assert_eq!(c.len(), 2 + 6 * 3 + 5);
     assert!(RidgedEnsemble::of(&[]).is_none());
 }
 
