@@ -39,7 +39,19 @@ def test_table_opens_in_xarray_with_its_dimensions_and_units(cli_campaign):
     """Issue 5: the tiny campaign's table (2 thicknesses, one set, 11 volumes) is a CF file
     that xarray opens, with units on every variable."""
     with xr.open_dataset(cli_campaign[1]) as ds:
-        assert dict(ds.sizes) == {"thickness": 2, "mu": 1, "mu_w": 1, "volume": 11}
+        assert dict(ds.sizes) == {
+            "thickness": 2,
+            "mu": 1,
+            "mu_w": 1,
+            "volume": 11,
+            "ridged_bin": 40,
+            "bounds2": 2,
+        }
+        # The binned ridged-ice distribution (issue 34): a fraction per bin of H/h, each
+        # thickness's adding to one.
+        assert ds.ridged_fraction.dims == ("thickness", "mu", "mu_w", "ridged_bin")
+        np.testing.assert_allclose(ds.ridged_fraction.sum("ridged_bin").values, 1.0, rtol=1e-12)
+        assert ds.ridged_bin.attrs["bounds"] == "ridged_bin_bounds"
         assert ds.attrs["Conventions"] == "CF-1.8"
         assert ds.work_mean.dims == ("thickness", "mu", "mu_w", "volume")
         assert ds.work_fit.dims == ("mu", "mu_w", "volume")

@@ -343,6 +343,8 @@ fn define_ridged_distribution(
         .add_variable::<f64>("ridged_bin_bounds", &["ridged_bin", "bounds2"])
         .map_err(e)?;
     v.put_attribute("units", "1").map_err(e)?;
+    v.put_attribute("long_name", "edges of the ridged_bin bins (H/h)")
+        .map_err(e)?;
     let (ns, nh) = (t.sets.len(), t.thickness.len());
     let mut data = vec![f64::NAN; ns * nh * nb];
     for ((si, hi), x) in t.ridged.indexed_iter() {
