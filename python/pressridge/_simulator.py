@@ -325,8 +325,9 @@ def redistribution(campaign_dir: Union[PathLike, Sequence[PathLike]]) -> "list[d
     (Hibler's H*, m) the mean over the runs' own fits, ``_std`` (seed spread) and ``_ci95``
     (half-width of the 95 % Student-t interval); ``pooled_mu_rdg``, ``pooled_h_star`` and the
     Kolmogorov-Smirnov distances ``ks_exponential``, ``ks_uniform`` of the shapes fitted to
-    all strips together, and ``below_h_min``, the area share of strips thinner than H_min. Runs whose records predate the ridge columns are left out with a
-    ``UserWarning``; none with them raises ``ValueError``."""
+    all strips together, and ``below_h_min``, the area share of strips thinner than H_min.
+    Runs whose records predate the ridge columns are left out with a ``UserWarning``; none
+    with them raises ``ValueError``."""
     if isinstance(campaign_dir, (str, bytes, _os.PathLike)):
         dirs = [_os.fspath(campaign_dir)]
     else:
