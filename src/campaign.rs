@@ -146,13 +146,16 @@ pub(crate) fn run_one(
 ) -> Result<(RunRecord, Snapshot), CampaignError> {
     let mut last = 0.0;
     let ps = &spec.profile;
-    let strips = |s: &Snapshot| observe::profile(s, ps.x0, ps.dx, ps.strips, ps.lines_per_strip);
-    // The ridged ice at each sample time: the run calls back at each sample it takes.
-    let mut ridge: Vec<(f64, Option<RidgeSummary>)> = Vec::new();
+    let profile_of =
+        |s: &Snapshot| observe::profile(s, ps.x0, ps.dx, ps.strips, ps.lines_per_strip);
+    // The ridged ice at each sample: the run calls back at the start and after each sample
+    // it takes, so the i-th call is the i-th sample (all but a last one off the interval,
+    // which the final profile gives).
+    let mut ridge: Vec<Option<RidgeSummary>> = Vec::new();
     let out = simulation::run(&plan.scene, &mut |w| {
         progress(w.time() - last);
         last = w.time();
-        ridge.push((w.time(), RidgeSummary::of(&strips(&w.snapshot()))));
+        ridge.push(RidgeSummary::of(&profile_of(&w.snapshot())));
         true
     })
     .map_err(|e| CampaignError::Scene {
@@ -164,18 +167,15 @@ pub(crate) fn run_one(
         .sheet
         .as_ref()
         .map_or((0.0, 0.0), |s| (s.speed, s.thickness));
-    let profile = strips(&out.final_state);
+    let profile = profile_of(&out.final_state);
     let samples = out
         .series
         .iter()
-        .map(|x| RunSample {
-            ridge: if x.energy.time == out.summary.time {
-                RidgeSummary::of(&profile)
-            } else {
-                ridge
-                    .iter()
-                    .find(|r| r.0 == x.energy.time)
-                    .and_then(|r| r.1)
+        .enumerate()
+        .map(|(i, x)| RunSample {
+            ridge: match ridge.get(i) {
+                Some(r) => *r,
+                None => RidgeSummary::of(&profile),
             },
             ..RunSample::of(x, speed * h * x.energy.time)
         })
@@ -333,6 +333,25 @@ pub fn read_campaign(out: &Path, allow_partial: bool) -> Result<CampaignRecords,
 pub fn read_records(out: &Path) -> Result<(CampaignSpec, Vec<RunRecord>), CampaignError> {
     let c = read_campaign(out, false)?;
     Ok((c.spec, c.records))
+}
+
+/// The runs of the campaign directories `dirs` together, each campaign read with its
+/// complete runs ([`read_campaign`] with partial campaigns allowed): a run whose scene and
+/// seed an earlier record already has (the same run in two archives) is counted once. What
+/// `pressridge findings`, `pressridge redistribution` and their Python faces read.
+pub fn read_pooled(dirs: &[PathBuf]) -> Result<Vec<RunRecord>, CampaignError> {
+    let mut records: Vec<RunRecord> = Vec::new();
+    for d in dirs {
+        for r in read_campaign(d, true)?.records {
+            if !records
+                .iter()
+                .any(|o| o.scene == r.scene && o.seed == r.seed)
+            {
+                records.push(r);
+            }
+        }
+    }
+    Ok(records)
 }
 
 /// A campaign directory made ready by [`prepare_campaign`]: the whole plan and the runs it

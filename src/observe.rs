@@ -7,7 +7,7 @@
 //! without ice counts 0. The strip value is the mean over its lines ("the mean height and
 //! depth of ice in each strip"). Two profiles are kept: of all ice (sheet, floe, rubble: what
 //! the paper's Figure 8 boxes show) and of rubble alone. For the ridged-ice thickness
-//! distribution (module `ridged`), each line also gives the solid rubble on it (the sum of
+//! distribution (`table::redistribution`), each line also gives the solid rubble on it (the sum of
 //! the rubble pieces' vertical extents) and the rubble column (its lowest to its highest
 //! rubble point, less the intact ice inside that span): their strip means are the ridge's
 //! solid thickness and its thickness with voids.
@@ -204,15 +204,20 @@ pub fn ridged_strips(p: &Profile) -> Vec<(f64, f64)> {
 impl RidgeSummary {
     /// The summary of profile `p`; `None` when it has no ridge columns or no rubble.
     pub fn of(p: &Profile) -> Option<RidgeSummary> {
-        let ridged = ridged_strips(p);
-        if ridged.is_empty() {
+        Self::of_strips(&ridged_strips(p), p.dx)
+    }
+
+    /// The summary of ridged strips `(solid, column)` (m; as [`ridged_strips`] gives them)
+    /// of width `dx` (m); `None` for none.
+    pub fn of_strips(strips: &[(f64, f64)], dx: f64) -> Option<RidgeSummary> {
+        if strips.is_empty() {
             return None;
         }
-        let solid: f64 = ridged.iter().map(|r| r.0).sum();
-        let column: f64 = ridged.iter().map(|r| r.1).sum();
+        let solid: f64 = strips.iter().map(|r| r.0).sum();
+        let column: f64 = strips.iter().map(|r| r.1).sum();
         Some(RidgeSummary {
-            width: ridged.len() as f64 * p.dx,
-            mean_thickness: solid / ridged.len() as f64,
+            width: strips.len() as f64 * dx,
+            mean_thickness: solid / strips.len() as f64,
             porosity: 1.0 - solid / column,
         })
     }

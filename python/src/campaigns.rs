@@ -241,18 +241,10 @@ pub(crate) fn redistribution(
     campaign_dirs: Vec<PathBuf>,
 ) -> PyResult<(Vec<RidgedRow>, usize)> {
     detached(py, || {
-        let mut records: Vec<pressridge::campaign::RunRecord> = Vec::new();
         for d in &campaign_dirs {
             file_missing(d)?;
-            for r in pressridge::campaign::read_campaign(d, true)?.records {
-                if !records
-                    .iter()
-                    .any(|o| o.scene == r.scene && o.seed == r.seed)
-                {
-                    records.push(r);
-                }
-            }
         }
+        let records = pressridge::campaign::read_pooled(&campaign_dirs)?;
         let (rows, without) = pressridge::table::redistribution::ensembles(&records);
         let rows = rows
             .iter()

@@ -8,9 +8,6 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
 
-/// Icepack's defaults drawn for comparison: μ_rdg = 3 m^½, H* = 25 m.
-const ICEPACK_MU_RDG: f64 = 3.0;
-
 /// The ridged-ice thickness distribution of ensemble `e` at setting `k`: the pooled strips'
 /// solid thickness as a probability density (bars, 1/m), the exponential and the uniform
 /// fitted to it, and Lipscomb's exponential with Icepack's μ_rdg = 3 m^½.
@@ -58,7 +55,9 @@ where
     } else {
         0.0
     };
-    let icepack_lambda = ICEPACK_MU_RDG * h.sqrt();
+    // Icepack's default μ_rdg (m^½), drawn for comparison.
+    let icepack_mu_rdg = crate::itd::ItdParams::default().mu_rdg;
+    let icepack_lambda = icepack_mu_rdg * h.sqrt();
     let ymax = density
         .iter()
         .copied()
@@ -140,7 +139,7 @@ where
             grey.stroke_width(layout.fonts.px(1.5)),
         ))
         .map_err(draw_err)?
-        .label("Icepack default, μ_rdg = 3 m^½")
+        .label(format!("Icepack default, μ_rdg = {icepack_mu_rdg} m^½"))
         .legend(move |(x, y)| PathElement::new([(x, y), (x + key, y)], grey.stroke_width(1)));
     layout.finish(&root, &mut chart, SeriesLabelPosition::UpperRight)
 }

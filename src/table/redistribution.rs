@@ -10,7 +10,7 @@
 //!
 //! **The host models' shapes** (Icepack `ridge_itd`; parent thickness h, m):
 //! - Lipscomb et al. (2007), `krdg_redist = 1`: g(H) ∝ exp(−(H − H_min)/λ) for H ≥ H_min,
-//!   with H_min = min(2h, h + maxraft) and λ = μ_rdg·√h (μ_rdg in m^½, 3 by default in
+//!   with H_min = min(2h, h + maxraft) (maxraft = 1 m, `ItdParams::maxraft`'s default) and λ = μ_rdg·√h (μ_rdg in m^½, 3 by default in
 //!   Icepack); mean H_min + λ;
 //! - Hibler (1980), `krdg_redist = 0`: uniform on [H_min, 2·√(H*·h)] (H* in m, 25 by default);
 //!   mean (H_min + H_max)/2.
@@ -23,13 +23,10 @@
 //! neither shape allows, count against both. The ensemble intervals are Student-t 95 % over
 //! the runs' own fits (the seed-to-seed spread), the pooled fit is over all strips at once.
 
-use crate::observe::{Profile, ridged_strips};
+use crate::itd::ItdParams;
+use crate::observe::{Profile, RidgeSummary, ridged_strips};
 use crate::record::RunRecord;
 use crate::table::ensemble::Stat;
-
-/// Icepack's `maxraft` (m): the thickest ice that rafts; ridged ice starts at
-/// H_min = min(2h, h + maxraft).
-pub const MAX_RAFT: f64 = 1.0;
 
 /// Edges of the bins of a ridging table's binned distribution (`ridged_fraction`), in units of
 /// the parent thickness (H/h, dimensionless): 0 to 20 by 0.5; strips thicker than 20h fall in
@@ -125,17 +122,29 @@ impl RidgedIce {
 
     /// Width of the ridged strips together (m): per metre along the ridge, its area (m²/m).
     pub fn width(&self) -> f64 {
-        self.ice.len() as f64 * self.strip_width
+        self.summary().map_or(0.0, |s| s.width)
     }
 
     /// Mean solid thickness of the ridged ice (m): its volume over its area.
     pub fn mean_thickness(&self) -> f64 {
-        self.ice.iter().sum::<f64>() / self.ice.len() as f64
+        self.summary().map_or(f64::NAN, |s| s.mean_thickness)
     }
 
     /// Porosity of the ridge (dimensionless): the voids' share of its rubble columns.
     pub fn porosity(&self) -> f64 {
-        1.0 - self.ice.iter().sum::<f64>() / self.column.iter().sum::<f64>()
+        self.summary().map_or(f64::NAN, |s| s.porosity)
+    }
+
+    /// Width, mean solid thickness and porosity as one profile's [`RidgeSummary`] gives them
+    /// (`None` without strips).
+    fn summary(&self) -> Option<RidgeSummary> {
+        let strips: Vec<(f64, f64)> = self
+            .ice
+            .iter()
+            .copied()
+            .zip(self.column.iter().copied())
+            .collect();
+        RidgeSummary::of_strips(&strips, self.strip_width)
     }
 
     /// Fraction of the ridged area in each bin `[edges[i], edges[i + 1])` of solid thickness
@@ -172,7 +181,7 @@ impl RidgedIce {
     pub fn fit(&self) -> ShapeFit {
         let h = self.parent_thickness;
         let mean = self.mean_thickness();
-        let h_min = (2.0 * h).min(h + MAX_RAFT);
+        let h_min = (2.0 * h).min(h + ItdParams::default().maxraft);
         let lambda = mean - h_min;
         let h_max = 2.0 * mean - h_min;
         let exponential = |x: f64| {

@@ -2,7 +2,7 @@
 //! directories (issue 30's statement table, `pressridge::table::findings`).
 
 use crate::BoxError;
-use pressridge::campaign::{RunRecord, read_campaign};
+use pressridge::campaign::{RunRecord, read_campaign, read_pooled};
 use pressridge::table::choices::effects;
 use pressridge::table::findings::{findings, markdown};
 use std::path::{Path, PathBuf};
@@ -69,6 +69,19 @@ fn register(dir: &Path) -> Result<String, BoxError> {
     Ok(effects(&base, &probes))
 }
 
+/// The runs of the campaign directories at or directly below each of `records` (`--records`),
+/// a run two directories share counted once ([`read_pooled`]), and the directories read.
+pub(crate) fn pooled_records(
+    records: &[PathBuf],
+) -> Result<(Vec<RunRecord>, Vec<String>), BoxError> {
+    let mut dirs = Vec::new();
+    for d in records {
+        dirs.extend(campaigns(d)?);
+    }
+    let runs = read_pooled(&dirs)?;
+    Ok((runs, dirs.iter().map(|c| c.display().to_string()).collect()))
+}
+
 pub(crate) fn write(text: &str, out: Option<PathBuf>) -> Result<(), BoxError> {
     match out {
         // Through a temporary file and a rename: an interrupted write leaves the old file.
@@ -83,22 +96,7 @@ pub fn run(a: Args) -> Result<(), BoxError> {
     if let Some(dir) = &a.choices {
         return write(&register(dir)?, a.out);
     }
-    let mut records: Vec<RunRecord> = Vec::new();
-    let mut dirs = Vec::new();
-    for d in &a.records {
-        for c in campaigns(d)? {
-            let got = read_campaign(&c, true)?;
-            for r in got.records {
-                let dup = records
-                    .iter()
-                    .any(|o| o.scene == r.scene && o.seed == r.seed);
-                if !dup {
-                    records.push(r);
-                }
-            }
-            dirs.push(c.display().to_string());
-        }
-    }
+    let (records, dirs) = pooled_records(&a.records)?;
     let base = pressridge::scene::Scene::load(None, &a.set).map_err(|e| format!("--set: {e}"))?;
     let rows = findings(&records, a.min_seeds, &base)?;
     let model = if a.set.is_empty() {

@@ -3,8 +3,7 @@
 //! (`pressridge::table::redistribution`, docs/tables.md).
 
 use crate::BoxError;
-use crate::findings::{campaigns, write};
-use pressridge::campaign::{RunRecord, read_campaign};
+use crate::findings::{pooled_records, write};
 use pressridge::plot::redistribution::plot_redistribution;
 use pressridge::table::redistribution::{ensembles, markdown};
 use std::path::PathBuf;
@@ -26,21 +25,7 @@ pub struct Args {
 }
 
 pub fn run(a: Args) -> Result<(), BoxError> {
-    let mut records: Vec<RunRecord> = Vec::new();
-    let mut dirs = Vec::new();
-    for d in &a.records {
-        for c in campaigns(d)? {
-            for r in read_campaign(&c, true)?.records {
-                if !records
-                    .iter()
-                    .any(|o| o.scene == r.scene && o.seed == r.seed)
-                {
-                    records.push(r);
-                }
-            }
-            dirs.push(c.display().to_string());
-        }
-    }
+    let (records, dirs) = pooled_records(&a.records)?;
     let (rows, without) = ensembles(&records);
     if rows.is_empty() {
         return Err(format!(
