@@ -1,4 +1,5 @@
-//! How close the pile's contacts bring the leapfrog to its stability limit (docs/notes/speed-vs-error-former-model.md,
+//! How close the pile's contacts bring the leapfrog to its stability limit
+//! (docs/notes/speed-vs-error-former-model.md,
 //! "Fracture and the time step"). The stable step allows for one contact per block (with a
 //! margin of √2); a block pressed by several stiff contacts at once has faster modes.
 //!

@@ -1,4 +1,5 @@
-//! Joints broken against the time step (docs/notes/speed-vs-error-former-model.md, "Fracture and the time
+//! Joints broken against the time step (docs/notes/speed-vs-error-former-model.md, "Fracture
+//! and the time
 //! step"): reads a campaign of the fracture-dt kind (`data/campaigns/speed-vs-error/`) and
 //! prints, per step (`numerics.time_step_safety` or a fixed `numerics.time_step`) and per
 //! setting of its other axes, the joints broken by each seed, their mean with its 95 %

@@ -1,5 +1,6 @@
 //! Where the joints break in the first seconds of the Figure 5 scene, at several time steps
-//! (docs/notes/speed-vs-error-former-model.md, "Fracture and the time step"): in the pushed sheet (both blocks
+//! (docs/notes/speed-vs-error-former-model.md, "Fracture and the time step"): in the pushed
+//! sheet (both blocks
 //! still of the sheet when the joint severs), in the floe, or in rubble (a piece already broken
 //! off). Prints, per time-step safety factor, the joints severed in each, summed over seeds,
 //! and the contacts born overlapping (handed over from a severed joint or landing on a block

@@ -1,4 +1,5 @@
-//! The sheet's first failure against the floe at several time steps (docs/notes/speed-vs-error-former-model.md,
+//! The sheet's first failure against the floe at several time steps
+//! (docs/notes/speed-vs-error-former-model.md,
 //! "Fracture and the time step"): is the step's effect on fracture in the loading or in the
 //! failure itself?
 //!

@@ -1,4 +1,5 @@
-//! One joint released at the same moment at several time steps (docs/notes/speed-vs-error-former-model.md,
+//! One joint released at the same moment at several time steps
+//! (docs/notes/speed-vs-error-former-model.md,
 //! "Fracture and the time step"): how far does the stress in the other joints overshoot when
 //! a joint lets go, and does the overshoot depend on the step?
 //!

@@ -1,4 +1,5 @@
-//! A rubble piece struck by a block, at several time steps (docs/notes/speed-vs-error-former-model.md, "Fracture
+//! A rubble piece struck by a block, at several time steps
+//! (docs/notes/speed-vs-error-former-model.md, "Fracture
 //! and the time step"): does the peak stress a contact impact puts into a piece's joints depend
 //! on the step?
 //!

@@ -379,10 +379,11 @@ impl Default for OutputSection {
     }
 }
 
-/// `[experimental]`: options kept for the studies of docs/notes/speed-vs-error-former-model.md, each off by
-/// default and **not part of the supported scene format** (they may change or go without
-/// notice). A written scene holds only the options that are set, and no `[experimental]`
-/// section when none is, so the digests of the runs made without them are unchanged.
+/// `[experimental]`: options kept for the studies of
+/// docs/notes/speed-vs-error-former-model.md, each off by default and **not part of the
+/// supported scene format** (they may change or go without notice). A written scene holds
+/// only the options that are set, and no `[experimental]` section when none is, so the
+/// digests of the runs made without them are unchanged.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct ExperimentalSection {
@@ -405,18 +406,20 @@ pub struct ExperimentalSection {
     /// τ the stress compared is the elastic stress filtered by dσ_f/dt = (σ − σ_f)/τ, so a
     /// stress must last about τ to break ice: the dynamic-fracture "incubation time" idea,
     /// here to keep fracture from reading the leapfrog's high-frequency error
-    /// (docs/notes/speed-vs-error-former-model.md, "Fracture and the time step"). Experimental.
+    /// (docs/notes/speed-vs-error-former-model.md, "Fracture and the time step").
     #[serde(skip_serializing_if = "Option::is_none")]
     pub incubation_time: Option<f64>,
 }
 
 impl Default for ExperimentalSection {
+    /// The world's defaults ([`crate::dem::WorldParams`]): every option off.
     fn default() -> Self {
+        let w = crate::dem::WorldParams::default();
         Self {
-            joint_dashpot: Dashpot::Explicit,
-            contact_onset: ContactOnset::Area,
-            contact_dashpot_sweeps: 0,
-            incubation_time: None,
+            joint_dashpot: w.joint_dashpot,
+            contact_onset: w.contact_onset,
+            contact_dashpot_sweeps: w.contact_dashpot_sweeps,
+            incubation_time: w.incubation_time,
         }
     }
 }

@@ -10,8 +10,8 @@
 //!
 //! **The host models' shapes** (Icepack `ridge_itd`; parent thickness h, m):
 //! - Lipscomb et al. (2007), `krdg_redist = 1`: g(H) ∝ exp(−(H − H_min)/λ) for H ≥ H_min,
-//!   with H_min = min(2h, h + maxraft) (maxraft = 1 m, `ItdParams::maxraft`'s default) and λ = μ_rdg·√h (μ_rdg in m^½, 3 by default in
-//!   Icepack); mean H_min + λ;
+//!   with H_min = min(2h, h + maxraft) (maxraft = 1 m, `ItdParams::maxraft`'s default) and
+//!   λ = μ_rdg·√h (μ_rdg in m^½, 3 by default in Icepack); mean H_min + λ;
 //! - Hibler (1980), `krdg_redist = 0`: uniform on [H_min, 2·√(H*·h)] (H* in m, 25 by default);
 //!   mean (H_min + H_max)/2.
 //!

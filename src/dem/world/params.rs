@@ -32,7 +32,8 @@ pub struct WorldParams {
     /// How the joints' viscous stress of eq (1) is advanced in time. Default
     /// [`Dashpot::Explicit`] (the paper's form, at the half-step velocities); `Implicit`
     /// centres it at the mid-step velocities (experimental; see `Joint::apply_viscous`
-    /// and docs/notes/speed-vs-error-former-model.md, "Fracture and the time step"). Absent from states and
+    /// and docs/notes/speed-vs-error-former-model.md, "Fracture and the time step"). Absent
+    /// from states and
     /// scenes when explicit.
     #[serde(
         default = "Dashpot::explicit",
@@ -48,7 +49,8 @@ pub struct WorldParams {
     /// with the other contacts' viscous and friction forces left out (a Jacobi step, as
     /// [`Dashpot::Implicit`] describes); n ≥ 1 sweeps the contacts n times in order, each
     /// seeing the others' latest viscous and friction forces, towards the coupled solution
-    /// for a block with several contacts. Experimental (docs/notes/speed-vs-error-former-model.md, "Fracture
+    /// for a block with several contacts. Experimental
+    /// (docs/notes/speed-vs-error-former-model.md, "Fracture
     /// and the time step"); absent from states and scenes when 0.
     #[serde(default, skip_serializing_if = "is_zero")]
     pub contact_dashpot_sweeps: u32,
