@@ -261,9 +261,9 @@ impl FrictionGrid {
         (seen.len() == cell.len()).then_some(Self { mu, mu_w, cell })
     }
 
-    /// Spreads `data`, laid out (set, `rest`…) with `rest` ⊆ (thickness, volume) of `nh`
-    /// thicknesses and `nv` volumes, onto the grid: dimensions (thickness?, mu, mu_w,
-    /// volume?), cells without a set `fill`.
+    /// Spreads `data`, laid out (set, `rest`…) with `rest` ⊆ (thickness, inner) of `nh`
+    /// thicknesses and `nv` entries of the inner axis (`volume`, or `ridged_bin`), onto the
+    /// grid: dimensions (thickness?, mu, mu_w, inner?), cells without a set `fill`.
     fn spread<'a>(
         &self,
         rest: &[&'a str],
@@ -273,8 +273,10 @@ impl FrictionGrid {
     ) -> (Vec<&'a str>, Vec<f64>) {
         let (nm, nw) = (self.mu.len(), self.mu_w.len());
         let has = |d: &str| rest.contains(&d);
+        // The inner axis after thickness: `volume`, or another of `nv` entries (`ridged_bin`).
+        let inner = rest.iter().copied().find(|d| *d != "thickness");
         let outer = if has("thickness") { nh } else { 1 };
-        let vol = if has("volume") { nv } else { 1 };
+        let vol = if inner.is_some() { nv } else { 1 };
         let mut out = vec![fill; outer * nm * nw * vol];
         for (s, &(i, j)) in self.cell.iter().enumerate() {
             for o in 0..outer {
@@ -288,9 +290,7 @@ impl FrictionGrid {
             dims.push("thickness");
         }
         dims.extend(["mu", "mu_w"]);
-        if has("volume") {
-            dims.push("volume");
-        }
+        dims.extend(inner);
         (dims, out)
     }
 
@@ -354,11 +354,7 @@ fn define_ridged_distribution(
         }
     }
     let (dims, data): (Vec<&str>, Vec<f64>) = match grid {
-        Some(g) => {
-            let (mut d, x) = g.spread(&["thickness", "volume"], &data, f64::NAN, (nh, nb));
-            *d.last_mut().expect("spread keeps the trailing axis") = "ridged_bin";
-            (d, x)
-        }
+        Some(g) => g.spread(&["thickness", "ridged_bin"], &data, f64::NAN, (nh, nb)),
         None => (vec!["set", "thickness", "ridged_bin"], data),
     };
     let mut v = f.add_variable::<f64>("ridged_fraction", &dims).map_err(e)?;
