@@ -46,12 +46,14 @@ fn check_table(args: &[&str], page: &str) {
             "item {item}:\n{text}"
         );
     }
-    let rows = text
+    // The statement table ends with the line naming its runs; the evidence follows it.
+    let table = text.split("\nFrom ").next().unwrap();
+    let rows = table
         .lines()
         .filter(|l| l.starts_with("| ") && !l.starts_with("| item"))
         .count();
     let verdicts = ["| agree |", "| disagree |", "| unresolved |"];
-    let judged = text
+    let judged = table
         .lines()
         .filter(|l| verdicts.iter().any(|v| l.ends_with(v)))
         .count();
@@ -141,4 +143,29 @@ fn the_decided_models_register_is_made_from_its_committed_records() {
     for probe in ["viscous_length=1.0 (n = 8)", "drag_coefficient=0.3 (n = 8)"] {
         assert!(text.contains(probe), "{probe}:\n{text}");
     }
+}
+
+/// Under the table, each statement the model disagrees with gets the register's evidence: the
+/// closest any open choice comes, from the committed probe records (`data/choices40`). A
+/// register of another model (`data/choices`, the 20-m floe) gives no such section, and a
+/// missing one fails naming the option.
+#[test]
+fn the_disagreements_carry_the_registers_evidence() {
+    let o = findings(&[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8_lossy(&o.stdout);
+    let (_, evidence) = text
+        .split_once("the closest any open choice comes")
+        .expect("an evidence section");
+    for item in ["| a |", "| c1 |", "| e |"] {
+        assert!(evidence.contains(item), "{item}:\n{evidence}");
+    }
+    assert!(evidence.contains("no choice meets it"), "{evidence}");
+    assert!(!evidence.contains("floe.pin=false`:"), "{evidence}");
+    let o = findings(&["--register", "data/choices"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(!String::from_utf8_lossy(&o.stdout).contains("closest any open choice"));
+    let o = findings(&["--register", "data/no-such-dir"]);
+    assert!(!o.status.success());
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--register"));
 }

@@ -175,7 +175,7 @@ fn probe_setting(r: &RunRecord) -> String {
 
 /// Each probe setting's runs at friction `f`, pooled over the probe campaigns that hold it
 /// (a probe's later seeds in a campaign of their own), by the setting's label.
-fn by_setting(
+pub(crate) fn by_setting(
     probes: &[(String, Vec<RunRecord>)],
     f: (f64, f64),
 ) -> std::collections::BTreeMap<String, Vec<&RunRecord>> {
@@ -205,7 +205,7 @@ const FRICTION_STATEMENTS: [(&str, usize, f64); 4] = [
 ];
 
 /// The runs of `records` at friction `f`.
-fn at(records: &[RunRecord], f: (f64, f64)) -> Vec<&RunRecord> {
+pub(crate) fn at(records: &[RunRecord], f: (f64, f64)) -> Vec<&RunRecord> {
     records.iter().filter(|r| friction(r) == f).collect()
 }
 

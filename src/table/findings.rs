@@ -25,7 +25,10 @@ use crate::table::fit::student_t_quantile;
 use crate::table::rafting::{Outcome, RAFTING_REACH, outcome};
 use std::fmt::Write as _;
 
+mod evidence;
 mod friction;
+
+pub use evidence::{NOT_CHOICES, Register, evidence};
 
 /// The paper's bound on the sinks other than Φ_f, Φ_i, ΔPE and kinetic energy, as a fraction
 /// of the work: "in total, typically amount to less than 5% of the energy consumed".
@@ -373,7 +376,7 @@ pub fn findings(
             Some(true),
         ),
         (
-            "max sail height (m)",
+            evidence::SAIL_AT_MODULUS,
             "\"there were no significant differences between the final profiles\"",
             |r: &RunRecord| Some(r.metrics.max_sail_height),
             None,

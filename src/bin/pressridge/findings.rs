@@ -4,7 +4,7 @@
 use crate::BoxError;
 use pressridge::campaign::{RunRecord, read_campaign, read_pooled};
 use pressridge::table::choices::effects;
-use pressridge::table::findings::{findings, markdown};
+use pressridge::table::findings::{Register, evidence, findings, markdown};
 use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
@@ -28,6 +28,12 @@ pub struct Args {
     /// later seeds in a campaign of their own) (docs/choices.md).
     #[arg(long, value_name = "DIR", conflicts_with = "records")]
     choices: Option<PathBuf>,
+    /// The register of open choices whose probes are the evidence under the table: for each
+    /// statement the model disagrees with, the closest any choice comes (default
+    /// `data/choices40` where it exists; left out when the register is not of the model
+    /// tested, e.g. with `--set`).
+    #[arg(long, value_name = "DIR", conflicts_with = "choices")]
+    register: Option<PathBuf>,
     /// Write the table here (Markdown) instead of to standard output.
     #[arg(long)]
     out: Option<PathBuf>,
@@ -54,6 +60,15 @@ pub(crate) fn campaigns(dir: &Path) -> Result<Vec<PathBuf>, BoxError> {
 /// campaign whose name starts with `baseline` (e.g. `baseline-more` with later seeds), the
 /// probes all others.
 fn register(dir: &Path) -> Result<String, BoxError> {
+    let (base, probes) = register_records(dir)?;
+    Ok(effects(&base, &probes))
+}
+
+/// The register's records under `dir`: the baseline's runs and each probe campaign's, by
+/// name ([`register`]).
+type RegisterRecords = (Vec<RunRecord>, Vec<(String, Vec<RunRecord>)>);
+
+fn register_records(dir: &Path) -> Result<RegisterRecords, BoxError> {
     let (mut base, mut probes) = (Vec::new(), Vec::new());
     for c in campaigns(dir)? {
         let name = c
@@ -66,7 +81,7 @@ fn register(dir: &Path) -> Result<String, BoxError> {
             probes.push((name, records));
         }
     }
-    Ok(effects(&base, &probes))
+    Ok((base, probes))
 }
 
 /// The runs of the campaign directories at or directly below each of `records` (`--records`),
@@ -104,11 +119,25 @@ pub fn run(a: Args) -> Result<(), BoxError> {
     } else {
         format!(" The model: the Figure 5 scene with {}.", a.set.join(", "))
     };
-    let text = format!(
+    let mut text = format!(
         "{}\nFrom {} runs of: {}.{model}\n",
         markdown(&rows),
         records.len(),
         dirs.join(", ")
     );
+    let dir = a.register.clone().or_else(|| {
+        let d = PathBuf::from("data/choices40");
+        d.is_dir().then_some(d)
+    });
+    if let Some(dir) = dir {
+        let (baseline, probes) = register_records(&dir).map_err(|e| format!("--register: {e}"))?;
+        let reg = Register {
+            baseline: &baseline,
+            probes: &probes,
+        };
+        if let Some(s) = evidence(&rows, &records, &base, &reg, &dir.display().to_string()) {
+            text.push_str(&s);
+        }
+    }
     write(&text, a.out)
 }
