@@ -122,6 +122,7 @@
 
 pub mod campaign;
 pub mod dem;
+pub mod energy;
 pub mod eta;
 pub mod ffi;
 pub(crate) mod interp;

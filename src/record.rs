@@ -4,8 +4,7 @@
 //! so that no import runs upward (docs/architecture.md). How a record is found on disk and
 //! verified against its files stays in [`crate::campaign`].
 
-use crate::dem::EnergyBudget;
-use crate::dem::ledger::{Keep, LedgerTerm, TermSet, Terms};
+use crate::energy::{EnergyBudget, Keep, LedgerTerm, TermSet, Terms};
 use crate::observe::{Profile, RidgeMetrics, RidgeSummary};
 use crate::scene::Scene;
 use crate::simulation::{self, Summary};
@@ -105,8 +104,8 @@ pub struct RunDigest {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::dem::ledger::LEDGER_TERMS;
-    use crate::dem::ledger::terms::check;
+    use crate::energy::LEDGER_TERMS;
+    use crate::energy::terms::check;
 
     /// A campaign's sample keeps the terms of the table's `sample` column under their names,
     /// in the table's order, between the volume and the mean force.
@@ -120,7 +119,7 @@ mod tests {
         }
     }
 
-    /// A sample records every dissipation of the ledger ([`crate::dem::ledger::LEDGER_TERMS`]),
+    /// A sample records every dissipation of the ledger ([`crate::energy::LEDGER_TERMS`]),
     /// so the dissipation gate of the tables sees them all.
     #[test]
     fn run_sample_keeps_every_dissipation() {

@@ -2,8 +2,8 @@
 //! ridging force at the scene's interval, and summarise. No file formats here (see
 //! [`crate::io`]).
 
-use crate::dem::ledger::{Keep, LEDGER_TERMS, LedgerTerm, N_TERMS, Sign, TermSet, Terms};
-use crate::dem::{EnergyBudget, Role, Snapshot, World};
+use crate::dem::{Role, Snapshot, World};
+use crate::energy::{EnergyBudget, Keep, LEDGER_TERMS, LedgerTerm, N_TERMS, Sign, TermSet, Terms};
 use crate::scene::{Scene, SceneError};
 use serde::{Deserialize, Serialize};
 
@@ -324,7 +324,7 @@ pub(crate) fn summary_without_ledger() -> serde_json::Value {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::dem::ledger::terms::check;
+    use crate::energy::terms::check;
 
     /// `summary.json` keeps every ledger term of the table under its name, in the table's
     /// order, with `work_eq9` right after the inputs, between the run's head and tail.

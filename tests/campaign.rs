@@ -2,7 +2,7 @@
 //! its first finished run and resumed without redoing anything.
 
 use pressridge::campaign::{CampaignSpec, read_campaign, read_records};
-use pressridge::dem::EnergyBudget;
+use pressridge::energy::EnergyBudget;
 use std::time::{Duration, Instant};
 
 const SPEC: &str = r#"

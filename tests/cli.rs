@@ -31,7 +31,7 @@ fn simulate_then_render() {
         serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
     // Every ledger term of the table is a key of the summary and, with its unit, a column
     // of the series between the time and the two forces.
-    let terms = &pressridge::dem::ledger::LEDGER_TERMS;
+    let terms = &pressridge::energy::LEDGER_TERMS;
     for t in terms {
         assert!(summary[t.name].is_number(), "summary lacks {}", t.name);
     }

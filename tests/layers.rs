@@ -8,7 +8,7 @@ use std::path::Path;
 
 /// Bottom to top; a module may use only modules of the layers before its own.
 const LAYERS: &[&[&str]] = &[
-    &["limits", "interp", "eta"],
+    &["limits", "interp", "eta", "energy"],
     &["dem", "itd"],
     &["scene", "observe"],
     &["simulation"],
@@ -88,4 +88,20 @@ fn no_import_points_up() {
             "{m} is listed but is not a module of src/"
         );
     }
+}
+
+/// A module per concern, none long (issue 33): no source file under `src/` is over 600 lines.
+#[test]
+fn no_source_file_is_over_600_lines() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files = Vec::new();
+    sources(&src, &mut files);
+    let long: Vec<String> = files
+        .iter()
+        .filter_map(|f| {
+            let n = std::fs::read_to_string(f).unwrap().lines().count();
+            (n > 600).then(|| format!("{} ({n} lines)", f.strip_prefix(&src).unwrap().display()))
+        })
+        .collect();
+    assert!(long.is_empty(), "split these: {long:?}");
 }

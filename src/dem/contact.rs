@@ -389,7 +389,7 @@ impl ContactSet {
 
     /// Books the work of this step's contact forces with the mid-step velocities
     /// `vbar`, `wbar` (average of the velocities before and after the step), so that the
-    /// ledger and the kinetic energy agree exactly (see [`crate::dem::ledger`]).
+    /// ledger and the kinetic energy agree exactly (see `dem::ledger`).
     pub fn book_work(
         &mut self,
         bodies: &Bodies,

@@ -10,7 +10,7 @@
 //! - `fracture` — crack initiation and growth, splitting pieces (crate-private);
 //! - `boundary` — the pushed sheet, eqs (7)–(8), floe supports (crate-private);
 //! - [`water`] — buoyancy and drag;
-//! - [`ledger`] — the energy budget, eqs (9)–(12);
+//! - `ledger` — booking the energy budget of eqs (9)–(12) ([`crate::energy`]) (crate-private);
 //! - [`world`] — the leapfrog step, eqs (5)–(6).
 
 pub mod body;
@@ -21,7 +21,7 @@ pub(crate) mod fracture;
 pub mod geometry;
 pub mod joint;
 pub(crate) mod lanes;
-pub mod ledger;
+pub(crate) mod ledger;
 mod numerics;
 pub mod water;
 pub mod world;
@@ -30,7 +30,6 @@ pub use body::{Block, Bodies, BodyId, Drive, Role, Shape, ShapeError};
 pub use contact::{Contact, ContactParams};
 pub use geometry::V2;
 pub use joint::{Joint, JointMaterial};
-pub use ledger::EnergyBudget;
 pub use numerics::{ContactOnset, Dashpot};
 pub use water::{DragBodies, WaterParams};
 pub use world::{Snapshot, World, WorldError, WorldParams};

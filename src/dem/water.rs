@@ -173,7 +173,7 @@ impl WaterForces {
         }
     }
 
-    /// Books this step's water work with mid-step velocities (see [`crate::dem::ledger`]).
+    /// Books this step's water work with mid-step velocities (see `dem::ledger`).
     pub fn book_work(
         &self,
         bodies: &Bodies,

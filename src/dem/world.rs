@@ -20,9 +20,10 @@ use super::contact::{Contact, ContactSet};
 use super::fracture::JointSet;
 use super::geometry::{V2, below_line, overlap};
 use super::joint::{Joint, JointMaterial};
-use super::ledger::{Accumulators, EnergyBudget, Stored};
+use super::ledger::{Accumulators, Stored, budget};
 use super::numerics::Dashpot;
 use super::water::WaterForces;
+use crate::energy::EnergyBudget;
 use serde::{Deserialize, Serialize};
 
 mod fracture;
@@ -520,7 +521,7 @@ impl World {
             contact_normal: sn,
             contact_tangential: st,
         };
-        EnergyBudget::from_parts(self.time, &self.acc, self.bodies.kinetic_energy(), &stored)
+        budget(self.time, &self.acc, self.bodies.kinetic_energy(), &stored)
     }
 
     /// The ridging force of eq (9) (N/m): minus the x component of the contact forces

@@ -2,7 +2,7 @@
 
 use super::layout::{Axis, Layout};
 use super::{PlotError, draw_err, write_figure};
-use crate::dem::EnergyBudget;
+use crate::energy::EnergyBudget;
 use crate::simulation::Sample;
 use plotters::prelude::*;
 use std::path::Path;

@@ -6,7 +6,7 @@
 //! a run (a flank slope with fewer than two strips in the 20–80 % band) is left out of that
 //! metric's statistics only, and its count says how many runs were behind it.
 
-use crate::dem::ledger::{LEDGER_TERMS, N_TERMS};
+use crate::energy::{LEDGER_TERMS, N_TERMS};
 use crate::record::RunRecord;
 
 /// Mean, sample standard deviation and count of one quantity over runs.

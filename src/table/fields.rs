@@ -2,12 +2,12 @@
 //! list behind the NetCDF file (`crate::io::table_netcdf`) and the in-memory lookup
 //! ([`RidgeTable::lookup`]), so that a table need not pass through a file to be queried. The
 //! ledger terms among them (the ensemble mean and spread of work and ΔPE) take their names,
-//! units and long names from the ledger's table ([`crate::dem::ledger::LEDGER_TERMS`]).
+//! units and long names from the ledger's table ([`crate::energy::LEDGER_TERMS`]).
 
 use super::fit::Band;
 use super::lookup::{Axes, Field, LookupError, RidgeLookup};
 use super::tabulate::{RidgeTable, SetFits};
-use crate::dem::ledger::{LedgerTerm, term};
+use crate::energy::{LedgerTerm, term};
 use ndarray::{Array, Array1, Array2, ArrayView1, CowArray, Dimension, IxDyn};
 
 /// The values of a [`TableVariable`]: a view of the table's own array where the variable is

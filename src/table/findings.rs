@@ -16,7 +16,7 @@
 //! Intervals: Student's t for one ensemble's mean, Welch's t for a difference of two
 //! ensembles' means, the ordinary least-squares slope's t interval for a trend.
 
-use crate::dem::ledger::EnergyBudget;
+use crate::energy::EnergyBudget;
 use crate::record::RunRecord;
 use crate::scene::Scene;
 use crate::table::choices::{other_sinks_fraction, phi_i};

@@ -167,7 +167,7 @@ mod tests {
     fn record(floe_length: Option<f64>, thickness: f64, overrun: f64) -> RunRecord {
         let floe_thickness = (thickness * 20.0 / 3.0).max(2.0);
         let mut json = crate::simulation::summary_without_ledger();
-        for t in crate::dem::ledger::LEDGER_TERMS {
+        for t in crate::energy::LEDGER_TERMS {
             json[t.name] = 0.0.into();
         }
         json["sheet_overrun_max"] = overrun.into();

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Counts the public items of a module of the library (default `dem`), as rustdoc sees them:
+# named items (modules, structs, enums, traits, functions, constants, type aliases), the
+# variants of its enums, and the public inherent methods of its types. Issue 33 asks for at
+# most 120 in src/dem; docs/architecture.md quotes the last count.
+#   scripts/public-items.sh [MODULE]
+# Needs the nightly toolchain (rustdoc's JSON output is unstable); writes target/rdjson.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+module=${1:-dem}
+cargo +nightly rustdoc --quiet --lib --no-default-features --target-dir target/rdjson \
+  -- -Z unstable-options --output-format json
+python3 - "$module" <<'PY'
+import json, sys
+module = sys.argv[1]
+d = json.load(open("target/rdjson/doc/pressridge.json"))
+idx, paths = d["index"], d["paths"]
+named, variants, methods = 0, 0, 0
+for k, p in paths.items():
+    if p["path"][:2] != ["pressridge", module] or k not in idx or p.get("crate_id", 0) != 0:
+        continue
+    if p["kind"] == "variant":
+        variants += 1
+        continue
+    named += 1
+    inner = idx[k]["inner"]
+    for kind in ("struct", "enum"):
+        if kind in inner:
+            for i in inner[kind]["impls"]:
+                im = idx[str(i)]["inner"]["impl"]
+                if im["trait"] is None and not im.get("is_synthetic") and not im.get("blanket_impl"):
+                    methods += sum(idx[str(m)]["visibility"] == "public" for m in im["items"])
+print(f"src/{module}: {named} named items + {methods} methods = {named + methods}; "
+      f"with {variants} enum variants {named + methods + variants}")
+PY
