@@ -6,7 +6,7 @@ use criterion::{Criterion, criterion_group, criterion_main};
 use parry2d_f64::mass_properties::details::convex_polygon_area_and_center_of_mass;
 use parry2d_f64::na::Point2;
 use parry2d_f64::transformation::convex_polygons_intersection_points;
-use pressridge::dem::geometry::{Outline, V2, intersect, overlap};
+use pressridge::dem::{Outline, V2, intersect, overlap};
 use pressridge::dem::{Shape, World};
 use pressridge::scene::Scene;
 use std::hint::black_box;

@@ -16,7 +16,7 @@
 //! cargo run --release --example contact_modes -- STATE.json [DT_S]
 //! ```
 
-use pressridge::dem::geometry::overlap;
+use pressridge::dem::overlap;
 use pressridge::dem::{V2, World};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

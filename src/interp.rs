@@ -1,6 +1,6 @@
 //! Piecewise-linear interpolation, every routine of the crate: on a strictly increasing axis
 //! ([`bracket`], [`lerp`]), the one rule behind every table lookup: the C_f table of the
-//! strength routine ([`crate::itd::cf::CfTable`]) and the ridging lookup table
+//! strength routine ([`crate::itd::CfTable`]) and the ridging lookup table
 //! ([`crate::table::lookup::RidgeLookup`]); and [`resample`], a run's samples onto the
 //! table's volume grid ([`crate::table::tabulate`]).
 //!

@@ -24,7 +24,7 @@
 //!   metric is `None`);
 //! - L/h: mean length of the rubble pieces over the sheet thickness.
 
-use crate::dem::geometry::V2;
+use crate::dem::V2;
 use crate::dem::{Role, Snapshot};
 use serde::{Deserialize, Serialize};
 
@@ -383,7 +383,7 @@ pub fn metrics(p: &Profile, state: Option<(&Snapshot, &[f64], f64)>) -> RidgeMet
     if let Some((s, lengths, thickness)) = state {
         let level = s.params.water.as_ref().map_or(0.0, |w| w.level);
         for b in s.bodies.iter().filter(|b| b.role == Role::Rubble) {
-            let (below, _) = crate::dem::geometry::below_line(&b.world_outline(), level);
+            let (below, _) = crate::dem::below_line(&b.world_outline(), level);
             m.keel_ice_area += below;
             m.sail_ice_area += b.shape.area() - below;
         }

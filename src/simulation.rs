@@ -49,7 +49,7 @@ pub struct Summary {
     /// Number of joints severed (blocks broken from the sheet, floe or rubble).
     pub blocks_broken: u64,
     /// Severed joints whose two blocks overlapped at severance; their contacts were born
-    /// with that overlap forgiven (see [`crate::dem::contact`]). Absent in older runs.
+    /// with that overlap forgiven (see `dem::contact`). Absent in older runs.
     #[serde(default)]
     pub handover_contacts: u64,
     /// Largest overlap forgiven at a severance (m²).

@@ -5,13 +5,13 @@ use std::sync::Arc;
 
 use approx::assert_relative_eq;
 use ndarray::{Array1, Array2};
-use pressridge::itd::participation::participation;
-use pressridge::itd::redistribution::{category_fractions, ridge_geometry};
+use pressridge::itd::participation;
 use pressridge::itd::{
     CategoryBounds, Cf, CfPreset, CfProvider, CfTable, ColumnError, ItdError, ItdParams,
     Participation, Redistribution, StrengthFormula, StrengthOptions, Workspace, category_bounds,
     strength_batch, strength_column,
 };
+use pressridge::itd::{category_fractions, ridge_geometry};
 
 /// C_p = g ρ_i (ρ_w − ρ_i) / (2 ρ_w) = 0.5 · 9.80616 · 109 · 917 / 1026 = 477.6584359064328 N/m³.
 const CP: f64 = 477.658_435_906_432_8;

@@ -258,7 +258,7 @@ impl World {
     }
 
     /// Contacts born overlapping so far (from a severed joint, or a sheet block grown
-    /// through rubble), and the largest such overlap (m²): see [`crate::dem::contact`].
+    /// through rubble), and the largest such overlap (m²): see `dem::contact`.
     pub fn handovers(&self) -> Handovers {
         self.handovers
     }
@@ -567,7 +567,7 @@ impl World {
     }
 }
 
-/// Contacts born overlapping, their overlap forgiven (see [`crate::dem::contact`]): from a
+/// Contacts born overlapping, their overlap forgiven (see `dem::contact`): from a
 /// joint that severed while its blocks overlapped, or a sheet block grown through rubble.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]

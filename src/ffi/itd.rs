@@ -9,14 +9,14 @@ use ndarray::{Array1, ArrayViewMut1};
 use super::layout::{Layout, Region, check_disjoint, check_ptr};
 use super::tables::PressridgeCfTable;
 use super::{FfiError, FfiResult, PRESSRIDGE_ERR_BAD_VALUE, PressridgeGrid, guard, put};
-use crate::itd::bounds::validate_bounds;
-use crate::itd::strength::{FAST_MAX_NCAT, StrengthConsts, strength_column_constant_cf};
+use crate::itd::validate_bounds;
 use crate::itd::{
     CategoryBounds, Cf, CfPreset, ColumnStrength, ItdError, ItdParams, Participation,
     Redistribution, RidgeDiagnostics, RidgeForcing, RidgeOptions, RidgeRatesMut, StrengthFormula,
     StrengthOptions, Workspace, category_bounds, ridge_batch_masked, ridge_column,
     strength_batch_masked, strength_column,
 };
+use crate::itd::{FAST_MAX_NCAT, StrengthConsts, strength_column_constant_cf};
 
 /// Scratch space of the single-column strength call (Icepack-style hosts call once per
 /// cell): one per thread, reused, so that such calls do not allocate.

@@ -8,46 +8,51 @@
 //!
 //! Design: the core is a per-column function on plain slices (`aicen`, `vicen` of length
 //! `ncat`, scalar `aice0`) that uses a reusable [`Workspace`] and never allocates; batched
-//! drivers ([`strength::strength_batch`], [`ridging::ridge_batch`]) loop over `ncol` columns
+//! drivers ([`strength_batch`], [`ridge_batch`]) loop over `ncol` columns
 //! given as 2-D `ndarray` views of shape `(ncat, ncol)` with any strides (so Fortran
 //! column-major `aicen(ncat, ncol)` and NetCDF `(ncat, y, x)` both pass without copies).
 //! No module here knows about NetCDF, plotting or the command line.
 
-pub mod bounds;
-pub mod cf;
+mod bounds;
+mod cf;
 mod lanes;
-pub mod named_params;
-pub mod params;
-pub mod participation;
-pub mod redistribution;
-pub mod ridge_step;
-pub mod ridge_step_batch;
-pub mod ridging;
-pub mod strength;
-pub mod tracers;
+mod named_params;
+mod params;
+mod participation;
+mod redistribution;
+mod ridge_step;
+mod strength;
+mod tracers;
 mod vexp;
 
+pub(crate) use bounds::validate_bounds;
 pub use bounds::{CategoryBounds, category_bounds};
 pub use cf::{Cf, CfLookup, CfPreset, CfProvider, CfTable};
 pub use named_params::{NamedParams, ParamError, ParamGroup, ParamMeta};
 pub use params::{ItdParams, Participation, Redistribution, StrengthFormula};
-pub use ridge_step::{
-    Closing, ColumnMut, OceanFluxes, RidgeStepOptions, RidgeStepParams, SaltFlux, StepDiagnostics,
-    StepForcing, StepParamMeta, StepWorkspace, deformation_terms, percent_per_day_to_per_second,
-    ridge_step_column,
+pub use participation::participation;
+pub use redistribution::{
+    RidgeGeometry, category_fractions, category_fractions_all, mean_square_ridge_thickness,
+    net_to_gross, ridge_geometry,
 };
-pub use ridge_step_batch::{
+pub use ridge_step::area_volume::{
+    RidgeDiagnostics, RidgeForcing, RidgeOptions, RidgeRatesMut, ridge_batch, ridge_batch_masked,
+    ridge_column,
+};
+pub use ridge_step::batch::{
     BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, OutputMeta, SPECIES_OUTPUTS,
     StepBatchMut, ridge_step_batch, species_counts,
 };
-pub use ridging::{
-    RidgeDiagnostics, RidgeForcing, RidgeOptions, RidgeRatesMut, ridge_batch, ridge_batch_masked,
-    ridge_column,
+pub use ridge_step::{
+    Closing, ColumnMut, OceanFluxes, RidgeStepOptions, RidgeStepParams, SECONDS_PER_DAY, SaltFlux,
+    StepDiagnostics, StepForcing, StepParamMeta, StepWorkspace, deformation_terms,
+    percent_per_day_to_per_second, ridge_step_column,
 };
 pub use strength::{
     BatchSummary, CF_CLAMPED_MATERIAL_SHARE, ColumnStrength, StrengthOptions, strength_batch,
     strength_batch_masked, strength_column,
 };
+pub(crate) use strength::{FAST_MAX_NCAT, StrengthConsts, strength_column_constant_cf};
 pub use tracers::{
     BgcKind, BgcTracers, CiceLayoutSpec, CiceTracerFlags, LAYOUT_PRESETS, LayoutDetectError,
     LayoutSpecError, MAX_AERO, MAX_ISO, MAX_NBTRCR, TracerBase, TracerField, TracerLayout,

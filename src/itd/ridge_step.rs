@@ -27,6 +27,8 @@
 //! `workspace.rs` the scratch, `passes.rs` the ridging passes, `checks.rs` the input and
 //! output checks.
 
+pub(crate) mod area_volume;
+pub(crate) mod batch;
 mod checks;
 mod cleanup;
 mod constants;

@@ -70,7 +70,7 @@ impl Window {
     /// of the rubble's bounding box, all with a `margin` (m). `None` when the state holds
     /// no rubble. Metres stay square when drawn ([`render_state`]), whatever the shape.
     pub fn fit_ridge(s: &Snapshot, reach: f64, margin: f64) -> Option<Window> {
-        let bbox = |b: &crate::dem::world::BodyState| {
+        let bbox = |b: &crate::dem::BodyState| {
             let mut w = Window {
                 x0: f64::INFINITY,
                 x1: f64::NEG_INFINITY,
@@ -85,7 +85,7 @@ impl Window {
             }
             w
         };
-        let is_rubble = |b: &crate::dem::world::BodyState| {
+        let is_rubble = |b: &crate::dem::BodyState| {
             matches!(b.role, Role::Rubble | Role::Block) && !b.drive.is_kinematic()
         };
         let rubble = s

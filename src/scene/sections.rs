@@ -65,7 +65,7 @@ impl Default for WaterSection {
 #[serde(deny_unknown_fields, default)]
 pub struct NumericsSection {
     /// Safety factor on the stable time step (dimensionless, in (0, 1]). Default
-    /// [`crate::dem::world::DEFAULT_TIME_STEP_SAFETY`]; see docs/speed-vs-error.md.
+    /// [`crate::dem::DEFAULT_TIME_STEP_SAFETY`]; see docs/speed-vs-error.md.
     pub time_step_safety: f64,
     /// Fixed time step (s); 0 derives it from the stiffest element. Default 0. A value
     /// above the scene's stable limit is refused before the run, with the limit.
@@ -81,7 +81,7 @@ pub struct NumericsSection {
 impl Default for NumericsSection {
     fn default() -> Self {
         Self {
-            time_step_safety: crate::dem::world::DEFAULT_TIME_STEP_SAFETY,
+            time_step_safety: crate::dem::DEFAULT_TIME_STEP_SAFETY,
             time_step: 0.0,
             contact_dashpot: Dashpot::default(),
             sample_interval: 0.2,
@@ -399,7 +399,7 @@ pub struct ExperimentalSection {
     /// Gauss–Seidel sweeps of the implicit contact dashpot over the contacts (count, 0–50):
     /// 0 (default) solves each contact alone. See
     /// [`crate::dem::WorldParams::contact_dashpot_sweeps`].
-    #[serde(skip_serializing_if = "crate::dem::world::is_zero")]
+    #[serde(skip_serializing_if = "crate::dem::is_zero")]
     pub contact_dashpot_sweeps: u32,
     /// Incubation time τ of crack initiation (s), or none. Default none: the paper's test,
     /// a crack starts the first step the elastic surface stress exceeds the strength. With

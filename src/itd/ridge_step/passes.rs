@@ -6,6 +6,7 @@
 // Several parallel per-category arrays are indexed by the category number, as in Icepack.
 #![allow(clippy::needless_range_loop)]
 
+use super::area_volume::{asum_ridging, close_and_open};
 use super::cleanup::cleanup_itd;
 use super::{
     Closing, ColumnMut, OceanFluxes, RidgeStepOptions, StepDiagnostics, StepForcing, StepWorkspace,
@@ -13,7 +14,6 @@ use super::{
 use crate::itd::ColumnError;
 use crate::itd::params::Redistribution;
 use crate::itd::redistribution::{RidgeGeometry, category_fractions_all};
-use crate::itd::ridging::{asum_ridging, close_and_open};
 use crate::itd::tracers::{MAX_AERO, MAX_ISO, MAX_NBTRCR, TracerLayout};
 
 /// Sums of one ridging pass and of the whole step (Icepack `ridge_ice` locals).

@@ -15,10 +15,10 @@
 
 use ndarray::{ArrayView1, ArrayViewMut1, ArrayViewMut2, Axis};
 
-use super::bounds::validate_bounds;
-use super::params::{ItdParams, Participation, Redistribution};
-use super::redistribution::{RidgeGeometry, category_fractions};
-use super::{ColumnError, ItdError, Workspace, check_column, check_len, check_shape};
+use crate::itd::bounds::validate_bounds;
+use crate::itd::params::{ItdParams, Participation, Redistribution};
+use crate::itd::redistribution::{RidgeGeometry, category_fractions};
+use crate::itd::{ColumnError, ItdError, Workspace, check_column, check_len, check_shape};
 
 /// Options of the ridging step; the default is CICE's (exponential, exponential).
 #[derive(Debug, Clone, Copy, Default)]

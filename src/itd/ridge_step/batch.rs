@@ -9,12 +9,12 @@
 
 use ndarray::{ArrayView1, ArrayViewMut1, ArrayViewMut2, ArrayViewMut3};
 
-use super::ridge_step::{
+use super::{
     Closing, ColumnMut, OceanFluxes, RidgeStepOptions, StepForcing, StepWorkspace,
     ridge_step_column,
 };
-use super::tracers::TracerLayout;
-use super::{ItdError, check_len, check_shape};
+use crate::itd::tracers::TracerLayout;
+use crate::itd::{ItdError, check_len, check_shape};
 
 /// Name, CF units and long name of one output of the batched step.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
