@@ -32,7 +32,8 @@
 //!     full=data/speed-vs-error/chord-steps@numerics.time_step_safety=1.0
 //! ```
 
-use pressridge::campaign::{RunRecord, read_campaign};
+use pressridge::campaign::read_campaign;
+use pressridge::record::RunRecord;
 use pressridge::table::ensemble::{Stat, quantity};
 use std::collections::BTreeMap;
 use std::path::Path;

@@ -31,7 +31,7 @@ use crate::dem::Snapshot;
 use crate::io::IoError;
 use crate::io::state::{read_json, save_state, write_json};
 use crate::observe::{self, RidgeSummary};
-pub use crate::record::{RunDigest, RunRecord, RunSample};
+use crate::record::{RunDigest, RunRecord, RunSample};
 
 mod read;
 mod spec;

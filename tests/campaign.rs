@@ -616,7 +616,7 @@ fn tiny_campaign_is_resumable_and_complete() {
         String::from_utf8_lossy(&res.stderr)
     );
     let (_, again) = read_records(&out).unwrap();
-    let strip = |rs: &[pressridge::campaign::RunRecord]| {
+    let strip = |rs: &[pressridge::record::RunRecord]| {
         rs.iter()
             .cloned()
             .map(|mut r| {

@@ -6,7 +6,8 @@
 mod common;
 
 use common::*;
-use pressridge::campaign::{RunRecord, read_campaign, read_records};
+use pressridge::campaign::{read_campaign, read_records};
+use pressridge::record::RunRecord;
 use std::path::Path;
 use std::process::Command;
 use std::time::{Duration, Instant};

@@ -105,3 +105,27 @@ fn no_source_file_is_over_600_lines() {
         .collect();
     assert!(long.is_empty(), "split these: {long:?}");
 }
+
+/// One public path per name (issue 33): the simulator's and the thickness-distribution
+/// physics' modules are private behind their `pub use` fronts (`src/dem/mod.rs`,
+/// `src/itd/mod.rs`), and no module re-exports another top-level module's public items
+/// (`pub use crate::…`), which would give them a second path. `scripts/public-items.sh`
+/// lists any second path rustdoc sees.
+#[test]
+fn one_public_path_per_name() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files = Vec::new();
+    sources(&src, &mut files);
+    let mut bad = Vec::new();
+    for f in &files {
+        let rel = f.strip_prefix(&src).unwrap().display().to_string();
+        let text = std::fs::read_to_string(f).unwrap();
+        for line in text.lines().map(str::trim_start) {
+            let front = rel.starts_with("dem/") || rel.starts_with("itd/");
+            if line.starts_with("pub use crate::") || (front && line.starts_with("pub mod ")) {
+                bad.push(format!("src/{rel}: {line}"));
+            }
+        }
+    }
+    assert!(bad.is_empty(), "a second public path: {bad:#?}");
+}

@@ -2,7 +2,8 @@
 //! directories (issue 30's statement table, `pressridge::table::findings`).
 
 use crate::BoxError;
-use pressridge::campaign::{RunRecord, read_campaign, read_pooled};
+use pressridge::campaign::{read_campaign, read_pooled};
+use pressridge::record::RunRecord;
 use pressridge::table::choices::effects;
 use pressridge::table::findings::{Register, evidence, findings, markdown};
 use std::path::{Path, PathBuf};
