@@ -127,6 +127,25 @@ fn cantilever_bends_like_euler_bernoulli() {
     assert!((e.elastic_energy - 0.5 * p * delta).abs() < 0.01 * 0.5 * p * delta);
 }
 
+/// Water of the paper's density (kg/m³) for the floating-sheet tests.
+const RHO_W: f64 = 1010.0;
+
+/// A world of still water without drag and with light global damping, for a sheet lifted
+/// quasi-statically; and the height (m) of a floating H-thick block's centre in it.
+fn still_water() -> (World, f64) {
+    let w = World::new(WorldParams {
+        water: Some(WaterParams {
+            density: RHO_W,
+            drag_coefficient: 0.0,
+            ..WaterParams::default()
+        }),
+        global_damping: 3.0,
+        ..WorldParams::default()
+    })
+    .unwrap();
+    (w, H / 2.0 - H * 920.0 / RHO_W)
+}
+
 /// A floating sheet lifted at its free end, slowly, first cracks where the moment of a
 /// semi-infinite beam on an elastic foundation peaks (Hetényi 1946): at π/(4β) from the
 /// load, β = (ρ_w·g/(4·EI))^¼ — within 20 %.
@@ -138,18 +157,7 @@ fn cantilever_bends_like_euler_bernoulli() {
 /// uses a 100 kPa strength: the place of the moment peak does not depend on the strength.
 #[test]
 fn floating_sheet_first_breaks_at_hetenyi_distance() {
-    let rho_w = 1010.0;
-    let mut w = World::new(WorldParams {
-        water: Some(WaterParams {
-            density: rho_w,
-            drag_coefficient: 0.0,
-            ..WaterParams::default()
-        }),
-        global_damping: 3.0,
-        ..WorldParams::default()
-    })
-    .unwrap();
-    let yc = H / 2.0 - H * 920.0 / rho_w;
+    let (mut w, yc) = still_water();
     let n = 120; // 30 m: far longer than 1/β ≈ 2.5 m.
     let ids = row(&mut w, n, yc, Drive::FREE, 100e3);
     let tip = *ids.last().unwrap();
@@ -181,7 +189,7 @@ fn floating_sheet_first_breaks_at_hetenyi_distance() {
     );
     let got = first.expect("the sheet never cracked");
     eprintln!("first crack at {got} m, lift {lift} m");
-    let beta = (rho_w * 9.81 / (4.0 * flexural_rigidity())).powf(0.25);
+    let beta = (RHO_W * 9.81 / (4.0 * flexural_rigidity())).powf(0.25);
     let theory = std::f64::consts::PI / (4.0 * beta);
     assert!(
         ((got - theory) / theory).abs() < 0.2,
@@ -202,23 +210,12 @@ fn floating_sheet_first_breaks_at_hetenyi_distance() {
 /// "Low friction").
 #[test]
 fn floating_sheet_lifted_at_its_end_cracks_at_hetenyis_lift() {
-    let rho_w = 1010.0;
-    let k = rho_w * 9.81;
+    let k = RHO_W * 9.81;
     let (ei_ref, sbar) = section();
     let span_bottom = -H / 2.0 + SKEL;
     for e_top in [1.0e8, 4.0e8, 1.0e9] {
         let scale = e_top / E_TOP;
-        let mut w = World::new(WorldParams {
-            water: Some(WaterParams {
-                density: rho_w,
-                drag_coefficient: 0.0,
-                ..WaterParams::default()
-            }),
-            global_damping: 3.0,
-            ..WorldParams::default()
-        })
-        .unwrap();
-        let yc = H / 2.0 - H * 920.0 / rho_w;
+        let (mut w, yc) = still_water();
         let mat = JointMaterial {
             e_top,
             e_bottom: E_BOT * scale,
