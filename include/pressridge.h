@@ -432,8 +432,9 @@ typedef struct PressridgeTracers {
   // `PRESSRIDGE_BGC_SKELETAL` or `PRESSRIDGE_BGC_VERTICAL`.
   int32_t bgc_kind;
   // Tracers appended after every other for the biogeochemistry (Icepack's
-  // `ntrcr - ntrcr_o`: the bio tracers and what goes with them, e.g. `zbgc_frac`); they
-  // are carried on ice volume unless the host tables say otherwise.
+  // `ntrcr - ntrcr_o`, less the brine fraction where the host adds it after `ntrcr_o` as
+  // Icepack's column driver does: the bio tracers and what goes with them, e.g.
+  // `zbgc_frac`); they are carried on ice volume unless the host tables say otherwise.
   int32_t bgc_ntrcr;
   // Bio grid layers in the ice, Icepack `nblyr` (≥ 1; vertical tracers only).
   int32_t nblyr;

@@ -177,7 +177,7 @@ contains
     real(c_double), intent(in) :: trcr_base(:, :)
     type(setup) :: want
     logical :: iage, fy, lvl, pond_lvl, snow, pond_topo, pond_sealvl, brine, fsd, iso, aero
-    integer :: nilyr, nslyr, nblyr, n_aero, n_iso, nbtrcr, nfsd, kp, kr, ntrcr_o
+    integer :: nilyr, nslyr, nblyr, n_aero, n_iso, nbtrcr, nfsd, kp, kr, ntrcr_o, nt_fbri
     integer :: bio_index(icepack_max_nbtrcr)
     real(c_double) :: mu_rdg, rhos, rhoi, lfresh, cp_ice, sal, amin, mmin, hsmin, rhosnew, &
          rsnw_fall, sk_l
@@ -198,7 +198,10 @@ contains
          itd_mass_min_out=mmin, hs_min_out=hsmin, saltflux_option_out=saltflux, &
          snwredist_out=snwredist, snwgrain_out=snwgrain, rhosnew_out=rhosnew, &
          rsnw_fall_out=rsnw_fall, skl_bgc_out=skl_bgc, z_tracers_out=z_tracers, sk_l_out=sk_l)
-    ! Biogeochemistry: the tracers after ntrcr_o, the bio tracers among them by bio_index.
+    ! Biogeochemistry: the tracers after ntrcr_o and the brine fraction, the bio tracers among
+    ! them by bio_index. Icepack's column driver sets ntrcr_o before it adds fbri
+    ! (icedrv_init_column.F90), which the layout of the flags counts with the physical
+    ! tracers: the bio part starts after the later of the two.
     if (nbtrcr > 0) then
        if (skl_bgc) then
           want%bgc_kind = PRESSRIDGE_BGC_SKELETAL
@@ -210,8 +213,8 @@ contains
           call abort_with(subname//' nbtrcr > 0 with neither skl_bgc nor z_tracers')
           return
        end if
-       call icepack_query_tracer_indices(bio_index_out=bio_index)
-       want%bgc_ntrcr = ntrcr - ntrcr_o
+       call icepack_query_tracer_indices(bio_index_out=bio_index, nt_fbri_out=nt_fbri)
+       want%bgc_ntrcr = ntrcr - max(ntrcr_o, nt_fbri)
        want%nbtrcr = nbtrcr
        want%bio_index = bio_index(1:nbtrcr)
     else

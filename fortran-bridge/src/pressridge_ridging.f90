@@ -161,7 +161,7 @@ contains
   !> host_trcr_base(ntrcr, 3), host_n_trcr_strata(ntrcr), host_nt_strata(ntrcr, 2): the host's
   !> own Icepack tracer tables (all four or none; ntrcr the layout's): each tracer is then
   !> carried as they say, as Icepack moves every tracer through them. Biogeochemistry
-  !> (Icepack's tracers after ntrcr_o): bgc_ntrcr more tracers (ntrcr - ntrcr_o), of which
+  !> (Icepack's tracers after ntrcr_o and fbri): bgc_ntrcr more tracers, of which
   !> bio_index(1:nbtrcr) (1-based tracer numbers, Icepack's) start the bio tracers, skeletal
   !> (skl_bgc, with sk_l in m) or vertically resolved (z_tracers, with nblyr; needs
   !> tr_brine); their fluxes to the ocean go to flux_bio of the step.

@@ -37,6 +37,8 @@ module icepack_intfc
   real(dp), public, save :: stub_mu_rdg = 3.0_dp
   ! Biogeochemistry: ntrcr_o (0: none set), skl_bgc, z_tracers, sk_l (m), bio_index.
   integer, public, save :: stub_ntrcr_o = 0
+  !> The brine fraction's tracer (0: none), as Icepack's nt_fbri.
+  integer, public, save :: stub_nt_fbri = 0
   logical, public, save :: stub_skl_bgc = .false., stub_z_tracers = .false.
   real(dp), public, save :: stub_sk_l = 0.03_dp
   integer, public, save :: stub_bio_index(icepack_max_nbtrcr) = 0
@@ -74,9 +76,10 @@ contains
     if (present(nfsd_out)) nfsd_out = stub_sizes(7)
   end subroutine icepack_query_tracer_sizes
 
-  subroutine icepack_query_tracer_indices(bio_index_out)
-    integer, intent(out), optional :: bio_index_out(:)
+  subroutine icepack_query_tracer_indices(bio_index_out, nt_fbri_out)
+    integer, intent(out), optional :: bio_index_out(:), nt_fbri_out
     if (present(bio_index_out)) bio_index_out = stub_bio_index
+    if (present(nt_fbri_out)) nt_fbri_out = stub_nt_fbri
   end subroutine icepack_query_tracer_indices
 
   !> Icepack's defaults for every value the drop-in reads.

@@ -11,7 +11,7 @@ program test_dropin
   use pressridge_icepack, only: icepack_step_ridge => pressridge_icepack_step_ridge, &
        icepack_ice_strength => pressridge_icepack_ice_strength, pressridge_icepack_refresh
   use icepack_intfc, only: stub_flags, stub_sizes, stub_krdg_redist, stub_mu_rdg, &
-       stub_ntrcr_o, stub_z_tracers, stub_bio_index
+       stub_ntrcr_o, stub_nt_fbri, stub_z_tracers, stub_bio_index
   use icepack_warnings, only: stub_aborted, stub_message
   implicit none
   integer, parameter :: nc = 5
@@ -108,7 +108,10 @@ program test_dropin
   call check('explicit ridger with vertical bio tracers: 38 + 8 tracers', &
        e == PRESSRIDGE_OK .and. nto == 38 .and. nt == 46)
   stub_sizes(6) = 2
-  stub_ntrcr_o = nto
+  ! As Icepack's column driver: ntrcr_o is set before the brine fraction is added, so fbri
+  ! (tracer 38) lies after it (icedrv_init_column.F90).
+  stub_ntrcr_o = nto - 1
+  stub_nt_fbri = nto
   stub_z_tracers = .true.
   stub_bio_index(1:2) = [nto + 1, nto + 5]
   call pressridge_icepack_refresh()
@@ -144,6 +147,7 @@ program test_dropin
   call pressridge_ridger_free(rg)
   stub_flags(8) = .false.
   stub_ntrcr_o = 0
+  stub_nt_fbri = 0
   stub_bio_index = 0
   ! Back to the 37-tracer layout (its tables are the first 37 rows of these).
   nt = size(t2, 1)
@@ -158,9 +162,9 @@ program test_dropin
   stub_sizes(6) = 0
   call pressridge_icepack_refresh()
   stub_aborted = .false.
-  dep(24) = 1
+  dep(24) = -1
   call refused_call(.false.)
-  call check('inconsistent host tables (trcr_depend against trcr_base): an abort naming the tracer', &
+  call check('host tables with a trcr_depend of no base and no tracer: an abort naming the tracer', &
        stub_aborted .and. index(stub_message, 'tracer 24') > 0)
   if (failures > 0) then
      print '(i0, a)', failures, ' drop-in checks failed'

@@ -51,9 +51,14 @@ pub struct TracerLayout {
     /// Per tracer: number of strata (0..=2) and their tracer indices.
     pub(crate) nstrata: Vec<u8>,
     pub(crate) strata: Vec<[usize; 2]>,
-    /// Per tracer: area tracer in Icepack's `trcr_depend = 0` sense (base area, no strata):
-    /// recomputed only where the area exceeds `puny`.
+    /// Per tracer: area tracer in Icepack's `trcr_depend = 0` sense (base area, no strata,
+    /// or a host's `trcr_depend` of 0): recomputed only where the area exceeds `puny`.
     pub(crate) area_direct: Vec<bool>,
+    /// A host's own `trcr_depend` ([`TracerLayout::with_host_tables`]), kept as given: Icepack
+    /// reads it only to choose the area branch of `icepack_compute_tracers` (`== 0`), and a
+    /// host's may disagree with its bases and strata (Icepack's column driver resets those of
+    /// its biogeochemical tracers to the area after setting their `trcr_depend`).
+    pub(crate) host_depend: Option<Vec<i32>>,
     pub(crate) nt_tsfc: Option<usize>,
     pub(crate) nt_qice: usize,
     pub(crate) nt_sice: usize,
@@ -330,6 +335,7 @@ impl TracerLayout {
             nstrata,
             strata,
             area_direct: Vec::new(),
+            host_depend: None,
         };
         l.derive_lists();
         Ok(l)
@@ -342,9 +348,12 @@ impl TracerLayout {
     /// those refilled where their base is zero.
     fn derive_lists(&mut self) {
         let nt = self.ntrcr;
-        self.area_direct = (0..nt)
-            .map(|it| self.base_idx[it] == 0 && self.nstrata[it] == 0)
-            .collect();
+        self.area_direct = match &self.host_depend {
+            Some(d) => d.iter().map(|&d| d == 0).collect(),
+            None => (0..nt)
+                .map(|it| self.base_idx[it] == 0 && self.nstrata[it] == 0)
+                .collect(),
+        };
         let level: Vec<bool> = (0..nt)
             .map(|it| {
                 self.field_of(it).is_some_and(|(f, _)| {
@@ -418,8 +427,12 @@ impl TracerLayout {
     }
 
     /// Icepack's `trcr_depend` per tracer: 0 area, 1 ice volume, 2 snow volume, `2 + nt`
-    /// (1-based `nt`) for a tracer carried on tracer `nt` (its innermost stratum).
+    /// (1-based `nt`) for a tracer carried on tracer `nt` (its innermost stratum); a host's
+    /// own where it gave its tables ([`TracerLayout::with_host_tables`]).
     pub fn trcr_depend(&self) -> Vec<i32> {
+        if let Some(d) = &self.host_depend {
+            return d.clone();
+        }
         (0..self.ntrcr)
             .map(|it| match (self.nstrata[it], self.base[it]) {
                 (0, TracerBase::Area) => 0,

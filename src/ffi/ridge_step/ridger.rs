@@ -85,8 +85,9 @@ pub struct PressridgeTracers {
     /// `PRESSRIDGE_BGC_SKELETAL` or `PRESSRIDGE_BGC_VERTICAL`.
     pub bgc_kind: i32,
     /// Tracers appended after every other for the biogeochemistry (Icepack's
-    /// `ntrcr - ntrcr_o`: the bio tracers and what goes with them, e.g. `zbgc_frac`); they
-    /// are carried on ice volume unless the host tables say otherwise.
+    /// `ntrcr - ntrcr_o`, less the brine fraction where the host adds it after `ntrcr_o` as
+    /// Icepack's column driver does: the bio tracers and what goes with them, e.g.
+    /// `zbgc_frac`); they are carried on ice volume unless the host tables say otherwise.
     pub bgc_ntrcr: i32,
     /// Bio grid layers in the ice, Icepack `nblyr` (≥ 1; vertical tracers only).
     pub nblyr: i32,

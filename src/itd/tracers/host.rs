@@ -12,7 +12,13 @@ impl TracerLayout {
     /// enthalpy, a pond, an aerosol...) stay the layout's. For a host whose tables differ from
     /// those the layout derives (e.g. Icepack's column driver gives only the first isotope
     /// species its dependency; the others are area tracers there). Each `trcr_base` row must
-    /// hold one 1 and two 0; a stratum must be an earlier single tracer.
+    /// hold one 1 and two 0; a stratum must be an earlier single tracer. `trcr_depend` is
+    /// kept as given, as Icepack keeps it: it decides only which branch of
+    /// `icepack_compute_tracers` a tracer takes (0: the area, where it exceeds `puny`), so it
+    /// may disagree with the base and strata. Icepack's column driver sets its bio tracers'
+    /// `trcr_depend` to `2 + nt_fbri` and then resets their bases to the area and their strata
+    /// to none (`icedrv_init.F90`, `init_state`), and ridges them so. It must be 0, 1, 2 or
+    /// `2 + nt` with `nt` a tracer (1-based).
     pub fn with_host_tables(
         mut self,
         trcr_depend: &[i32],
@@ -61,14 +67,10 @@ impl TracerLayout {
                 st[j] = s1 as usize - 1;
             }
             let d = trcr_depend[it];
-            let expect = if n > 0 {
-                2 + st[n as usize - 1] as i32 + 1
-            } else {
-                k as i32
-            };
-            if d != expect {
+            if !(0..=2 + nt as i32).contains(&d) {
                 return Err(bad(format!(
-                    "tracer {}: trcr_depend = {d} but its base and strata make {expect}",
+                    "tracer {}: trcr_depend = {d}: must be 0 (area), 1 (ice volume), 2 (snow \
+                     volume) or 2 + a tracer (1 to {nt})",
                     it + 1
                 )));
             }
@@ -80,6 +82,10 @@ impl TracerLayout {
                 self.empty[it] = 0.0;
             }
         }
+        // Kept only where it says more than the bases and strata do, so that a host giving
+        // the layout's own tables gets the layout back.
+        self.host_depend = None;
+        self.host_depend = (self.trcr_depend() != trcr_depend).then(|| trcr_depend.to_vec());
         self.derive_lists();
         Ok(self)
     }

@@ -230,15 +230,27 @@ fn host_tables_carry_each_tracer_as_the_host_says() {
     let e = host.clone().with_empty_value("isosno", 1.0).unwrap();
     assert_eq!(e.trcr_depend(), dep2);
     assert_eq!(e.refilled, vec![isno]);
-    // Inconsistent tables are refused, naming the tracer (1-based).
-    dep2[isno + 1] = 2;
-    let e = l
+    // A trcr_depend that disagrees with its base and strata is kept as Icepack keeps it
+    // (the column driver's bio tracers: 2 + nt_fbri on a base reset to the area): the
+    // tracer is carried on its base and leaves the area branch of the tracer update.
+    dep2[isno + 1] = 2 + isno as i32 + 1;
+    let odd = l
         .clone()
         .with_host_tables(&dep2, &base2, &nst, &st)
-        .unwrap_err();
-    assert!(
-        e.to_string().contains(&format!("tracer {}", isno + 2)),
-        "{e}"
-    );
+        .unwrap();
+    assert_eq!(odd.trcr_depend(), dep2);
+    assert!(!odd.area_direct[isno + 1] && odd.base_idx[isno + 1] == 0);
+    // One that names no base and no tracer is refused, naming the tracer (1-based).
+    for bad in [-1, 3 + nt as i32] {
+        dep2[isno + 1] = bad;
+        let e = l
+            .clone()
+            .with_host_tables(&dep2, &base2, &nst, &st)
+            .unwrap_err();
+        assert!(
+            e.to_string().contains(&format!("tracer {}", isno + 2)),
+            "{e}"
+        );
+    }
     assert!(l.with_host_tables(&dep[1..], &base, &nst, &st).is_err());
 }

@@ -27,9 +27,10 @@ fi
 SRC=$(cd "$1" && pwd)
 shift
 CASES=("$@")
-# (alt04 reads CFS atmosphere files, which are external data.)
+# (alt04 reads CFS atmosphere files, bgcispol and bgcnice the ISPOL and N-ICE forcing: external
+# data. zaero is base_suite's biogeochemistry that needs none.)
 [ ${#CASES[@]} -gt 0 ] || CASES=(default diag1 thermo1 alt01 alt02 alt03 snwitdrdg isotope modal \
-  calcdragio fluxopenw dyn)
+  calcdragio fluxopenw dyn zaero)
 HERE=$(cd "$(dirname "$0")" && pwd)
 ROOT=$(cd "$HERE/../../../.." && pwd)
 BUILD=${BUILD:-$ROOT/fortran-bridge/build/icedrv}
