@@ -377,7 +377,8 @@ pub fn run_planned(
 }
 
 /// Runs a campaign into `out` on `threads` worker threads, skipping runs already written
-/// ([`prepare_campaign`], then [`run_planned`] for each run still to do).
+/// ([`prepare_campaign`], then [`run_planned`] for each run still to do, seed by seed over
+/// the grid).
 /// `progress` is called from the workers (it must be cheap and thread-safe). `stop` ends the
 /// campaign after the runs in flight when set. Returns the number of runs (skipped, done).
 pub fn run_campaign(
@@ -390,9 +391,13 @@ pub fn run_campaign(
 ) -> Result<(usize, usize), CampaignError> {
     let PreparedCampaign {
         plan,
-        todo,
+        mut todo,
         skipped,
     } = prepare_campaign(spec, base_dir, out)?;
+    // Seed by seed over the grid: a campaign stopped part-way leaves every point with about
+    // as many seeds as every other, an ensemble that can be compared point with point. Each
+    // run is its own, so the order changes no result.
+    todo.sort_by_key(|p| (p.seed, p.point));
     let total = plan.len();
     let next = AtomicUsize::new(0);
     let done = AtomicUsize::new(0);

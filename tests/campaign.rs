@@ -1177,3 +1177,33 @@ fn shipped_choice_probes_plan() {
         assert!(n >= 8, "{}", dir.display());
     }
 }
+
+/// A campaign runs seed by seed over its grid: stopped after two runs on one thread, it has
+/// the first seed of both points, not two seeds of the first point, so a partial campaign is
+/// an ensemble that can be compared point with point.
+#[test]
+fn a_campaign_runs_seed_by_seed_over_the_grid() {
+    let dir = std::env::temp_dir().join(format!("pressridge-order-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let spec = CampaignSpec::from_toml(SPEC).unwrap();
+    let out = dir.join("out");
+    let stop = std::sync::atomic::AtomicBool::new(false);
+    let progress = |p: pressridge::campaign::Progress| {
+        if p.done >= 2 {
+            stop.store(true, std::sync::atomic::Ordering::Relaxed);
+        }
+    };
+    let (_, done) =
+        pressridge::campaign::run_campaign(&spec, &dir, &out, 1, &progress, &stop).unwrap();
+    assert_eq!(done, 2);
+    let mut got: Vec<(f64, u64)> = read_campaign(&out, true)
+        .unwrap()
+        .records
+        .iter()
+        .map(|r| (r.scene.sheet.as_ref().unwrap().thickness, r.seed))
+        .collect();
+    got.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    assert_eq!(got, [(0.25, 1), (0.35, 1)]);
+    let _ = std::fs::remove_dir_all(&dir);
+}
