@@ -217,11 +217,15 @@ fn stat(runs: &[&RunRecord], q: fn(&RunRecord) -> Option<f64>) -> Stat {
 /// `rafted/n`: the runs whose intact sheet passed the floe's nose by more than
 /// [`RAFTING_REACH`].
 fn rafted(runs: &[&RunRecord]) -> String {
-    let n = runs
-        .iter()
+    format!("{}/{}", rafted_count(runs), runs.len())
+}
+
+/// The number of `runs` whose intact sheet passed the floe's nose by more than
+/// [`RAFTING_REACH`].
+pub(crate) fn rafted_count(runs: &[&RunRecord]) -> usize {
+    runs.iter()
         .filter(|r| matches!(outcome(r, RAFTING_REACH), Outcome::Rafted(_)))
-        .count();
-    format!("{n}/{}", runs.len())
+        .count()
 }
 
 /// The register's effect table as Markdown: per friction pair, the baseline's means (with

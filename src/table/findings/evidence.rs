@@ -7,7 +7,7 @@
 use super::{FIGURE5, Finding, OTHER_SINKS_BOUND, Point, Verdict, interval, select, stat};
 use crate::record::RunRecord;
 use crate::scene::Scene;
-use crate::table::choices::{at, by_setting, other_sinks_fraction};
+use crate::table::choices::{at, by_setting, other_sinks_fraction, rafted_count};
 use crate::table::ensemble::Stat;
 use crate::table::rafting::{Outcome, RAFTING_REACH, outcome};
 use std::fmt::Write as _;
@@ -44,14 +44,6 @@ fn choices_at<'a>(reg: &'a Register, f: (f64, f64)) -> Vec<(String, Vec<&'a RunR
         .into_iter()
         .filter(|(label, _)| !NOT_CHOICES.iter().any(|(n, _)| n == label))
         .collect()
-}
-
-/// The runs of `runs` whose intact sheet passed the floe's nose by more than the rafting
-/// reach.
-fn rafted(runs: &[&RunRecord]) -> usize {
-    runs.iter()
-        .filter(|r| matches!(outcome(r, RAFTING_REACH), Outcome::Rafted(_)))
-        .count()
 }
 
 /// The evidence section for the rows of `rows` that disagree, or `None` when none does or
@@ -144,7 +136,7 @@ fn ride_over(reg: &Register) -> String {
     let base = at(reg.baseline, f);
     let counts: Vec<(String, usize, usize)> = choices_at(reg, f)
         .into_iter()
-        .map(|(label, runs)| (label, rafted(&runs), runs.len()))
+        .map(|(label, runs)| (label, rafted_count(&runs), runs.len()))
         .collect();
     let fewest = counts
         .iter()
@@ -166,7 +158,7 @@ fn ride_over(reg: &Register) -> String {
     format!(
         "| c1 | at μ = 0.4 the sheet fails at the floe and builds a ridge (Figure 6a) | {} of {} \
          rode over | {closest} | {so} |",
-        rafted(&base),
+        rafted_count(&base),
         base.len()
     )
 }
