@@ -2,7 +2,8 @@
 //! driver writes its history, `trcrn(time, ncat, ntrcr, ni)` beside `aicen(time, ncat, ni)`:
 //! the step equals, bit for bit, the same columns given one variable per tracer under CICE
 //! restart names; the output holds `trcrn` again in the input's dimensions; the `ni`
-//! coordinate stays `int`; bad layouts and shapes are refused by name.
+//! coordinate stays `int`; bad layouts and shapes are refused by name; the column driver's
+//! biogeochemical tracers ride along and book `flux_bio`.
 
 // Per-category tables are indexed by number, as in Icepack.
 #![allow(clippy::needless_range_loop)]
@@ -273,4 +274,88 @@ fn bad_layouts_and_shapes_are_named() {
         &["vsnon", "one tracer dimension"],
     );
     assert!(!out.exists(), "no output from a refused step");
+}
+
+/// A layout with the column driver's vertical biogeochemistry (nitrate and one z-aerosol on
+/// `nblyr = 2`) after the physical tracers of `PHYSICAL`.
+const PHYSICAL: &str = "nilyr=2,nslyr=1,tr_lvl,tr_pond_lvl,tr_brine";
+const WITH_BGC: &str = "nilyr=2,nslyr=1,tr_lvl,tr_pond_lvl,tr_brine,z_tracers,nblyr=2,\
+                        tr_bgc_Nit,tr_zaero,n_zaero=1";
+
+/// The packed file of `spec`'s layout.
+fn write_packed(path: &Path, spec: &str) -> TracerLayout {
+    let l = spec.parse::<CiceLayoutSpec>().unwrap().layout().unwrap();
+    let nt = l.ntrcr();
+    let mut t = vec![0.0; NCAT * nt * NI];
+    for n in 0..NCAT {
+        for it in 0..nt {
+            for c in 0..NI {
+                t[(n * nt + it) * NI + c] = tracer(&l, it, n, c);
+            }
+        }
+    }
+    let mut vars = base_vars();
+    vars.push(Var::f64(
+        "trcrn",
+        &[("time", 1), ("ncat", NCAT), ("ntrcr", nt), ("ni", NI)],
+        t,
+    ));
+    write_nc(path, &vars);
+    l
+}
+
+#[test]
+fn biogeochemical_tracers_ride_along_and_book_their_flux() {
+    let dir = scratch("ridge-step-packed-bgc");
+    let (phys, bgc) = (dir.join("phys.nc"), dir.join("bgc.nc"));
+    let lp = write_packed(&phys, PHYSICAL);
+    let lb = write_packed(&bgc, WITH_BGC);
+    // 12 physical tracers with fbri; 2 bio tracers of 5 levels and their 2 zbgc_frac.
+    assert_eq!((lp.ntrcr(), lb.ntrcr(), lb.n_bio()), (12, 24, 2));
+    let (out_p, out_b) = (dir.join("out_phys.nc"), dir.join("out_bgc.nc"));
+    succeeds(&step(&phys, &out_p, &["--tracer-layout", PHYSICAL]));
+    succeeds(&step(&bgc, &out_b, &["--tracer-layout", WITH_BGC]));
+    // The bio tracers do not act on the ice: the state and fluxes are the same bits.
+    for name in [
+        "aicen", "vicen", "vsnon", "aice0", "fresh", "fhocn", "fsalt", "dardg1dt",
+    ] {
+        let (p, b) = (read_values(&out_p, name), read_values(&out_b, name));
+        assert!(
+            p.iter().zip(&b).all(|(x, y)| x.to_bits() == y.to_bits()),
+            "{name}"
+        );
+    }
+    let (tp, tb) = (read_values(&out_p, "trcrn"), read_values(&out_b, "trcrn"));
+    let (np, nb) = (lp.ntrcr(), lb.ntrcr());
+    for n in 0..NCAT {
+        for it in 0..np {
+            for c in 0..NI {
+                assert_eq!(
+                    tp[(n * np + it) * NI + c].to_bits(),
+                    tb[(n * nb + it) * NI + c].to_bits(),
+                    "tracer {it} cat {n} col {c}"
+                );
+            }
+        }
+    }
+    // One flux per bio tracer, in the tracer's unit times m/s: ridging puts snow, and the
+    // bio tracers in it, into the ocean.
+    for k in 1..=2 {
+        let f = read_values(&out_b, &format!("flux_bio{k:03}"));
+        assert_eq!(f.len(), NI);
+        assert!(f.iter().all(|x| x.is_finite() && *x >= 0.0), "{f:?}");
+        assert!(f.iter().any(|x| *x > 0.0), "flux_bio{k:03}: {f:?}");
+    }
+    assert!(
+        netcdf::open(&out_p)
+            .unwrap()
+            .variable("flux_bio001")
+            .is_none()
+    );
+    assert!(global(&out_b, "tracer_layout").starts_with(WITH_BGC));
+    // Without the bio switches, the count says what is missing.
+    fails_with(
+        &step(&bgc, &dir.join("no.nc"), &["--tracer-layout", PHYSICAL]),
+        &["holds 24 tracers", "has 12", "z_tracers"],
+    );
 }

@@ -356,6 +356,15 @@ fn strength_and_ridge_step_refuse_values_they_cannot_honour() {
         assert!(!p.exists(), "nothing may be written on refusal");
         assert!(strength(&f, &p, &[]).status.success());
         std::fs::remove_file(&p).unwrap();
+        // Nor is the ridge step when both rates are given and the file's are not read (as
+        // on the history of Icepack's column driver, which writes no units).
+        let given = ["--dt", "3600", "--convergence", "1e-6", "--shear", "0"];
+        assert!(ridge_step(&f, &p, &given).status.success());
+        std::fs::remove_file(&p).unwrap();
+        fails_with(
+            &ridge_step(&f, &p, &given[..4]),
+            &[vars[k].name.as_str(), "no `units`", "--shear"],
+        );
     }
     let _ = std::fs::remove_dir_all(&d);
 }

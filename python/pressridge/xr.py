@@ -428,7 +428,9 @@ def ridge_step(
     :data:`pressridge.STEP_PARAMETERS` (keywords, SI units) as in
     :func:`pressridge.ridge_step`. The result then also has ``vsnon``, the tracers,
     ``aice``, the fluxes and diagnostics of :data:`pressridge.STEP_CELL_OUTPUTS` and
-    :data:`pressridge.STEP_CATEGORY_OUTPUTS` (with their units), ``hin_max`` as Icepack
+    :data:`pressridge.STEP_CATEGORY_OUTPUTS` (with their units), one field per species row
+    of :data:`pressridge.STEP_SPECIES_OUTPUTS` (``faero_ocn001``, ..., ``fiso_ocn001``, ...,
+    ``flux_bio001``, ..., as the command line names them), ``hin_max`` as Icepack
     leaves it, and the thermodynamic constants used as attributes (``rhoi``, ``rhos``, ...
     with their units).
 
@@ -660,7 +662,8 @@ def _unpack_tracers(ds: xr.Dataset, tracer_layout: Any, var: str):
     tdim = extra[0]
     names = list(layout.names)
     if packed.sizes[tdim] != len(names):
-        more = (" (Icepack packs biogeochemical tracers last; pressridge does not carry them)"
+        more = (" (Icepack packs biogeochemical tracers last: name them too, e.g. "
+                "`tr_brine,z_tracers,nblyr=7,tr_zaero,n_zaero=3`)"
                 if packed.sizes[tdim] > len(names) else "")
         raise ValueError(
             f"`{var}`: its tracer dimension `{tdim}` holds {packed.sizes[tdim]} tracers, but the "
@@ -721,7 +724,17 @@ def _complete_block(a, v, s, *rest, nt, names, scalars, mask, layout, options):
         np.broadcast_to(np.asarray(r.aice), sp),
         *cell,
         *[last(r.categories[k]) for k in _pr.STEP_CATEGORY_OUTPUTS],
+        # One spatial field per species row (faero_ocn, fiso_ocn, flux_bio), as the command
+        # line writes them (`faero_ocn001`, ...).
+        *[np.broadcast_to(np.asarray(row), sp) for k in _pr.STEP_SPECIES_OUTPUTS
+          for row in np.asarray(getattr(r, k))],
     )
+
+
+def _species_counts(layout) -> List[int]:
+    """Rows of each of ``STEP_SPECIES_OUTPUTS`` for a layout (Rust ``species_counts``)."""
+    f = layout.flags
+    return [f["aerosols"], f["isotopes"], layout.nbtrcr]
 
 
 def _complete(ds, aicen, vicen, aice0, cat, spatial, use_mask, layout, dt, hin_max, forcing,
@@ -778,7 +791,8 @@ def _complete(ds, aicen, vicen, aice0, cat, spatial, use_mask, layout, dt, hin_m
     nt = len(names)
     ncell = len(_pr.STEP_CELL_OUTPUTS)
     ncatout = len(_pr.STEP_CATEGORY_OUTPUTS)
-    out_core = [[cat]] * (3 + nt) + [[]] * (2 + ncell) + [[cat]] * ncatout
+    nspecies = _species_counts(layout)
+    out_core = [[cat]] * (3 + nt) + [[]] * (2 + ncell) + [[cat]] * ncatout + [[]] * sum(nspecies)
     results = xr.apply_ufunc(
         _complete_block,
         aicen,
@@ -823,6 +837,11 @@ def _complete(ds, aicen, vicen, aice0, cat, spatial, use_mask, layout, dt, hin_m
         put(name, results[k + 2 + j], spatial, {"units": units, "long_name": long_name})
     for j, (name, (units, long_name)) in enumerate(_pr.STEP_CATEGORY_OUTPUTS.items()):
         put(name, results[k + 2 + ncell + j], dims_cat, {"units": units, "long_name": long_name})
+    j = k + 2 + ncell + ncatout
+    for (name, (units, long_name)), count in zip(_pr.STEP_SPECIES_OUTPUTS.items(), nspecies):
+        for row in range(count):
+            put(f"{name}{row + 1:03d}", results[j], spatial, {"units": units, "long_name": long_name})
+            j += 1
     h = (
         _pr.category_bounds(ds.sizes[cat])
         if options["hin_max"] is None

@@ -523,6 +523,14 @@ impl PyTracerLayout {
 
     fn __repr__(&self) -> String {
         let l = &*self.inner;
+        if let Some(spec) = l.cice_spec().filter(|s| s.bgc.is_some()) {
+            // The column driver's biogeochemistry has no constructor keywords: its text.
+            return format!(
+                "TracerLayout.from_icepack({:?}) with {} tracers",
+                spec.to_string(),
+                l.ntrcr()
+            );
+        }
         if let Some(spec) = l.cice_spec() {
             let f = spec.flags;
             // The newer keywords only where set, so the common layouts read as before.

@@ -406,3 +406,38 @@ def test_command_line_packed_tracers_equal_xarray(cli, tmp_path):
     for n in ("trcrn", "aicen", "vsnon", "fhocn", "aice0"):
         np.testing.assert_array_equal(got[n].values, want[n].transpose(*got[n].dims).values, err_msg=n)
     got.close()
+
+
+def test_command_line_and_xarray_carry_the_column_drivers_biogeochemistry(cli, tmp_path):
+    """A packed history with the column driver's z-tracers (nitrate and a z-aerosol on the
+    brine grid) and one aerosol: the command line and ``xr.ridge_step`` give the same bits,
+    the per-species fluxes included, one field per row as ``faero_ocn001``, ``flux_bio001``."""
+    import xarray as xr
+    import pressridge.xr as prx
+
+    spec = ("nilyr=3,nslyr=1,tr_lvl,tr_pond_lvl,tr_aero,n_aero=1,tr_brine,z_tracers,nblyr=2,"
+            "tr_bgc_Nit,tr_zaero,n_zaero=1")
+    layout = pr.TracerLayout.from_icepack(spec)
+    assert layout.icepack == spec and layout.nbtrcr == 2
+    # 13 physical, 4 aerosol, fbri; 2 bio tracers of 5 levels each; 2 zbgc_frac.
+    assert layout.ntrcr == 18 + 10 + 2
+    ds, _ = _dataset(layout=layout)
+    packed = _packed(ds, layout).rename({"nc_bounds": "nb"})
+    inp, out = tmp_path / "in.nc", tmp_path / "out.nc"
+    packed.to_netcdf(inp)
+    cli("ridge-step", "--input", inp, "--output", out, "--dt", "1800", "--convergence", "2e-6",
+        "--tracer-layout", spec)
+    want = prx.ridge_step(packed, dt=1800.0, convergence=2e-6, tracer_layout=spec)
+    got = xr.open_dataset(out)
+    species = ["faero_ocn001", "flux_bio001", "flux_bio002"]
+    assert "fiso_ocn001" not in want and "flux_bio003" not in want
+    for n in ("trcrn", "aicen", "vsnon", "fhocn", "aice0", *species):
+        np.testing.assert_array_equal(got[n].values, want[n].transpose(*got[n].dims).values, err_msg=n)
+    for n in species:
+        assert got[n].attrs["units"] == want[n].attrs["units"], n
+    got.close()
+    assert (want.flux_bio002 > 0).any() and (want.flux_bio002 >= 0).all()
+    # Without the bio switches the count says where they go.
+    with pytest.raises(ValueError, match=r"holds 30 tracers.*has 18.*z_tracers"):
+        prx.ridge_step(packed, dt=1800.0, convergence=2e-6,
+                       tracer_layout="nilyr=3,nslyr=1,tr_lvl,tr_pond_lvl,tr_aero,n_aero=1,tr_brine")

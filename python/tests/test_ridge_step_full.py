@@ -567,11 +567,12 @@ def test_releases_the_gil():
 # xarray
 
 
-def _dataset(ntime=2, ncat=4, nj=3, ni=5, seed=7):
+def _dataset(ntime=2, ncat=4, nj=3, ni=5, seed=7, layout=None):
     import xarray as xr
 
     rng = np.random.default_rng(seed)
-    layout = pr.TracerLayout.cice(3, 1, age=True, level_ice=True, ponds=True)
+    if layout is None:
+        layout = pr.TracerLayout.cice(3, 1, age=True, level_ice=True, ponds=True)
     ncol = ntime * nj * ni
     hin, aicen, vicen, vsnon, t, aice0 = _random_columns(rng, ncat, ncol, layout)
     shape = (ncat, ntime, nj, ni)

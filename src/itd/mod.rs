@@ -54,9 +54,9 @@ pub use strength::{
 };
 pub(crate) use strength::{FAST_MAX_NCAT, StrengthConsts, strength_column_constant_cf};
 pub use tracers::{
-    BgcKind, BgcTracers, CiceLayoutSpec, CiceTracerFlags, LAYOUT_PRESETS, LayoutDetectError,
-    LayoutSpecError, MAX_AERO, MAX_ISO, MAX_NBTRCR, TracerBase, TracerField, TracerLayout,
-    TracerRole,
+    BgcKind, BgcTracers, CiceLayoutSpec, CiceTracerFlags, IcedrvBgc, LAYOUT_PRESETS,
+    LayoutDetectError, LayoutSpecError, MAX_AERO, MAX_ISO, MAX_NBTRCR, TracerBase, TracerField,
+    TracerLayout, TracerRole,
 };
 
 /// What is wrong with one column (no column index: see [`ItdError::Column`]).

@@ -28,7 +28,7 @@ mod spec;
 pub use bgc::{BgcKind, BgcTracers, MAX_NBTRCR};
 pub use cice::{CiceTracerFlags, LayoutDetectError};
 pub use field::{TracerBase, TracerField, TracerRole};
-pub use spec::{CiceLayoutSpec, LayoutSpecError, PRESETS as LAYOUT_PRESETS};
+pub use spec::{CiceLayoutSpec, IcedrvBgc, LayoutSpecError, PRESETS as LAYOUT_PRESETS};
 
 /// Most aerosol species a layout may carry (Icepack's `icepack_max_aero`).
 pub const MAX_AERO: usize = 6;
@@ -89,6 +89,9 @@ pub struct TracerLayout {
     pub(crate) nt_fbri: Option<usize>,
     /// Biogeochemical tracers whose fluxes to the ocean the step books ([`BgcTracers`]).
     pub(crate) bgc: Option<BgcTracers>,
+    /// The column driver's biogeochemistry this layout was made from
+    /// ([`CiceLayoutSpec::layout`]), so that [`TracerLayout::cice_spec`] can name it.
+    pub(crate) icedrv_bgc: Option<IcedrvBgc>,
 }
 
 impl TracerLayout {
@@ -328,6 +331,7 @@ impl TracerLayout {
             ridge_lists_brine: Default::default(),
             nt_fbri: brine.map(|i| starts[i]),
             bgc: None,
+            icedrv_bgc: None,
             fields,
             starts,
             ntrcr,

@@ -81,7 +81,7 @@ pub struct Args {
     pub convergence: Option<f64>,
     /// Shear term (1/s, >= 0) for every column; default: from the file's `shear` (s-1: the
     /// term itself; CICE history %/day: the strain rate, converted, term formed with divu),
-    /// else 0.
+    /// else 0. With both --convergence and --shear the file's divu and shear are not read.
     #[arg(long, allow_negative_numbers = true)]
     pub shear: Option<f64>,
     /// Where closing and opening come from: `deformation` (CICE, from divu/shear) or `host`
@@ -195,7 +195,10 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         &args.input,
         &ReadOptions {
             category_dim: args.category_dim.clone(),
-            without_deformation: false,
+            // The file's deformation is read only where it is used: not with the host's
+            // rates, nor with both rates on the command line (a history whose `divu` has no
+            // unit, as Icepack's column driver writes it, then runs).
+            without_deformation: host || (args.convergence.is_some() && args.shear.is_some()),
         },
     )?;
     let ncol = grid.ncol();

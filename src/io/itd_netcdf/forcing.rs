@@ -31,7 +31,8 @@ fn rate_units(path: &Path, v: &netcdf::Variable<'_>) -> Result<RateUnits, Netcdf
             path: path.to_path_buf(),
             var: v.name(),
             msg: "has no `units` attribute; a strain rate must say its unit: \"s-1\" (1/s) \
-                  or CICE history's \"%/day\""
+                  or CICE history's \"%/day\" (set it, e.g. `ncatted -a units,VAR,c,c,s-1`, \
+                  or give the rates instead: --convergence and --shear)"
                 .into(),
         });
     };

@@ -113,7 +113,8 @@ pub fn read_packed_tracers(
     let names = layout.cice_restart_names();
     if dims[axis].1 != nt {
         let more = if dims[axis].1 > nt {
-            " (Icepack packs biogeochemical tracers last; pressridge does not carry them)"
+            " (Icepack packs biogeochemical tracers last: name them too, e.g. \
+             `tr_brine,z_tracers,nblyr=7,tr_zaero,n_zaero=3`)"
         } else {
             ""
         };

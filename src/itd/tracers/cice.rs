@@ -230,12 +230,14 @@ impl TracerLayout {
     }
 
     /// The layout in Icepack's names ([`CiceLayoutSpec`]) when it is exactly a CICE layout
-    /// ([`TracerLayout::cice`]), else `None` (other fields, host tables, refill values).
+    /// ([`TracerLayout::cice`], or one made from a [`CiceLayoutSpec`] with biogeochemistry),
+    /// else `None` (other fields, host tables, refill values).
     pub fn cice_spec(&self) -> Option<CiceLayoutSpec> {
         let spec = CiceLayoutSpec {
             nilyr: self.nilyr,
             nslyr: self.nslyr,
             flags: self.cice_flags(),
+            bgc: self.icedrv_bgc,
         };
         spec.layout().is_ok_and(|l| l == *self).then_some(spec)
     }

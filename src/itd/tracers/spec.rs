@@ -7,16 +7,24 @@
 //! them: the layer counts `nilyr=N`, `nslyr=N`; the switches `tr_iage`, `tr_FY`, `tr_lvl`,
 //! `tr_pond_lvl`, `tr_pond_topo`, `tr_pond_sealvl`, `tr_snow`, `tr_fsd`, `tr_iso`, `tr_aero`,
 //! `tr_brine` (alone: on; or `=true`/`=.false.`...); the counts `nfsd=N`, `n_iso=N`,
-//! `n_aero=N`; and the preset [`PRESETS`] (`icedrv`). Names are case-insensitive, as in a
-//! Fortran namelist; a later item overrides an earlier one (`icedrv,tr_iage`). As in
-//! Icepack, a count is used only where its switch is on, and a switch on with no count is an
-//! error. The packing order is Icepack's (`icedrv_init.F90`), that of [`TracerLayout::cice`].
+//! `n_aero=N`; the biogeochemical tracers of Icepack's column driver ([`IcedrvBgc`]: `zbgc_nml`'s
+//! `z_tracers` with `nblyr=N`, or `skl_bgc`, and the switches `tr_bgc_N`, `tr_bgc_Nit`,
+//! `tr_bgc_C`, `tr_bgc_chl`, `tr_bgc_Am`, `tr_bgc_Sil`, `tr_bgc_DMS`, `tr_bgc_PON`,
+//! `tr_bgc_DON`, `tr_bgc_Fe`, `tr_bgc_hum`, `tr_zaero` with the counts `n_algae`, `n_doc`,
+//! `n_dic`, `n_don`, `n_fed`, `n_fep`, `n_zaero`); and the preset [`PRESETS`] (`icedrv`).
+//! Names are case-insensitive, as in a Fortran namelist; a later item overrides an earlier
+//! one (`icedrv,tr_iage`). As in Icepack, a count is used only where its switch is on, and a
+//! switch on with no count is an error. The packing order is Icepack's (`icedrv_init.F90`),
+//! that of [`TracerLayout::cice`], with the biogeochemical tracers last.
 
 use std::fmt;
 use std::str::FromStr;
 
 use super::{CiceTracerFlags, MAX_AERO, MAX_ISO, TracerLayout};
 use crate::itd::ItdError;
+
+mod bgc;
+pub use bgc::IcedrvBgc;
 
 /// Named layouts: (name, the items it stands for, what it is).
 pub const PRESETS: &[(&str, &str, &str)] = &[(
@@ -54,8 +62,9 @@ pub struct LayoutSpecError {
     pub why: String,
 }
 
-/// A CICE/Icepack tracer layout given by Icepack's names: the layer counts and the optional
-/// tracers ([`CiceTracerFlags`]). `Display` writes the canonical text, which parses back to
+/// A CICE/Icepack tracer layout given by Icepack's names: the layer counts, the optional
+/// tracers ([`CiceTracerFlags`]) and any biogeochemical tracers as Icepack's column driver
+/// sets them up ([`IcedrvBgc`]). `Display` writes the canonical text, which parses back to
 /// the same value.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct CiceLayoutSpec {
@@ -65,12 +74,19 @@ pub struct CiceLayoutSpec {
     pub nslyr: usize,
     /// The optional tracers.
     pub flags: CiceTracerFlags,
+    /// Biogeochemical tracers after all the others (`z_tracers` or `skl_bgc`), if any.
+    pub bgc: Option<IcedrvBgc>,
 }
 
 impl CiceLayoutSpec {
-    /// The layout, in Icepack's packing order ([`TracerLayout::cice`]).
+    /// The layout, in Icepack's packing order ([`TracerLayout::cice`]), with the
+    /// biogeochemical tracers appended and carried by the column driver's tables.
     pub fn layout(&self) -> Result<TracerLayout, ItdError> {
-        TracerLayout::cice(self.nilyr, self.nslyr, self.flags)
+        let l = TracerLayout::cice(self.nilyr, self.nslyr, self.flags)?;
+        match &self.bgc {
+            Some(b) => b.apply(l),
+            None => Ok(l),
+        }
     }
 }
 
@@ -94,6 +110,8 @@ impl FromStr for CiceLayoutSpec {
         let mut sw = [false; 11];
         // nilyr, nslyr, nfsd, n_iso, n_aero as given.
         let mut counts: [Option<usize>; 5] = [None; 5];
+        let mut bgc_sw = [false; 14];
+        let mut bgc_counts: [Option<usize>; 8] = [None; 8];
         let mut items: Vec<String> = Vec::new();
         for item in text.split([',', ' ', '\t', '\n']).filter(|s| !s.is_empty()) {
             match PRESETS.iter().find(|p| p.0.eq_ignore_ascii_case(item)) {
@@ -114,34 +132,44 @@ impl FromStr for CiceLayoutSpec {
                 Some((k, v)) => (k.trim().to_ascii_lowercase(), Some(v.trim())),
                 None => (item.trim().to_ascii_lowercase(), None),
             };
+            let switch = |v: Option<&str>| match v {
+                None => Ok(true),
+                Some(v) => parse_bool(v).ok_or_else(|| {
+                    err(
+                        item,
+                        format!("`{v}` is not true or false (.true., .false.)"),
+                    )
+                }),
+            };
+            let number = |v: Option<&str>| {
+                let v = v.ok_or_else(|| err(item, format!("give a count: `{key}=N`")))?;
+                v.parse::<usize>()
+                    .map_err(|_| err(item, format!("`{v}` is not a whole number ≥ 0")))
+            };
             if let Some(i) = SWITCHES.iter().position(|s| s.eq_ignore_ascii_case(&key)) {
-                sw[i] = match value {
-                    None => true,
-                    Some(v) => parse_bool(v).ok_or_else(|| {
-                        err(
-                            item,
-                            format!("`{v}` is not true or false (.true., .false.)"),
-                        )
-                    })?,
-                };
+                sw[i] = switch(value)?;
             } else if let Some(i) = COUNTS.iter().position(|s| *s == key) {
-                let v = value.ok_or_else(|| err(item, format!("give a count: `{key}=N`")))?;
-                counts[i] = Some(
-                    v.parse::<usize>()
-                        .map_err(|_| err(item, format!("`{v}` is not a whole number ≥ 0")))?,
-                );
-            } else if key.starts_with("tr_bgc") || key.starts_with("tr_z") || key == "z_tracers" {
-                return Err(err(
-                    item,
-                    "biogeochemical tracers are not carried by pressridge's ridging step".into(),
-                ));
+                counts[i] = Some(number(value)?);
+            } else if let Some(i) = bgc::SWITCHES
+                .iter()
+                .position(|s| s.eq_ignore_ascii_case(&key))
+            {
+                bgc_sw[i] = switch(value)?;
+            } else if let Some(i) = bgc::COUNTS.iter().position(|c| c.0 == key) {
+                bgc_counts[i] = Some(number(value)?);
             } else {
                 return Err(err(
                     item,
                     format!(
-                        "unknown; the names are {}, {} (each `=N`) and the preset(s) {}",
+                        "unknown; the names are {}, {}, {} (each `=N`) and the preset(s) {}",
                         SWITCHES.join(", "),
-                        COUNTS.join(", "),
+                        bgc::SWITCHES.join(", "),
+                        COUNTS
+                            .iter()
+                            .copied()
+                            .chain(bgc::COUNTS.iter().map(|c| c.0))
+                            .collect::<Vec<_>>()
+                            .join(", "),
                         PRESETS.iter().map(|p| p.0).collect::<Vec<_>>().join(", ")
                     ),
                 ));
@@ -189,10 +217,12 @@ impl FromStr for CiceLayoutSpec {
             aerosols: count(sw[9], n_aero, "n_aero", "tr_aero", MAX_AERO)?,
             brine: sw[10],
         };
+        let bgc = IcedrvBgc::from_items(&bgc_sw, &bgc_counts, flags.brine)?;
         let spec = CiceLayoutSpec {
             nilyr,
             nslyr,
             flags,
+            bgc,
         };
         spec.layout().map_err(|e| err(text, e.to_string()))?;
         Ok(spec)
@@ -228,7 +258,10 @@ impl fmt::Display for CiceLayoutSpec {
         if fl.brine {
             write!(f, ",tr_brine")?;
         }
-        Ok(())
+        match &self.bgc {
+            Some(b) => b.write(f),
+            None => Ok(()),
+        }
     }
 }
 
@@ -287,7 +320,7 @@ mod tests {
             e.why.contains("unknown") && e.why.contains("tr_iage"),
             "{e}"
         );
-        assert!(why("icedrv,tr_bgc_N").why.contains("biogeochemical"));
+        assert!(why("icedrv,tr_bgc_N").why.contains("biogeochemistry"));
         assert!(why("").why.contains("empty"));
         // Two pond schemes, or level-ice ponds without level ice.
         assert!(why("icedrv,tr_pond_topo").why.contains("one pond scheme"));

@@ -3,6 +3,9 @@
 
     make_case.py ICEPACK_DIR CASE DATA_DIR namelist   -> the namelist icepack_in
     make_case.py ICEPACK_DIR CASE DATA_DIR cppdefs    -> the preprocessor definitions
+    make_case.py ICEPACK_DIR CASE DATA_DIR layout STDOUT -> the tracer layout in Icepack's
+        names (`pressridge ridge-step --tracer-layout`), read from what the driver printed of
+        its tracers (icepack_write_tracer_flags, _sizes and the bgc parameters) in STDOUT
 
 CASE is `default` or options joined by commas (`alt01`, `thermo1,dyn`, ...), each applied
 over `run1year` as base_suite.ts runs them: the options' set_env.* files change the sizes
@@ -37,6 +40,25 @@ if what == "cppdefs":
             "TRDIC", "TRDON", "TRFED", "TRFEP", "TRZAERO", "TRBGCS"]
     defs = [f"-DNXGLOB={env['ICE_NXGLOB']}"] + [f"-D{k}={env[k]}" for k in keys]
     print(" ".join(defs + ["-DNO_SNICARHC"]))
+    sys.exit(0)
+
+if what == "layout":
+    # The driver's own report of its tracers, after its reconciliation of namelist and sizes:
+    # lines `   name = value` of Icepack's write routines.
+    said = {}
+    for line in Path(sys.argv[5]).read_text().splitlines():
+        m = re.match(r"^   (\w+)\s*=\s*(\S+)\s*$", line)
+        if m:
+            said.setdefault(m.group(1).lower(), m.group(2))
+    counts = ["nilyr", "nslyr", "nfsd", "n_iso", "n_aero", "nblyr", "n_algae", "n_doc", "n_dic",
+              "n_don", "n_fed", "n_fep", "n_zaero"]
+    switches = ["tr_iage", "tr_fy", "tr_lvl", "tr_pond_lvl", "tr_pond_topo", "tr_pond_sealvl",
+                "tr_snow", "tr_fsd", "tr_iso", "tr_aero", "tr_brine", "z_tracers", "skl_bgc",
+                "tr_bgc_n", "tr_bgc_nit", "tr_bgc_c", "tr_bgc_chl", "tr_bgc_am", "tr_bgc_sil",
+                "tr_bgc_dms", "tr_bgc_pon", "tr_bgc_don", "tr_bgc_fe", "tr_bgc_hum", "tr_zaero"]
+    items = [f"{k}={said[k]}" for k in counts if k in said]
+    items += [k for k in switches if said.get(k) == "T"]
+    print(",".join(items))
     sys.exit(0)
 
 assert what == "namelist", what
