@@ -153,11 +153,12 @@ pub(crate) fn run_one(
     // The ridged ice at each sample: the run calls back at the start and after each sample
     // it takes, so the i-th call is the i-th sample (all but a last one off the interval,
     // which the final profile gives).
-    let mut ridge: Vec<Option<RidgeSummary>> = Vec::new();
+    let mut ridge: Vec<(Option<RidgeSummary>, Vec<[f64; 2]>)> = Vec::new();
     let out = simulation::run(&plan.scene, &mut |w| {
         progress(w.time() - last);
         last = w.time();
-        ridge.push(RidgeSummary::of(&profile_of(&w.snapshot())));
+        let p = profile_of(&w.snapshot());
+        ridge.push((RidgeSummary::of(&p), RunSample::strips_of(&p)));
         true
     })
     .map_err(|e| CampaignError::Scene {
@@ -174,12 +175,16 @@ pub(crate) fn run_one(
         .series
         .iter()
         .enumerate()
-        .map(|(i, x)| RunSample {
-            ridge: match ridge.get(i) {
-                Some(r) => *r,
-                None => RidgeSummary::of(&profile),
-            },
-            ..RunSample::of(x, speed * h * x.energy.time)
+        .map(|(i, x)| {
+            let (ridge, ridge_strips) = match ridge.get_mut(i) {
+                Some(r) => (r.0, std::mem::take(&mut r.1)),
+                None => (RidgeSummary::of(&profile), RunSample::strips_of(&profile)),
+            };
+            RunSample {
+                ridge,
+                ridge_strips,
+                ..RunSample::of(x, speed * h * x.energy.time)
+            }
         })
         .collect();
     let metrics = observe::metrics(

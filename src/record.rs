@@ -5,13 +5,13 @@
 //! verified against its files stays in [`crate::campaign`].
 
 use crate::energy::{EnergyBudget, Keep, LedgerTerm, TermSet, Terms};
-use crate::observe::{Profile, RidgeMetrics, RidgeSummary};
+use crate::observe::{Profile, RidgeMetrics, RidgeSummary, ridged_strips};
 use crate::scene::Scene;
 use crate::simulation::{self, Summary};
 use serde::{Deserialize, Serialize};
 
 /// A sample of a run at the campaign's interval.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct RunSample {
     /// Time (s).
     pub time: f64,
@@ -28,6 +28,12 @@ pub struct RunSample {
     /// without rubble and in records written before it was kept (2026-11-28).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub ridge: Option<RidgeSummary>,
+    /// The ridged strips at this time, `[solid, column]` (m, to the millimetre), in strip
+    /// order: the strips of the campaign's profile that hold rubble ([`ridged_strips`]),
+    /// whose area-weighted thicknesses are the ridged ice's distribution at this time. Empty
+    /// without rubble and in records written before it was kept (2026-11-28).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub ridge_strips: Vec<[f64; 2]>,
 }
 
 /// The terms of [`RunSample::ledger`]: the column [`LedgerTerm::sample`] of the table.
@@ -49,7 +55,18 @@ impl RunSample {
             ledger: Terms::of(&x.energy),
             mean_force: x.mean_force,
             ridge: None,
+            ridge_strips: Vec::new(),
         }
+    }
+
+    /// The ridged strips of profile `p` as a sample keeps them ([`RunSample::ridge_strips`]):
+    /// `[solid, column]` rounded to the millimetre.
+    pub fn strips_of(p: &Profile) -> Vec<[f64; 2]> {
+        let mm = |x: f64| (x * 1e3).round() / 1e3;
+        ridged_strips(p)
+            .into_iter()
+            .map(|(s, c)| [mm(s), mm(c)])
+            .collect()
     }
 
     /// The sample as an energy budget (J/m): the terms a sample keeps, the others zero.

@@ -3,6 +3,7 @@
 
 use pressridge::campaign::{CampaignSpec, read_campaign, read_records};
 use pressridge::energy::EnergyBudget;
+use pressridge::record::RunSample;
 use std::time::{Duration, Instant};
 
 const SPEC: &str = r#"
@@ -98,12 +99,41 @@ fn tiny_campaign_is_resumable_and_complete() {
         assert_eq!(r.profile.ridge_ice.len(), 32);
         assert_eq!(r.profile.ridge_envelope.len(), 32);
         assert_eq!(r.samples[0].ridge, None);
+        assert!(r.samples[0].ridge_strips.is_empty());
         assert_eq!(
             last.ridge,
             pressridge::observe::RidgeSummary::of(&r.profile),
             "{}",
             r.id
         );
+        // The ridged strips at each sample, to the millimetre: at the end the final
+        // profile's, from which the summary follows within the rounding.
+        assert_eq!(
+            last.ridge_strips,
+            RunSample::strips_of(&r.profile),
+            "{}",
+            r.id
+        );
+        let strips: Vec<(f64, f64)> = last.ridge_strips.iter().map(|s| (s[0], s[1])).collect();
+        let from = pressridge::observe::RidgeSummary::of_strips(&strips, r.profile.dx).unwrap();
+        let want = last.ridge.unwrap();
+        assert_eq!(from.width, want.width);
+        assert!((from.mean_thickness - want.mean_thickness).abs() <= 5e-4);
+        let at_end =
+            pressridge::table::redistribution::RidgedIce::at_sample(r, r.samples.len() - 1, h)
+                .unwrap();
+        assert_eq!(at_end.ice.len(), last.ridge_strips.len());
+        assert!(
+            pressridge::table::redistribution::RidgedIce::at_sample(r, 0, h).is_err(),
+            "no rubble at the start"
+        );
+        for s in r.samples.iter().filter(|s| s.ridge.is_some()) {
+            assert_eq!(
+                s.ridge_strips.len() as f64 * r.profile.dx,
+                s.ridge.unwrap().width
+            );
+            assert!(s.ridge_strips.iter().all(|[a, c]| 0.0 <= *a && a <= c));
+        }
         assert!(out.join("runs").join(&r.id).join("state.json").is_file());
         // The rafting diagnostic: the largest overrun over the run bounds the final one, and
         // a sheet that breaks against the floe stays within the rafting reach.

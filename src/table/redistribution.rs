@@ -109,6 +109,28 @@ impl RidgedIce {
         })
     }
 
+    /// The ridged strips of run `r` at its sample `i` ([`crate::record::RunSample::ridge_strips`],
+    /// to the millimetre), its lead ice `h` m thick: the distribution as the ridge grew.
+    pub fn at_sample(r: &RunRecord, i: usize, h: f64) -> Result<RidgedIce, RidgedError> {
+        if !(h.is_finite() && h > 0.0) {
+            return Err(RidgedError::Thickness(h));
+        }
+        let s = r.samples.get(i).ok_or(RidgedError::NoColumns)?;
+        if s.ridge_strips.is_empty() {
+            return Err(match s.ridge {
+                Some(_) => RidgedError::NoColumns,
+                None => RidgedError::NoRidge,
+            });
+        }
+        let (ice, column) = s.ridge_strips.iter().map(|x| (x[0], x[1])).unzip();
+        Ok(RidgedIce {
+            parent_thickness: h,
+            strip_width: r.profile.dx,
+            ice,
+            column,
+        })
+    }
+
     /// Several runs of one parent thickness as one sample (their strips together).
     pub fn pooled(runs: &[RidgedIce]) -> Option<RidgedIce> {
         let first = runs.first()?;
