@@ -52,7 +52,7 @@
 
 // Version of the C ABI (the layout of the structs and the function signatures). Bumped on
 // every incompatible change; compare with [`pressridge_abi_version`] at run time.
-#define PRESSRIDGE_ABI_VERSION 2
+#define PRESSRIDGE_ABI_VERSION 3
 
 // Participation function of Thorndike et al. (1975), G* (CICE `krdg_partic = 0`).
 #define PRESSRIDGE_PARTICIPATION_THORNDIKE 0
@@ -65,6 +65,10 @@
 
 // Exponential redistribution of Lipscomb et al. (2007), μ (CICE `krdg_redist = 1`, default).
 #define PRESSRIDGE_REDISTRIBUTION_EXPONENTIAL 1
+
+// Lipscomb's exponential with μ_rdg per category thickness from the table
+// `PressridgeOptions::mu_rdg_table` (simulated ridges, issue 34).
+#define PRESSRIDGE_REDISTRIBUTION_TABLE 2
 
 // Strength of Hibler (1979), P = P*·h·exp(−C*(1 − A)) (CICE `kstrength = 0`).
 #define PRESSRIDGE_STRENGTH_HIBLER1979 0
@@ -131,6 +135,13 @@
 // nodes, clamped (and flagged) outside. Opaque; create with [`pressridge_cf_table_open`] or
 // [`pressridge_cf_table_new`], release with [`pressridge_cf_table_free`].
 typedef struct PressridgeCfTable PressridgeCfTable;
+
+// A μ_rdg table: μ_rdg (m^½) against the ridging ice's thickness (m), linear between nodes,
+// held at the end values outside them (and counted). Opaque; create with
+// [`pressridge_mu_rdg_table_open`] or [`pressridge_mu_rdg_table_new`], release with
+// [`pressridge_mu_rdg_table_free`]; give it to the strength and ridging calls in
+// `PressridgeOptions::mu_rdg_table` with `redistribution = PRESSRIDGE_REDISTRIBUTION_TABLE`.
+typedef struct PressridgeMuRdgTable PressridgeMuRdgTable;
 
 // A ridging lookup table (fields on set × thickness × volume) as `pressridge tabulate`
 // writes it. Opaque; create with [`pressridge_ridge_table_open`], release with
@@ -223,7 +234,8 @@ typedef struct PressridgeParams {
 typedef struct PressridgeOptions {
   // `PRESSRIDGE_PARTICIPATION_*` (CICE `krdg_partic`: 0 Thorndike, 1 exponential).
   int32_t participation;
-  // `PRESSRIDGE_REDISTRIBUTION_*` (CICE `krdg_redist`: 0 uniform, 1 exponential).
+  // `PRESSRIDGE_REDISTRIBUTION_*` (CICE `krdg_redist`: 0 uniform, 1 exponential; 2 the
+  // exponential with μ_rdg from `mu_rdg_table`).
   int32_t redistribution;
   // `PRESSRIDGE_STRENGTH_*` (CICE `kstrength`: 0 Hibler 1979, 1 Rothrock 1975).
   int32_t strength_law;
@@ -239,6 +251,9 @@ typedef struct PressridgeOptions {
   // C_f table handle used with `PRESSRIDGE_CF_SOURCE_TABLE` (borrowed, not freed by the
   // call).
   const struct PressridgeCfTable *cf_table;
+  // μ_rdg table handle used with `PRESSRIDGE_REDISTRIBUTION_TABLE` (borrowed, not freed by
+  // the call).
+  const struct PressridgeMuRdgTable *mu_rdg_table;
   // Physical constants and tunables.
   struct PressridgeParams params;
 } PressridgeOptions;
@@ -601,6 +616,47 @@ int32_t pressridge_grid_fortran(int64_t ncat, int64_t ncol, struct PressridgeGri
 // # Safety
 // `grid` must be valid for one write.
 int32_t pressridge_grid_c(int64_t ncat, int64_t ncol, struct PressridgeGrid *grid);
+
+// Opens the μ_rdg (`mu_rdg`, m^½) at friction `mu` (between blocks above the water line) and
+// `mu_w` (below it; both dimensionless) of a ridging table written by `pressridge tabulate`
+// from records with ridge columns. `path` is `path_len` bytes of UTF-8 (no NUL needed). On
+// success `*table` is a new handle; a table without `mu_rdg`, or without that friction pair,
+// is an error saying so.
+//
+// # Safety
+// `path` must be valid for `path_len` bytes; `table` valid for one write.
+int32_t pressridge_mu_rdg_table_open(const char *path,
+                                     int64_t path_len,
+                                     double mu,
+                                     double mu_w,
+                                     struct PressridgeMuRdgTable **table);
+
+// A μ_rdg table from `n` nodes (1 to 32): `thickness` (m, finite, strictly increasing) and
+// `mu_rdg` (m^½, in (0, 50]). On success `*table` is a new handle.
+//
+// # Safety
+// `thickness` and `mu_rdg` must be valid for `n` reads; `table` for one write.
+int32_t pressridge_mu_rdg_table_new(const double *thickness,
+                                    const double *mu_rdg,
+                                    int64_t n,
+                                    struct PressridgeMuRdgTable **table);
+
+// μ_rdg (m^½) of a table at thickness `h` (m) into `*mu_rdg`, and into `*clamped` 1 where `h`
+// lay outside the nodes (the end value is used), else 0.
+//
+// # Safety
+// `table` must be a live handle; `mu_rdg`, `clamped` valid for one write each.
+int32_t pressridge_mu_rdg_table_lookup(const struct PressridgeMuRdgTable *table,
+                                       double h,
+                                       double *mu_rdg,
+                                       int32_t *clamped);
+
+// Releases a μ_rdg table handle (null is accepted and ignored). Options that refer to it
+// must not be used afterwards; calls running on other threads must have returned.
+//
+// # Safety
+// `table` must be null or a handle not yet freed.
+int32_t pressridge_mu_rdg_table_free(struct PressridgeMuRdgTable *table);
 
 // One ridging step of one grid cell, in place: Icepack's `icepack_step_ridge` (ridging with
 // snow, tracers and ocean fluxes, then the clean-up), see `docs/strength.md`.

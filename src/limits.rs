@@ -178,3 +178,15 @@ pub const CATEGORY_THICKNESS: Range = Range {
     unit: "m",
     why: "the deepest ridge keels reach ~50 m",
 };
+
+/// Lipscomb's e-folding parameter μ_rdg of a μ_rdg table (m^½; λ = μ_rdg·√h): published
+/// values are 3–5 (Icepack 3, its science guide 4), the simulated ridges 1–3; 50 m^½ gives
+/// 1-m ice an e-folding ridge thickness of 50 m, beyond any ridge.
+pub const MU_RDG: Range = Range {
+    min: 0.0,
+    min_inclusive: false,
+    max: 50.0,
+    unit: "m^0.5",
+    why: "published values are 3-5 m^0.5 and simulated ridges give 1-3; 50 m^0.5 puts the \
+          e-folding thickness of 1-m ice at 50 m, beyond any ridge",
+};

@@ -1,7 +1,7 @@
 //! Conservation and positivity of the complete ridging step on adversarial columns: tiny
 //! categories (1e-13–1e-9), near-empty and near-full cells, area excess, huge closing rates,
 //! thicknesses on and outside the category bounds, both calling conventions, with and
-//! without the clean-up. Area, ice volume, snow volume, enthalpy and salt (with the ocean
+//! without the clean-up, the uniform, exponential and tabulated-μ_rdg redistributions. Area, ice volume, snow volume, enthalpy and salt (with the ocean
 //! fluxes) are conserved to 1e-12 relative; no area, volume or snow volume is ever negative
 //! or NaN, and no column fails.
 //!
@@ -16,9 +16,9 @@
 )]
 
 use pressridge::itd::{
-    CategoryBounds, CiceTracerFlags, Closing, ColumnError, ColumnMut, OceanFluxes, Participation,
-    Redistribution, RidgeStepOptions, SaltFlux, StepForcing, StepWorkspace, TracerLayout,
-    category_bounds, ridge_step_column,
+    CategoryBounds, CiceTracerFlags, Closing, ColumnError, ColumnMut, MuRdgTable, OceanFluxes,
+    Participation, Redistribution, RidgeStepOptions, SaltFlux, StepForcing, StepWorkspace,
+    TracerLayout, category_bounds, ridge_step_column,
 };
 
 /// SplitMix64: small, seeded, reproducible.
@@ -223,10 +223,14 @@ fn ridge_step_conserves_on_a_million_adversarial_columns() {
         } else {
             Participation::Exponential
         };
-        opts.redistribution = if rng.pick(2) == 0 {
-            Redistribution::Uniform
-        } else {
-            Redistribution::Exponential
+        opts.redistribution = match rng.pick(3) {
+            0 => Redistribution::Uniform,
+            1 => Redistribution::Exponential,
+            // μ_rdg per category thickness from a table (issue 34): 1–4 m^½ between 0.1 and
+            // 3 m, held at the ends beyond them.
+            _ => Redistribution::Table(
+                MuRdgTable::new(&[0.1, 0.5, 1.5, 3.0], &[1.0, 2.0, 4.0, 1.5]).unwrap(),
+            ),
         };
         opts.step.salt_flux = SaltFlux::Prognostic;
         opts.cleanup = rng.pick(4) != 0;

@@ -154,7 +154,9 @@ contains
                rhow_out=o%params%rhow, gravit_out=o%params%gravit)
           o%strength_law = kstrength
           o%participation = kp
-          o%redistribution = kr
+          ! A mu_rdg table set through pressridge_init_parameters(options=) is kept: Icepack's
+          ! krdg_redist (0 or 1) cannot say it.
+          if (o%redistribution /= PRESSRIDGE_REDISTRIBUTION_TABLE) o%redistribution = kr
           o%cf_source = PRESSRIDGE_CF_SOURCE_CONSTANT
           strength_options = o
           strength_current = .true.
@@ -285,7 +287,7 @@ contains
     s = want
     call pressridge_get_parameters(o)
     o%participation = want%kp
-    o%redistribution = want%kr
+    if (o%redistribution /= PRESSRIDGE_REDISTRIBUTION_TABLE) o%redistribution = want%kr
     o%params%mu_rdg = want%mu_rdg
     o%params%rhoi = rhoi
     allocate(dep(want%ntrcr), nst(want%ntrcr), str(want%ntrcr, 2), base(want%ntrcr, 3))

@@ -37,6 +37,7 @@ module pressridge
        PRESSRIDGE_ABI_VERSION, &
        PRESSRIDGE_PARTICIPATION_THORNDIKE, PRESSRIDGE_PARTICIPATION_EXPONENTIAL, &
        PRESSRIDGE_REDISTRIBUTION_UNIFORM, PRESSRIDGE_REDISTRIBUTION_EXPONENTIAL, &
+       PRESSRIDGE_REDISTRIBUTION_TABLE, pressridge_mu_rdg_table, &
        PRESSRIDGE_STRENGTH_HIBLER1979, PRESSRIDGE_STRENGTH_ROTHROCK, &
        PRESSRIDGE_CF_SOURCE_CONSTANT, PRESSRIDGE_CF_SOURCE_TABLE, &
        PRESSRIDGE_CF_HIBLER1980, PRESSRIDGE_CF_FLATO1991, PRESSRIDGE_CF_CICE, &
@@ -49,6 +50,7 @@ module pressridge
   use pressridge_base_mod, only: pressridge_last_error_message, pressridge_last_error_column, &
        pressridge_version, pressridge_linked_abi_version, &
        pressridge_default_options, pressridge_options_set_cf_table, &
+       pressridge_options_set_mu_rdg_table, &
        pressridge_default_step_params, pressridge_init_parameters, pressridge_get_parameters
   use pressridge_strength_mod, only: pressridge_strength, pressridge_ice_strength
   use pressridge_ridging_mod, only: pressridge_ridge_step, pressridge_ridge_ice, &
@@ -58,6 +60,8 @@ module pressridge
        pressridge_cf_table_open, pressridge_cf_table_open_at_friction, &
        pressridge_cf_table_new, pressridge_cf_table_lookup, pressridge_cf_table_nodes, &
        pressridge_cf_table_friction, pressridge_cf_table_free, &
+       pressridge_mu_rdg_table_open, pressridge_mu_rdg_table_new, &
+       pressridge_mu_rdg_table_lookup, pressridge_mu_rdg_table_free, &
        pressridge_ridge_table_open, pressridge_ridge_table_dims, pressridge_ridge_table_axes, &
        pressridge_ridge_table_set_name, pressridge_ridge_table_variable_name, &
        pressridge_ridge_table_value, pressridge_ridge_table_cf, &

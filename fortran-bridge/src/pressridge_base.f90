@@ -20,6 +20,7 @@ module pressridge_base_mod
   public :: pressridge_last_error_message, pressridge_last_error_column
   public :: pressridge_version, pressridge_linked_abi_version
   public :: pressridge_default_options, pressridge_options_set_cf_table
+  public :: pressridge_options_set_mu_rdg_table
   public :: pressridge_default_step_params
   public :: pressridge_init_parameters, pressridge_get_parameters
   ! For the other modules of the bridge.
@@ -186,6 +187,16 @@ contains
     options%cf_source = PRESSRIDGE_CF_SOURCE_TABLE
     options%cf_table = table%ptr
   end subroutine pressridge_options_set_cf_table
+
+  !> Makes `options` spread ridged ice exponentially with mu_rdg per category thickness from
+  !> `table` (redistribution = PRESSRIDGE_REDISTRIBUTION_TABLE; borrowed: keep it alive while
+  !> the options are in use; pressridge_ridger_init copies it).
+  subroutine pressridge_options_set_mu_rdg_table(options, table)
+    type(pressridge_options), intent(inout) :: options
+    type(pressridge_mu_rdg_table), intent(in) :: table
+    options%redistribution = PRESSRIDGE_REDISTRIBUTION_TABLE
+    options%mu_rdg_table = table%ptr
+  end subroutine pressridge_options_set_mu_rdg_table
 
   !> Sets the options of the Icepack-style calls pressridge_ice_strength and
   !> pressridge_ridge_ice, with Icepack's names: kstrength (0 Hibler 1979, 1 Rothrock),

@@ -27,13 +27,15 @@ module pressridge_cabi_mod
   integer, parameter, public :: PRESSRIDGE_ERR_NUMERICAL = 9
   integer, parameter, public :: PRESSRIDGE_ERR_PANIC = 10
   !> C ABI version these bindings were written for.
-  integer, parameter, public :: PRESSRIDGE_ABI_VERSION = 2
+  integer, parameter, public :: PRESSRIDGE_ABI_VERSION = 3
 
   ! Option codes: the values of CICE's krdg_partic, krdg_redist and kstrength.
   integer(c_int32_t), parameter, public :: PRESSRIDGE_PARTICIPATION_THORNDIKE = 0
   integer(c_int32_t), parameter, public :: PRESSRIDGE_PARTICIPATION_EXPONENTIAL = 1
   integer(c_int32_t), parameter, public :: PRESSRIDGE_REDISTRIBUTION_UNIFORM = 0
   integer(c_int32_t), parameter, public :: PRESSRIDGE_REDISTRIBUTION_EXPONENTIAL = 1
+  !> Lipscomb's exponential with mu_rdg per category thickness from options%mu_rdg_table
+  integer(c_int32_t), parameter, public :: PRESSRIDGE_REDISTRIBUTION_TABLE = 2
   integer(c_int32_t), parameter, public :: PRESSRIDGE_STRENGTH_HIBLER1979 = 0
   integer(c_int32_t), parameter, public :: PRESSRIDGE_STRENGTH_ROTHROCK = 1
   integer(c_int32_t), parameter, public :: PRESSRIDGE_CF_SOURCE_CONSTANT = 0
@@ -89,6 +91,8 @@ module pressridge_cabi_mod
      real(c_double) :: cf = PRESSRIDGE_CF_CICE        !< constant C_f (1)
      real(c_double) :: fill = 0.0_c_double            !< output of columns with valid = .false.
      type(c_ptr) :: cf_table = c_null_ptr             !< C_f table (PRESSRIDGE_CF_SOURCE_TABLE)
+     !> mu_rdg table (PRESSRIDGE_REDISTRIBUTION_TABLE); set with pressridge_options_set_mu_rdg_table
+     type(c_ptr) :: mu_rdg_table = c_null_ptr
      type(pressridge_params) :: params
   end type pressridge_options
 
@@ -113,6 +117,11 @@ module pressridge_cabi_mod
   type, public :: pressridge_cf_table
      type(c_ptr) :: ptr = c_null_ptr
   end type pressridge_cf_table
+
+  !> A mu_rdg table handle (free with pressridge_mu_rdg_table_free).
+  type, public :: pressridge_mu_rdg_table
+     type(c_ptr) :: ptr = c_null_ptr
+  end type pressridge_mu_rdg_table
 
   !> A ridging lookup table handle (free with pressridge_ridge_table_free).
   type, public :: pressridge_ridge_table
@@ -356,6 +365,34 @@ module pressridge_cabi_mod
        import :: c_int32_t, c_ptr
        type(c_ptr), value :: table
      end function c_cf_table_free
+     integer(c_int32_t) function c_mu_rdg_table_open(path, len, mu, mu_w, table) &
+          bind(C, name="pressridge_mu_rdg_table_open")
+       import :: c_int32_t, c_int64_t, c_char, c_double, c_ptr
+       character(kind=c_char), intent(in) :: path(*)
+       integer(c_int64_t), value :: len
+       real(c_double), value :: mu, mu_w
+       type(c_ptr), intent(out) :: table
+     end function c_mu_rdg_table_open
+     integer(c_int32_t) function c_mu_rdg_table_new(thickness, mu_rdg, n, table) &
+          bind(C, name="pressridge_mu_rdg_table_new")
+       import :: c_int32_t, c_int64_t, c_double, c_ptr
+       real(c_double), intent(in) :: thickness(*), mu_rdg(*)
+       integer(c_int64_t), value :: n
+       type(c_ptr), intent(out) :: table
+     end function c_mu_rdg_table_new
+     integer(c_int32_t) function c_mu_rdg_table_lookup(table, h, mu_rdg, clamped) &
+          bind(C, name="pressridge_mu_rdg_table_lookup")
+       import :: c_int32_t, c_double, c_ptr
+       type(c_ptr), value :: table
+       real(c_double), value :: h
+       real(c_double), intent(out) :: mu_rdg
+       integer(c_int32_t), intent(out) :: clamped
+     end function c_mu_rdg_table_lookup
+     integer(c_int32_t) function c_mu_rdg_table_free(table) &
+          bind(C, name="pressridge_mu_rdg_table_free")
+       import :: c_int32_t, c_ptr
+       type(c_ptr), value :: table
+     end function c_mu_rdg_table_free
      integer(c_int32_t) function c_ridge_table_open(path, len, table) &
           bind(C, name="pressridge_ridge_table_open")
        import :: c_int32_t, c_int64_t, c_char, c_ptr

@@ -16,6 +16,8 @@ module pressridge_simulator_mod
   public :: pressridge_cf_table_open, pressridge_cf_table_new, pressridge_cf_table_lookup
   public :: pressridge_cf_table_nodes, pressridge_cf_table_free
   public :: pressridge_cf_table_open_at_friction, pressridge_cf_table_friction
+  public :: pressridge_mu_rdg_table_open, pressridge_mu_rdg_table_new
+  public :: pressridge_mu_rdg_table_lookup, pressridge_mu_rdg_table_free
   public :: pressridge_ridge_table_open, pressridge_ridge_table_dims
   public :: pressridge_ridge_table_axes, pressridge_ridge_table_set_name
   public :: pressridge_ridge_table_variable_name, pressridge_ridge_table_value
@@ -117,6 +119,57 @@ contains
     rc = c_cf_table_free(table%ptr)
     table%ptr = c_null_ptr
   end subroutine pressridge_cf_table_free
+
+  ! ------------------------------------------------------------------ mu_rdg tables
+
+  !> Opens the mu_rdg (m^0.5) against thickness of a ridging table of `pressridge tabulate`
+  !> at friction mu, mu_w (dimensionless), for PRESSRIDGE_REDISTRIBUTION_TABLE.
+  subroutine pressridge_mu_rdg_table_open(path, mu, mu_w, table, ierr)
+    character(len=*), intent(in) :: path
+    real(c_double), intent(in) :: mu, mu_w
+    type(pressridge_mu_rdg_table), intent(out) :: table
+    integer, intent(out), optional :: ierr
+    call finish(c_mu_rdg_table_open(path, len(path, kind=c_int64_t), mu, mu_w, table%ptr), &
+         'pressridge_mu_rdg_table_open('//path//')', ierr)
+  end subroutine pressridge_mu_rdg_table_open
+
+  !> A mu_rdg table from nodes: thickness (m, strictly increasing) and mu_rdg (m^0.5).
+  subroutine pressridge_mu_rdg_table_new(thickness, mu_rdg, table, ierr)
+    real(c_double), intent(in) :: thickness(:), mu_rdg(:)
+    type(pressridge_mu_rdg_table), intent(out) :: table
+    integer, intent(out), optional :: ierr
+    real(c_double) :: t1(max(size(thickness), 1)), m1(max(size(thickness), 1))
+    if (size(mu_rdg) /= size(thickness)) then
+       call fail(PRESSRIDGE_ERR_BAD_SIZE, 'mu_rdg and thickness differ in size', &
+            'pressridge_mu_rdg_table_new', ierr)
+       return
+    end if
+    t1(1:size(thickness)) = thickness
+    m1(1:size(mu_rdg)) = mu_rdg
+    call finish(c_mu_rdg_table_new(t1, m1, size(thickness, kind=c_int64_t), table%ptr), &
+         'pressridge_mu_rdg_table_new', ierr)
+  end subroutine pressridge_mu_rdg_table_new
+
+  !> mu_rdg (m^0.5) at thickness h (m); clamped is .true. outside the table's nodes.
+  subroutine pressridge_mu_rdg_table_lookup(table, h, mu_rdg, clamped, ierr)
+    type(pressridge_mu_rdg_table), intent(in) :: table
+    real(c_double), intent(in) :: h
+    real(c_double), intent(out) :: mu_rdg
+    logical, intent(out), optional :: clamped
+    integer, intent(out), optional :: ierr
+    integer(c_int32_t) :: c, rc
+    rc = c_mu_rdg_table_lookup(table%ptr, h, mu_rdg, c)
+    if (present(clamped)) clamped = c /= 0
+    call finish(rc, 'pressridge_mu_rdg_table_lookup', ierr)
+  end subroutine pressridge_mu_rdg_table_lookup
+
+  !> Releases a mu_rdg table (options using it must not be used afterwards).
+  subroutine pressridge_mu_rdg_table_free(table)
+    type(pressridge_mu_rdg_table), intent(inout) :: table
+    integer(c_int32_t) :: rc
+    rc = c_mu_rdg_table_free(table%ptr)
+    table%ptr = c_null_ptr
+  end subroutine pressridge_mu_rdg_table_free
 
   ! ------------------------------------------------------------------ ridging tables
 

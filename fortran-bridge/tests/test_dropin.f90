@@ -95,6 +95,34 @@ program test_dropin
   call icepack_ice_strength(sum(a1), sum(v1), a01, a1, v1, p2)
   call check('strength drop-in = pressridge_ice_strength (CICE defaults)', &
        e == PRESSRIDGE_OK .and. p1 == p2 .and. p1 > 0 .and. .not. stub_aborted)
+  ! A mu_rdg table given through pressridge_init_parameters(options=) is kept by the drop-in:
+  ! one value, 2 m^0.5, gives the strength of mu_rdg = 2.
+  block
+    type(pressridge_mu_rdg_table) :: mt
+    type(pressridge_options) :: ot
+    real(c_double) :: p3
+    call pressridge_mu_rdg_table_new([1.0e-3_c_double, 1.0e3_c_double], &
+         [2.0_c_double, 2.0_c_double], mt, e)
+    call pressridge_default_options(ot)
+    call pressridge_options_set_mu_rdg_table(ot, mt)
+    call pressridge_init_parameters(options=ot)
+    call pressridge_icepack_refresh()
+    p2 = 0
+    call icepack_ice_strength(sum(a1), sum(v1), a01, a1, v1, p2)
+    stub_mu_rdg = 2.0_c_double
+    call pressridge_default_options(ot)
+    call pressridge_init_parameters(options=ot)
+    call pressridge_icepack_refresh()
+    p3 = 0
+    call icepack_ice_strength(sum(a1), sum(v1), a01, a1, v1, p3)
+    call check('strength drop-in keeps a mu_rdg table (one value = that mu_rdg)', &
+         e == PRESSRIDGE_OK .and. p2 == p3 .and. p2 /= p1 .and. .not. stub_aborted)
+    stub_mu_rdg = 3.0_c_double
+    call pressridge_default_options(ot)
+    call pressridge_init_parameters(options=ot)
+    call pressridge_icepack_refresh()
+    call pressridge_mu_rdg_table_free(mt)
+  end block
   ! Biogeochemistry: the same layout with the brine fraction and two vertically resolved bio
   ! tracers (z_tracers, nblyr = 1: 4 tracers each) after Icepack's ntrcr_o tracers.
   stub_flags(8) = .true.

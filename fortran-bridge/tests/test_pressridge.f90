@@ -126,6 +126,29 @@ program test_pressridge
   call pressridge_cf_table_free(cft2)
   call pressridge_cf_table_free(cft)
 
+  ! Redistribution with mu_rdg per category thickness from a table (issue 34): one value
+  ! everywhere is that mu_rdg; a lookup beyond the nodes is flagged.
+  block
+    type(pressridge_mu_rdg_table) :: mt
+    real(c_double) :: pflat(ni, nj), pmu(ni, nj)
+    call pressridge_mu_rdg_table_new([1.0e-3_c_double, 1.0e3_c_double], &
+         [2.0_c_double, 2.0_c_double], mt, e)
+    call check('mu_rdg table from nodes', e == 0)
+    o = d
+    call pressridge_options_set_mu_rdg_table(o, mt)
+    call pressridge_strength(aicen, vicen, pflat, aice0=aice0, options=o, ierr=e)
+    o = d
+    o%params%mu_rdg = 2.0_c_double
+    call pressridge_strength(aicen, vicen, pmu, aice0=aice0, options=o, ierr=e)
+    call check('mu_rdg table of one value = mu_rdg', e == 0 .and. all(pflat == pmu))
+    call pressridge_mu_rdg_table_lookup(mt, 5.0e3_c_double, x, clamped)
+    call check('mu_rdg table lookup clamps', x == 2.0_c_double .and. clamped)
+    call pressridge_mu_rdg_table_free(mt)
+    call pressridge_mu_rdg_table_new([1.0_c_double, 0.5_c_double], [2.0_c_double, 3.0_c_double], &
+         mt, e)
+    call check('unsorted mu_rdg table refused', e == PRESSRIDGE_ERR_BAD_VALUE)
+  end block
+
   ! Mask: invalid columns get the fill value and are not checked.
   block
     logical :: valid(ni, nj)

@@ -196,6 +196,23 @@ def _cf_table_nodes(cf: CfLike, friction: Any) -> Tuple[Optional[tuple], Optiona
     return None, None
 
 
+def _mu_rdg_nodes(table: Any, friction: Any = None) -> Optional[Tuple[list, list]]:
+    """Normalises ``mu_rdg_table`` to (thickness m, mu_rdg m^0.5) nodes for the core: a
+    ridging table file's ``mu_rdg`` at ``friction``, or node arrays as given."""
+    if table is None:
+        return None
+    if isinstance(table, (str, _os.PathLike)):
+        return _core.mu_rdg_table_nodes(_os.fspath(table), friction)
+    try:
+        h, m = table
+        return [float(x) for x in _np.ravel(h)], [float(x) for x in _np.ravel(m)]
+    except (TypeError, ValueError):
+        raise ValueError(
+            "mu_rdg_table must be the path of a ridging table or (thickness_m, mu_rdg) node "
+            f"arrays, got {type(table).__name__}"
+        ) from None
+
+
 def _cf_args(cf: CfLike, friction: Any = None) -> Tuple[Optional[float], Optional[tuple], Optional[str]]:
     """Normalises ``cf`` to (constant, (thickness, cf) nodes, file) for the core; tables
     and table files give the nodes at ``friction`` (default :data:`DEFAULT_FRICTION`)."""
@@ -257,6 +274,7 @@ def strength(
     cf: CfLike = None,
     friction: Optional[Tuple[float, float]] = None,
     valid: Any = None,
+    mu_rdg_table: Any = None,
     _clamp_note: Optional[str] = None,
     **params: float,
 ) -> Any:
@@ -285,9 +303,10 @@ def strength(
     participation : {"exponential", "thorndike"}
         Participation function: Lipscomb et al. (2007) (CICE ``krdg_partic = 1``, default)
         or Thorndike et al. (1975) (0).
-    redistribution : {"exponential", "uniform"}
-        Ridged-ice redistribution: Lipscomb et al. (2007) (``krdg_redist = 1``, default)
-        or Hibler (1980) (0).
+    redistribution : {"exponential", "uniform", "table"}
+        Ridged-ice redistribution: Lipscomb et al. (2007) (``krdg_redist = 1``, default),
+        Hibler (1980) (0), or Lipscomb's exponential with mu_rdg per category thickness
+        from ``mu_rdg_table`` (the simulator's ridges; clamped at the table's ends).
     law : {"rothrock", "hibler"}
         Rothrock (1975) energetics with C_f (``kstrength = 1``, default) or Hibler (1979)
         P = P* h exp(-C* (1 - A)) (0).
@@ -308,6 +327,10 @@ def strength(
         the ``cf_friction`` attribute.
     valid : array_like of bool, shape ``aicen.shape[1:]``, optional
         Columns to compute; the others (land, missing data) are not checked and get NaN.
+    mu_rdg_table : path or (thickness, mu_rdg) pair, optional
+        With ``redistribution="table"``: a ridging table of ``pressridge tabulate`` whose
+        ``mu_rdg`` (m^0.5) at ``friction`` (default :data:`DEFAULT_FRICTION`) to use, or
+        node arrays ``(thickness_m, mu_rdg)``; as the command line's ``--mu-rdg-table``.
     **params : float
         Overrides of the ITD parameters by name (see :data:`PARAMETERS`,
         e.g. ``mu_rdg=4.0``, ``pstar=2.75e4``); defaults are CICE's.
@@ -332,7 +355,12 @@ def strength(
     participation, redistribution, law, cf, friction, params = _options.merge(
         options, participation, redistribution, law, cf, friction, params
     )
-    value, nodes, path = _cf_args(cf, friction)
+    mu_nodes = _mu_rdg_nodes(mu_rdg_table, friction)
+    # With a mu_rdg table, `friction` chooses its set, and the C_f table's only if C_f is one.
+    constant_cf = cf is None or isinstance(cf, (int, float)) or (
+        isinstance(cf, str) and cf in CF_PRESETS
+    )
+    value, nodes, path = _cf_args(cf, None if mu_nodes is not None and constant_cf else friction)
     out, clamped, material, share_max = _core.strength(
         a,
         v,
@@ -345,6 +373,7 @@ def strength(
             cf_value=value,
             cf_nodes=nodes,
             cf_file=path,
+            mu_rdg_nodes=mu_nodes,
             params=_params(params),
         ),
     )
@@ -468,6 +497,8 @@ def ridge_step(
     cleanup: Optional[bool] = None,
     rebin: Optional[bool] = None,
     salt_flux: Optional[str] = None,
+    mu_rdg_table: Any = None,
+    friction: Optional[Tuple[float, float]] = None,
     **params: float,
 ) -> RidgeStepResult:
     """One ridging step; the inputs are not modified.
@@ -501,7 +532,9 @@ def ridge_step(
         Category bounds (m); default CICE's ``kcatbound = 1`` bounds
         (:func:`category_bounds`).
     participation, redistribution : str
-        As in :func:`strength`.
+        As in :func:`strength`; ``redistribution="table"`` with ``mu_rdg_table`` (a
+        ridging table file, its ``mu_rdg`` at ``friction``, default
+        :data:`DEFAULT_FRICTION`, or ``(thickness_m, mu_rdg)`` nodes).
     valid : array_like of bool, optional
         Columns to step; the others are left unchanged and their aice0, rates, fluxes and
         diagnostics are NaN.
@@ -625,6 +658,7 @@ def ridge_step(
             participation,
             redistribution,
             _params(params, step=True),
+            _mu_rdg_nodes(mu_rdg_table, friction),
         )
         return RidgeStepResult(
             a_new, v_new, _scalar_if_0d(a0_new), *[_scalar_if_0d(r) for r in rates]
@@ -686,6 +720,7 @@ def ridge_step(
             True if cleanup is None else bool(cleanup),
             True if rebin is None else bool(rebin),
             "constant" if salt_flux is None else str(salt_flux),
+            _mu_rdg_nodes(mu_rdg_table, friction),
         )
     )
     c = {k: _scalar_if_0d(x) for k, x in cell}

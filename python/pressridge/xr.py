@@ -159,6 +159,7 @@ def strength(
     friction: Optional[Tuple[float, float]] = None,
     category_dim: Optional[Hashable] = None,
     mask: Union[str, bool] = "auto",
+    mu_rdg_table: Any = None,
     **params: float,
 ) -> xr.DataArray:
     """Ice strength P (N/m) of the thickness distribution in ``ds``.
@@ -166,7 +167,9 @@ def strength(
     Options and parameters as :func:`pressridge.strength` (``cf`` may be a number, a preset
     name, a :class:`pressridge.Table`, a C_f table file or (thickness, cf) nodes; with a
     table, ``friction`` = (mu, mu_w) chooses its set, default (1.0, 0.6), and the output's
-    ``cf_friction`` attribute records the pair). ``options`` is a
+    ``cf_friction`` attribute records the pair; ``redistribution="table"`` with
+    ``mu_rdg_table``, a ridging table file or nodes, read once here, its nodes recorded in
+    the ``mu_rdg_table`` attribute). ``options`` is a
     :class:`pressridge.StrengthOptions`; keywords given explicitly override its fields and
     parameter keywords are laid over its ``params``, as in :func:`pressridge.strength`.
     ``category_dim`` names the category dimension (default: the one dimension of ``aicen``
@@ -192,6 +195,11 @@ def strength(
         cf=None,
         **params,
     )
+    # A mu_rdg table file is read once, at the friction asked for: its nodes go to the tasks.
+    mu_nodes = _pr._mu_rdg_nodes(mu_rdg_table, friction)
+    block_options["mu_rdg_table"] = mu_nodes
+    if mu_nodes is not None and (cf is None or isinstance(cf, (int, float)) or cf in _pr.CF_PRESETS):
+        friction = None  # it chose the mu_rdg table's set; the C_f is a constant
     # A table (or its file) is read once: its nodes at the friction asked for, and the pair.
     nodes, cf_friction = _pr._cf_table_nodes(cf, friction)
     block_options["cf"] = (
@@ -232,6 +240,7 @@ def strength(
         "standard_name": standard_name,
         "participation": participation,
         "redistribution": redistribution,
+        **_mu_rdg_attrs(mu_nodes),
         "strength_formula": law,
         "cf": _describe_cf(cf, cf_desc),
         "cf_friction": (
@@ -306,11 +315,24 @@ def _bounds_from(ds: xr.Dataset) -> Optional[np.ndarray]:
     return h if h is not None else n
 
 
-def _step_options(ds: xr.Dataset, dt, hin_max, participation, redistribution, /, **rest) -> dict:
+def _mu_rdg_attrs(nodes) -> dict:
+    """The ``mu_rdg_table`` attribute (its nodes) of a table redistribution, as the command
+    line writes it; none otherwise."""
+    if nodes is None:
+        return {}
+    pairs = ", ".join(f"{h:g}: {m:g}" for h, m in zip(*nodes))
+    return {"mu_rdg_table": f"thickness (m): mu_rdg (m^0.5), linear, held at the ends: {pairs}"}
+
+
+def _step_options(ds: xr.Dataset, dt, hin_max, participation, redistribution, /, mu_rdg=None,
+                  **rest) -> dict:
     """The keywords of a ridging step: ``dt`` (s), the category bounds ``hin_max`` (m; from
-    ``ds`` when None, see ``_bounds_from``), the two schemes and ``rest``."""
+    ``ds`` when None, see ``_bounds_from``), the two schemes (``mu_rdg``: the nodes of a
+    table redistribution) and ``rest``."""
     if hin_max is None:
         hin_max = _bounds_from(ds)
+    if mu_rdg is not None:
+        rest["mu_rdg_table"] = mu_rdg
     return dict(
         dt=dt,
         hin_max=None if hin_max is None else np.asarray(hin_max, dtype=np.float64),
@@ -407,6 +429,8 @@ def ridge_step(
     salt_flux: Optional[str] = None,
     tracer_layout: Any = None,
     tracer_var: Optional[str] = None,
+    mu_rdg_table: Any = None,
+    friction: Optional[Tuple[float, float]] = None,
     **params: float,
 ) -> xr.Dataset:
     """One ridging step (``dt`` in s) of the thickness distribution in ``ds``.
@@ -513,6 +537,8 @@ def ridge_step(
     use_mask = _mask_flag(mask, ds["aicen"], ds["vicen"], aice0)
     aicen, use_mask = _apply_tmask(ds, aicen, use_mask, mask)
     _pr._params(params, step=True)
+    # A mu_rdg table file is read once here; its nodes go to the tasks.
+    mu_nodes = _pr._mu_rdg_nodes(mu_rdg_table, friction)
     if layout is not None and tf is None and "Tf" in ds:
         tf = _temperature_degc(ds["Tf"])
     conv_desc = "max(-divu, 0) from input"
@@ -525,6 +551,7 @@ def ridge_step(
             ds, aicen, vicen, aice0, cat, spatial, use_mask, layout, dt, hin_max,
             dict(closing=closing, opening=opening), "host closing/opening",
             participation, redistribution, tf, ndtd, cleanup, rebin, salt_flux, params,
+            mu_nodes,
         )
 
     def _divu() -> Optional[xr.DataArray]:
@@ -563,8 +590,9 @@ def ridge_step(
             ds, aicen, vicen, aice0, cat, spatial, use_mask, layout, dt, hin_max,
             dict(convergence=convergence, shear=shear), f"convergence: {conv_desc}; shear: {shear_desc}",
             participation, redistribution, tf, ndtd, cleanup, rebin, salt_flux, params,
+            mu_nodes,
         )
-    options = _step_options(ds, dt, hin_max, participation, redistribution, **params)
+    options = _step_options(ds, dt, hin_max, participation, redistribution, mu_nodes, **params)
     names: List[str] = []
     arrays: List[xr.DataArray] = []
     scalars = {}
@@ -618,6 +646,7 @@ def ridge_step(
         {
             "participation": participation,
             "redistribution": redistribution,
+            **_mu_rdg_attrs(mu_nodes),
             "dt": f"{float(dt)} s",
             "convergence": conv_desc,
             "shear": shear_desc,
@@ -739,7 +768,7 @@ def _species_counts(layout) -> List[int]:
 
 def _complete(ds, aicen, vicen, aice0, cat, spatial, use_mask, layout, dt, hin_max, forcing,
               forcing_desc, participation, redistribution, tf, ndtd, cleanup, rebin, salt_flux,
-              params):
+              params, mu_nodes=None):
     """The complete step over the dataset (see :func:`ridge_step`)."""
     if not isinstance(layout, _pr.TracerLayout):
         raise ValueError(f"layout must be a pressridge.TracerLayout, got {type(layout).__name__}")
@@ -762,7 +791,7 @@ def _complete(ds, aicen, vicen, aice0, cat, spatial, use_mask, layout, dt, hin_m
     vsnon = cat_var("vsnon") if "vsnon" in ds else xr.zeros_like(ds["aicen"])
     tracers = [cat_var(n) for n in names]
     options = _step_options(
-        ds, dt, hin_max, participation, redistribution,
+        ds, dt, hin_max, participation, redistribution, mu_nodes,
         tf=tf if not isinstance(tf, xr.DataArray) else None,
         ndtd=ndtd,
         cleanup=cleanup,
@@ -857,6 +886,7 @@ def _complete(ds, aicen, vicen, aice0, cat, spatial, use_mask, layout, dt, hin_m
             "ridging_step": "complete (Icepack icepack_step_ridge: snow, tracers, ocean fluxes)",
             "participation": participation,
             "redistribution": redistribution,
+            **_mu_rdg_attrs(mu_nodes),
             "dt": f"{float(dt)} s",
             "forcing": forcing_desc,
             "tracers": " ".join(names),

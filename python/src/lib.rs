@@ -64,6 +64,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(options::cf_presets, m)?)?;
     m.add_function(wrap_pyfunction!(options::read_cf_table_py, m)?)?;
     m.add_function(wrap_pyfunction!(options::read_cf_table_at_friction, m)?)?;
+    m.add_function(wrap_pyfunction!(options::mu_rdg_table_nodes, m)?)?;
     m.add(
         "DEFAULT_FRICTION",
         pressridge::table::tabulate::DEFAULT_FRICTION,

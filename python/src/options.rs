@@ -15,8 +15,8 @@ use pyo3::types::PyDict;
 
 use pressridge::io::itd_netcdf::read_cf_table;
 use pressridge::itd::{
-    CategoryBounds, Cf, CfPreset, CfTable, ItdParams, NamedParams, Participation, Redistribution,
-    RidgeStepOptions, StrengthFormula, StrengthOptions, category_bounds,
+    CategoryBounds, Cf, CfPreset, CfTable, ItdParams, MuRdgTable, NamedParams, Participation,
+    Redistribution, RidgeStepOptions, StrengthFormula, StrengthOptions, category_bounds,
 };
 
 use crate::arrays::Pair;
@@ -60,15 +60,52 @@ pub(crate) fn participation(name: &str) -> PyResult<Participation> {
     )
 }
 
-pub(crate) fn redistribution(name: &str) -> PyResult<Redistribution> {
-    by_name(
-        "redistribution",
-        name,
-        Redistribution::from_name,
-        &Redistribution::ALL,
-        Redistribution::name,
-        "exponential: Lipscomb et al. 2007, CICE default; uniform: Hibler 1980",
-    )
+/// The redistribution called `name`; `"table"` is Lipscomb's exponential with μ_rdg per
+/// category thickness from the nodes `mu_rdg` ((thickness m, μ_rdg m^½), as
+/// `pressridge.ridge_step(mu_rdg_table=)` resolves them).
+pub(crate) fn redistribution(
+    name: &str,
+    mu_rdg: Option<(Vec<f64>, Vec<f64>)>,
+) -> PyResult<Redistribution> {
+    match (name, mu_rdg) {
+        ("table", Some((h, m))) => Ok(Redistribution::Table(
+            MuRdgTable::new(&h, &m).map_err(value_err)?,
+        )),
+        ("table", None) => Err(value_err(
+            "redistribution=\"table\" needs mu_rdg_table=: a ridging table file with `mu_rdg` \
+             or (thickness_m, mu_rdg) node arrays",
+        )
+        .into()),
+        (_, Some(_)) => {
+            Err(value_err("mu_rdg_table is used with redistribution=\"table\" only").into())
+        }
+        (name, None) => by_name(
+            "redistribution",
+            name,
+            Redistribution::from_name,
+            &Redistribution::ALL,
+            |r| r.name(),
+            "exponential: Lipscomb et al. 2007, CICE default; uniform: Hibler 1980; table: \
+             the exponential with mu_rdg from mu_rdg_table=",
+        ),
+    }
+}
+
+/// The μ_rdg nodes (thickness m, μ_rdg m^½) of a ridging table file at the friction pair
+/// `friction` (default 1.0, 0.6), for `redistribution="table"`.
+#[pyfunction]
+#[pyo3(signature = (path, friction = None))]
+pub(crate) fn mu_rdg_table_nodes(
+    py: Python<'_>,
+    path: PathBuf,
+    friction: Option<(f64, f64)>,
+) -> PyResult<(Vec<f64>, Vec<f64>)> {
+    let t = detached(py, || {
+        file_missing(&path)?;
+        pressridge::io::itd_netcdf::read_mu_rdg_table_at_friction(&path, friction)
+            .map_err(BindError::from)
+    })?;
+    Ok((t.thickness().to_vec(), t.values().to_vec()))
 }
 
 pub(crate) fn law(name: &str) -> PyResult<StrengthFormula> {
@@ -143,6 +180,8 @@ pub(crate) struct StrengthArgs {
     participation: String,
     /// Redistribution by name.
     redistribution: String,
+    /// With `"table"`: the μ_rdg nodes (thickness m, μ_rdg m^½).
+    mu_rdg_nodes: Option<(Vec<f64>, Vec<f64>)>,
     /// Strength law by name.
     law: String,
     /// C_f, at most one of: a constant (dimensionless), (thickness m, C_f) nodes, a C_f
@@ -159,7 +198,7 @@ impl StrengthArgs {
     pub(crate) fn resolve(self, py: Python<'_>) -> PyResult<StrengthOptions> {
         Ok(StrengthOptions {
             participation: participation(&self.participation)?,
-            redistribution: redistribution(&self.redistribution)?,
+            redistribution: redistribution(&self.redistribution, self.mu_rdg_nodes)?,
             formula: law(&self.law)?,
             cf: cf_from(py, self.cf_value, self.cf_nodes, self.cf_file)?,
             params: itd_params(self.params)?,

@@ -87,7 +87,7 @@ type FullOut<'py> = (
 /// [(cell output, array)], [(category output, array)], [(species output, array of shape
 /// (n_aero or n_iso, spatial...))]); the inputs are not modified.
 #[pyfunction]
-#[pyo3(signature = (aicen, vicen, vsnon, trcrn, layout, aice0, aice, hin_max, c1, c2, rates, tf, dt, ndtd, valid, participation_name, redistribution_name, params, cleanup, rebin, salt_flux))]
+#[pyo3(signature = (aicen, vicen, vsnon, trcrn, layout, aice0, aice, hin_max, c1, c2, rates, tf, dt, ndtd, valid, participation_name, redistribution_name, params, cleanup, rebin, salt_flux, mu_rdg_nodes = None))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn ridge_step_full<'py>(
     py: Python<'py>,
@@ -112,6 +112,7 @@ pub(crate) fn ridge_step_full<'py>(
     cleanup: bool,
     rebin: bool,
     salt_flux: &str,
+    mu_rdg_nodes: Option<(Vec<f64>, Vec<f64>)>,
 ) -> PyResult<FullOut<'py>> {
     let spatial = category_shapes(&aicen, &vicen)?;
     let full = aicen.shape().to_vec();
@@ -159,7 +160,7 @@ pub(crate) fn ridge_step_full<'py>(
         check_array("trcrn", t, &tshape, "(ncat, layout.ntrcr, spatial...) =")?;
     }
     let participation = participation(participation_name)?;
-    let redistribution = redistribution(redistribution_name)?;
+    let redistribution = redistribution(redistribution_name, mu_rdg_nodes)?;
     // Every constant of the step by name: the library's parser.
     let constants = RidgeStepOptions::from_pairs(params).map_err(BindError::from)?;
     let opts = RidgeStepOptions {

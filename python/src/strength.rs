@@ -97,7 +97,7 @@ type RidgeOut<'py> = (
 /// One ridging step; see `pressridge.ridge_step`. Returns new arrays (aicen, vicen, aice0,
 /// [closing, opening, dardg1dt, dardg2dt, dvirdgdt]); the inputs are not modified.
 #[pyfunction]
-#[pyo3(signature = (aicen, vicen, aice0, hin_max, convergence, shear, dt, valid, participation_name, redistribution_name, params))]
+#[pyo3(signature = (aicen, vicen, aice0, hin_max, convergence, shear, dt, valid, participation_name, redistribution_name, params, mu_rdg_nodes = None))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn ridge_step<'py>(
     py: Python<'py>,
@@ -112,6 +112,7 @@ pub(crate) fn ridge_step<'py>(
     participation_name: &str,
     redistribution_name: &str,
     params: Vec<(String, f64)>,
+    mu_rdg_nodes: Option<(Vec<f64>, Vec<f64>)>,
 ) -> PyResult<RidgeOut<'py>> {
     let spatial = category_shapes(&aicen, &vicen)?;
     let full = aicen.shape().to_vec();
@@ -127,7 +128,7 @@ pub(crate) fn ridge_step<'py>(
     }
     let opts = RidgeOptions {
         participation: participation(participation_name)?,
-        redistribution: redistribution(redistribution_name)?,
+        redistribution: redistribution(redistribution_name, mu_rdg_nodes)?,
         params: itd_params(params)?,
     };
     let hin_max = match hin_max {

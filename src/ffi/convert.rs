@@ -39,6 +39,7 @@ impl From<ItdError> for FfiError {
             ItdError::Bounds(_)
             | ItdError::Parameter { .. }
             | ItdError::CfTable(_)
+            | ItdError::MuRdgTable(_)
             | ItdError::Layout(_) => (PRESSRIDGE_ERR_BAD_VALUE, None),
         };
         let mut message = e.to_string();

@@ -7,6 +7,7 @@ use std::sync::Arc;
 use ndarray::{Array1, ArrayViewMut1};
 
 use super::layout::{Layout, Region, check_disjoint, check_ptr};
+use super::mu_rdg_table::PressridgeMuRdgTable;
 use super::tables::PressridgeCfTable;
 use super::{FfiError, FfiResult, PRESSRIDGE_ERR_BAD_VALUE, PressridgeGrid, guard, put};
 use crate::itd::validate_bounds;
@@ -31,9 +32,9 @@ pub use options::{
     PRESSRIDGE_CF_CICE, PRESSRIDGE_CF_FLATO1991, PRESSRIDGE_CF_HIBLER1980,
     PRESSRIDGE_CF_SOURCE_CONSTANT, PRESSRIDGE_CF_SOURCE_TABLE,
     PRESSRIDGE_PARTICIPATION_EXPONENTIAL, PRESSRIDGE_PARTICIPATION_THORNDIKE,
-    PRESSRIDGE_REDISTRIBUTION_EXPONENTIAL, PRESSRIDGE_REDISTRIBUTION_UNIFORM,
-    PRESSRIDGE_STRENGTH_HIBLER1979, PRESSRIDGE_STRENGTH_ROTHROCK, PressridgeOptions,
-    PressridgeParams, pressridge_options_default,
+    PRESSRIDGE_REDISTRIBUTION_EXPONENTIAL, PRESSRIDGE_REDISTRIBUTION_TABLE,
+    PRESSRIDGE_REDISTRIBUTION_UNIFORM, PRESSRIDGE_STRENGTH_HIBLER1979,
+    PRESSRIDGE_STRENGTH_ROTHROCK, PressridgeOptions, PressridgeParams, pressridge_options_default,
 };
 
 thread_local! {
@@ -257,7 +258,10 @@ pub unsafe extern "C" fn pressridge_strength_cell(
         };
         let r = CELL_OPTIONS.with(|cache| -> FfiResult<ColumnStrength> {
             let mut cache = cache.borrow_mut();
-            let constant = o.cf_source == PRESSRIDGE_CF_SOURCE_CONSTANT;
+            // Options with a table handle are never kept: a handle may be freed and another
+            // made at its address.
+            let constant = o.cf_source == PRESSRIDGE_CF_SOURCE_CONSTANT
+                && o.redistribution != PRESSRIDGE_REDISTRIBUTION_TABLE;
             let hit = constant && cache.as_ref().is_some_and(|c| same_options(&c.raw, o));
             if !hit {
                 let so = o.strength_options()?;
@@ -306,6 +310,7 @@ fn same_options(a: &PressridgeOptions, b: &PressridgeOptions) -> bool {
         cf: _,
         fill: _,
         cf_table: _,
+        mu_rdg_table: _,
         params:
             PressridgeParams {
                 rhoi: _,
@@ -338,6 +343,7 @@ fn same_options(a: &PressridgeOptions, b: &PressridgeOptions) -> bool {
         (a.cf.to_bits(), b.cf.to_bits()),
         (a.fill.to_bits(), b.fill.to_bits()),
         (a.cf_table.addr() as u64, b.cf_table.addr() as u64),
+        (a.mu_rdg_table.addr() as u64, b.mu_rdg_table.addr() as u64),
         (p.rhoi.to_bits(), q.rhoi.to_bits()),
         (p.rhow.to_bits(), q.rhow.to_bits()),
         (p.gravit.to_bits(), q.gravit.to_bits()),

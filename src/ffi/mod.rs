@@ -27,6 +27,7 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 mod convert;
 pub mod itd;
 mod layout;
+pub mod mu_rdg_table;
 pub mod ridge_step;
 pub mod scene;
 pub mod tables;
@@ -62,7 +63,7 @@ pub const PRESSRIDGE_ERR_PANIC: i32 = 10;
 
 /// Version of the C ABI (the layout of the structs and the function signatures). Bumped on
 /// every incompatible change; compare with [`pressridge_abi_version`] at run time.
-pub const PRESSRIDGE_ABI_VERSION: i32 = 2;
+pub const PRESSRIDGE_ABI_VERSION: i32 = 3;
 
 /// An error on its way to the caller: a status code, a message and, for errors in one
 /// column, the column's 0-based index.

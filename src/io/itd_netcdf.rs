@@ -52,7 +52,9 @@ mod read;
 mod tracers;
 mod vars;
 
-pub use cf_table::{read_cf_table, read_cf_table_at_friction, write_cf_table};
+pub use cf_table::{
+    read_cf_table, read_cf_table_at_friction, read_mu_rdg_table_at_friction, write_cf_table,
+};
 pub use forcing::{CellField, CellUnits, read_cell_field};
 pub use grid::{CoordValues, CoordVar, ItdGrid};
 pub use output::{

@@ -16,6 +16,7 @@
 mod bounds;
 mod cf;
 mod lanes;
+mod mu_rdg;
 mod named_params;
 mod params;
 mod participation;
@@ -28,6 +29,7 @@ mod vexp;
 pub(crate) use bounds::validate_bounds;
 pub use bounds::{CategoryBounds, category_bounds};
 pub use cf::{Cf, CfLookup, CfPreset, CfProvider, CfTable};
+pub use mu_rdg::{MU_RDG_MAX_NODES, MuRdgLookup, MuRdgTable};
 pub use named_params::{NamedParams, ParamError, ParamGroup, ParamMeta};
 pub use params::{ItdParams, Participation, Redistribution, StrengthFormula};
 pub use participation::participation;
@@ -245,6 +247,9 @@ pub enum ItdError {
     /// A C_f table is unusable.
     #[error("invalid C_f table: {0}")]
     CfTable(String),
+    /// A μ_rdg table is unusable.
+    #[error("invalid mu_rdg table: {0}")]
+    MuRdgTable(String),
     /// A tracer layout (its fields, a host's tracer tables, a refill value) is unusable.
     #[error("invalid tracer layout: {0}")]
     Layout(String),
@@ -266,6 +271,8 @@ pub struct Workspace {
     pub(crate) hrmax: Vec<f64>,
     pub(crate) hrexp: Vec<f64>,
     pub(crate) krdg: Vec<f64>,
+    /// Per category: μ_rdg came from a table queried outside its range (the end value).
+    pub(crate) mu_clamped: Vec<bool>,
     pub(crate) aicen_init: Vec<f64>,
     pub(crate) vicen_init: Vec<f64>,
     /// Area ridged out of each category during the last ridging step (dimensionless).
@@ -289,6 +296,7 @@ impl Workspace {
             hrmax: vec![0.0; ncat],
             hrexp: vec![0.0; ncat],
             krdg: vec![1.0; ncat],
+            mu_clamped: vec![false; ncat],
             aicen_init: vec![0.0; ncat],
             vicen_init: vec![0.0; ncat],
             ardg1n: vec![0.0; ncat],
@@ -332,6 +340,7 @@ impl Workspace {
             self.hrmax[n] = g.hrmax;
             self.hrexp[n] = g.hrexp;
             self.krdg[n] = g.krdg;
+            self.mu_clamped[n] = g.mu_clamped;
         }
         redistribution::net_to_gross(&self.apartic, &self.krdg)
     }

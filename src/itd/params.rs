@@ -4,6 +4,7 @@
 //! CICE/Icepack default (`icepack_parameters.F90`, `icepack_mechred.F90`). Units are SI.
 //! Overrides by name (`--param`, Python's keywords) go through [`NamedParams`].
 
+use super::mu_rdg::MuRdgTable;
 use super::named_params::{NamedParams, ParamGroup, ParamMeta};
 
 /// Parameters of participation, redistribution, strength and the ridging step.
@@ -296,7 +297,10 @@ pub enum Participation {
 }
 
 /// Thickness distribution of newly ridged ice. CICE `krdg_redist`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+// The table variant holds its nodes inline (about 520 bytes) so that the options stay `Copy`
+// for a host's per-cell calls; a box would make every options struct own a heap value.
+#[allow(clippy::large_enum_variant)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub enum Redistribution {
     /// Hibler (1980): uniform between h_min = min(2h, h + maxraft) and 2√(H*·h)
     /// (CICE `krdg_redist = 0`).
@@ -305,6 +309,9 @@ pub enum Redistribution {
     /// (CICE `krdg_redist = 1`, the default).
     #[default]
     Exponential,
+    /// Lipscomb's exponential with μ_rdg per category thickness h from a table of simulated
+    /// ridges (m^½; [`MuRdgTable`], clamped at its ends and counted): λ = μ_rdg(h)·√h.
+    Table(MuRdgTable),
 }
 
 /// Ice strength formula. CICE `kstrength`.
@@ -355,10 +362,25 @@ impl Redistribution {
     }
 
     /// Short lower-case name used in the CLI and in NetCDF attributes.
-    pub fn name(self) -> &'static str {
+    pub fn name(&self) -> &'static str {
         match self {
             Redistribution::Uniform => "uniform",
             Redistribution::Exponential => "exponential",
+            Redistribution::Table(_) => "table",
+        }
+    }
+
+    /// Whether the ridged ice is spread exponentially (Lipscomb et al. 2007), with one μ_rdg
+    /// or a table of them.
+    pub fn is_exponential(&self) -> bool {
+        matches!(self, Redistribution::Exponential | Redistribution::Table(_))
+    }
+
+    /// The μ_rdg table, if the redistribution is [`Redistribution::Table`].
+    pub fn mu_rdg_table(&self) -> Option<&MuRdgTable> {
+        match self {
+            Redistribution::Table(t) => Some(t),
+            _ => None,
         }
     }
 }

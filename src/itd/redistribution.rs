@@ -26,6 +26,8 @@ pub struct RidgeGeometry {
     pub hrexp: f64,
     /// Mean ridge thickness over ridging-ice thickness k (dimensionless, > 1).
     pub krdg: f64,
+    /// μ_rdg came from a table queried outside its thickness range (the end value used).
+    pub mu_clamped: bool,
 }
 
 impl RidgeGeometry {
@@ -36,6 +38,7 @@ impl RidgeGeometry {
         hrmax: 0.0,
         hrexp: 0.0,
         krdg: 1.0,
+        mu_clamped: false,
     };
 }
 
@@ -63,19 +66,29 @@ pub fn ridge_geometry(
                 hrmax,
                 hrexp: 0.0,
                 krdg: hrmean / hi,
+                mu_clamped: false,
             }
         }
-        Redistribution::Exponential => {
+        Redistribution::Exponential | Redistribution::Table(_) => {
             let raw = hi;
             let hi = f64::max(hi, params.puny);
             let hrmin = f64::min(2.0 * hi, hi + params.maxraft);
-            let hrexp = params.mu_rdg * hi.sqrt();
+            // μ_rdg at the ridging ice's own thickness (as the table's lead ice).
+            let (mu, mu_clamped) = match &kind {
+                Redistribution::Table(t) => {
+                    let l = t.lookup(raw);
+                    (l.value, l.clamped)
+                }
+                _ => (params.mu_rdg, false),
+            };
+            let hrexp = mu * hi.sqrt();
             RidgeGeometry {
                 hi: raw,
                 hrmin,
                 hrmax: 0.0,
                 hrexp,
                 krdg: (hrmin + hrexp) / hi,
+                mu_clamped,
             }
         }
     }
@@ -90,7 +103,7 @@ pub fn mean_square_ridge_thickness(kind: Redistribution, g: &RidgeGeometry) -> f
             let cube = |x: f64| x * x * x;
             (1.0 / 3.0) * (cube(g.hrmax) - cube(g.hrmin)) / (g.hrmax - g.hrmin)
         }
-        Redistribution::Exponential => {
+        Redistribution::Exponential | Redistribution::Table(_) => {
             g.hrmin * g.hrmin + 2.0 * g.hrmin * g.hrexp + 2.0 * g.hrexp * g.hrexp
         }
     }
@@ -120,7 +133,7 @@ pub fn category_fractions(
             let dhr2 = g.hrmax * g.hrmax - g.hrmin * g.hrmin;
             ((hr - hl) / dhr, (hr * hr - hl * hl) / dhr2)
         }
-        Redistribution::Exponential => {
+        Redistribution::Exponential | Redistribution::Table(_) => {
             let hi1 = g.hrmin;
             let hexp = g.hrexp;
             if !last {
@@ -188,7 +201,7 @@ pub fn category_fractions_all(
                     category_fractions(kind, params, g, hin_max[nr], h_hi, nr + 1 == ncat);
             }
         }
-        Redistribution::Exponential => {
+        Redistribution::Exponential | Redistribution::Table(_) => {
             let hi1 = g.hrmin;
             let hexp = g.hrexp;
             let cap = params.exp_argmax;

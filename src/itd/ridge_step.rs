@@ -223,6 +223,9 @@ pub struct StepDiagnostics {
     /// Snow volume put into the ocean (m over the cell): the share `1 − fsnowrdg` of the snow
     /// on ridging ice, zapped and excess snow (pressridge, not Icepack).
     pub snow_to_ocean: f64,
+    /// A category ridged with μ_rdg from a table queried outside its thickness range (the
+    /// end value used; [`Redistribution::Table`]).
+    pub mu_rdg_clamped: bool,
 }
 
 /// Icepack's ridging terms from the host's strain rates (all 1/s): `rdg_conv` = −min(div u, 0)

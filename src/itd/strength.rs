@@ -48,6 +48,9 @@ pub struct ColumnStrength {
     pub strength: f64,
     /// True when a C_f table was queried outside its thickness range (value clamped).
     pub cf_clamped: bool,
+    /// True when a μ_rdg table ([`Redistribution::Table`]) was queried outside its thickness
+    /// range for a category that ridges (the end value used).
+    pub mu_rdg_clamped: bool,
     /// The share of P (dimensionless, 0–1) carried by the categories whose C_f was held at
     /// the table's end value: how much the clamp can matter. Every ice column of a
     /// realistic distribution has some participation, however small, of its thickest
@@ -69,6 +72,7 @@ impl ColumnStrength {
         ColumnStrength {
             strength,
             cf_clamped: false,
+            mu_rdg_clamped: false,
             cf_clamped_share: 0.0,
         }
     }
@@ -148,6 +152,7 @@ pub fn strength_column(
             hrmax: ws.hrmax[n],
             hrexp: ws.hrexp[n],
             krdg: ws.krdg[n],
+            mu_clamped: ws.mu_clamped[n],
         };
         let h2rdg = mean_square_ridge_thickness(opts.redistribution, &g);
         -g.hi * g.hi + h2rdg / g.krdg
@@ -194,9 +199,12 @@ pub fn strength_column(
         Cf::Constant(cf) => cf * p.cp() * total / aksum,
         _ => p.cp() * total / aksum,
     };
+    let mu_rdg_clamped =
+        (0..ncat).any(|n| ws.mu_clamped[n] && aicen[n] > p.puny && ws.apartic[n + 1] > 0.0);
     Ok(ColumnStrength {
         strength,
         cf_clamped: clamped,
+        mu_rdg_clamped,
         // The share in P of the clamped categories: P is proportional to `total`.
         cf_clamped_share: if clamped && total > 0.0 {
             (clamped_part / total).clamp(0.0, 1.0)
@@ -318,15 +326,20 @@ fn category_terms_generic(
                 }
             }
         }
-        Redistribution::Exponential => {
-            let mu = p.mu_rdg;
+        // A μ_rdg table does not come here (StrengthConsts::new and the block path send it to
+        // strength_column, which counts its clamps); were it to, this is its value.
+        Redistribution::Exponential | Redistribution::Table(_) => {
+            let mu_at = |h: f64| match &redist {
+                Redistribution::Table(t) => t.lookup(h).value,
+                _ => p.mu_rdg,
+            };
             for gi in 0..groups {
                 for j in 0..4 {
                     let n = 4 * gi + j;
                     let hi = v[n] / a[n];
                     let hc = f64::max(hi, puny);
                     let hrmin = f64::min(2.0 * hc, hc + maxraft);
-                    let hrexp = mu * hc.sqrt();
+                    let hrexp = mu_at(hi) * hc.sqrt();
                     let k = (hrmin + hrexp) / hc;
                     let h2 = hrmin * hrmin + 2.0 * hrmin * hrexp + 2.0 * hrexp * hrexp;
                     let live = a[n] > puny;
@@ -353,13 +366,18 @@ pub(crate) struct StrengthConsts {
 }
 
 impl StrengthConsts {
-    /// The constants of `opts`, or `None` unless Rothrock with a constant C_f.
+    /// The constants of `opts`, or `None` unless Rothrock with a constant C_f and one μ_rdg
+    /// (a μ_rdg table goes through [`strength_column`], which counts its clamps).
     pub(crate) fn new(opts: &StrengthOptions) -> Option<Self> {
         match (opts.formula, &opts.cf) {
-            (StrengthFormula::Rothrock, Cf::Constant(cf)) => Some(StrengthConsts {
-                exp: ExpCache::new(opts.params.astar),
-                cfcp: cf * opts.params.cp(),
-            }),
+            (StrengthFormula::Rothrock, Cf::Constant(cf))
+                if opts.redistribution.mu_rdg_table().is_none() =>
+            {
+                Some(StrengthConsts {
+                    exp: ExpCache::new(opts.params.astar),
+                    cfcp: cf * opts.params.cp(),
+                })
+            }
             _ => None,
         }
     }
@@ -419,30 +437,6 @@ pub(crate) fn strength_column_constant_cf(
         return Ok(ZERO);
     }
     Ok(ColumnStrength::unclamped(k.cfcp * total / aksum))
-}
-
-/// Summary of a batched call.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct BatchSummary {
-    /// Columns computed.
-    pub columns: usize,
-    /// Columns where a C_f table was queried outside its range (values clamped).
-    pub cf_clamped_columns: usize,
-    /// Of these, the columns where the clamped categories carry at least
-    /// [`CF_CLAMPED_MATERIAL_SHARE`] of P ([`ColumnStrength::cf_clamped_share`]).
-    pub cf_clamped_material_columns: usize,
-    /// The largest [`ColumnStrength::cf_clamped_share`] of any column (dimensionless, 0–1).
-    pub cf_clamped_share_max: f64,
-}
-
-impl BatchSummary {
-    /// Counts one column's result.
-    fn add(&mut self, r: &ColumnStrength) {
-        self.cf_clamped_columns += usize::from(r.cf_clamped);
-        self.cf_clamped_material_columns +=
-            usize::from(r.cf_clamped_share >= CF_CLAMPED_MATERIAL_SHARE);
-        self.cf_clamped_share_max = self.cf_clamped_share_max.max(r.cf_clamped_share);
-    }
 }
 
 /// Strength P (N/m) of `ncol` columns into `out` (length `ncol`).
@@ -527,6 +521,7 @@ pub fn strength_batch_masked(
     let mut c = 0;
     if let (StrengthFormula::Rothrock, Cf::Constant(cf)) = (opts.formula, &opts.cf)
         && ncat <= lanes::MAX_NCAT
+        && opts.redistribution.mu_rdg_table().is_none()
     {
         let p = &opts.params;
         let e = ExpCache::new(p.astar);
@@ -585,6 +580,9 @@ pub fn strength_batch_masked(
     }
     Ok(summary)
 }
+
+mod summary;
+pub use summary::BatchSummary;
 
 #[cfg(test)]
 mod tests;

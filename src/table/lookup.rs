@@ -1,6 +1,5 @@
-//! Interpolation in a ridging lookup table: the table that [`super::tabulate`] makes and
-//! `pressridge tabulate` writes as NetCDF, read back (by `RidgeLookup::open` in
-//! [`crate::io::table_netcdf`]) for host models, the C ABI and Python.
+//! Interpolation in a ridging lookup table (made by [`super::tabulate`], read back by
+//! `RidgeLookup::open` in [`crate::io::table_netcdf`]) for host models, the C ABI and Python.
 //!
 //! A table field lies on some of the axes `set` (an index), `thickness` (m, the lead-ice
 //! sheet thickness) and `volume` (m³/m, the ridged volume V = U·h·t of eqs 13–16), in that
@@ -33,9 +32,10 @@
 use std::collections::BTreeMap;
 
 use crate::interp::{bracket, lerp};
-
 use crate::itd::{CfLookup, CfTable};
 use ndarray::{ArrayD, Axis};
+
+mod mu_rdg;
 
 /// Which axes a field lies on, in the order `set`, `thickness`, `volume` (C order, volume
 /// fastest).

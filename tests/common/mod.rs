@@ -254,3 +254,23 @@ impl Rng {
         (self.next() % n as u64) as usize
     }
 }
+
+/// A ridging table as `pressridge tabulate` lays out its friction grid, holding only
+/// `mu_rdg(thickness, mu, mu_w)` (m^0.5): two friction pairs, (μ, μ_w) = (0.4, 0.6) with
+/// `mu_rdg[0]` and (1.0, 0.6) with `mu_rdg[1]`, at the thicknesses `h` (m).
+#[allow(dead_code)]
+pub fn write_mu_rdg_table(path: &Path, h: &[f64], mu_rdg: [&[f64]; 2]) {
+    let nh = h.len();
+    let grid: Vec<f64> = (0..nh).flat_map(|k| [mu_rdg[0][k], mu_rdg[1][k]]).collect();
+    write_nc(
+        path,
+        &[
+            Var::f64("thickness", &[("thickness", nh)], h.to_vec()),
+            Var::f64("volume", &[("volume", 1)], vec![0.0]),
+            Var::f64("mu", &[("mu", 2)], vec![0.4, 1.0]),
+            Var::f64("mu_w", &[("mu_w", 1)], vec![0.6]),
+            Var::f64("mu_rdg", &[("thickness", nh), ("mu", 2), ("mu_w", 1)], grid)
+                .with_units("m^0.5"),
+        ],
+    );
+}

@@ -102,6 +102,14 @@ pub struct Args {
     /// Ridged-ice redistribution.
     #[arg(long, value_enum, default_value = "exponential")]
     pub redistribution: RedistArg,
+    /// With --redistribution table: the ridging table (`pressridge tabulate`) whose `mu_rdg`
+    /// (m^0.5) against thickness sets each category's e-folding scale.
+    #[arg(long, value_name = "FILE")]
+    pub mu_rdg_table: Option<PathBuf>,
+    /// Friction pair MU,MU_W (dimensionless) of the set of --mu-rdg-table to use [default:
+    /// 1.0,0.6].
+    #[arg(long, value_name = "MU,MU_W", requires = "mu_rdg_table", value_parser = crate::strength::parse_friction)]
+    pub friction: Option<(f64, f64)>,
     /// Override a parameter, NAME=VALUE (repeatable), e.g. `--param cs=0.5`: the ridging
     /// parameters (`ItdParams`: rhoi, rhow, mu_rdg, cs, ...) and, for the complete step, its
     /// thermodynamic constants (`RidgeStepParams`: rhos, lfresh, cp_ice, fsnowrdg,
@@ -151,7 +159,11 @@ pub struct Args {
 
 /// Runs `pressridge ridge-step`.
 pub fn run(args: Args) -> Result<(), BoxError> {
-    refuse_output_over_input(&args.output, "--output", &[("--input", &args.input)])?;
+    let mut inputs = vec![("--input", args.input.as_path())];
+    if let Some(t) = &args.mu_rdg_table {
+        inputs.push(("--mu-rdg-table", t.as_path()));
+    }
+    refuse_output_over_input(&args.output, "--output", &inputs)?;
     if !(args.dt > 0.0 && args.dt.is_finite()) {
         return Err(format!(
             "--dt must be a positive, finite number of seconds, got {}",
@@ -228,7 +240,11 @@ pub fn run(args: Args) -> Result<(), BoxError> {
     let all = parse_all_params(&args)?;
     let o = RidgeOptions {
         participation: args.participation.into(),
-        redistribution: args.redistribution.into(),
+        redistribution: crate::strength::redistribution(
+            args.redistribution,
+            args.mu_rdg_table.as_deref(),
+            args.friction,
+        )?,
         params: all.itd,
     };
     match (snow, forcing) {

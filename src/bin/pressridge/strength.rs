@@ -33,6 +33,9 @@ pub enum RedistArg {
     Uniform,
     /// Lipscomb et al. (2007), mu = 3 m^0.5 (CICE default).
     Exponential,
+    /// Lipscomb et al. (2007) with mu_rdg per category thickness from the simulated ridges
+    /// of --mu-rdg-table (clamped at its ends, counted).
+    Table,
 }
 
 /// Strength formula.
@@ -67,9 +70,22 @@ impl From<PartArg> for Participation {
         by_name(a, Participation::from_name)
     }
 }
-impl From<RedistArg> for Redistribution {
-    fn from(a: RedistArg) -> Self {
-        by_name(a, Redistribution::from_name)
+/// The redistribution of `--redistribution` (`table`: μ_rdg of the ridging table `table`, at
+/// the friction pair `friction`, default 1.0,0.6).
+pub fn redistribution(
+    a: RedistArg,
+    table: Option<&std::path::Path>,
+    friction: Option<(f64, f64)>,
+) -> Result<Redistribution, BoxError> {
+    match (a, table) {
+        (RedistArg::Table, Some(t)) => Ok(Redistribution::Table(
+            pressridge::io::itd_netcdf::read_mu_rdg_table_at_friction(t, friction)?,
+        )),
+        (RedistArg::Table, None) => Err("--redistribution table needs --mu-rdg-table FILE, a \
+             ridging table of `pressridge tabulate` with `mu_rdg` (runs with ridge columns)"
+            .into()),
+        (_, Some(_)) => Err("--mu-rdg-table is used with --redistribution table only".into()),
+        (a, None) => Ok(by_name(a, Redistribution::from_name)),
     }
 }
 impl From<FormulaArg> for StrengthFormula {
@@ -98,6 +114,11 @@ pub struct Args {
     /// Ridged-ice redistribution.
     #[arg(long, value_enum, default_value = "exponential")]
     pub redistribution: RedistArg,
+    /// With --redistribution table: the ridging table (`pressridge tabulate`) whose `mu_rdg`
+    /// (m^0.5) against thickness sets each category's e-folding scale, at the `--friction`
+    /// pair.
+    #[arg(long, value_name = "FILE")]
+    pub mu_rdg_table: Option<PathBuf>,
     /// Strength formula.
     #[arg(long, value_enum, default_value = "rothrock")]
     pub strength: FormulaArg,
@@ -112,9 +133,10 @@ pub struct Args {
     #[arg(long)]
     pub cf_table: Option<PathBuf>,
     /// Friction pair MU,MU_W (dimensionless: between blocks above and below the water line)
-    /// of the simulations whose C_f a `--cf-table` gives [default: 1.0,0.6, Hopkins 1994's
-    /// thickness set]. The table must hold that pair; the choice is written to the output.
-    #[arg(long, value_name = "MU,MU_W", requires = "cf_table", value_parser = parse_friction)]
+    /// of the simulations whose C_f a `--cf-table` (and whose mu_rdg a `--mu-rdg-table`)
+    /// gives [default: 1.0,0.6, Hopkins 1994's thickness set]. The table must hold that
+    /// pair; the choice is written to the output.
+    #[arg(long, value_name = "MU,MU_W", value_parser = parse_friction)]
     pub friction: Option<(f64, f64)>,
     /// Override a parameter, NAME=VALUE (repeatable), e.g. `--param mu_rdg=4`; names as the
     /// fields of `pressridge::itd::ItdParams`.
@@ -156,10 +178,11 @@ pub fn parse_friction(s: &str) -> Result<(f64, f64), String> {
     Ok((mu, mu_w))
 }
 
-/// Builds the strength options from the shared flags.
+/// Builds the strength options from the shared flags (`redistribution` as
+/// [`redistribution`] gives it).
 pub fn options(
     participation: PartArg,
-    redistribution: RedistArg,
+    redistribution: Redistribution,
     formula: FormulaArg,
     cf: Option<f64>,
     cf_preset: Option<PresetArg>,
@@ -183,7 +206,7 @@ pub fn options(
     };
     Ok(StrengthOptions {
         participation: participation.into(),
-        redistribution: redistribution.into(),
+        redistribution,
         formula: formula.into(),
         cf,
         ..Default::default()
@@ -192,12 +215,34 @@ pub fn options(
 
 /// Global attributes describing the strength options.
 pub fn describe(o: &StrengthOptions) -> Vec<(String, String)> {
-    vec![
+    let mut v = vec![
         ("participation".into(), o.participation.name().into()),
         ("redistribution".into(), o.redistribution.name().into()),
         ("strength_formula".into(), o.formula.name().into()),
         ("cf".into(), o.cf.describe()),
-    ]
+    ];
+    v.extend(describe_mu_rdg(&o.redistribution));
+    v
+}
+
+/// The attribute `mu_rdg_table` (its nodes, thickness m: mu_rdg m^0.5) of a table
+/// redistribution; none otherwise.
+pub fn describe_mu_rdg(r: &Redistribution) -> Option<(String, String)> {
+    r.mu_rdg_table().map(|t| {
+        let nodes: Vec<String> = t
+            .thickness()
+            .iter()
+            .zip(t.values())
+            .map(|(h, m)| format!("{h}: {m}"))
+            .collect();
+        (
+            "mu_rdg_table".into(),
+            format!(
+                "thickness (m): mu_rdg (m^0.5), linear, held at the ends: {}",
+                nodes.join(", ")
+            ),
+        )
+    })
 }
 
 /// Refuses an output field with a non-finite value in a column holding data: the inputs
@@ -224,9 +269,18 @@ pub fn check_finite(
 
 /// Runs `pressridge strength`.
 pub fn run(args: Args) -> Result<(), BoxError> {
+    if args.friction.is_some() && args.cf_table.is_none() && args.mu_rdg_table.is_none() {
+        return Err(
+            "--friction chooses the set of a --cf-table or --mu-rdg-table: give one".into(),
+        );
+    }
     let mut o = options(
         args.participation,
-        args.redistribution,
+        redistribution(
+            args.redistribution,
+            args.mu_rdg_table.as_deref(),
+            args.friction,
+        )?,
         args.strength,
         args.cf,
         args.cf_preset,
@@ -237,6 +291,9 @@ pub fn run(args: Args) -> Result<(), BoxError> {
     let mut inputs = vec![("--input", args.input.as_path())];
     if let Some(t) = &args.cf_table {
         inputs.push(("--cf-table", t.as_path()));
+    }
+    if let Some(t) = &args.mu_rdg_table {
+        inputs.push(("--mu-rdg-table", t.as_path()));
     }
     refuse_output_over_input(&args.output, "--output", &inputs)?;
     let grid = read_itd_with(
@@ -276,8 +333,21 @@ pub fn run(args: Args) -> Result<(), BoxError> {
             summary.cf_clamped_share_max * 100.0
         );
     }
+    if summary.mu_rdg_clamped_columns > 0 {
+        eprintln!(
+            "pressridge: note: {} of {} columns had ridging-ice thicknesses outside the mu_rdg \
+             table; its end values were used",
+            summary.mu_rdg_clamped_columns, summary.columns
+        );
+    }
     let mut global = describe(&o);
     global.push(describe_params(&args.params));
+    if o.redistribution.mu_rdg_table().is_some() {
+        global.push((
+            "mu_rdg_clamped_columns".into(),
+            summary.mu_rdg_clamped_columns.to_string(),
+        ));
+    }
     global.push(("input".into(), args.input.display().to_string()));
     global.push(("category_dimension".into(), grid.ncat_dim.clone()));
     global.push((
@@ -321,13 +391,18 @@ mod tests {
             let _: Participation = (*a).into();
         }
         for a in RedistArg::value_variants() {
-            let _: Redistribution = (*a).into();
+            let r = redistribution(*a, None, None);
+            // `table` needs its file; every other is a library name.
+            assert_eq!(r.is_err(), matches!(a, RedistArg::Table));
         }
         for a in FormulaArg::value_variants() {
             let _: StrengthFormula = (*a).into();
         }
         assert_eq!(PartArg::value_variants().len(), Participation::ALL.len());
-        assert_eq!(RedistArg::value_variants().len(), Redistribution::ALL.len());
+        assert_eq!(
+            RedistArg::value_variants().len(),
+            Redistribution::ALL.len() + 1
+        );
         assert_eq!(
             FormulaArg::value_variants().len(),
             StrengthFormula::ALL.len()

@@ -13,6 +13,9 @@ pub const PRESSRIDGE_PARTICIPATION_EXPONENTIAL: i32 = 1;
 pub const PRESSRIDGE_REDISTRIBUTION_UNIFORM: i32 = 0;
 /// Exponential redistribution of Lipscomb et al. (2007), μ (CICE `krdg_redist = 1`, default).
 pub const PRESSRIDGE_REDISTRIBUTION_EXPONENTIAL: i32 = 1;
+/// Lipscomb's exponential with μ_rdg per category thickness from the table
+/// `PressridgeOptions::mu_rdg_table` (simulated ridges, issue 34).
+pub const PRESSRIDGE_REDISTRIBUTION_TABLE: i32 = 2;
 /// Strength of Hibler (1979), P = P*·h·exp(−C*(1 − A)) (CICE `kstrength = 0`).
 pub const PRESSRIDGE_STRENGTH_HIBLER1979: i32 = 0;
 /// Strength of Rothrock (1975) with the frictional factor C_f (CICE `kstrength = 1`, default).
@@ -77,7 +80,8 @@ pub struct PressridgeParams {
 pub struct PressridgeOptions {
     /// `PRESSRIDGE_PARTICIPATION_*` (CICE `krdg_partic`: 0 Thorndike, 1 exponential).
     pub participation: i32,
-    /// `PRESSRIDGE_REDISTRIBUTION_*` (CICE `krdg_redist`: 0 uniform, 1 exponential).
+    /// `PRESSRIDGE_REDISTRIBUTION_*` (CICE `krdg_redist`: 0 uniform, 1 exponential; 2 the
+    /// exponential with μ_rdg from `mu_rdg_table`).
     pub redistribution: i32,
     /// `PRESSRIDGE_STRENGTH_*` (CICE `kstrength`: 0 Hibler 1979, 1 Rothrock 1975).
     pub strength_law: i32,
@@ -93,6 +97,9 @@ pub struct PressridgeOptions {
     /// C_f table handle used with `PRESSRIDGE_CF_SOURCE_TABLE` (borrowed, not freed by the
     /// call).
     pub cf_table: *const PressridgeCfTable,
+    /// μ_rdg table handle used with `PRESSRIDGE_REDISTRIBUTION_TABLE` (borrowed, not freed by
+    /// the call).
+    pub mu_rdg_table: *const PressridgeMuRdgTable,
     /// Physical constants and tunables.
     pub params: PressridgeParams,
 }
@@ -225,6 +232,7 @@ impl Default for PressridgeOptions {
             },
             fill: 0.0,
             cf_table: std::ptr::null(),
+            mu_rdg_table: std::ptr::null(),
             params: PressridgeParams::from(&s.params),
         }
     }
@@ -241,6 +249,7 @@ fn redistribution_code(r: Redistribution) -> i32 {
     match r {
         Redistribution::Uniform => PRESSRIDGE_REDISTRIBUTION_UNIFORM,
         Redistribution::Exponential => PRESSRIDGE_REDISTRIBUTION_EXPONENTIAL,
+        Redistribution::Table(_) => PRESSRIDGE_REDISTRIBUTION_TABLE,
     }
 }
 
@@ -264,14 +273,21 @@ impl PressridgeOptions {
         }
     }
 
-    fn redistribution(&self) -> FfiResult<Redistribution> {
+    /// # Safety
+    /// `mu_rdg_table` must be null or a live handle.
+    unsafe fn redistribution(&self) -> FfiResult<Redistribution> {
         match self.redistribution {
             PRESSRIDGE_REDISTRIBUTION_UNIFORM => Ok(Redistribution::Uniform),
             PRESSRIDGE_REDISTRIBUTION_EXPONENTIAL => Ok(Redistribution::Exponential),
+            PRESSRIDGE_REDISTRIBUTION_TABLE => {
+                check_ptr(self.mu_rdg_table, "options.mu_rdg_table")?;
+                // SAFETY: checked non-null; a live handle is the caller's promise.
+                Ok(Redistribution::Table(unsafe { (*self.mu_rdg_table).table }))
+            }
             v => Err(bad_code(
                 "redistribution",
                 v,
-                "0 (uniform), 1 (exponential)",
+                "0 (uniform), 1 (exponential), 2 (table)",
             )),
         }
     }
@@ -297,17 +313,21 @@ impl PressridgeOptions {
         };
         Ok(StrengthOptions {
             participation: self.participation()?,
-            redistribution: self.redistribution()?,
+            // SAFETY: the caller's promise covers `mu_rdg_table` too.
+            redistribution: unsafe { self.redistribution()? },
             formula,
             cf,
             params: self.params.to_itd()?,
         })
     }
 
-    pub(crate) fn ridge_options(&self) -> FfiResult<RidgeOptions> {
+    /// # Safety
+    /// `mu_rdg_table` must be null or a live handle.
+    pub(crate) unsafe fn ridge_options(&self) -> FfiResult<RidgeOptions> {
         Ok(RidgeOptions {
             participation: self.participation()?,
-            redistribution: self.redistribution()?,
+            // SAFETY: the caller's promise.
+            redistribution: unsafe { self.redistribution()? },
             params: self.params.to_itd()?,
         })
     }

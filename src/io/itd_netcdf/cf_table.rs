@@ -3,7 +3,7 @@
 
 use super::vars::{dims_of, nc_err, read_f64, required};
 use super::*;
-use crate::itd::CfTable;
+use crate::itd::{CfTable, MuRdgTable};
 
 /// Reads the C_f at a friction pair (μ, μ_w; dimensionless) from `path`: from a ridging
 /// table of `pressridge tabulate` (with friction coordinates `mu` and `mu_w`), the set at
@@ -87,6 +87,25 @@ pub fn read_cf_table(path: &Path) -> Result<CfTable, NetcdfError> {
         path: path.to_path_buf(),
         source,
     })
+}
+
+/// The μ_rdg (m^½) against thickness of a ridging table written by `pressridge tabulate`, at
+/// the friction pair `friction` (μ above, μ_w below the water line; default
+/// [`crate::table::tabulate::DEFAULT_FRICTION`]), for the exponential redistribution with a
+/// table ([`crate::itd::Redistribution::Table`]). Errors name the file and say what is
+/// missing (a table without `mu_rdg`, a friction pair it does not hold).
+pub fn read_mu_rdg_table_at_friction(
+    path: &Path,
+    friction: Option<(f64, f64)>,
+) -> Result<MuRdgTable, NetcdfError> {
+    let (mu, mu_w) = friction.unwrap_or(crate::table::tabulate::DEFAULT_FRICTION);
+    let t = crate::table::lookup::RidgeLookup::open(path)?;
+    t.mu_rdg_table_at_friction(mu, mu_w)
+        .map_err(|e| NetcdfError::Value {
+            path: path.to_path_buf(),
+            var: "mu_rdg".into(),
+            msg: e.to_string(),
+        })
 }
 
 /// Writes a C_f table file (`thickness` in m, `cf` dimensionless), 64-bit-offset format.

@@ -58,6 +58,9 @@ pub struct RidgeDiagnostics {
     pub dvirdgdt: f64,
     /// Iterations used (1 in the common case).
     pub niter: usize,
+    /// A category ridged with μ_rdg from a table queried outside its thickness range (the
+    /// end value used; [`Redistribution::Table`]).
+    pub mu_rdg_clamped: bool,
 }
 
 /// One ridging step of one column, in place.
@@ -190,7 +193,9 @@ pub fn ridge_column(
                 hrmax: ws.hrmax[n],
                 hrexp: ws.hrexp[n],
                 krdg: ws.krdg[n],
+                mu_clamped: ws.mu_clamped[n],
             };
+            d.mu_rdg_clamped |= g.mu_clamped;
             for nr in 0..ncat {
                 let last = nr + 1 == ncat;
                 let h_hi = if last { p.big } else { hin_max[nr + 1] };

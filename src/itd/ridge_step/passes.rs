@@ -12,7 +12,6 @@ use super::{
     Closing, ColumnMut, OceanFluxes, RidgeStepOptions, StepDiagnostics, StepForcing, StepWorkspace,
 };
 use crate::itd::ColumnError;
-use crate::itd::params::Redistribution;
 use crate::itd::redistribution::{RidgeGeometry, category_fractions_all};
 use crate::itd::tracers::{MAX_AERO, MAX_ISO, MAX_NBTRCR, TracerLayout};
 
@@ -69,6 +68,7 @@ pub(super) fn step(
     };
 
     let mut niter = 0;
+    ws.mu_rdg_clamped = false;
     loop {
         niter += 1;
         let aksum = ridge_itd(col, opts, ws);
@@ -104,6 +104,7 @@ pub(super) fn step(
     d.dvirdgdt = s.virdg * dti;
     d.opening = s.aopen * dti;
     d.niter = niter;
+    d.mu_rdg_clamped = ws.mu_rdg_clamped;
     for n in 0..ws.ncat() {
         ws.dardg1ndt[n] = ws.core.ardg1n[n] * dti;
         ws.dardg2ndt[n] = ws.core.ardg2n[n] * dti;
@@ -160,7 +161,7 @@ fn ridge_itd(col: &ColumnMut<'_>, opts: &RidgeStepOptions, ws: &mut StepWorkspac
         col.vicen,
     );
     for n in 0..w.ncat() {
-        if opts.redistribution == Redistribution::Exponential && col.aicen[n] > p.puny {
+        if opts.redistribution.is_exponential() && col.aicen[n] > p.puny {
             // Rafting mask: 1 where h_min = 2h (the ice rafts), as Icepack's `mraft`.
             let hi = f64::max(w.hi[n], p.puny);
             let m = f64::max(0.0, 1.0f64.copysign(hi + p.maxraft - w.hrmin[n]));
@@ -288,7 +289,9 @@ fn ridge_shift(
             hrmax: ws.core.hrmax[n],
             hrexp: ws.core.hrexp[n],
             krdg: ws.core.krdg[n],
+            mu_clamped: ws.core.mu_clamped[n],
         };
+        ws.mu_rdg_clamped |= g.mu_clamped;
         category_fractions_all(
             opts.redistribution,
             p,
@@ -298,7 +301,7 @@ fn ridge_shift(
             &mut ws.farea,
             &mut ws.fvol,
         );
-        let exponential = opts.redistribution == Redistribution::Exponential;
+        let exponential = opts.redistribution.is_exponential();
         for nr in 0..ncat {
             let (farea, fvol) = (ws.farea[nr], ws.fvol[nr]);
             if n == 0 && exponential {

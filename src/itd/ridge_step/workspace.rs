@@ -40,6 +40,8 @@ pub struct StepWorkspace {
     pub vredistn: Vec<f64>,
     /// Categories emptied by the clean-up (Icepack sets `first_ice` for them).
     pub zapped: Vec<bool>,
+    /// A category ridged this step with μ_rdg from a table queried outside its range.
+    pub(super) mu_rdg_clamped: bool,
 }
 
 impl StepWorkspace {
@@ -66,6 +68,7 @@ impl StepWorkspace {
             aredistn: z.clone(),
             vredistn: z,
             zapped: vec![false; ncat],
+            mu_rdg_clamped: false,
         }
     }
 

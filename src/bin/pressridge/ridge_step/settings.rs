@@ -66,6 +66,7 @@ pub(super) fn global_attrs(
         ),
         ("dt".to_string(), format!("{} s", args.dt)),
     ];
+    g.extend(crate::strength::describe_mu_rdg(&o.redistribution));
     match host {
         None => {
             g.push((

@@ -1,0 +1,135 @@
+//! `--redistribution table --mu-rdg-table FILE` on the command line (issue 34): the strength
+//! and the ridging step with μ_rdg per category thickness from a ridging table's `mu_rdg` at
+//! the `--friction` pair. A table of one value equals `--param mu_rdg=` bit for bit; the
+//! table's nodes and the clamped columns are recorded; bad uses are refused by name.
+
+mod common;
+
+use std::path::Path;
+
+use common::{bin, fails_with, global, read_values, scratch, succeeds, write_mu_rdg_table};
+
+const SAMPLE: &str = "data/sample_itd.nc";
+
+fn run(cmd: &str, out: &Path, extra: &[&str]) -> std::process::Output {
+    let mut c = bin();
+    c.args([cmd, "--input", SAMPLE, "--output"]).arg(out);
+    if cmd == "ridge-step" {
+        c.args(["--dt", "3600", "--convergence", "2e-6", "--shear", "1e-6"]);
+    }
+    c.args(extra).output().unwrap()
+}
+
+fn same_bits(a: &Path, b: &Path, var: &str) {
+    let (x, y) = (read_values(a, var), read_values(b, var));
+    assert_eq!(x.len(), y.len(), "{var}");
+    assert!(
+        x.iter().zip(&y).all(|(p, q)| p.to_bits() == q.to_bits()),
+        "{var}"
+    );
+}
+
+#[test]
+fn a_table_of_one_value_is_that_mu_rdg_and_its_nodes_are_recorded() {
+    let dir = scratch("cli-mu-rdg-table");
+    let table = dir.join("table.nc");
+    // μ_rdg 2.5 m^½ everywhere at (1.0, 0.6), another curve at (0.4, 0.6).
+    write_mu_rdg_table(
+        &table,
+        &[0.01, 0.5, 100.0],
+        [&[1.0, 1.5, 2.0], &[2.5, 2.5, 2.5]],
+    );
+    let t = table.to_str().unwrap();
+    let with = ["--redistribution", "table", "--mu-rdg-table", t];
+    for (cmd, var) in [("strength", "strength"), ("ridge-step", "vicen")] {
+        let (a, b) = (
+            dir.join(format!("{cmd}-t.nc")),
+            dir.join(format!("{cmd}-c.nc")),
+        );
+        succeeds(&run(cmd, &a, &with));
+        succeeds(&run(cmd, &b, &["--param", "mu_rdg=2.5"]));
+        same_bits(&a, &b, var);
+        assert_eq!(global(&a, "redistribution"), "table");
+        let nodes = global(&a, "mu_rdg_table");
+        assert!(
+            nodes.contains("0.5: 2.5") && nodes.contains("100: 2.5"),
+            "{nodes}"
+        );
+        // The other friction pair is another curve: other values.
+        let c = dir.join(format!("{cmd}-low.nc"));
+        succeeds(&run(
+            cmd,
+            &c,
+            &[&with[..], &["--friction", "0.4,0.6"]].concat(),
+        ));
+        assert_ne!(read_values(&c, var), read_values(&b, var), "{cmd}");
+    }
+    // Thicknesses beyond the nodes are counted.
+    let narrow = dir.join("narrow.nc");
+    write_mu_rdg_table(&narrow, &[0.5, 1.0], [&[2.0, 2.0], &[2.0, 3.0]]);
+    let out = dir.join("narrow-out.nc");
+    let r = run(
+        "strength",
+        &out,
+        &[
+            "--redistribution",
+            "table",
+            "--mu-rdg-table",
+            narrow.to_str().unwrap(),
+        ],
+    );
+    succeeds(&r);
+    assert!(String::from_utf8_lossy(&r.stderr).contains("outside the mu_rdg table"));
+    assert_ne!(global(&out, "mu_rdg_clamped_columns"), "0");
+}
+
+#[test]
+fn bad_uses_are_refused_by_name() {
+    let dir = scratch("cli-mu-rdg-table-bad");
+    let out = dir.join("out.nc");
+    fails_with(
+        &run("strength", &out, &["--redistribution", "table"]),
+        &["--redistribution table needs --mu-rdg-table"],
+    );
+    let table = dir.join("table.nc");
+    write_mu_rdg_table(&table, &[0.5, 1.0], [&[2.0, 2.0], &[2.0, 3.0]]);
+    let t = table.to_str().unwrap();
+    fails_with(
+        &run("ridge-step", &out, &["--mu-rdg-table", t]),
+        &["--mu-rdg-table is used with --redistribution table"],
+    );
+    fails_with(
+        &run(
+            "strength",
+            &out,
+            &[
+                "--redistribution",
+                "table",
+                "--mu-rdg-table",
+                t,
+                "--friction",
+                "0.7,0.6",
+            ],
+        ),
+        &["mu_rdg", "0.7"],
+    );
+    // A ridging table without `mu_rdg` (runs without ridge columns) says so.
+    fails_with(
+        &run(
+            "strength",
+            &out,
+            &[
+                "--redistribution",
+                "table",
+                "--mu-rdg-table",
+                "data/ridging_table.nc",
+            ],
+        ),
+        &["mu_rdg", "ridge columns"],
+    );
+    fails_with(
+        &run("strength", &out, &["--friction", "1.0,0.6"]),
+        &["--friction", "--mu-rdg-table"],
+    );
+    assert!(!out.exists(), "nothing written on refusal");
+}
