@@ -232,12 +232,12 @@ fn redistribution_fractions_sum_to_one() {
     let h = category_bounds(&CategoryBounds::RoundNumbers, 5).unwrap();
     for kind in [Redistribution::Uniform, Redistribution::Exponential] {
         for hi in [0.05, 0.3, 1.0, 2.5, 6.0] {
-            let g = ridge_geometry(kind, &p, 0.5, 0.5 * hi);
+            let g = ridge_geometry(&kind, &p, 0.5, 0.5 * hi);
             let (mut fa, mut fv) = (0.0, 0.0);
             for nr in 0..5 {
                 let last = nr == 4;
                 let hi_b = if last { p.big } else { h[nr + 1] };
-                let (a, v) = category_fractions(kind, &p, &g, h[nr], hi_b, last);
+                let (a, v) = category_fractions(&kind, &p, &g, h[nr], hi_b, last);
                 assert!(a >= 0.0 && v >= 0.0);
                 fa += a;
                 fv += v;

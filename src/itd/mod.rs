@@ -334,7 +334,7 @@ impl Workspace {
             &mut self.exp_cache,
         );
         for n in 0..aicen.len() {
-            let g = redistribution::ridge_geometry(redistribution, p, aicen[n], vicen[n]);
+            let g = redistribution::ridge_geometry(&redistribution, p, aicen[n], vicen[n]);
             self.hi[n] = g.hi;
             self.hrmin[n] = g.hrmin;
             self.hrmax[n] = g.hrmax;

@@ -46,7 +46,7 @@ impl RidgeGeometry {
 /// Returns [`RidgeGeometry::EMPTY`] when `ain ≤ puny`.
 #[inline]
 pub fn ridge_geometry(
-    kind: Redistribution,
+    kind: &Redistribution,
     params: &ItdParams,
     ain: f64,
     vin: f64,
@@ -74,7 +74,7 @@ pub fn ridge_geometry(
             let hi = f64::max(hi, params.puny);
             let hrmin = f64::min(2.0 * hi, hi + params.maxraft);
             // μ_rdg at the ridging ice's own thickness (as the table's lead ice).
-            let (mu, mu_clamped) = match &kind {
+            let (mu, mu_clamped) = match kind {
                 Redistribution::Table(t) => {
                     let l = t.lookup(raw);
                     (l.value, l.clamped)
@@ -96,7 +96,7 @@ pub fn ridge_geometry(
 
 /// Mean square thickness ⟨h_r²⟩ (m²) of the ridged ice of geometry `g`.
 #[inline]
-pub fn mean_square_ridge_thickness(kind: Redistribution, g: &RidgeGeometry) -> f64 {
+pub fn mean_square_ridge_thickness(kind: &Redistribution, g: &RidgeGeometry) -> f64 {
     match kind {
         Redistribution::Uniform => {
             // x**3 as gfortran evaluates it: (x*x)*x.
@@ -115,7 +115,7 @@ pub fn mean_square_ridge_thickness(kind: Redistribution, g: &RidgeGeometry) -> f
 /// caller passes `params.big` as `h_hi` for the uniform form (as CICE's `ridge_prep`).
 #[inline]
 pub fn category_fractions(
-    kind: Redistribution,
+    kind: &Redistribution,
     params: &ItdParams,
     g: &RidgeGeometry,
     h_lo: f64,
@@ -184,7 +184,7 @@ pub fn net_to_gross(apartic: &[f64], krdg: &[f64]) -> f64 {
 /// Same numbers to the bit; the exponential form evaluates one exponential per bound instead
 /// of two per category (the right end of one category is the left end of the next).
 pub fn category_fractions_all(
-    kind: Redistribution,
+    kind: &Redistribution,
     params: &ItdParams,
     g: &RidgeGeometry,
     hin_max: &[f64],

@@ -154,7 +154,7 @@ pub fn strength_column(
             krdg: ws.krdg[n],
             mu_clamped: ws.mu_clamped[n],
         };
-        let h2rdg = mean_square_ridge_thickness(opts.redistribution, &g);
+        let h2rdg = mean_square_ridge_thickness(&opts.redistribution, &g);
         -g.hi * g.hi + h2rdg / g.krdg
     };
     match &opts.cf {
@@ -267,7 +267,7 @@ fn column_prelude(
 fn category_terms(
     aicen: &[f64],
     vicen: &[f64],
-    redist: Redistribution,
+    redist: &Redistribution,
     p: &ItdParams,
 ) -> ([f64; lanes::MAX_NCAT], [f64; lanes::MAX_NCAT]) {
     #[cfg(target_arch = "x86_64")]
@@ -285,7 +285,7 @@ fn category_terms(
 fn category_terms_avx2(
     aicen: &[f64],
     vicen: &[f64],
-    redist: Redistribution,
+    redist: &Redistribution,
     p: &ItdParams,
 ) -> ([f64; lanes::MAX_NCAT], [f64; lanes::MAX_NCAT]) {
     category_terms_generic(aicen, vicen, redist, p)
@@ -295,7 +295,7 @@ fn category_terms_avx2(
 fn category_terms_generic(
     aicen: &[f64],
     vicen: &[f64],
-    redist: Redistribution,
+    redist: &Redistribution,
     p: &ItdParams,
 ) -> ([f64; lanes::MAX_NCAT], [f64; lanes::MAX_NCAT]) {
     const M: usize = lanes::MAX_NCAT;
@@ -329,7 +329,7 @@ fn category_terms_generic(
         // A μ_rdg table does not come here (StrengthConsts::new and the block path send it to
         // strength_column, which counts its clamps); were it to, this is its value.
         Redistribution::Exponential | Redistribution::Table(_) => {
-            let mu_at = |h: f64| match &redist {
+            let mu_at = |h: f64| match redist {
                 Redistribution::Table(t) => t.lookup(h).value,
                 _ => p.mu_rdg,
             };
@@ -422,7 +422,7 @@ pub(crate) fn strength_column_constant_cf(
     // Per category k_n and the strength term, as strength_column computes them, in groups
     // of 4 categories without branches (so SIMD across categories), then net_to_gross and
     // the strength sum in the same order as strength_column.
-    let (krdg, term) = category_terms(aicen, vicen, opts.redistribution, p);
+    let (krdg, term) = category_terms(aicen, vicen, &opts.redistribution, p);
     let mut aksum = apartic[0];
     let mut total = 0.0;
     for n in 0..ncat {

@@ -200,7 +200,7 @@ pub fn ridge_column(
                 let last = nr + 1 == ncat;
                 let h_hi = if last { p.big } else { hin_max[nr + 1] };
                 let (farea, fvol) =
-                    category_fractions(opts.redistribution, p, &g, hin_max[nr], h_hi, last);
+                    category_fractions(&opts.redistribution, p, &g, hin_max[nr], h_hi, last);
                 aicen[nr] += farea * ardg2n;
                 vicen[nr] += fvol * virdgn;
             }

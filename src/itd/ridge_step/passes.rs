@@ -293,7 +293,7 @@ fn ridge_shift(
         };
         ws.mu_rdg_clamped |= g.mu_clamped;
         category_fractions_all(
-            opts.redistribution,
+            &opts.redistribution,
             p,
             &g,
             hin_max,
