@@ -82,23 +82,7 @@ fn base_vars() -> Vec<Var> {
 
 /// Writes the packed file (icedrv's dimension order) and the one with restart names.
 fn write_inputs(packed: &Path, named: &Path) {
-    let l = layout();
-    let nt = l.ntrcr();
-    let mut t = vec![0.0; NCAT * nt * NI];
-    for n in 0..NCAT {
-        for it in 0..nt {
-            for c in 0..NI {
-                t[(n * nt + it) * NI + c] = tracer(&l, it, n, c);
-            }
-        }
-    }
-    let mut vars = base_vars();
-    vars.push(Var::f64(
-        "trcrn",
-        &[("time", 1), ("ncat", NCAT), ("ntrcr", nt), ("ni", NI)],
-        t,
-    ));
-    write_nc(packed, &vars);
+    let l = write_packed(packed, SPEC);
     let mut vars = base_vars();
     for (it, name) in l.cice_restart_names().iter().enumerate() {
         let x: Vec<f64> = (0..NCAT)

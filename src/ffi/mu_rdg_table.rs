@@ -5,9 +5,8 @@ use std::ffi::c_char;
 use std::path::Path;
 
 use super::layout::check_ptr;
-use super::{
-    FfiError, FfiResult, PRESSRIDGE_ERR_BAD_SIZE, PRESSRIDGE_ERR_BAD_VALUE, guard, put, read_path,
-};
+use super::tables::friction_arg;
+use super::{FfiError, PRESSRIDGE_ERR_BAD_SIZE, guard, put, read_path};
 use crate::io::itd_netcdf::read_mu_rdg_table_at_friction;
 use crate::itd::MuRdgTable;
 
@@ -19,18 +18,6 @@ use crate::itd::MuRdgTable;
 #[derive(Debug)]
 pub struct PressridgeMuRdgTable {
     pub(crate) table: MuRdgTable,
-}
-
-/// Checks a friction coefficient given through the C ABI (dimensionless, finite, ≥ 0).
-fn friction_arg(x: f64, name: &str) -> FfiResult<f64> {
-    if x.is_finite() && x >= 0.0 {
-        Ok(x)
-    } else {
-        Err(FfiError::new(
-            PRESSRIDGE_ERR_BAD_VALUE,
-            format!("{name} = {x}: a friction coefficient must be finite and non-negative"),
-        ))
-    }
 }
 
 /// Opens the μ_rdg (`mu_rdg`, m^½) at friction `mu` (between blocks above the water line) and

@@ -95,7 +95,7 @@ pub unsafe extern "C" fn pressridge_cf_table_open(
 }
 
 /// Checks a friction coefficient given through the C ABI (dimensionless, finite, ≥ 0).
-fn friction_arg(x: f64, name: &str) -> FfiResult<f64> {
+pub(super) fn friction_arg(x: f64, name: &str) -> FfiResult<f64> {
     if x.is_finite() && x >= 0.0 {
         Ok(x)
     } else {

@@ -32,10 +32,9 @@
 use std::collections::BTreeMap;
 
 use crate::interp::{bracket, lerp};
-use crate::itd::{CfLookup, CfTable};
-use ndarray::{ArrayD, Axis};
+use ndarray::ArrayD;
 
-mod mu_rdg;
+mod tables;
 
 /// Which axes a field lies on, in the order `set`, `thickness`, `volume` (C order, volume
 /// fastest).
@@ -375,52 +374,6 @@ impl RidgeLookup {
         Ok(Lookup {
             value,
             clamped: ch || cv,
-        })
-    }
-
-    /// C_f (dimensionless, the ensemble mean of the final W/ΔPE) of set `set` for ridging ice
-    /// of thickness `thickness` (m), from the field `cf_by_set`.
-    pub fn cf(&self, set: usize, thickness: f64) -> Result<CfLookup, LookupError> {
-        let l = self.value("cf_by_set", set, thickness, 0.0)?;
-        Ok(CfLookup {
-            value: l.value,
-            clamped: l.clamped,
-        })
-    }
-
-    /// The C_f at friction (`mu`, `mu_w`) as a [`CfTable`] for the strength routine:
-    /// [`RidgeLookup::friction_set`], then [`RidgeLookup::cf_table`].
-    pub fn cf_table_at_friction(&self, mu: f64, mu_w: f64) -> Result<CfTable, LookupError> {
-        self.cf_table(self.friction_set(mu, mu_w)?)
-    }
-
-    /// The C_f of set `set` as a [`CfTable`] for the strength routine: the thicknesses whose
-    /// C_f is not NaN (a cell no run reached), by the one rule of [`CfTable::from_nodes`]
-    /// (any other value not finite and positive is an error), labelled with the set's
-    /// friction when the table has it.
-    pub fn cf_table(&self, set: usize) -> Result<CfTable, LookupError> {
-        let f = self
-            .fields
-            .get("cf_by_set")
-            .ok_or_else(|| LookupError::UnknownField {
-                name: "cf_by_set".into(),
-                known: self.variables().collect::<Vec<_>>().join(", "),
-            })?;
-        if set >= self.sets.len() {
-            return Err(LookupError::Set {
-                set,
-                nsets: self.sets.len(),
-            });
-        }
-        let row = f.data.index_axis(Axis(0), set);
-        let row = row
-            .as_slice()
-            .expect("standard layout, by RidgeLookup::new");
-        let t = CfTable::from_nodes(&self.thickness, row)
-            .map_err(|e| LookupError::Invalid(format!("cf_by_set of set {set}: {e}")))?;
-        Ok(match self.friction() {
-            Some(pairs) => t.with_friction(pairs[set].0, pairs[set].1),
-            None => t,
         })
     }
 }
