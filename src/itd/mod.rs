@@ -318,7 +318,7 @@ impl Workspace {
     pub(crate) fn prepare_ridging(
         &mut self,
         participation: params::Participation,
-        redistribution: params::Redistribution,
+        redistribution: &params::Redistribution,
         p: &params::ItdParams,
         aice0: f64,
         aicen: &[f64],
@@ -334,7 +334,7 @@ impl Workspace {
             &mut self.exp_cache,
         );
         for n in 0..aicen.len() {
-            let g = redistribution::ridge_geometry(&redistribution, p, aicen[n], vicen[n]);
+            let g = redistribution::ridge_geometry(redistribution, p, aicen[n], vicen[n]);
             self.hi[n] = g.hi;
             self.hrmin[n] = g.hrmin;
             self.hrmax[n] = g.hrmax;

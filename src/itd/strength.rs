@@ -130,7 +130,7 @@ pub fn strength_column(
 
     let aksum = ws.prepare_ridging(
         opts.participation,
-        opts.redistribution,
+        &opts.redistribution,
         p,
         aice0,
         aicen,

@@ -146,7 +146,7 @@ pub fn ridge_column(
         // ridge_itd
         let aksum = ws.prepare_ridging(
             opts.participation,
-            opts.redistribution,
+            &opts.redistribution,
             p,
             *aice0,
             aicen,

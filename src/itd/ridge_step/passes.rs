@@ -154,7 +154,7 @@ fn ridge_itd(col: &ColumnMut<'_>, opts: &RidgeStepOptions, ws: &mut StepWorkspac
     let w = &mut ws.core;
     let aksum = w.prepare_ridging(
         opts.participation,
-        opts.redistribution,
+        &opts.redistribution,
         p,
         *col.aice0,
         col.aicen,
