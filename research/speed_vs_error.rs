@@ -38,17 +38,19 @@ use pressridge::table::ensemble::{Stat, quantity};
 use std::collections::BTreeMap;
 use std::path::Path;
 
-/// The quantities compared: key of [`quantity`], label, and the bound (%) the new default
-/// must hold (issue 13), if any.
-const QUANTITIES: [(&str, &str, Option<f64>); 8] = [
-    ("work", "W", Some(10.0)),
-    ("potential_energy", "ΔPE", Some(20.0)),
-    ("ratio_work_to_pe", "W/ΔPE", Some(20.0)),
-    ("friction_fraction", "Φ_f/W", None),
-    ("length_to_thickness", "L/h", None),
-    ("blocks_broken", "broken", None),
-    ("max_sail_height", "sail", None),
-    ("max_keel_depth", "keel", None),
+/// The quantities compared: key of [`quantity`] (or `normal_contact_fraction`, Φ_i/W, eq
+/// (12)'s net normal contact work over W), label, and whether the owner's equivalence
+/// criterion judges it (issue 30, item 3: W, ΔPE, W/ΔPE, Φ_i/W, joints broken, L/h).
+const QUANTITIES: [(&str, &str, bool); 9] = [
+    ("work", "W", true),
+    ("potential_energy", "ΔPE", true),
+    ("ratio_work_to_pe", "W/ΔPE", true),
+    ("normal_contact_fraction", "Φ_i/W", true),
+    ("friction_fraction", "Φ_f/W", false),
+    ("length_to_thickness", "L/h", true),
+    ("blocks_broken", "broken", true),
+    ("max_sail_height", "sail", false),
+    ("max_keel_depth", "keel", false),
 ];
 
 type Groups = BTreeMap<String, Vec<RunRecord>>;
@@ -87,7 +89,13 @@ fn groups(dir: &Path, only: Option<&str>) -> Result<Groups, Box<dyn std::error::
 }
 
 fn stat(runs: &[RunRecord], key: &str) -> Stat {
-    let xs: Vec<f64> = runs.iter().filter_map(|r| quantity(r, key)).collect();
+    let value = |r: &RunRecord| match key {
+        "normal_contact_fraction" => {
+            Some(quantity(r, "normal_contact_work")? / quantity(r, "work")?)
+        }
+        _ => quantity(r, key),
+    };
+    let xs: Vec<f64> = runs.iter().filter_map(value).collect();
     Stat::of(&xs)
 }
 
@@ -162,7 +170,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 steps.mean,
                 wall.mean
             );
-            for (key, _, bound) in QUANTITIES {
+            for (key, _, judged) in QUANTITIES {
                 let a = stat(ref_runs, key);
                 let b = stat(runs, key);
                 if name == ref_name {
@@ -175,21 +183,35 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 }
                 let (d, h) = a.welch_difference(&b);
                 let (pd, ph) = (100.0 * d / a.mean, 100.0 * (h / a.mean).abs());
-                let flag = match bound {
-                    Some(bd) if (pd - ph).abs().max((pd + ph).abs()) > bd => " ✗",
-                    Some(_) => " ✓",
-                    None => "",
+                // The shift in units of the reference's seed-to-seed σ, with its interval,
+                // judged against ±0.5 σ: inside (✓), wholly beyond (✗), or not yet decided.
+                let (sd, sh) = (d / a.std, (h / a.std).abs());
+                let flag = if !judged {
+                    String::new()
+                } else if (sd - sh) > -0.5 && (sd + sh) < 0.5 {
+                    " ✓".into()
+                } else if (sd - sh) > 0.5 || (sd + sh) < -0.5 {
+                    " ✗".into()
+                } else {
+                    " ?".into()
                 };
-                print!(" {pd:+.1} % [{:+.1}, {:+.1}]{flag} |", pd - ph, pd + ph);
+                print!(
+                    " {pd:+.1} % [{:+.1}, {:+.1}]; {sd:+.2} σ [{:+.2}, {:+.2}]{flag} |",
+                    pd - ph,
+                    pd + ph,
+                    sd - sh,
+                    sd + sh
+                );
             }
             println!(" {worst:.1e} |");
         }
     }
     println!(
-        "\nReference row: mean ± standard deviation over seeds (W, ΔPE in J/m; sail and keel \
-         in m). Other rows: difference of the mean from the reference mean in % of the \
-         reference mean, [95 % Welch interval]; ✓/✗: the interval lies within / leaves \
-         ±10 % (W) or ±20 % (ΔPE, W/ΔPE)."
+        "\nReference row: mean ± standard deviation σ over seeds (W, ΔPE in J/m; sail and \
+         keel in m). Other rows: difference of the mean from the reference mean in % of the \
+         reference mean and in units of the reference's σ, each with its 95 % Welch \
+         interval; for the quantities of issue 30's criterion, ✓: the interval lies within \
+         ±0.5 σ, ✗: wholly beyond it, ?: neither yet."
     );
     Ok(())
 }
