@@ -196,6 +196,11 @@ def _cf_table_nodes(cf: CfLike, friction: Any) -> Tuple[Optional[tuple], Optiona
     return None, None
 
 
+def _constant_cf(cf: CfLike) -> bool:
+    """Whether ``cf`` is a constant (none, a number or a preset name) rather than a table."""
+    return cf is None or isinstance(cf, (int, float)) or (isinstance(cf, str) and cf in CF_PRESETS)
+
+
 def _mu_rdg_nodes(table: Any, friction: Any = None) -> Optional[Tuple[list, list]]:
     """Normalises ``mu_rdg_table`` to (thickness m, mu_rdg m^0.5) nodes for the core: a
     ridging table file's ``mu_rdg`` at ``friction``, or node arrays as given."""
@@ -357,10 +362,9 @@ def strength(
     )
     mu_nodes = _mu_rdg_nodes(mu_rdg_table, friction)
     # With a mu_rdg table, `friction` chooses its set, and the C_f table's only if C_f is one.
-    constant_cf = cf is None or isinstance(cf, (int, float)) or (
-        isinstance(cf, str) and cf in CF_PRESETS
+    value, nodes, path = _cf_args(
+        cf, None if mu_nodes is not None and _constant_cf(cf) else friction
     )
-    value, nodes, path = _cf_args(cf, None if mu_nodes is not None and constant_cf else friction)
     out, clamped, material, share_max = _core.strength(
         a,
         v,

@@ -198,7 +198,7 @@ def strength(
     # A mu_rdg table file is read once, at the friction asked for: its nodes go to the tasks.
     mu_nodes = _pr._mu_rdg_nodes(mu_rdg_table, friction)
     block_options["mu_rdg_table"] = mu_nodes
-    if mu_nodes is not None and (cf is None or isinstance(cf, (int, float)) or cf in _pr.CF_PRESETS):
+    if mu_nodes is not None and _pr._constant_cf(cf):
         friction = None  # it chose the mu_rdg table's set; the C_f is a constant
     # A table (or its file) is read once: its nodes at the friction asked for, and the pair.
     nodes, cf_friction = _pr._cf_table_nodes(cf, friction)

@@ -102,6 +102,11 @@ def test_command_line_and_xarray_agree(cli, sample, tmp_path):
         with xr.open_dataset(out) as got:
             np.testing.assert_array_equal(got.strength.values, want.values)
             assert got.attrs["mu_rdg_table"] == want.attrs["mu_rdg_table"]
+        # C_f given as node arrays beside the mu_rdg table (a table of C_f = 17 sums in
+        # another order than the constant, so to round-off).
+        nodes = (np.array([0.1, 10.0]), np.array([17.0, 17.0]))
+        both = prx.strength(ds, cf=nodes, redistribution="table", mu_rdg_table=f)
+        np.testing.assert_allclose(both.values, want.values, rtol=1e-13)
         step = tmp_path / "s.nc"
         cli("ridge-step", "--input", sample, "--output", step, "--dt", "3600",
             "--convergence", "2e-6", "--shear", "0", "--redistribution", "table",
