@@ -8,7 +8,6 @@
 use std::sync::Arc;
 
 use super::ItdError;
-use crate::interp::{bracket, check_axis, lerp};
 use crate::limits;
 
 /// Named constant values of C_f (dimensionless).
@@ -70,31 +69,7 @@ impl CfTable {
     /// [`limits::CATEGORY_THICKNESS`]) and C_f values (dimensionless, in [`limits::CF`]).
     /// At least one node.
     pub fn new(thickness: Vec<f64>, cf: Vec<f64>) -> Result<Self, ItdError> {
-        if thickness.is_empty() {
-            return Err(ItdError::CfTable("the table has no nodes".into()));
-        }
-        if thickness.len() != cf.len() {
-            return Err(ItdError::CfTable(format!(
-                "thickness has {} values but cf has {}",
-                thickness.len(),
-                cf.len()
-            )));
-        }
-        check_axis("thickness", &thickness).map_err(ItdError::CfTable)?;
-        // Finite but absurd nodes would overflow the interpolation (a spacing of 1e308 m)
-        // or the strength (C_f·C_p·h² beyond f64): each must be physical.
-        for (name, values, range) in [
-            ("thickness", &thickness, limits::CATEGORY_THICKNESS),
-            ("cf", &cf, limits::CF),
-        ] {
-            if let Some((i, why)) = values
-                .iter()
-                .enumerate()
-                .find_map(|(i, &v)| range.violation(v).map(|why| (i, why)))
-            {
-                return Err(ItdError::CfTable(format!("{name}[{i}] = {why}")));
-            }
-        }
+        super::nodes::check(&thickness, "cf", &cf, limits::CF).map_err(ItdError::CfTable)?;
         Ok(Self {
             thickness,
             cf,
@@ -107,24 +82,7 @@ impl CfTable {
     /// thickness no run reached and that node is left out; every other value must be finite
     /// and positive, as in [`CfTable::new`], and at least one node must remain.
     pub fn from_nodes(thickness: &[f64], cf: &[f64]) -> Result<Self, ItdError> {
-        if thickness.len() != cf.len() {
-            return Err(ItdError::CfTable(format!(
-                "thickness has {} values but cf has {}",
-                thickness.len(),
-                cf.len()
-            )));
-        }
-        let (h, c): (Vec<f64>, Vec<f64>) = thickness
-            .iter()
-            .zip(cf)
-            .filter(|(_, c)| !c.is_nan())
-            .map(|(&h, &c)| (h, c))
-            .unzip();
-        if h.is_empty() && !thickness.is_empty() {
-            return Err(ItdError::CfTable(
-                "every cf is NaN (no node has data)".into(),
-            ));
-        }
+        let (h, c) = super::nodes::known(thickness, "cf", cf).map_err(ItdError::CfTable)?;
         Self::new(h, c)
     }
 
@@ -154,25 +112,8 @@ impl CfTable {
 
 impl CfProvider for CfTable {
     fn lookup(&self, h: f64) -> CfLookup {
-        let t = &self.thickness;
-        let last = t.len() - 1;
-        if h <= t[0] {
-            return CfLookup {
-                value: self.cf[0],
-                clamped: h < t[0],
-            };
-        }
-        if h >= t[last] {
-            return CfLookup {
-                value: self.cf[last],
-                clamped: h > t[last],
-            };
-        }
-        let (i, w, _) = bracket(t, h);
-        CfLookup {
-            value: lerp(self.cf[i], || self.cf[i + 1], w),
-            clamped: false,
-        }
+        let (value, clamped) = super::nodes::lookup(&self.thickness, &self.cf, h);
+        CfLookup { value, clamped }
     }
 }
 

@@ -18,6 +18,7 @@ mod cf;
 mod lanes;
 mod mu_rdg;
 mod named_params;
+mod nodes;
 mod params;
 mod participation;
 mod redistribution;

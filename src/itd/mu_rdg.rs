@@ -9,7 +9,6 @@
 //! the table stay `Copy`, as a host's per-cell calls need them.
 
 use super::ItdError;
-use crate::interp::{bracket, check_axis, lerp};
 use crate::limits;
 
 /// Most nodes a [`MuRdgTable`] holds: a ridging table has one per tabulated lead-ice
@@ -38,33 +37,14 @@ impl MuRdgTable {
     /// [`limits::CATEGORY_THICKNESS`]) and μ_rdg values (m^½, in [`limits::MU_RDG`]): 1 to
     /// [`MU_RDG_MAX_NODES`] nodes.
     pub fn new(thickness: &[f64], mu_rdg: &[f64]) -> Result<Self, ItdError> {
-        let bad = |m: String| ItdError::MuRdgTable(m);
-        if thickness.is_empty() || thickness.len() > MU_RDG_MAX_NODES {
-            return Err(bad(format!(
+        if thickness.len() > MU_RDG_MAX_NODES {
+            return Err(ItdError::MuRdgTable(format!(
                 "{} nodes: give 1 to {MU_RDG_MAX_NODES}",
                 thickness.len()
             )));
         }
-        if thickness.len() != mu_rdg.len() {
-            return Err(bad(format!(
-                "thickness has {} values but mu_rdg has {}",
-                thickness.len(),
-                mu_rdg.len()
-            )));
-        }
-        check_axis("thickness", thickness).map_err(bad)?;
-        for (name, values, range) in [
-            ("thickness", thickness, limits::CATEGORY_THICKNESS),
-            ("mu_rdg", mu_rdg, limits::MU_RDG),
-        ] {
-            if let Some((i, why)) = values
-                .iter()
-                .enumerate()
-                .find_map(|(i, &v)| range.violation(v).map(|why| (i, why)))
-            {
-                return Err(bad(format!("{name}[{i}] = {why}")));
-            }
-        }
+        super::nodes::check(thickness, "mu_rdg", mu_rdg, limits::MU_RDG)
+            .map_err(ItdError::MuRdgTable)?;
         let mut t = MuRdgTable {
             len: thickness.len(),
             thickness: [0.0; MU_RDG_MAX_NODES],
@@ -78,24 +58,8 @@ impl MuRdgTable {
     /// As [`MuRdgTable::new`], leaving out the nodes whose μ_rdg is NaN (a thickness no run
     /// of the table reached, or whose runs kept no ridge columns); at least one must remain.
     pub fn from_nodes(thickness: &[f64], mu_rdg: &[f64]) -> Result<Self, ItdError> {
-        if thickness.len() != mu_rdg.len() {
-            return Err(ItdError::MuRdgTable(format!(
-                "thickness has {} values but mu_rdg has {}",
-                thickness.len(),
-                mu_rdg.len()
-            )));
-        }
-        let (h, m): (Vec<f64>, Vec<f64>) = thickness
-            .iter()
-            .zip(mu_rdg)
-            .filter(|(_, m)| !m.is_nan())
-            .map(|(&h, &m)| (h, m))
-            .unzip();
-        if h.is_empty() && !thickness.is_empty() {
-            return Err(ItdError::MuRdgTable(
-                "every mu_rdg is NaN (no node has data)".into(),
-            ));
-        }
+        let (h, m) =
+            super::nodes::known(thickness, "mu_rdg", mu_rdg).map_err(ItdError::MuRdgTable)?;
         Self::new(&h, &m)
     }
 
@@ -112,17 +76,8 @@ impl MuRdgTable {
     /// μ_rdg at thickness `h` (m); a NaN `h` gives the first node's value, flagged clamped.
     #[inline]
     pub fn lookup(&self, h: f64) -> MuRdgLookup {
-        if h.is_nan() {
-            return MuRdgLookup {
-                value: self.mu_rdg[0],
-                clamped: true,
-            };
-        }
-        let (i, w, clamped) = bracket(self.thickness(), h);
-        MuRdgLookup {
-            value: lerp(self.mu_rdg[i], || self.mu_rdg[i + 1], w),
-            clamped,
-        }
+        let (value, clamped) = super::nodes::lookup(self.thickness(), self.values(), h);
+        MuRdgLookup { value, clamped }
     }
 }
 
@@ -147,7 +102,7 @@ mod tests {
     #[test]
     fn bad_tables_are_refused_by_name() {
         let why = |h: &[f64], m: &[f64]| MuRdgTable::new(h, m).unwrap_err().to_string();
-        assert!(why(&[], &[]).contains("0 nodes"));
+        assert!(why(&[], &[]).contains("no nodes"));
         assert!(why(&[0.2], &[1.0, 2.0]).contains("mu_rdg has 2"));
         assert!(why(&[0.4, 0.2], &[1.0, 2.0]).contains("not strictly increasing"));
         assert!(why(&[0.2], &[0.0]).contains("mu_rdg[0]"));

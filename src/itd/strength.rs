@@ -267,17 +267,17 @@ fn column_prelude(
 fn category_terms(
     aicen: &[f64],
     vicen: &[f64],
-    redist: &Redistribution,
+    shape: FastShape,
     p: &ItdParams,
 ) -> ([f64; lanes::MAX_NCAT], [f64; lanes::MAX_NCAT]) {
     #[cfg(target_arch = "x86_64")]
     {
         if std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: the CPU supports AVX2 (checked just above).
-            return unsafe { category_terms_avx2(aicen, vicen, redist, p) };
+            return unsafe { category_terms_avx2(aicen, vicen, shape, p) };
         }
     }
-    category_terms_generic(aicen, vicen, redist, p)
+    category_terms_generic(aicen, vicen, shape, p)
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -285,17 +285,17 @@ fn category_terms(
 fn category_terms_avx2(
     aicen: &[f64],
     vicen: &[f64],
-    redist: &Redistribution,
+    shape: FastShape,
     p: &ItdParams,
 ) -> ([f64; lanes::MAX_NCAT], [f64; lanes::MAX_NCAT]) {
-    category_terms_generic(aicen, vicen, redist, p)
+    category_terms_generic(aicen, vicen, shape, p)
 }
 
 #[inline(always)]
 fn category_terms_generic(
     aicen: &[f64],
     vicen: &[f64],
-    redist: &Redistribution,
+    shape: FastShape,
     p: &ItdParams,
 ) -> ([f64; lanes::MAX_NCAT], [f64; lanes::MAX_NCAT]) {
     const M: usize = lanes::MAX_NCAT;
@@ -308,8 +308,8 @@ fn category_terms_generic(
     let mut term = [0.0; M];
     let groups = ncat.div_ceil(4);
     let (puny, maxraft) = (p.puny, p.maxraft);
-    match redist {
-        Redistribution::Uniform => {
+    match shape {
+        FastShape::Uniform => {
             let hstar = p.hstar;
             for gi in 0..groups {
                 for j in 0..4 {
@@ -326,20 +326,15 @@ fn category_terms_generic(
                 }
             }
         }
-        // A μ_rdg table does not come here (StrengthConsts::new and the block path send it to
-        // strength_column, which counts its clamps); were it to, this is its value.
-        Redistribution::Exponential | Redistribution::Table(_) => {
-            let mu_at = |h: f64| match redist {
-                Redistribution::Table(t) => t.lookup(h).value,
-                _ => p.mu_rdg,
-            };
+        FastShape::Exponential => {
+            let mu_rdg = p.mu_rdg;
             for gi in 0..groups {
                 for j in 0..4 {
                     let n = 4 * gi + j;
                     let hi = v[n] / a[n];
                     let hc = f64::max(hi, puny);
                     let hrmin = f64::min(2.0 * hc, hc + maxraft);
-                    let hrexp = mu_at(hi) * hc.sqrt();
+                    let hrexp = mu_rdg * hc.sqrt();
                     let k = (hrmin + hrexp) / hc;
                     let h2 = hrmin * hrmin + 2.0 * hrmin * hrexp + 2.0 * hrexp * hrexp;
                     let live = a[n] > puny;
@@ -363,21 +358,32 @@ pub(crate) const FAST_MAX_NCAT: usize = lanes::MAX_NCAT;
 pub(crate) struct StrengthConsts {
     pub(crate) exp: ExpCache,
     pub(crate) cfcp: f64,
+    shape: FastShape,
+}
+
+/// The redistribution shapes [`strength_column_constant_cf`] evaluates: one μ_rdg or H* for
+/// every category (a μ_rdg table goes through [`strength_column`], which counts its clamps).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum FastShape {
+    Uniform,
+    Exponential,
 }
 
 impl StrengthConsts {
     /// The constants of `opts`, or `None` unless Rothrock with a constant C_f and one μ_rdg
     /// (a μ_rdg table goes through [`strength_column`], which counts its clamps).
     pub(crate) fn new(opts: &StrengthOptions) -> Option<Self> {
+        let shape = match opts.redistribution {
+            Redistribution::Uniform => FastShape::Uniform,
+            Redistribution::Exponential => FastShape::Exponential,
+            Redistribution::Table(_) => return None,
+        };
         match (opts.formula, &opts.cf) {
-            (StrengthFormula::Rothrock, Cf::Constant(cf))
-                if opts.redistribution.mu_rdg_table().is_none() =>
-            {
-                Some(StrengthConsts {
-                    exp: ExpCache::new(opts.params.astar),
-                    cfcp: cf * opts.params.cp(),
-                })
-            }
+            (StrengthFormula::Rothrock, Cf::Constant(cf)) => Some(StrengthConsts {
+                exp: ExpCache::new(opts.params.astar),
+                cfcp: cf * opts.params.cp(),
+                shape,
+            }),
             _ => None,
         }
     }
@@ -422,7 +428,7 @@ pub(crate) fn strength_column_constant_cf(
     // Per category k_n and the strength term, as strength_column computes them, in groups
     // of 4 categories without branches (so SIMD across categories), then net_to_gross and
     // the strength sum in the same order as strength_column.
-    let (krdg, term) = category_terms(aicen, vicen, &opts.redistribution, p);
+    let (krdg, term) = category_terms(aicen, vicen, k.shape, p);
     let mut aksum = apartic[0];
     let mut total = 0.0;
     for n in 0..ncat {

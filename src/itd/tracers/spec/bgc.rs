@@ -287,11 +287,16 @@ impl IcedrvBgc {
             Some(n) => write!(f, ",z_tracers,nblyr={n}")?,
             None => write!(f, ",skl_bgc")?,
         }
+        // Each count once, after the first switch that uses it (`n_algae` serves both
+        // `tr_bgc_N` and `tr_bgc_chl`).
+        let mut written = [false; COUNTS.len() - 1];
         for (s, on) in self.switches.iter().enumerate() {
             if *on {
                 write!(f, ",{}", SWITCHES[s + 2])?;
                 for &c in COUNTS_OF[s] {
-                    write!(f, ",{}={}", COUNTS[c + 1].0, self.counts[c])?;
+                    if !std::mem::replace(&mut written[c], true) {
+                        write!(f, ",{}={}", COUNTS[c + 1].0, self.counts[c])?;
+                    }
                 }
             }
         }
@@ -380,6 +385,11 @@ mod tests {
         assert_eq!(bio, (22..22 + nb).collect::<Vec<_>>());
         assert!(depend[22..].iter().all(|&d| d == 0));
         assert!(base[22..].iter().all(|&b| b == 0));
+        // The canonical text names each count once and parses back to the same spec.
+        let s: CiceLayoutSpec = text.parse().unwrap();
+        let canon = s.to_string();
+        assert_eq!(canon.matches("n_algae=").count(), 1, "{canon}");
+        assert_eq!(canon.parse::<CiceLayoutSpec>().unwrap(), s);
     }
 
     /// Icepack's `zaero` test case (`set_env.zaero`, `set_nml.zaero` over the driver's
