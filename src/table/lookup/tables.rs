@@ -69,8 +69,18 @@ impl RidgeLookup {
                     .into(),
             )
         })?;
-        MuRdgTable::from_nodes(&self.thickness, self.set_row(f, set)?)
-            .map_err(|e| LookupError::Invalid(format!("mu_rdg of set {set}: {e}")))
+        let row = self.set_row(f, set)?;
+        MuRdgTable::from_nodes(&self.thickness, row).map_err(|e| {
+            let why = if row.iter().all(|m| m.is_nan()) {
+                format!(
+                    "{e}: none of the set's runs kept ridge columns (ridged_runs = 0); run its \
+                     campaign again with a binary that keeps them"
+                )
+            } else {
+                e.to_string()
+            };
+            LookupError::Invalid(format!("mu_rdg of set {set}: {why}"))
+        })
     }
 
     /// [`RidgeLookup::mu_rdg_table`] of the set with friction μ above and μ_w below the water
@@ -126,5 +136,23 @@ mod tests {
             e.contains("no `mu_rdg`") && e.contains("ridge columns"),
             "{e}"
         );
+        let nan = RidgeLookup::new(
+            vec!["a".into()],
+            vec![0.2, 0.3],
+            vec![0.0],
+            vec![(
+                "mu_rdg".into(),
+                Field::new(
+                    Axes::SET_THICKNESS,
+                    "m^0.5",
+                    "mu",
+                    Array::from_elem((1, 2), f64::NAN).into_dyn(),
+                ),
+            )],
+            BTreeMap::new(),
+        )
+        .unwrap();
+        let e = nan.mu_rdg_table(0).unwrap_err().to_string();
+        assert!(e.contains("ridged_runs = 0"), "{e}");
     }
 }
