@@ -333,7 +333,7 @@ pub struct Setting {
     pub mu_water: f64,
 }
 
-/// The ridged-ice ensembles of campaign runs, one per [`Setting`] (in the order first met),
+/// The ridged-ice ensembles of campaign runs, one per [`Setting`] (ordered by μ, μ_w, then h),
 /// and the number of runs left out because their records have no ridge columns.
 pub fn ensembles(records: &[RunRecord]) -> (Vec<(Setting, RidgedEnsemble)>, usize) {
     let mut groups: Vec<(Setting, Vec<RidgedIce>)> = Vec::new();
@@ -356,6 +356,11 @@ pub fn ensembles(records: &[RunRecord]) -> (Vec<(Setting, RidgedEnsemble)>, usiz
             Err(_) => {}
         }
     }
+    groups.sort_by(|(a, _), (b, _)| {
+        (a.mu.total_cmp(&b.mu))
+            .then(a.mu_water.total_cmp(&b.mu_water))
+            .then(a.thickness.total_cmp(&b.thickness))
+    });
     let rows = groups
         .into_iter()
         .filter_map(|(k, v)| RidgedEnsemble::of(&v).map(|e| (k, e)))
