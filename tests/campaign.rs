@@ -307,10 +307,12 @@ fn tiny_campaign_is_resumable_and_complete() {
         "pooled",
         "## Rafting",
         "| sheet.thickness=0.25, sheet.block_width=0.25 | 2.0 | 0 / 2 | – |",
+        "## Ridged ice",
+        "| mu=1, mu_w=0.6 | 0.25 | 2 / 2 |",
     ] {
         assert!(report.contains(want), "report lacks {want}:\n{report}");
     }
-    for f in ["work_set0", "force_set0", "cf", "profiles"] {
+    for f in ["work_set0", "force_set0", "cf", "profiles", "mu_rdg"] {
         for ext in ["png", "svg"] {
             let path = dir.join("fig").join(format!("{f}.{ext}"));
             assert!(path.is_file(), "missing figure {f}.{ext}");
@@ -328,6 +330,11 @@ fn tiny_campaign_is_resumable_and_complete() {
         assert!(cf_svg.contains(want), "cf.svg lacks {want}");
     }
     assert!(cf_svg.matches("<circle").count() >= 4, "a dot per run");
+    // μ_rdg of the ridged ice against thickness, beside Icepack's values.
+    let mu_svg = svg("mu_rdg.svg");
+    for want in ["μ_rdg (m^½)", "Icepack default", "science guide", "(2 seeds)"] {
+        assert!(mu_svg.contains(want), "mu_rdg.svg lacks {want}");
+    }
     let prof_svg = svg("profiles.svg");
     for want in [
         "h = 0.25 m (2 seeds)",

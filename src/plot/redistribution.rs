@@ -3,7 +3,9 @@
 
 use super::layout::{Axis, Layout};
 use super::{PlotError, draw_err, write_figure};
+use crate::table::ensemble::Stat;
 use crate::table::redistribution::{RidgedEnsemble, Setting};
+use crate::table::tabulate::RidgeTable;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
@@ -141,5 +143,106 @@ where
         .map_err(draw_err)?
         .label(format!("Icepack default, μ_rdg = {icepack_mu_rdg} m^½"))
         .legend(move |(x, y)| PathElement::new([(x, y), (x + key, y)], grey.stroke_width(1)));
+    layout.finish(&root, &mut chart, SeriesLabelPosition::UpperRight)
+}
+
+/// Lipscomb's μ_rdg (m^½) of a ridging table's simulated ridged ice against the lead-ice
+/// thickness (m), one curve per set: the mean of the runs' own fits with its 95 % interval
+/// (Student t), beside Icepack's default 3 m^½ and the 4 m^½ its science guide gives. Thickness
+/// on a log axis when the table spans [`super::table::CF_LOG_SPAN`] or more.
+pub fn plot_mu_rdg(t: &RidgeTable, path: &Path) -> Result<(), PlotError> {
+    write_figure(path, |tmp| to_file!(tmp, (900, 560), draw_mu_rdg(t)))
+}
+
+fn draw_mu_rdg<DB: DrawingBackend>(
+    root: DrawingArea<DB, Shift>,
+    t: &RidgeTable,
+) -> Result<(), PlotError>
+where
+    DB::ErrorType: 'static,
+{
+    root.fill(&WHITE).map_err(draw_err)?;
+    let hmin = t.thickness.first().copied().unwrap_or(0.0);
+    let hmax = t.thickness.last().copied().unwrap_or(1.0);
+    let band = |s: &Stat| {
+        let w = s.half_width_95();
+        if w.is_finite() { w } else { 0.0 }
+    };
+    let top = t
+        .ridged
+        .iter()
+        .flatten()
+        .map(|e| e.mu_rdg.mean + band(&e.mu_rdg))
+        .filter(|v| v.is_finite())
+        .fold(4.0, f64::max);
+    let desc = "lead-ice thickness h (m)";
+    let x = if hmin > 0.0 && hmax >= super::table::CF_LOG_SPAN * hmin {
+        let pad = 0.1 * (hmax / hmin).log10();
+        Axis::log10(hmin / 10f64.powf(pad), hmax * 10f64.powf(pad), desc)
+    } else {
+        let pad = 0.1 * (hmax - hmin).max(0.1);
+        Axis::new((hmin - pad).max(0.0), hmax + pad, desc)
+    };
+    let y = Axis::new(0.0, top * 1.2, "μ_rdg (m^½)");
+    let title =
+        "Lipscomb's μ_rdg of the simulated ridged ice (mean of the runs' fits, 95 % interval)";
+    let (layout, mut chart) = Layout::canvas_chart(&root, &x, &y, title)?;
+    let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
+    let whisker = (x.hi - x.lo) * 0.012;
+    let dot = layout.fonts.px(3.0);
+    let grey = RGBColor(90, 90, 90);
+    for (mu, what) in [(3.0, "Icepack default"), (4.0, "Icepack science guide")] {
+        let dash = if mu == 3.0 { 8.0 } else { 3.0 };
+        chart
+            .draw_series(DashedLineSeries::new(
+                [(x.lo, mu), (x.hi, mu)],
+                layout.fonts.px(dash),
+                layout.fonts.px(4.0),
+                grey.stroke_width(layout.fonts.px(1.0)),
+            ))
+            .map_err(draw_err)?
+            .label(format!("μ_rdg = {mu} m^½ ({what})"))
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + key, y)], grey.stroke_width(1)));
+    }
+    for (si, set) in t.sets.iter().enumerate() {
+        let points: Vec<(f64, &Stat)> = t
+            .thickness
+            .iter()
+            .zip(t.ridged.row(si))
+            .filter_map(|(h, e)| Some((x.at(*h), &e.as_ref()?.mu_rdg)))
+            .filter(|(_, s)| s.mean.is_finite())
+            .collect();
+        if points.is_empty() {
+            continue;
+        }
+        let c = super::table::COLORS[si % super::table::COLORS.len()];
+        let runs = points.iter().map(|(_, s)| s.n).max().unwrap_or(0);
+        let name = if set.is_empty() {
+            "simulated".to_string()
+        } else {
+            super::table::set_display(set)
+        };
+        chart
+            .draw_series(LineSeries::new(
+                points.iter().map(|(h, s)| (*h, s.mean)),
+                c.stroke_width(line),
+            ))
+            .map_err(draw_err)?
+            .label(format!("{name} {}", super::table::seeds(runs)))
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + key, y)], c.stroke_width(line)));
+        for (h, s) in &points {
+            let (lo, hi) = (s.mean - band(s), s.mean + band(s));
+            chart
+                .draw_series([
+                    PathElement::new([(*h, lo), (*h, hi)], c.stroke_width(line)),
+                    PathElement::new([(h - whisker, lo), (h + whisker, lo)], c.stroke_width(line)),
+                    PathElement::new([(h - whisker, hi), (h + whisker, hi)], c.stroke_width(line)),
+                ])
+                .map_err(draw_err)?;
+            chart
+                .draw_series([Circle::new((*h, s.mean), dot, c.filled())])
+                .map_err(draw_err)?;
+        }
+    }
     layout.finish(&root, &mut chart, SeriesLabelPosition::UpperRight)
 }

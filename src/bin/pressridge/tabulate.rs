@@ -177,6 +177,9 @@ pub fn run(a: Args) -> Result<(), BoxError> {
                 )?;
             }
             plot::table::plot_cf(&table, &dir.join(format!("cf.{ext}")))?;
+            if table.ridged.iter().any(Option::is_some) {
+                plot::redistribution::plot_mu_rdg(&table, &dir.join(format!("mu_rdg.{ext}")))?;
+            }
             for (name, groups) in &profile_figures {
                 plot::table::plot_profiles(groups, &dir.join(format!("{name}.{ext}")))?;
             }
