@@ -332,7 +332,12 @@ fn tiny_campaign_is_resumable_and_complete() {
     assert!(cf_svg.matches("<circle").count() >= 4, "a dot per run");
     // μ_rdg of the ridged ice against thickness, beside Icepack's values.
     let mu_svg = svg("mu_rdg.svg");
-    for want in ["μ_rdg (m^½)", "Icepack default", "science guide", "(2 seeds)"] {
+    for want in [
+        "μ_rdg (m^½)",
+        "Icepack default",
+        "science guide",
+        "(2 seeds)",
+    ] {
         assert!(mu_svg.contains(want), "mu_rdg.svg lacks {want}");
     }
     let prof_svg = svg("profiles.svg");

@@ -7,7 +7,10 @@ mod common;
 
 use std::path::Path;
 
-use common::{bin, fails_with, global, read_values, scratch, succeeds, write_mu_rdg_table};
+use common::{
+    bin, fails_with, global, read_values, scratch, succeeds, write_mu_rdg_table,
+    write_table_without_mu_rdg,
+};
 
 const SAMPLE: &str = "data/sample_itd.nc";
 
@@ -114,16 +117,14 @@ fn bad_uses_are_refused_by_name() {
         &["mu_rdg", "0.7"],
     );
     // A ridging table without `mu_rdg` (runs without ridge columns) says so.
+    let old = dir.join("no-mu-rdg.nc");
+    write_table_without_mu_rdg(&old, &[0.2, 0.3]);
+    let old = old.to_str().unwrap();
     fails_with(
         &run(
             "strength",
             &out,
-            &[
-                "--redistribution",
-                "table",
-                "--mu-rdg-table",
-                "data/ridging_table.nc",
-            ],
+            &["--redistribution", "table", "--mu-rdg-table", old],
         ),
         &["mu_rdg", "ridge columns"],
     );
@@ -132,4 +133,52 @@ fn bad_uses_are_refused_by_name() {
         &["--friction", "--mu-rdg-table"],
     );
     assert!(!out.exists(), "nothing written on refusal");
+}
+
+/// The shipped ridging table carries the simulated μ_rdg (issue 34): at the Figure 5
+/// friction its nodes span the tabulated thicknesses with values of 1–4 m^½, and since p*
+/// rises with μ_rdg in every category, the strength with it lies between the strengths of
+/// its smallest and its largest node value.
+#[test]
+fn the_shipped_table_gives_the_simulated_mu_rdg() {
+    let dir = scratch("cli-mu-rdg-shipped");
+    let t = dir.join("t.nc");
+    let with = [
+        "--redistribution",
+        "table",
+        "--mu-rdg-table",
+        "data/ridging_table.nc",
+        "--friction",
+        "1.0,0.6",
+    ];
+    succeeds(&run("strength", &t, &with));
+    let nodes = global(&t, "mu_rdg_table");
+    let (_, list) = nodes.split_once("held at the ends: ").expect("the nodes");
+    let pairs: Vec<(f64, f64)> = list
+        .split(", ")
+        .filter_map(|p| {
+            let (h, m) = p.split_once(':')?;
+            Some((h.trim().parse().ok()?, m.trim().parse().ok()?))
+        })
+        .collect();
+    assert!(pairs.len() >= 10, "{nodes}");
+    assert!(
+        pairs.iter().all(|&(_, m)| (1.0..4.0).contains(&m)),
+        "{nodes}"
+    );
+    assert!(
+        pairs[0].0 <= 0.2 && pairs.last().unwrap().0 >= 6.0,
+        "{nodes}"
+    );
+    let at = |m: f64| {
+        let c = dir.join(format!("c{m}.nc"));
+        succeeds(&run("strength", &c, &["--param", &format!("mu_rdg={m}")]));
+        read_values(&c, "strength")
+    };
+    let lo = pairs.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
+    let hi = pairs.iter().map(|p| p.1).fold(0.0, f64::max);
+    let (pt, plo, phi) = (read_values(&t, "strength"), at(lo), at(hi));
+    for ((p, a), b) in pt.iter().zip(&plo).zip(&phi) {
+        assert!(p.is_nan() || (a <= p && p <= b), "{a} <= {p} <= {b}");
+    }
 }

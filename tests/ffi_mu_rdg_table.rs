@@ -91,15 +91,31 @@ fn handle_errors_are_codes_with_messages() {
     assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
     assert!(t.is_null() && last_error().contains("strictly increasing"));
     // A ridging table without `mu_rdg` (records without ridge columns) says so.
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/data/ridging_table.nc");
+    let dir = common::scratch("ffi-mu-rdg");
+    let old = dir.join("no-mu-rdg.nc");
+    common::write_table_without_mu_rdg(&old, &[0.2, 0.3]);
+    let path = old.to_str().unwrap();
     // SAFETY: `path` holds `path.len()` bytes; `t` a live local.
     let rc = unsafe {
         pressridge_mu_rdg_table_open(path.as_ptr().cast(), path.len() as i64, 1.0, 0.6, &mut t)
     };
     assert_ne!(rc, PRESSRIDGE_OK);
     assert!(last_error().contains("ridge columns"), "{}", last_error());
+    // The shipped table holds the simulated μ_rdg at the Figure 5 friction.
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/data/ridging_table.nc");
+    // SAFETY: as above.
+    let rc = unsafe {
+        pressridge_mu_rdg_table_open(path.as_ptr().cast(), path.len() as i64, 1.0, 0.6, &mut t)
+    };
+    assert_eq!(rc, PRESSRIDGE_OK, "{}", last_error());
+    let (mut mu, mut clamped) = (0.0, -1);
+    // SAFETY: `t` is live.
+    unsafe { pressridge_mu_rdg_table_lookup(t, 1.0, &mut mu, &mut clamped) };
+    assert!((1.0..4.0).contains(&mu) && clamped == 0, "{mu} {clamped}");
+    // SAFETY: `t` came from the open above and is freed once.
+    unsafe { pressridge_mu_rdg_table_free(t) };
+    t = null_mut();
     // A file's table at a friction pair it holds.
-    let dir = common::scratch("ffi-mu-rdg");
     let f = dir.join("t.nc");
     common::write_mu_rdg_table(&f, &[0.2, 2.0], [&[1.0, 2.0], &[3.0, 4.0]]);
     let f = f.to_str().unwrap();

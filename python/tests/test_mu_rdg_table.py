@@ -79,8 +79,30 @@ def test_files_are_read_at_their_friction_and_bad_uses_refused(tmp_path):
         pr.strength(a, v, a0, redistribution="table", mu_rdg_table=([0.2], [-1.0]))
     with pytest.raises(ValueError, match="0.7"):
         pr.strength(a, v, a0, redistribution="table", mu_rdg_table=f, friction=(0.7, 0.6))
+    import xarray as xr
+
+    old = tmp_path / "no-mu-rdg.nc"
+    xr.Dataset(
+        {"cf": (("thickness", "mu", "mu_w"), np.full((2, 2, 1), 17.0), {"units": "1"})},
+        coords={"thickness": [0.2, 0.3], "volume": [0.0], "mu": [0.4, 1.0], "mu_w": [0.6]},
+    ).to_netcdf(old)
     with pytest.raises(ValueError, match="ridge columns"):
-        pr.strength(a, v, a0, redistribution="table", mu_rdg_table=pr_data("ridging_table.nc"))
+        pr.strength(a, v, a0, redistribution="table", mu_rdg_table=old)
+
+
+def test_the_shipped_table_holds_the_simulated_mu_rdg():
+    a, v, a0 = _columns()
+    f = pr_data("ridging_table.nc")
+    import xarray as xr
+
+    with xr.open_dataset(f) as ds:
+        nodes = ds.mu_rdg.sel(mu=1.0, mu_w=0.6).dropna("thickness")
+        lo, hi = float(nodes.min()), float(nodes.max())
+        assert nodes.sizes["thickness"] >= 10 and 1.0 <= lo <= hi <= 4.0
+    t = pr.strength(a, v, a0, redistribution="table", mu_rdg_table=f, friction=(1.0, 0.6))
+    # p* rises with mu_rdg in every category, so it lies between the table's extremes.
+    assert np.all(t >= pr.strength(a, v, a0, mu_rdg=lo))
+    assert np.all(t <= pr.strength(a, v, a0, mu_rdg=hi))
 
 
 def pr_data(name):

@@ -260,8 +260,20 @@ impl Rng {
 /// `mu_rdg[0]` and (1.0, 0.6) with `mu_rdg[1]`, at the thicknesses `h` (m).
 #[allow(dead_code)]
 pub fn write_mu_rdg_table(path: &Path, h: &[f64], mu_rdg: [&[f64]; 2]) {
+    write_friction_grid(path, h, "mu_rdg", "m^0.5", mu_rdg);
+}
+
+/// A ridging table as [`write_mu_rdg_table`] lays it out, holding C_f (`cf_by_set`'s values
+/// as `cf`) and no `mu_rdg`: a table made from records without ridge columns.
+#[allow(dead_code)]
+pub fn write_table_without_mu_rdg(path: &Path, h: &[f64]) {
+    let cf = vec![17.0; h.len()];
+    write_friction_grid(path, h, "cf", "1", [&cf, &cf]);
+}
+
+fn write_friction_grid(path: &Path, h: &[f64], name: &str, units: &str, v: [&[f64]; 2]) {
     let nh = h.len();
-    let grid: Vec<f64> = (0..nh).flat_map(|k| [mu_rdg[0][k], mu_rdg[1][k]]).collect();
+    let grid: Vec<f64> = (0..nh).flat_map(|k| [v[0][k], v[1][k]]).collect();
     write_nc(
         path,
         &[
@@ -269,8 +281,7 @@ pub fn write_mu_rdg_table(path: &Path, h: &[f64], mu_rdg: [&[f64]; 2]) {
             Var::f64("volume", &[("volume", 1)], vec![0.0]),
             Var::f64("mu", &[("mu", 2)], vec![0.4, 1.0]),
             Var::f64("mu_w", &[("mu_w", 1)], vec![0.6]),
-            Var::f64("mu_rdg", &[("thickness", nh), ("mu", 2), ("mu_w", 1)], grid)
-                .with_units("m^0.5"),
+            Var::f64(name, &[("thickness", nh), ("mu", 2), ("mu_w", 1)], grid).with_units(units),
         ],
     );
 }
