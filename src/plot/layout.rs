@@ -168,6 +168,19 @@ impl Axis {
         }
     }
 
+    /// An axis over the data range `lo..=hi` (in the quantity's units) with a tenth of the
+    /// span as margin on each side: logarithmic when `lo > 0` and `hi ≥ log_span·lo`,
+    /// linear (not below 0) otherwise.
+    pub fn padded(lo: f64, hi: f64, desc: &str, log_span: f64) -> Axis {
+        if lo > 0.0 && hi >= log_span * lo {
+            let pad = 0.1 * (hi / lo).log10();
+            Axis::log10(lo / 10f64.powf(pad), hi * 10f64.powf(pad), desc)
+        } else {
+            let pad = 0.1 * (hi - lo).max(0.1);
+            Axis::new((lo - pad).max(0.0), hi + pad, desc)
+        }
+    }
+
     /// The coordinate of the quantity `v` on this axis: `v`, or log10 `v` on a log axis.
     pub fn at(&self, v: f64) -> f64 {
         if self.log { v.log10() } else { v }

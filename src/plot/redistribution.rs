@@ -176,13 +176,7 @@ where
         .filter(|v| v.is_finite())
         .fold(4.0, f64::max);
     let desc = "lead-ice thickness h (m)";
-    let x = if hmin > 0.0 && hmax >= super::table::CF_LOG_SPAN * hmin {
-        let pad = 0.1 * (hmax / hmin).log10();
-        Axis::log10(hmin / 10f64.powf(pad), hmax * 10f64.powf(pad), desc)
-    } else {
-        let pad = 0.1 * (hmax - hmin).max(0.1);
-        Axis::new((hmin - pad).max(0.0), hmax + pad, desc)
-    };
+    let x = Axis::padded(hmin, hmax, desc, super::table::CF_LOG_SPAN);
     let y = Axis::new(0.0, top * 1.2, "μ_rdg (m^½)");
     let title =
         "Lipscomb's μ_rdg of the simulated ridged ice (mean of the runs' fits, 95 % interval)";

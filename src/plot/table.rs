@@ -430,13 +430,7 @@ where
     let title =
         "C_f = W/ΔPE at the end of the runs against sheet thickness (× dashed: pooled fits)";
     let desc = "sheet thickness h (m)";
-    let x = if hmin > 0.0 && hmax >= CF_LOG_SPAN * hmin {
-        let pad = 0.1 * (hmax / hmin).log10();
-        Axis::log10(hmin / 10f64.powf(pad), hmax * 10f64.powf(pad), desc)
-    } else {
-        let pad = 0.1 * (hmax - hmin).max(0.1);
-        Axis::new((hmin - pad).max(0.0), hmax + pad, desc)
-    };
+    let x = Axis::padded(hmin, hmax, desc, CF_LOG_SPAN);
     let y = Axis::new(0.0, cmax * 1.15, "C_f = W/ΔPE");
     let (layout, mut chart) = Layout::canvas_chart(&root, &x, &y, title)?;
     let (line, key) = (layout.fonts.px(2.0), layout.fonts.px(18.0) as i32);
