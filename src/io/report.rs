@@ -255,14 +255,7 @@ fn ridged_section(o: &mut String, table: &RidgeTable) {
     if table.ridged.iter().all(Option::is_none) {
         return;
     }
-    let ci = |s: &Stat, prec: usize| {
-        let w = s.half_width_95();
-        if w.is_finite() {
-            format!("{:.prec$} ± {:.prec$}", s.mean, w)
-        } else {
-            format!("{:.prec$}", s.mean)
-        }
-    };
+    let ci = |s: &Stat, prec: usize| s.mean_ci95(prec);
     let _ = writeln!(
         o,
         "\n## Ridged ice: the thickness distribution of the final ridges\n\n\

@@ -50,6 +50,17 @@ impl Stat {
             / (self.n as f64).sqrt()
     }
 
+    /// `mean ± half-width of the 95 % interval` with `prec` decimals, or the mean alone when
+    /// there is no interval (fewer than two runs): how the tables of ensembles write a value.
+    pub fn mean_ci95(&self, prec: usize) -> String {
+        let h = self.half_width_95();
+        if h.is_finite() {
+            format!("{:.prec$} ± {:.prec$}", self.mean, h)
+        } else {
+            format!("{:.prec$}", self.mean)
+        }
+    }
+
     /// The difference of means `other − self` and the half-width of its 95 % Welch interval
     /// (unequal variances, Welch–Satterthwaite degrees of freedom), in units of the quantity:
     /// how ensembles of two configurations are compared (docs/speed-vs-error.md).

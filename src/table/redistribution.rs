@@ -372,14 +372,7 @@ pub fn ensembles(records: &[RunRecord]) -> (Vec<(Setting, RidgedEnsemble)>, usiz
 /// solid thickness and porosity, and each shape's parameter (mean ± 95 % over the runs' own
 /// fits, then the pooled fit) with its Kolmogorov–Smirnov distance on the pooled strips.
 pub fn markdown(rows: &[(Setting, RidgedEnsemble)]) -> String {
-    let pm = |s: &Stat, d: usize| {
-        let h = s.half_width_95();
-        if h.is_finite() {
-            format!("{:.d$} ± {:.d$}", s.mean, h)
-        } else {
-            format!("{:.d$}", s.mean)
-        }
-    };
+    let pm = |s: &Stat, d: usize| s.mean_ci95(d);
     let mut t = String::from(
         "| h (m) | μ | μ_w | runs | strips | ridged width (m) | mean H (m) | porosity | below H_min | λ (m) | μ_rdg (m^½): runs; pooled | KS exp. | H* (m): runs; pooled | KS unif. |\n\
          |---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
