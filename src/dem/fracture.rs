@@ -15,7 +15,7 @@
 use super::body::Bodies;
 use super::broadphase::pair_key;
 use super::geometry::V2;
-use super::joint::Joint;
+use super::joint::{Joint, SurfaceStress};
 use super::numerics::Dashpot;
 use serde::{Deserialize, Serialize};
 
@@ -179,11 +179,16 @@ impl JointSet {
     /// work they held is added to `w.released`.
     ///
     /// With an `incubation` time τ (s) the stresses tested are the elastic ones filtered by
-    /// dσ_f/dt = (σ − σ_f)/τ, advanced exactly over the step for σ held constant.
+    /// dσ_f/dt = (σ − σ_f)/τ, advanced exactly over the step for σ held constant. With
+    /// `step_mean` they are the mean of the last two poses' stresses, (σⁿ⁻¹ + σⁿ)/2 (the
+    /// first step of a joint: σⁿ): for every mode of the leapfrog scheme that mean swings
+    /// as far as the exact motion of the same energy, where σⁿ overshoots by 1/cos(θ/2)
+    /// (θ the mode's phase per step; docs/speed-vs-error.md).
     pub fn advance(
         &mut self,
         crack_speed: f64,
         incubation: Option<f64>,
+        step_mean: bool,
         time: f64,
         dt: f64,
         w: &mut JointWork,
@@ -195,6 +200,13 @@ impl JointSet {
                 continue;
             }
             let s = match gain {
+                None if step_mean => {
+                    let last = j.stress_filtered.replace(j.stress).unwrap_or(j.stress);
+                    SurfaceStress {
+                        top: 0.5 * (last.top + j.stress.top),
+                        bottom: 0.5 * (last.bottom + j.stress.bottom),
+                    }
+                }
                 None => j.stress,
                 Some(a) => {
                     let f = j.stress_filtered.get_or_insert_with(Default::default);
@@ -240,6 +252,17 @@ mod tests {
     /// One joint whose elastic surface stress is held at `top` (Pa) from t = 0, strength
     /// 500 kPa: the time (s) of the step at which its top crack starts.
     fn first_crack(top: f64, incubation: Option<f64>, dt: f64) -> Option<f64> {
+        first_crack_of(|_| top, incubation, false, dt)
+    }
+
+    /// One joint whose elastic top stress at step n is `top(n)` (Pa), strength 500 kPa:
+    /// the time (s) of the step at which its top crack starts.
+    fn first_crack_of(
+        top: impl Fn(usize) -> f64,
+        incubation: Option<f64>,
+        step_mean: bool,
+        dt: f64,
+    ) -> Option<f64> {
         let mat = JointMaterial {
             e_top: 1e8,
             e_bottom: 1e8,
@@ -261,9 +284,12 @@ mod tests {
         ));
         let mut w = JointWork::default();
         for n in 1..=20_000 {
-            set.joints[k].stress = SurfaceStress { top, bottom: 0.0 };
+            set.joints[k].stress = SurfaceStress {
+                top: top(n),
+                bottom: 0.0,
+            };
             let t = n as f64 * dt;
-            set.advance(50.0, incubation, t, dt, &mut w);
+            set.advance(50.0, incubation, step_mean, t, dt, &mut w);
             if set.joints[k].crack_top {
                 return Some(t);
             }
@@ -292,6 +318,66 @@ mod tests {
         let coarse = first_crack(7.5e5, Some(tau), 4e-4).unwrap();
         let fine = first_crack(7.5e5, Some(tau), 1e-5).unwrap();
         assert!((coarse - fine).abs() <= 4e-4, "{coarse} against {fine}");
+    }
+
+    /// A mode of frequency ω loaded at once by a stress σ_eq swings exactly to 2·σ_eq. The
+    /// leapfrog recurrence yₖ₊₁ = 2yₖ − yₖ₋₁ − (ωΔt)²·(yₖ − 1) from rest (y₋₁ = y₀ = 0)
+    /// swings to 1 + 1/cos(θ/2), sin(θ/2) = ωΔt/2: 2.67 at ωΔt = 1.6 (0.8 of the bound).
+    /// Tested on the pose's stress, a σ_eq of 0.8 of half the strength breaks the joint;
+    /// tested on the two-pose mean, the joint breaks exactly when 2·σ_eq passes the strength
+    /// (±2 %), as the exact motion would.
+    #[test]
+    fn the_two_pose_mean_removes_the_leapfrog_overshoot_of_a_sudden_load() {
+        let leapfrog = |r: f64, n_max: usize| {
+            let (mut prev, mut y) = (0.0f64, 0.0f64);
+            let mut ys = vec![0.0];
+            for _ in 0..n_max {
+                let next = 2.0 * y - prev - r * r * (y - 1.0);
+                (prev, y) = (y, next);
+                ys.push(y);
+            }
+            ys
+        };
+        let dt = 1e-4;
+        let strength = 5e5;
+        for r in [1.6, 1.2, 0.5] {
+            let ys = leapfrog(r, 20_001);
+            let half = (r / 2.0f64).asin();
+            let peak = ys.iter().cloned().fold(0.0, f64::max);
+            let predicted = 1.0 + 1.0 / half.cos();
+            assert!(
+                (peak - predicted).abs() < 1e-3 * predicted,
+                "{peak} against {predicted}"
+            );
+            for (ratio, breaks) in [(1.02, true), (0.98, false)] {
+                let s_eq = ratio * strength / 2.0;
+                let got = first_crack_of(|n| s_eq * ys[n - 1], None, true, dt).is_some();
+                assert_eq!(got, breaks, "ωΔt = {r}, 2σ_eq = {ratio} × strength");
+            }
+        }
+        // The pose's stress overshoots: at ωΔt = 1.6 a load of 0.8 × half the strength
+        // breaks the joint.
+        let ys = leapfrog(1.6, 20_001);
+        let s_eq = 0.8 * strength / 2.0;
+        assert!(first_crack_of(|n| s_eq * ys[n - 1], None, false, dt).is_some());
+        assert!(first_crack_of(|n| s_eq * ys[n - 1], None, true, dt).is_none());
+    }
+
+    /// The two-pose mean and the incubation time both filter the tested stress: a world
+    /// that sets both is refused, naming the parameter (the scene's check:
+    /// `scene::tests`).
+    #[test]
+    fn the_two_pose_mean_and_an_incubation_time_exclude_each_other() {
+        use crate::dem::{World, WorldError, WorldParams};
+        let p = WorldParams {
+            incubation_time: Some(2e-3),
+            fracture_step_mean: true,
+            ..WorldParams::default()
+        };
+        match World::new(p) {
+            Err(WorldError::Param { name, .. }) => assert_eq!(name, "fracture_step_mean"),
+            other => panic!("{:?}", other.map(|_| ())),
+        }
     }
 
     /// A world built by hand is refused a zero, negative or non-finite incubation time,

@@ -87,8 +87,9 @@ pub struct Joint {
     #[serde(skip)]
     pub stress: SurfaceStress,
     /// The elastic surface stresses filtered over the incubation time, when the fracture
-    /// test uses one ([`crate::dem::WorldParams::incubation_time`]); kept in the state so
-    /// that a resumed run continues exactly.
+    /// test uses one ([`crate::dem::WorldParams::incubation_time`]), or the last pose's
+    /// stresses for the two-pose mean ([`crate::dem::WorldParams::fracture_step_mean`]);
+    /// kept in the state so that a resumed run continues exactly.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub(crate) stress_filtered: Option<SurfaceStress>,
     /// The Gauss points of the intact span and their moduli, kept between steps (they

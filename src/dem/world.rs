@@ -504,6 +504,7 @@ impl World {
             self.joints.advance(
                 self.params.crack_speed,
                 self.params.incubation_time,
+                self.params.fracture_step_mean,
                 self.time,
                 dt,
                 &mut self.acc.joints,

@@ -19,6 +19,7 @@ impl Scene {
             contact,
             crack_speed: self.joint.crack_speed,
             incubation_time: self.experimental.incubation_time,
+            fracture_step_mean: self.experimental.fracture_step_mean,
             water: self.water.enabled.then_some(WaterParams {
                 level: self.water.level,
                 density: self.water.density,

@@ -76,6 +76,14 @@ fn invalid_values_are_named() {
         .unwrap_err()
         .to_string();
     assert!(e.contains("experimental.incubation_time"), "{e}");
+    let e = Scene::default()
+        .with_overrides(&[
+            "experimental.incubation_time=0.002",
+            "experimental.fracture_step_mean=true",
+        ])
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("experimental.fracture_step_mean"), "{e}");
 }
 
 /// The incubation time is absent unless set, and then absent from the scene's TOML too,

@@ -243,6 +243,12 @@ impl Scene {
                 "must be positive (s) when given",
             );
         }
+        if self.experimental.fracture_step_mean && self.experimental.incubation_time.is_some() {
+            return bad(
+                "experimental.fracture_step_mean",
+                "filters the tested stress as experimental.incubation_time does: set one of them",
+            );
+        }
         if self.output.snapshot_interval.is_nan() || self.output.snapshot_interval < 0.0 {
             return bad("output.snapshot_interval", "must be non-negative (s)");
         }

@@ -61,6 +61,10 @@ pub struct WorldParams {
     /// test; see [`crate::scene::ExperimentalSection::incubation_time`].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub incubation_time: Option<f64>,
+    /// Test fracture on the mean of the elastic stresses of the last two poses instead of
+    /// the last one; see [`crate::scene::ExperimentalSection::fracture_step_mean`].
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub fracture_step_mean: bool,
     /// Mass-proportional numerical damping γ (1/s): F = −γ·m·v, M = −γ·I·ω. Default 0;
     /// used only to relax verification scenes to their static state.
     pub global_damping: f64,
@@ -81,6 +85,7 @@ impl Default for WorldParams {
             contact_dashpot_sweeps: 0,
             crack_speed: 50.0,
             incubation_time: None,
+            fracture_step_mean: false,
             global_damping: 0.0,
         }
     }
@@ -204,6 +209,13 @@ impl WorldParams {
         pos("crack_speed", self.crack_speed)?;
         if let Some(t) = self.incubation_time {
             pos("incubation_time", t)?;
+            if self.fracture_step_mean {
+                return Err(WorldError::Param {
+                    name: "fracture_step_mean",
+                    value: 1.0,
+                    why: "filters the tested stress as incubation_time does: set one of them",
+                });
+            }
         }
         nonneg("global_damping", self.global_damping)?;
         if self.contact_dashpot_sweeps > MAX_CONTACT_DASHPOT_SWEEPS {
