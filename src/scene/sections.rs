@@ -412,9 +412,11 @@ pub struct ExperimentalSection {
     /// Test crack initiation on the mean elastic surface stress of the last two poses,
     /// (σⁿ⁻¹ + σⁿ)/2, instead of σⁿ. Default false: the stress of the pose. The leapfrog
     /// scheme makes a suddenly loaded mode of phase θ per step swing 1/cos(θ/2) times too
-    /// far (+33 % at 0.8 of the stable limit for a mode at the bound); the two-pose mean
-    /// swings as far as the exact motion of the same energy (docs/speed-vs-error.md, "Why
-    /// fracture, and not the energies, moves with the step"). Not with `incubation_time`.
+    /// far (its peak from rest +33 % too high at 0.8 of the stable limit for a mode at the
+    /// bound); the two-pose mean swings as far as the exact motion of the same energy. On
+    /// the ensembles it does not take away the step's shift of fracture
+    /// (docs/speed-vs-error.md, "One reading of the cause was tested and does not hold").
+    /// Not with `incubation_time`.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub fracture_step_mean: bool,
 }
