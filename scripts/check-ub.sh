@@ -48,6 +48,9 @@ case "$stage" in
     cargo +nightly miri test --test ffi -- \
       --skip cf_tables_load_query_free --skip ridge_tables_load_query_and_give_cf_tables
     cargo +nightly miri test --test ffi_ridge_step
+    # The μ_rdg table handle (issue 34): built from memory, looked up, freed, refused.
+    cargo +nightly miri test --test ffi_mu_rdg_table -- \
+      --skip tables_from_files_open_look_up_and_name_what_is_missing
     echo "== miri: clean in $SECONDS s"
     ;;
   asan)
