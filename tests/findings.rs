@@ -97,6 +97,39 @@ fn missing_records_fail_naming_the_scene() {
     }
 }
 
+/// The table is read at the step its records were made with: runs of the Figure 5 point at
+/// two steps (the step study's 0.5 and 0.8 of the stable limit) are refused, naming both and
+/// the key that chooses one; with the key, the table looks for that step's runs.
+#[test]
+fn records_of_two_steps_are_refused_naming_them() {
+    let (half, default) = (
+        "data/speed-vs-error/decided-half",
+        "data/speed-vs-error/decided-default",
+    );
+    let o = findings(&["--records", half, "--records", default]);
+    assert!(!o.status.success());
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        e.contains("2 steps (0.5, 0.8)") && e.contains("--set numerics.time_step_safety="),
+        "{e}"
+    );
+    // One step chosen: its Figure 5 runs are found, and the friction points are missing.
+    let o = findings(&[
+        "--records",
+        half,
+        "--records",
+        default,
+        "--set",
+        "numerics.time_step_safety=0.8",
+    ]);
+    assert!(!o.status.success());
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        e.contains("μ = 0.4") && e.contains("0 runs, 7 needed"),
+        "{e}"
+    );
+}
+
 /// The register's effect table (`--choices`) from the committed probe records: the
 /// baseline's row and a row per probe setting at each friction pair, every probe difference
 /// with its interval, and the paper's friction statements per setting (a probe's later seeds

@@ -166,6 +166,10 @@ impl Point {
     /// The point's scene, `base` with the point's friction, modulus and speed, as JSON
     /// ([`physics`]).
     fn scene(&self, base: &Scene) -> serde_json::Value {
+        physics(&self.with(base))
+    }
+    /// `base` with the point's friction, modulus and speed.
+    fn with(&self, base: &Scene) -> Scene {
         let sets = [
             format!("contact.mu={}", self.mu),
             format!("contact.mu_water={}", self.mu_w),
@@ -174,11 +178,9 @@ impl Point {
             format!("sheet.speed={}", self.speed),
             format!("duration={}", 100.0 / self.speed),
         ];
-        let s = base
-            .clone()
+        base.clone()
             .with_overrides(&sets)
-            .expect("the paper's points are valid scenes");
-        physics(&s)
+            .expect("the paper's points are valid scenes")
     }
     fn describe(&self) -> String {
         format!(
@@ -188,6 +190,42 @@ impl Point {
             self.e_top / 1e9,
             self.speed
         )
+    }
+}
+
+/// The step of `records` at the Figure 5 point of `base` (`numerics.time_step_safety`,
+/// dimensionless): the table tests the model at the step its records were made with, and
+/// every point is then read at that step. `Ok(None)` when no run is at the point (the table
+/// then names the missing runs); an error naming the steps when the runs there were made at
+/// more than one, since an ensemble must not mix steps (docs/speed-vs-error.md).
+pub fn records_step(records: &[RunRecord], base: &Scene) -> Result<Option<f64>, String> {
+    let without_step = |s: &Scene| {
+        let mut v = physics(s);
+        if let Some(n) = v.get_mut("numerics").and_then(|n| n.as_object_mut()) {
+            n.remove("time_step_safety");
+        }
+        v
+    };
+    let want = without_step(&FIGURE5.with(base));
+    let mut steps: Vec<f64> = records
+        .iter()
+        .filter(|r| without_step(&r.scene) == want)
+        .map(|r| r.scene.numerics.time_step_safety)
+        .collect();
+    steps.sort_by(f64::total_cmp);
+    steps.dedup();
+    match steps.as_slice() {
+        [] => Ok(None),
+        [one] => Ok(Some(*one)),
+        many => Err(format!(
+            "the runs at the Figure 5 point were made at {} steps ({}); choose one with \
+             --set numerics.time_step_safety=VALUE",
+            many.len(),
+            many.iter()
+                .map(|v| v.to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        )),
     }
 }
 

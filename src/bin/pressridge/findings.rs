@@ -5,7 +5,7 @@ use crate::BoxError;
 use pressridge::campaign::{read_campaign, read_pooled};
 use pressridge::record::RunRecord;
 use pressridge::table::choices::effects;
-use pressridge::table::findings::{Register, evidence, findings, markdown};
+use pressridge::table::findings::{Register, evidence, findings, markdown, records_step};
 use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
@@ -17,7 +17,9 @@ pub struct Args {
     records: Vec<PathBuf>,
     /// A key of the Figure 5 scene moved for the model whose findings are tested, e.g.
     /// `--set floe.length=20` for the records of the former 20-m floe (repeatable; the
-    /// paper's points then move only their friction, modulus or speed from it).
+    /// paper's points then move only their friction, modulus or speed from it). The step
+    /// (`numerics.time_step_safety`) is the one the records at the Figure 5 point were made
+    /// with unless set here; records of two steps there are refused.
     #[arg(long = "set", value_name = "KEY=VALUE", conflicts_with = "choices")]
     set: Vec<String>,
     /// The fewest runs an ensemble may have (the paper's sets have seven).
@@ -113,12 +115,37 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         return write(&register(dir)?, a.out);
     }
     let (records, dirs) = pooled_records(&a.records)?;
-    let base = pressridge::scene::Scene::load(None, &a.set).map_err(|e| format!("--set: {e}"))?;
+    let mut base =
+        pressridge::scene::Scene::load(None, &a.set).map_err(|e| format!("--set: {e}"))?;
+    // The records' own step, unless --set names one (records_step).
+    let mut step = String::new();
+    let chosen = a
+        .set
+        .iter()
+        .any(|s| s.starts_with("numerics.time_step_safety="));
+    let inferred = if chosen {
+        None
+    } else {
+        records_step(&records, &base).map_err(|e| format!("findings: {e}"))?
+    };
+    if let Some(v) = inferred
+        && v != base.numerics.time_step_safety
+    {
+        base.numerics.time_step_safety = v;
+        step = format!(
+            " Read at the step the records were made with, {v} of the stable limit \
+             (`numerics.time_step_safety`; the default is now {}).",
+            pressridge::dem::DEFAULT_TIME_STEP_SAFETY
+        );
+    }
     let rows = findings(&records, a.min_seeds, &base)?;
     let model = if a.set.is_empty() {
-        String::new()
+        step
     } else {
-        format!(" The model: the Figure 5 scene with {}.", a.set.join(", "))
+        format!(
+            " The model: the Figure 5 scene with {}.{step}",
+            a.set.join(", ")
+        )
     };
     let mut text = format!(
         "{}\nFrom {} runs of: {}.{model}\n",
