@@ -18,7 +18,9 @@ def test_readme_python_block_runs(tmp_path, monkeypatch):
     scope: dict = {}
     exec(compile(blocks[0], "README.md", "exec"), scope)
     assert float(scope["p"].max()) > 0.0
-    assert scope["sim"].summary["time"] >= 20.0 - 1e-6
+    # A run stops at the first step within half a step of its duration.
+    summary = scope["sim"].summary
+    assert summary["time"] >= 20.0 - 0.5 * summary["dt"]
     assert "kinetic_energy_change" in scope["sim"].summary
     assert (tmp_path / "tiny.nc").is_file()
     assert os.path.isdir(tmp_path / "runs" / "tiny" / "runs")

@@ -102,8 +102,8 @@ pub(crate) fn is_zero(n: &u32) -> bool {
 
 /// Default safety factor on the stable time step (dimensionless): half the stable limit, the
 /// largest step measured to leave the ensemble statistics where a quarter of the limit puts
-/// them; 0.8 of it (the default until 2026-11-28) and the full limit break about 10 % more
-/// joints into 10 % shorter blocks (docs/speed-vs-error.md, issue 30).
+/// them; 0.8 of it (the default until 2026-11-28) and the full limit break 7–10 % more
+/// joints into shorter blocks (docs/speed-vs-error.md, issue 30).
 pub const DEFAULT_TIME_STEP_SAFETY: f64 = 0.5;
 
 /// An error in a world's parameters or bodies.
