@@ -8,8 +8,8 @@
 //! over the same thicknesses and seeds; the first is the reference.
 //!
 //! For each thickness and configuration the table gives the runs, the steps and the mean
-//! wall time of a run, and for W, ΔPE, W/ΔPE, Φ_f/W, L/h, blocks broken (joints severed),
-//! sail height and keel depth the difference of the configuration's mean from the reference
+//! wall time of a run, and for W, ΔPE, W/ΔPE, Φ_i/W, Φ_f/W, L/h, blocks broken (joints
+//! severed), the elastic energy released per break, sail height and keel depth the difference of the configuration's mean from the reference
 //! mean, in % of the reference mean, with its 95 % interval by Welch's t (unequal
 //! variances, Welch–Satterthwaite degrees of freedom; the reference mean in the denominator
 //! is taken as exact), and the worst closure residual |W − sinks| / largest term over all
@@ -39,9 +39,11 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 /// The quantities compared: key of [`quantity`] (or `normal_contact_fraction`, Φ_i/W, eq
-/// (12)'s net normal contact work over W), label, and whether the owner's equivalence
-/// criterion judges it (issue 30, item 3: W, ΔPE, W/ΔPE, Φ_i/W, joints broken, L/h).
-const QUANTITIES: [(&str, &str, bool); 9] = [
+/// (12)'s net normal contact work over W; `fracture_per_break`, the elastic energy released
+/// by cracks over the joints broken, J/m per joint), label, and whether the owner's
+/// equivalence criterion judges it (issue 30, item 3: W, ΔPE, W/ΔPE, Φ_i/W, joints broken,
+/// L/h).
+const QUANTITIES: [(&str, &str, bool); 10] = [
     ("work", "W", true),
     ("potential_energy", "ΔPE", true),
     ("ratio_work_to_pe", "W/ΔPE", true),
@@ -49,6 +51,7 @@ const QUANTITIES: [(&str, &str, bool); 9] = [
     ("friction_fraction", "Φ_f/W", false),
     ("length_to_thickness", "L/h", true),
     ("blocks_broken", "broken", true),
+    ("fracture_per_break", "E_f/break", false),
     ("max_sail_height", "sail", false),
     ("max_keel_depth", "keel", false),
 ];
@@ -92,6 +95,10 @@ fn stat(runs: &[RunRecord], key: &str) -> Stat {
     let value = |r: &RunRecord| match key {
         "normal_contact_fraction" => {
             Some(quantity(r, "normal_contact_work")? / quantity(r, "work")?)
+        }
+        "fracture_per_break" => {
+            let n = quantity(r, "blocks_broken")?;
+            (n > 0.0).then_some(quantity(r, "fracture_dissipation")? / n)
         }
         _ => quantity(r, key),
     };
@@ -207,8 +214,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
     }
     println!(
-        "\nReference row: mean ± standard deviation σ over seeds (W, ΔPE in J/m; sail and \
-         keel in m). Other rows: difference of the mean from the reference mean in % of the \
+        "\nReference row: mean ± standard deviation σ over seeds (W, ΔPE in J/m; E_f/break, \
+         the elastic energy released by cracks per joint broken, in J/m; sail and keel in m). Other rows: difference of the mean from the reference mean in % of the \
          reference mean and in units of the reference's σ, each with its 95 % Welch \
          interval; for the quantities of issue 30's criterion, ✓: the interval lies within \
          ±0.5 σ, ✗: wholly beyond it, ?: neither yet."
