@@ -9,8 +9,9 @@
 //!
 //! For each thickness and configuration the table gives the runs, the steps and the mean
 //! wall time of a run, and for W, ΔPE, W/ΔPE, Φ_i/W, Φ_f/W, L/h, blocks broken (joints
-//! severed), the elastic energy released per break, sail height and keel depth the difference of the configuration's mean from the reference
-//! mean, in % of the reference mean, with its 95 % interval by Welch's t (unequal
+//! severed), the elastic energy released per break, sail height and keel depth the
+//! difference of the configuration's mean from the reference mean, in % of the reference
+//! mean, with its 95 % interval by Welch's t (unequal
 //! variances, Welch–Satterthwaite degrees of freedom; the reference mean in the denominator
 //! is taken as exact), and the worst closure residual |W − sinks| / largest term over all
 //! samples of all runs.
@@ -215,7 +216,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     println!(
         "\nReference row: mean ± standard deviation σ over seeds (W, ΔPE in J/m; E_f/break, \
-         the elastic energy released by cracks per joint broken, in J/m; sail and keel in m). Other rows: difference of the mean from the reference mean in % of the \
+         the elastic energy released by cracks per joint broken, in J/m; sail and keel in \
+         m). Other rows: difference of the mean from the reference mean in % of the \
          reference mean and in units of the reference's σ, each with its 95 % Welch \
          interval; for the quantities of issue 30's criterion, ✓: the interval lies within \
          ±0.5 σ, ✗: wholly beyond it, ?: neither yet."

@@ -183,11 +183,11 @@ fn restitution_no_tension(zeta: f64) -> f64 {
 /// Both time discretisations of eq (3) converge to it at first order in Δt (the contact
 /// starts and ends between steps). The explicit form, at half its stable step (the
 /// simulator's former default): within 3 %, and 1 % at a quarter of that. The implicit
-/// form at 0.8 × its stable limit (its default until 2026-11-28), which for this stiffest of contacts
-/// (a 0.3 m face between 1 m blocks, ω·Δt = 0.30) is 6.5e-4 s: within 13 %; at a quarter
-/// of it within 4 %; and the error shrinks by at least 2.5× from the one to the other. (In
-/// the ridge the joints bind the step to 2.3e-4 s, where this contact is within 5 %:
-/// docs/model.md, "Time integration".)
+/// form at 0.8 × its stable limit (its default until 2026-11-28), which for this stiffest
+/// of contacts (a 0.3 m face between 1 m blocks, ω·Δt = 0.30) is 6.5e-4 s: within 13 %; at a
+/// quarter of it within 4 %; and the error shrinks by at least 2.5× from the one to the
+/// other. (In the ridge the joints bound the step to 2.3e-4 s before the exact joint bound,
+/// where this contact is within 5 %: docs/model.md, "Time integration".)
 #[test]
 fn collision_restitution_matches_damped_oscillator() {
     let e_theory = restitution_no_tension(0.387_298);
@@ -249,8 +249,8 @@ fn collision_restitution_matches_damped_oscillator() {
 /// as written (`ContactOnset::Area`) the first step of the contact reads on average half the
 /// rate at which the overlap grows, so impacts are too elastic by an error of first order in
 /// Δt: at 0.8 of the implicit dashpot's stable limit (the default step until 2026-11-28) the
-/// restitution is 12.4 % above the theory, at half of that 6.0 %. Reading the first rate from the approach speed
-/// (`ContactOnset::Velocity`) leaves 2.1 % and 0.8 % (measured); single collisions scatter
+/// restitution is 12.4 % above the theory, at half of that 6.0 %. Reading the first rate
+/// from the approach speed (`ContactOnset::Velocity`) leaves 2.1 % and 0.8 % (measured); single collisions scatter
 /// by about ±10 % around that with the phase (the elastic force's start is still sampled at
 /// the step). Either way the kinetic energy lost is the booked dissipation.
 #[test]

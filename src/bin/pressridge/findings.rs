@@ -119,10 +119,10 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         pressridge::scene::Scene::load(None, &a.set).map_err(|e| format!("--set: {e}"))?;
     // The records' own step, unless --set names one (records_step).
     let mut step = String::new();
-    let chosen = a
-        .set
-        .iter()
-        .any(|s| s.starts_with("numerics.time_step_safety="));
+    let chosen = a.set.iter().any(|s| {
+        s.split_once('=')
+            .is_some_and(|(k, _)| k.trim() == "numerics.time_step_safety")
+    });
     let inferred = if chosen {
         None
     } else {
