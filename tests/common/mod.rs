@@ -15,12 +15,43 @@ pub fn bin() -> Command {
     Command::new(env!("CARGO_BIN_EXE_pressridge"))
 }
 
-/// A fresh, empty scratch directory for test `name`.
-pub fn scratch(name: &str) -> PathBuf {
+/// A fresh, empty scratch directory for test `name`, removed when the test passes and kept
+/// (for a look at what the test left) when it panics.
+pub fn scratch(name: &str) -> Scratch {
     let d = std::env::temp_dir().join(format!("pressridge-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
-    d
+    Scratch(d)
+}
+
+/// A scratch directory that removes itself on drop unless the thread is panicking.
+pub struct Scratch(PathBuf);
+
+impl std::ops::Deref for Scratch {
+    type Target = Path;
+    fn deref(&self) -> &Path {
+        &self.0
+    }
+}
+
+impl AsRef<Path> for Scratch {
+    fn as_ref(&self) -> &Path {
+        &self.0
+    }
+}
+
+impl AsRef<std::ffi::OsStr> for Scratch {
+    fn as_ref(&self) -> &std::ffi::OsStr {
+        self.0.as_os_str()
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        if !std::thread::panicking() {
+            let _ = std::fs::remove_dir_all(&self.0);
+        }
+    }
 }
 
 /// Asserts that a command failed with exit code 1 (not a signal, not a panic) and a one-line
@@ -217,7 +248,7 @@ pub fn good_itd() -> Vec<Var> {
 
 /// Runs `pressridge simulate` with `args` into a fresh scratch directory for test `name`,
 /// asserts success and returns the directory.
-pub fn simulate(name: &str, args: &[&str]) -> PathBuf {
+pub fn simulate(name: &str, args: &[&str]) -> Scratch {
     let dir = scratch(name);
     let mut cmd = bin();
     cmd.arg("simulate").args(args).arg("--out").arg(&dir);
