@@ -250,9 +250,10 @@ fn collision_restitution_matches_damped_oscillator() {
 /// rate at which the overlap grows, so impacts are too elastic by an error of first order in
 /// Δt: at 0.8 of the implicit dashpot's stable limit (the default step until 2026-11-28) the
 /// restitution is 12.4 % above the theory, at half of that 6.0 %. Reading the first rate
-/// from the approach speed (`ContactOnset::Velocity`) leaves 2.1 % and 0.8 % (measured); single collisions scatter
-/// by about ±10 % around that with the phase (the elastic force's start is still sampled at
-/// the step). Either way the kinetic energy lost is the booked dissipation.
+/// from the approach speed (`ContactOnset::Velocity`) leaves 2.1 % and 0.8 % (measured);
+/// single collisions scatter by about ±10 % around that with the phase (the elastic force's
+/// start is still sampled at the step). Either way the kinetic energy lost is the booked
+/// dissipation.
 #[test]
 fn contact_onset_from_the_approach_speed_removes_the_restitution_bias() {
     let e_theory = restitution_no_tension(0.387_298);
