@@ -284,15 +284,14 @@ impl Scene {
             toml::from_str(&self.to_toml()).map_err(|e| SceneError::Parse(e.to_string()))?;
         for set in sets {
             let set = set.as_ref();
-            let (key, value) = set
-                .split_once('=')
+            let (key, value) = split_override(set)
                 .ok_or_else(|| SceneError::Override(set.into(), "expected key=value".into()))?;
             let value: toml::Value = toml::from_str::<toml::Table>(&format!("v = {value}"))
                 .or_else(|_| toml::from_str::<toml::Table>(&format!("v = \"{value}\"")))
                 .map_err(|e| SceneError::Override(set.into(), e.to_string()))?
                 .remove("v")
                 .expect("parsed table has v");
-            let parts: Vec<&str> = key.trim().split('.').collect();
+            let parts: Vec<&str> = key.split('.').collect();
             let mut table = &mut doc;
             for p in &parts[..parts.len() - 1] {
                 table = table
@@ -317,6 +316,13 @@ impl Scene {
             other => other,
         })
     }
+}
+
+/// The key an override `key=value` (as `--set` takes it) names, trimmed, with its untrimmed
+/// value; `None` when there is no `=`. One parser for [`Scene::with_overrides`] and every
+/// caller that asks which key a `--set` names.
+pub fn split_override(set: &str) -> Option<(&str, &str)> {
+    set.split_once('=').map(|(k, v)| (k.trim(), v))
 }
 
 #[cfg(test)]

@@ -22,8 +22,7 @@ use common::bin;
 
 #[test]
 fn tiny_campaign_is_resumable_and_complete() {
-    let dir = std::env::temp_dir().join(format!("pressridge-campaign-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = common::scratch("campaign");
     let spec = dir.join("tiny.toml");
     std::fs::write(&spec, SPEC).unwrap();
     let out = dir.join("out");
@@ -700,7 +699,6 @@ fn tiny_campaign_is_resumable_and_complete() {
         .unwrap();
     assert!(!res.status.success());
     assert!(String::from_utf8_lossy(&res.stderr).contains("another grid"));
-    std::fs::remove_dir_all(dir).ok();
 }
 
 #[test]
@@ -1061,7 +1059,6 @@ values = [0.6, 1.0]
         "a malformed --friction is a usage error"
     );
     assert!(String::from_utf8_lossy(&res.stderr).contains("MU,MU_W"));
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// A thickness set whose floe is scaled with the sheet above the thicknesses of another
@@ -1181,7 +1178,6 @@ values = [[{thickness}, 0.30, 3.0, 30.0]]
             &[key, want],
         );
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// The register's probe specs (`data/campaigns/choices*/`) all plan: on the decided model
@@ -1225,9 +1221,7 @@ fn shipped_choice_probes_plan() {
 /// an ensemble that can be compared point with point.
 #[test]
 fn a_campaign_runs_seed_by_seed_over_the_grid() {
-    let dir = std::env::temp_dir().join(format!("pressridge-order-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = common::scratch("order");
     let spec = CampaignSpec::from_toml(SPEC).unwrap();
     let out = dir.join("out");
     let stop = std::sync::atomic::AtomicBool::new(false);
@@ -1247,5 +1241,4 @@ fn a_campaign_runs_seed_by_seed_over_the_grid() {
         .collect();
     got.sort_by(|a, b| a.partial_cmp(b).unwrap());
     assert_eq!(got, [(0.25, 1), (0.35, 1)]);
-    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -75,7 +75,6 @@ fn simulate_then_render() {
     );
     let bytes = std::fs::read(&png).unwrap();
     assert_eq!(&bytes[1..4], b"PNG");
-    std::fs::remove_dir_all(dir).ok();
 }
 
 #[test]
@@ -133,7 +132,7 @@ fn shipped_scene_files_load_and_compose() {
 /// (`rafting::verdict`, whose words for a ride-over are tested beside it).
 #[test]
 fn the_summary_says_whether_the_sheet_rode_over_the_floe() {
-    let dir = std::env::temp_dir().join(format!("pressridge-rideover-{}", std::process::id()));
+    let dir = common::scratch("rideover");
     let run = |extra: &[&str]| {
         let o = bin()
             .args([
@@ -156,7 +155,6 @@ fn the_summary_says_whether_the_sheet_rode_over_the_floe() {
         broke.contains("it broke at the floe (within the 2 m rafting reach)"),
         "{broke}"
     );
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -170,7 +168,6 @@ fn simulate_svg_writes_svg_figures_beside_the_pngs() {
             "{f}.svg"
         );
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// `kinetic_energy_change` was `kinetic_energy` in summaries written before 2026-11-23:

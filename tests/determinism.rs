@@ -1,5 +1,7 @@
 //! Same scene + same seed ⇒ bit-identical results; a saved state resumes bit for bit.
 
+mod common;
+
 use pressridge::dem::World;
 use pressridge::io::state::{load_state, save_state};
 use pressridge::scene::Scene;
@@ -50,7 +52,7 @@ fn saved_state_resumes_bit_for_bit() {
     for _ in 0..4000 {
         w.step();
     }
-    let dir = std::env::temp_dir().join(format!("pressridge-det-{}", std::process::id()));
+    let dir = common::scratch("det");
     let path = dir.join("state.json");
     save_state(&path, &w.snapshot()).unwrap();
     let mut r = World::from_snapshot(&load_state(&path).unwrap()).unwrap();
@@ -61,13 +63,11 @@ fn saved_state_resumes_bit_for_bit() {
     }
     assert_eq!(state_json(&w), state_json(&r));
     assert_eq!(w.energy(), r.energy());
-    std::fs::remove_dir_all(dir).ok();
 }
 
 #[test]
 fn corrupt_state_files_give_clear_errors() {
-    let dir = std::env::temp_dir().join(format!("pressridge-bad-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = common::scratch("bad");
     let path = dir.join("bad.json");
     std::fs::write(&path, "{\"format\": 1, \"time\": 0.0}").unwrap();
     let e = load_state(&path).unwrap_err().to_string();
@@ -76,5 +76,4 @@ fn corrupt_state_files_give_clear_errors() {
         .unwrap_err()
         .to_string();
     assert!(e.contains("absent.json"), "{e}");
-    std::fs::remove_dir_all(dir).ok();
 }

@@ -1,6 +1,8 @@
 //! The C ABI (`pressridge::ffi`) called as C would call it: values equal to the Rust API's to
 //! the bit in every layout, errors as codes and messages, never a crash, thread safety.
 
+mod common;
+
 use std::ffi::c_char;
 use std::path::Path;
 use std::ptr::{null, null_mut};
@@ -971,8 +973,7 @@ fn single_column_ridging_equals_the_batch_and_leaves_bad_columns_unchanged() {
 
 #[test]
 fn cf_tables_load_query_free() {
-    let dir = std::env::temp_dir().join(format!("pressridge-ffi-cf-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = common::scratch("ffi-cf");
     let path = dir.join("cf.nc");
     let t = CfTable::new(vec![0.2, 0.5, 1.0], vec![5.0, 10.0, 14.0]).unwrap();
     write_cf_table(&path, &t).unwrap();
@@ -1080,7 +1081,6 @@ fn cf_tables_load_query_free() {
         unsafe { pressridge_cf_table_new(unsorted.as_ptr(), unsorted.as_ptr(), 0, &mut h2) },
         PRESSRIDGE_ERR_BAD_SIZE
     );
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// A small ridging lookup table in the layout `pressridge tabulate` writes.
@@ -1120,8 +1120,7 @@ fn write_ridge_table(path: &Path) {
 
 #[test]
 fn ridge_tables_load_query_and_give_cf_tables() {
-    let dir = std::env::temp_dir().join(format!("pressridge-ffi-rt-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = common::scratch("ffi-rt");
     let path = dir.join("table.nc");
     write_ridge_table(&path);
     let p = path.to_str().unwrap();
@@ -1271,7 +1270,6 @@ fn ridge_tables_load_query_and_give_cf_tables() {
         unsafe { pressridge_ridge_table_open(m.as_ptr().cast(), m.len() as i64, &mut t) },
         PRESSRIDGE_ERR_IO
     );
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 const TINY_SCENE: &str = "name = \"tiny\"\nduration = 0.05\n[pile]\nblocks = 4\ncolumns = 2\n";

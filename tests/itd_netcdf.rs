@@ -11,12 +11,6 @@ use pressridge::io::itd_netcdf::{
 };
 use pressridge::itd::{CfTable, ColumnError};
 
-fn tmp(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("pressridge-itd-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
-}
-
 fn sample() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("data/sample_itd.nc")
 }
@@ -62,7 +56,8 @@ fn write_grid(path: &Path, g: &ItdGrid) {
 
 #[test]
 fn round_trip_keeps_values_and_dimensions() {
-    let p = tmp("rt.nc");
+    let dir = common::scratch("itd-round-trip-keeps-values-and-dimensions");
+    let p = dir.join("rt.nc");
     let g = small_grid(None);
     write_grid(&p, &g);
     let r = read_itd(&p).unwrap();
@@ -77,7 +72,8 @@ fn round_trip_keeps_values_and_dimensions() {
 
 #[test]
 fn bad_column_is_located_by_spatial_index() {
-    let p = tmp("bad.nc");
+    let dir = common::scratch("itd-bad-column-is-located-by-spatial-index");
+    let p = dir.join("bad.nc");
     let g = small_grid(Some(-0.1));
     write_grid(&p, &g);
     let r = read_itd(&p).unwrap();
@@ -115,11 +111,12 @@ fn bad_column_is_located_by_spatial_index() {
 /// 1 + 2e-16 (e.g. nj = 20, ni = 38).
 #[test]
 fn ridge_step_without_aice0_accepts_full_cover_round_off() {
+    let dir = common::scratch("itd-ridge-step-without-aice0-accepts-full-cover-round-off");
     let g = read_itd(&sample()).unwrap();
     let (ncat, ncol) = (g.ncat(), g.ncol());
     let (ny, nx) = (g.spatial_dims[0].1, g.spatial_dims[1].1);
     assert!((0..ncol).any(|c| g.aicen.column(c).sum() > 1.0));
-    let p = tmp("noaice0.nc");
+    let p = dir.join("noaice0.nc");
     let flat = |a: &ndarray::Array2<f64>| a.iter().copied().collect::<Vec<f64>>();
     let (_, divu) = read_field(&sample(), "divu").unwrap();
     let (_, shear) = read_field(&sample(), "shear").unwrap();
@@ -136,7 +133,7 @@ fn ridge_step_without_aice0_accepts_full_cover_round_off() {
             common::Var::f64("shear", &sp, shear).with_units("s-1"),
         ],
     );
-    let out = tmp("noaice0_out.nc");
+    let out = dir.join("noaice0_out.nc");
     let o = cli(&[
         "ridge-step",
         "--input",
@@ -153,8 +150,9 @@ fn ridge_step_without_aice0_accepts_full_cover_round_off() {
 
 #[test]
 fn missing_and_mismatched_variables_are_named() {
+    let dir = common::scratch("itd-missing-and-mismatched-variables-are-named");
     // No vicen.
-    let p = tmp("novicen.nc");
+    let p = dir.join("novicen.nc");
     common::write_f64(
         &p,
         &[("ncat", 2), ("x", 3)],
@@ -166,7 +164,7 @@ fn missing_and_mismatched_variables_are_named() {
         "{e}"
     );
     // vicen on other dimensions.
-    let p = tmp("shape.nc");
+    let p = dir.join("shape.nc");
     common::write_f64(
         &p,
         &[("ncat", 2), ("x", 3), ("y", 2)],
@@ -181,7 +179,7 @@ fn missing_and_mismatched_variables_are_named() {
         "{e}"
     );
     // aice0 on the wrong dimensions.
-    let p = tmp("shape0.nc");
+    let p = dir.join("shape0.nc");
     common::write_f64(
         &p,
         &[("ncat", 2), ("x", 3)],
@@ -197,7 +195,7 @@ fn missing_and_mismatched_variables_are_named() {
         "{e}"
     );
     // hin_max of the wrong length.
-    let p = tmp("hin.nc");
+    let p = dir.join("hin.nc");
     common::write_f64(
         &p,
         &[("ncat", 2), ("x", 3), ("nb", 2)],
@@ -216,7 +214,8 @@ fn missing_and_mismatched_variables_are_named() {
 
 #[test]
 fn cf_table_round_trip() {
-    let p = tmp("cf.nc");
+    let dir = common::scratch("itd-cf-table-round-trip");
+    let p = dir.join("cf.nc");
     let t = CfTable::new(vec![0.2, 1.0, 3.0], vec![5.0, 12.0, 20.0]).unwrap();
     write_cf_table(&p, &t).unwrap();
     assert_eq!(read_cf_table(&p).unwrap(), t);
@@ -278,9 +277,10 @@ fn cli(args: &[&str]) -> std::process::Output {
 
 #[test]
 fn cli_strength_ridge_step_and_plot() {
+    let dir = common::scratch("itd-cli-strength-ridge-step-and-plot");
     let s = sample();
     let s = s.to_str().unwrap();
-    let out = tmp("strength.nc");
+    let out = dir.join("strength.nc");
     let o = cli(&[
         "strength",
         "--input",
@@ -305,7 +305,7 @@ fn cli_strength_ridge_step_and_plot() {
     assert_eq!(cf, "constant 15");
 
     // Parameter override and a C_f table (values clamped outside 0.5–2 m, and flagged).
-    let out2 = tmp("strength_mu.nc");
+    let out2 = dir.join("strength_mu.nc");
     let o = cli(&[
         "strength",
         "--input",
@@ -318,7 +318,7 @@ fn cli_strength_ridge_step_and_plot() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let (_, p4) = read_field(&out2, "strength").unwrap();
     let (_, p17) = {
-        let o17 = tmp("strength_17.nc");
+        let o17 = dir.join("strength_17.nc");
         assert!(
             cli(&["strength", "--input", s, "--output", o17.to_str().unwrap()])
                 .status
@@ -337,13 +337,13 @@ fn cli_strength_ridge_step_and_plot() {
         "mu_rdg=-1",
     ]);
     assert!(!bad.status.success() && String::from_utf8_lossy(&bad.stderr).contains("mu_rdg"));
-    let table = tmp("cf_table.nc");
+    let table = dir.join("cf_table.nc");
     write_cf_table(
         &table,
         &CfTable::new(vec![0.5, 2.0], vec![17.0, 17.0]).unwrap(),
     )
     .unwrap();
-    let out3 = tmp("strength_table.nc");
+    let out3 = dir.join("strength_table.nc");
     let o = cli(&[
         "strength",
         "--input",
@@ -380,7 +380,7 @@ fn cli_strength_ridge_step_and_plot() {
         assert_relative_eq!(*a, *b, max_relative = 1e-12, epsilon = 1e-9);
     }
 
-    let rs = tmp("ridged.nc");
+    let rs = dir.join("ridged.nc");
     let o = cli(&[
         "ridge-step",
         "--input",
@@ -395,7 +395,7 @@ fn cli_strength_ridge_step_and_plot() {
     assert_eq!(g.ncat(), 5);
     assert!(read_field(&rs, "dardg1dt").is_ok());
 
-    let png = tmp("map.png");
+    let png = dir.join("map.png");
     let o = cli(&[
         "plot-strength",
         "--input",
@@ -431,14 +431,14 @@ fn cli_strength_ridge_step_and_plot() {
     assert_eq!(row("C_f = 17"), row("C_f from cf_table.nc"));
 
     // Bad input: the error names the variable and the spatial index, exit status 1.
-    let bad = tmp("cli_bad.nc");
+    let bad = dir.join("cli_bad.nc");
     write_grid(&bad, &small_grid(Some(f64::NAN)));
     let o = cli(&[
         "strength",
         "--input",
         bad.to_str().unwrap(),
         "--output",
-        tmp("x.nc").to_str().unwrap(),
+        dir.join("x.nc").to_str().unwrap(),
     ]);
     assert!(!o.status.success());
     let err = String::from_utf8_lossy(&o.stderr);
@@ -447,6 +447,7 @@ fn cli_strength_ridge_step_and_plot() {
 
 #[test]
 fn write_output_rejects_wrong_field_length() {
+    let dir = common::scratch("itd-write-output-rejects-wrong-field-length");
     let g = small_grid(None);
     let meta = FieldMeta {
         name: "strength",
@@ -456,7 +457,7 @@ fn write_output_rejects_wrong_field_length() {
     };
     let data = [0.0; 5];
     let e = write_output(
-        &tmp("len.nc"),
+        &dir.join("len.nc"),
         &Output {
             grid: &g,
             write_itd: false,
@@ -478,7 +479,8 @@ fn write_output_rejects_wrong_field_length() {
 /// dimension, the land cell is masked (fill on output), the other cells are computed.
 #[test]
 fn cice_like_file_with_time_and_land_fill() {
-    let p = tmp("cice_like.nc");
+    let dir = common::scratch("itd-cice-like-file-with-time-and-land-fill");
+    let p = dir.join("cice_like.nc");
     {
         let mut f = netcdf::create_with(&p, netcdf::Options::_64BIT_OFFSET).unwrap();
         for (n, l) in [("time", 1), ("nc", 2), ("nj", 2), ("ni", 3)] {
@@ -515,7 +517,7 @@ fn cice_like_file_with_time_and_land_fill() {
     assert_eq!(valid.to_vec(), vec![true, false, true, true, true, true]);
     assert_relative_eq!(g.fill_value.unwrap(), 1.0e30f32 as f64);
 
-    let out = tmp("cice_like_strength.nc");
+    let out = dir.join("cice_like_strength.nc");
     let o = cli(&[
         "strength",
         "--input",
@@ -549,8 +551,7 @@ fn cice_like_file_with_time_and_land_fill() {
 #[test]
 fn cice_history_rates_in_percent_per_day_are_converted_or_refused() {
     use pressridge::itd::deformation_terms;
-    let dir = std::env::temp_dir().join(format!("pressridge-units-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = common::scratch("units");
     let write = |name: &str, units: &str| -> std::path::PathBuf {
         let p = dir.join(name);
         let mut f = netcdf::create(&p).unwrap();
@@ -590,7 +591,6 @@ fn cice_history_rates_in_percent_per_day_are_converted_or_refused() {
     // No `units` at all: refused, naming the variable, never taken for 1/s.
     let err = read_itd(&write("none.nc", "")).unwrap_err().to_string();
     assert!(err.contains("divu") && err.contains("no `units`"), "{err}");
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 #[test]
@@ -699,10 +699,12 @@ fn str_attr(f: &netcdf::File, var: &str, name: &str) -> String {
 /// `TLAT`).
 #[test]
 fn cice_history_with_several_times_keeps_time_coordinates_and_land() {
-    let both = tmp("hist2.nc");
+    let dir =
+        common::scratch("itd-cice-history-with-several-times-keeps-time-coordinates-and-land");
+    let both = dir.join("hist2.nc");
     cice_history(&both, &[0, 1], &[1.0, 99.0]);
     let run = |cmd: &str, input: &Path, name: &str, extra: &[&str]| -> PathBuf {
-        let out = tmp(name);
+        let out = dir.join(name);
         let mut a = vec![
             cmd,
             "--input",
@@ -733,7 +735,7 @@ fn cice_history_with_several_times_keeps_time_coordinates_and_land() {
         ["time", "nc", "nj", "ni"]
     );
     for it in 0..2 {
-        let one = tmp(&format!("hist1_{it}.nc"));
+        let one = dir.join(format!("hist1_{it}.nc"));
         cice_history(&one, &[it], &[1.0, 99.0]);
         let (_, p1) = read_field(
             &run("strength", &one, &format!("h1p{it}.nc"), &[]),
@@ -811,9 +813,10 @@ fn cice_history_with_several_times_keeps_time_coordinates_and_land() {
 /// hin_max must agree.
 #[test]
 fn category_dimension_by_name_or_refused() {
+    let dir = common::scratch("itd-category-dimension-by-name-or-refused");
     let data = vec![0.3; 6];
     // None of the names.
-    let p = tmp("noname.nc");
+    let p = dir.join("noname.nc");
     common::write_f64(
         &p,
         &[("k", 2), ("x", 3)],
@@ -827,7 +830,7 @@ fn category_dimension_by_name_or_refused() {
         e.contains("(k=2, x=3)") && e.contains("--category-dim") && e.contains("nc, ncat, ct"),
         "{e}"
     );
-    let out = tmp("noname_p.nc");
+    let out = dir.join("noname_p.nc");
     let o = cli(&[
         "strength",
         "--input",
@@ -850,7 +853,7 @@ fn category_dimension_by_name_or_refused() {
     let msg = String::from_utf8_lossy(&o.stderr);
     assert!(!o.status.success() && msg.contains("`nc` given"), "{msg}");
     // Two of the names: ambiguous.
-    let p = tmp("twonames.nc");
+    let p = dir.join("twonames.nc");
     common::write_f64(
         &p,
         &[("nc", 2), ("ncat", 3)],
@@ -865,7 +868,7 @@ fn category_dimension_by_name_or_refused() {
         "{e}"
     );
     // The category dimension last.
-    let p = tmp("catlast.nc");
+    let p = dir.join("catlast.nc");
     let a: Vec<f64> = (0..6).map(|i| 0.1 + 0.05 * i as f64).collect();
     common::write_f64(
         &p,
@@ -880,7 +883,7 @@ fn category_dimension_by_name_or_refused() {
     assert_eq!(g.aicen.row(0).to_vec(), vec![a[0], a[2], a[4]]);
     assert_eq!(g.aicen.row(1).to_vec(), vec![a[1], a[3], a[5]]);
     // hin_max and NCAT disagree.
-    let p = tmp("ncat_vs_hin.nc");
+    let p = dir.join("ncat_vs_hin.nc");
     common::write_f64(
         &p,
         &[("ncat", 2), ("x", 3), ("nb", 3)],
@@ -901,6 +904,7 @@ fn category_dimension_by_name_or_refused() {
 /// original on ocean and missing values exactly where tmask is 0, at both times.
 #[test]
 fn tmask_zero_is_land_like_fill() {
+    let dir = common::scratch("itd-tmask-zero-is-land-like-fill");
     let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("data/cice_history_sample.nc");
     let f = netcdf::open(&src).unwrap();
     let get = |n: &str| -> Vec<f64> {
@@ -913,7 +917,7 @@ fn tmask_zero_is_land_like_fill() {
     let cat = [("time", nt), ("nc", nc), ("nj", nj), ("ni", ni)];
     let tmask = get("tmask");
     assert!(tmask.contains(&0.0) && tmask.contains(&1.0));
-    let zeroed = tmp("cice_tmask_zero_land.nc");
+    let zeroed = dir.join("cice_tmask_zero_land.nc");
     common::write_nc(
         &zeroed,
         &[
@@ -930,7 +934,7 @@ fn tmask_zero_is_land_like_fill() {
         assert_eq!(*v, tmask[c % (nj * ni)] != 0.0, "column {c}");
     }
     let run = |input: &Path, name: &str| -> Vec<f64> {
-        let out = tmp(name);
+        let out = dir.join(name);
         let o = cli(&[
             "strength",
             "--input",
@@ -957,7 +961,7 @@ fn tmask_zero_is_land_like_fill() {
         }
     }
     // A tmask over a dimension the fields do not have is refused by name.
-    let bad = tmp("cice_tmask_bad.nc");
+    let bad = dir.join("cice_tmask_bad.nc");
     common::write_nc(
         &bad,
         &[

@@ -201,3 +201,19 @@ fn experimental_options_are_refused_at_their_former_keys_with_their_new_ones() {
         assert!(e.contains(&format!("experimental.{key}")), "{e}");
     }
 }
+
+/// One parser for `--set`: the key trimmed, the value as given, `None` without `=`; and
+/// `with_overrides` reads a spaced key as `split_override` names it.
+#[test]
+fn overrides_are_split_once_with_the_key_trimmed() {
+    assert_eq!(
+        split_override(" contact.mu =0.4"),
+        Some(("contact.mu", "0.4"))
+    );
+    assert_eq!(split_override("name=a=b"), Some(("name", "a=b")));
+    assert_eq!(split_override("contact.mu"), None);
+    let s = Scene::default()
+        .with_overrides(&[" contact.mu =0.4"])
+        .unwrap();
+    assert_eq!(s.value_at("contact.mu").as_deref(), Some("0.4"));
+}

@@ -289,8 +289,7 @@ pub fn tabulate_scaled(
         sc.to_toml()
     };
     let is_scaled_setting = |s: &str| {
-        s.split_once('=')
-            .is_some_and(|(k, _)| scaled.iter().any(|x| x == k))
+        crate::scene::split_override(s).is_some_and(|(k, _)| scaled.iter().any(|x| x == k))
     };
     let h_of = |r: &RunRecord| r.scene.sheet.as_ref().expect("filtered").thickness;
     let mut keys: Vec<String> = Vec::new();

@@ -120,8 +120,7 @@ pub fn run(a: Args) -> Result<(), BoxError> {
     // The records' own step, unless --set names one (records_step).
     let mut step = String::new();
     let chosen = a.set.iter().any(|s| {
-        s.split_once('=')
-            .is_some_and(|(k, _)| k.trim() == "numerics.time_step_safety")
+        pressridge::scene::split_override(s).is_some_and(|(k, _)| k == "numerics.time_step_safety")
     });
     let inferred = if chosen {
         None
