@@ -34,6 +34,16 @@ fn the_former_models_table_is_made_from_its_records() {
     );
 }
 
+/// The table of the same model at the former default step, 0.8 of the stable limit
+/// (`data/paper2`), is kept as a notes page and stays the command's output.
+#[test]
+fn the_table_at_the_former_step_is_made_from_its_records() {
+    check_table(
+        &["--records", "data/paper2"],
+        "docs/notes/findings-step08.md",
+    );
+}
+
 /// The statement table with `args` has a row for every item with a verdict, and `page`
 /// holds it.
 fn check_table(args: &[&str], page: &str) {
@@ -179,7 +189,8 @@ fn the_decided_models_register_is_made_from_its_committed_records() {
 }
 
 /// Under the table, each statement the model disagrees with gets the register's evidence: the
-/// closest any open choice comes, from the committed probe records (`data/choices40`). A
+/// closest any open choice comes, from the committed probe records (`data/choices40`, read at
+/// the step they were made with). A
 /// register of another model (`data/choices`, the 20-m floe) gives no such section, and a
 /// missing one fails naming the option.
 #[test]
@@ -194,6 +205,12 @@ fn the_disagreements_carry_the_registers_evidence() {
         assert!(evidence.contains(item), "{item}:\n{evidence}");
     }
     assert!(evidence.contains("no choice meets it"), "{evidence}");
+    // The register (made at 0.8 of the stable limit) is read at its own step under a table
+    // of runs at half the limit, and the section says so.
+    assert!(
+        text.contains("were made at 0.8 of the stable limit, the table's above at 0.5"),
+        "{text}"
+    );
     assert!(!evidence.contains("floe.pin=false`:"), "{evidence}");
     let o = findings(&["--register", "data/choices"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));

@@ -4,7 +4,9 @@
 //! campaigns that move one choice each from the model's default, run at μ = 0.4 and μ = 1.0
 //! (μ_w = 0.6). For each statement the model disagrees with, the closest any choice comes.
 
-use super::{FIGURE5, Finding, OTHER_SINKS_BOUND, Point, Verdict, interval, select, stat};
+use super::{
+    FIGURE5, Finding, OTHER_SINKS_BOUND, Point, Verdict, interval, records_step, select, stat,
+};
 use crate::record::RunRecord;
 use crate::scene::Scene;
 use crate::table::choices::{at, by_setting, other_sinks_fraction, rafted_count};
@@ -48,8 +50,11 @@ fn choices_at<'a>(reg: &'a Register, f: (f64, f64)) -> Vec<(String, Vec<&'a RunR
 
 /// The evidence section for the rows of `rows` that disagree, or `None` when none does or
 /// when the register is not of this model (its baseline holds no run of `base`'s Figure 5
-/// scene). `records` are the statement table's runs; `source` names where the register's
-/// records are, for the section's text.
+/// scene at any one step). The register is read at the step its baseline was made with,
+/// which may differ from the table's (`docs/choices.md`, "At which step": each effect is a
+/// difference between arms at one step), and the section then says so. `records` are the
+/// statement table's runs; `source` names where the register's records are, for the
+/// section's text.
 pub fn evidence(
     rows: &[Finding],
     records: &[RunRecord],
@@ -61,7 +66,9 @@ pub fn evidence(
         rows.iter()
             .any(|r| r.item == item && r.verdict == Verdict::Disagree && r.ours.starts_with(prefix))
     };
-    select(reg.baseline, base, FIGURE5, 2).ok()?;
+    let mut reg_base = base.clone();
+    reg_base.numerics.time_step_safety = records_step(reg.baseline, base).ok().flatten()?;
+    select(reg.baseline, &reg_base, FIGURE5, 2).ok()?;
     let mut lines = Vec::new();
     if disagrees("a", "") {
         lines.push(other_sinks(reg));
@@ -78,8 +85,12 @@ pub fn evidence(
     let mut s = format!(
         "\n**Where the model disagrees: the closest any open choice comes.** Each choice of \
          the register (`docs/choices.md`) moved alone on this model, at μ = 0.4 and μ = 1.0 \
-         (μ_w = 0.6), from the records in `{source}`. Left out, because they take the \
-         experiment apart: "
+         (μ_w = 0.6), from the records in `{source}`.{step} Left out, because they take \
+         the experiment apart: ",
+        step = step_note(
+            reg_base.numerics.time_step_safety,
+            base.numerics.time_step_safety
+        )
     );
     let left_out: Vec<String> = NOT_CHOICES
         .iter()
@@ -92,6 +103,20 @@ pub fn evidence(
         let _ = writeln!(s, "{l}");
     }
     Some(s)
+}
+
+/// The sentence saying that the register was made at another step than the table's runs
+/// (both as fractions of the stable limit), or nothing when they agree.
+fn step_note(register: f64, table: f64) -> String {
+    if register == table {
+        return String::new();
+    }
+    format!(
+        " The register's runs (its baseline and its probes) were made at {register} of the \
+         stable limit, the table's above at {table}: where a row reads the register, its \
+         default and its closest choice are both runs at {register} (`docs/choices.md`, \
+         \"At which step\")."
+    )
 }
 
 /// Item a: the other sinks' share of W at the Figure 5 point under each choice.
