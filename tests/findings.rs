@@ -190,9 +190,8 @@ fn the_decided_models_register_is_made_from_its_committed_records() {
 
 /// Under the table, each statement the model disagrees with gets the register's evidence: the
 /// closest any open choice comes, from the committed probe records (`data/choices40`, read at
-/// the step they were made with). A
-/// register of another model (`data/choices`, the 20-m floe) gives no such section, and a
-/// missing one fails naming the option.
+/// the step they were made with). A register of another model (`data/choices`, the 20-m
+/// floe) gives no such section, and a missing one fails naming the option.
 #[test]
 fn the_disagreements_carry_the_registers_evidence() {
     let o = findings(&[]);
