@@ -11,6 +11,8 @@ echo "== cargo clippy --all-targets -- -D warnings ($SECONDS s)"
 cargo clippy --all-targets -- -D warnings
 echo "== cargo doc --no-deps --lib, warnings denied (broken links) ($SECONDS s)"
 RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --lib
+echo "== docs/validation.md: its tables are the committed reports' numbers ($SECONDS s)"
+python3 scripts/validation-tables.py --check docs/validation.md
 # One build for everything below: the `ci` profile (Cargo.toml) serves the Rust tests, the
 # Fortran/C bridge, the command line and the Python extension.
 export PRESSRIDGE_PROFILE=ci

@@ -1,0 +1,215 @@
+#!/usr/bin/env python3
+"""The tables of docs/validation.md, read from the reports that `pressridge tabulate --report`
+wrote, so that each number is the report's (one source) and the page can be made again.
+
+    scripts/validation-tables.py [--key HEADER=SCENE.KEY]... [--mj] [--cols LIST] \
+        REPORT[#POINT-SUBSTRING#LABEL]...
+
+Each REPORT contributes every grid point of its "Energy budget", "Ridge metrics" and
+"Rafting" tables as one row; REPORT#SUBSTRING#LABEL takes only the point whose name contains
+SUBSTRING and labels it LABEL (a first column "set"). Rows are
+sorted by the --key columns, in the reports' order where none is given. --key adds a leading column with the
+point's value of a scene key (e.g. --key "h (m)=sheet.thickness"). --mj gives W and ΔPE in
+MJ/m. --cols picks and orders the columns (default: every one below).
+
+    scripts/validation-tables.py --check docs/validation.md
+
+re-runs every command of this script in the page's ```sh blocks and checks that the table
+after each is its output (scripts/test.sh runs it).
+"""
+import argparse
+import math
+import re
+import shlex
+import sys
+
+COLUMNS = {
+    # name: (header, section, report column, format)
+    "W": ("W (kJ/m)", "energy", "W (kJ/m)", "energy0"),
+    "dPE": ("ΔPE (kJ/m)", "energy", "ΔPE (kJ/m)", "energy1"),
+    "phif": ("Φ_f/W", "energy", "Φ_f/W", "mean"),
+    "phii": ("Φ_i/W", "energy", "Φ_i/W", "mean"),
+    "drag": ("drag/W", "energy", "drag/W", "mean"),
+    "cf": ("W/ΔPE", "energy", "W/ΔPE", "as-is"),
+    "sail": ("sail (m)", "metrics", "sail height (m)", "mean"),
+    "keel": ("keel (m)", "metrics", "keel depth (m)", "mean"),
+    "keelarea": ("keel area (m²/m)", "metrics", "keel area (m²/m)", "mean"),
+    "Lh": ("L/h", "metrics", "L/h", "mean"),
+    "rafted": ("rafted", "rafting", "rafted / known", "as-is"),
+}
+SECTIONS = {"energy": "## Energy budget", "metrics": "## Ridge metrics", "rafting": "## Rafting"}
+
+
+def tables(path):
+    """Section -> {point: {column: cell}} for the report at `path`."""
+    text = open(path, encoding="utf-8").read().split("\n")
+    out = {}
+    for name, heading in SECTIONS.items():
+        start = next((i for i, l in enumerate(text) if l.startswith(heading)), None)
+        if start is None:
+            sys.exit(f"validation-tables: {path} has no section '{heading}'")
+        rows = {}
+        header = None
+        for line in text[start + 1:]:
+            if line.startswith("## "):
+                break
+            if not line.startswith("|"):
+                continue
+            cells = [c.strip() for c in line.strip().strip("|").split("|")]
+            if header is None:
+                header = cells
+            elif not set(cells[0]) <= set("-"):
+                rows[cells[0]] = dict(zip(header, cells))
+        out[name] = rows
+    return out
+
+
+def split_cell(cell):
+    """'665.1 ± 200.3' -> ('665.1', '200.3'); '0.77' -> ('0.77', None)."""
+    m = re.match(r"^\s*([-+0-9.eE]+)(?:\s*±\s*([-+0-9.eE]+))?", cell)
+    if not m:
+        return None, None
+    return m.group(1), m.group(2)
+
+
+def sig3(x):
+    """x with three significant figures, as a string, and its number of decimals."""
+    if x == 0:
+        return "0", 0
+    decimals = max(0, 2 - math.floor(math.log10(abs(x))))
+    return f"{x:.{decimals}f}", decimals
+
+
+def fmt(cell, kind, mj):
+    mean, sd = split_cell(cell)
+    if mean is None:
+        return cell
+    if kind == "as-is":
+        return cell.split(" (")[0]
+    if kind == "mean":
+        return mean
+    m, s = float(mean), float(sd) if sd is not None else None
+    if mj:
+        m, s = m / 1000.0, (s / 1000.0 if s is not None else None)
+        text, d = sig3(m)
+    else:
+        d = 0 if kind == "energy0" else 1
+        text = f"{m:.{d}f}"
+    return text if s is None else f"{text} ± {s:.{d}f}"
+
+
+def point_value(point, key):
+    for part in point.split(", "):
+        k, _, v = part.partition("=")
+        if k.strip() == key:
+            v = v.strip()
+            try:
+                return f"{float(v):g}"
+            except ValueError:
+                return v
+    return "–"
+
+
+def sort_key(v):
+    try:
+        return (0, float(v), "")
+    except ValueError:
+        return (1, 0.0, v)
+
+
+def parser():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--key", action="append", default=[], help="HEADER=SCENE.KEY")
+    ap.add_argument("--mj", action="store_true", help="W and ΔPE in MJ/m")
+    ap.add_argument("--cols", default=",".join(COLUMNS))
+    ap.add_argument("--check", metavar="PAGE",
+                    help="check that every table of PAGE after a command of this script is its output")
+    ap.add_argument("reports", nargs="*")
+    return ap
+
+
+def check(page):
+    """Re-runs each ```sh block of `page` that calls this script and compares its output
+    with the table that follows the block; exits non-zero naming the first table that differs."""
+    lines = open(page, encoding="utf-8").read().split("\n")
+    checked = 0
+    i = 0
+    while i < len(lines):
+        if lines[i].strip() != "```sh":
+            i += 1
+            continue
+        j = i + 1
+        while lines[j].strip() != "```":
+            j += 1
+        command = " ".join(l.rstrip("\\").strip() for l in lines[i + 1:j])
+        i = j + 1
+        if not command.startswith("scripts/validation-tables.py"):
+            continue
+        k = i
+        while k < len(lines) and not lines[k].startswith("|"):
+            k += 1
+        end = k
+        while end < len(lines) and lines[end].startswith("|"):
+            end += 1
+        want = table(parser().parse_args(shlex.split(command)[1:]))
+        got = "\n".join(lines[k:end])
+        if got != want:
+            sys.exit(f"validation-tables: {page}, line {k + 1}: the table is not the output of\n"
+                     f"  {command}\nexpected:\n{want}")
+        checked += 1
+    if checked == 0:
+        sys.exit(f"validation-tables: {page} has no table made by this script")
+    print(f"validation-tables: {checked} tables of {page} are the reports' numbers")
+
+
+def main():
+    a = parser().parse_args()
+    if a.check:
+        check(a.check)
+        return
+    if not a.reports:
+        sys.exit("validation-tables: no REPORT given")
+    print(table(a))
+
+
+def table(a):
+    """The markdown table for the parsed arguments `a`."""
+    cols = [c.strip() for c in a.cols.split(",")]
+    for c in cols:
+        if c not in COLUMNS:
+            sys.exit(f"validation-tables: --cols: unknown column '{c}' (known: {', '.join(COLUMNS)})")
+    keys = [k.partition("=")[::2] for k in a.key]
+    labelled = any("#" in r for r in a.reports)
+    rows = []
+    for spec in a.reports:
+        path, _, pick = spec.partition("#")
+        t = tables(path)
+        points = list(t["energy"])
+        label = None
+        if pick:
+            sub, _, label = pick.partition("#")
+            points = [p for p in points if sub in p]
+            if len(points) != 1:
+                sys.exit(f"validation-tables: '{sub}' matches {len(points)} points of {path}")
+        for p in points:
+            row = [label or p] if labelled else []
+            row += [point_value(p, key) for _, key in keys]
+            for c in cols:
+                _, sec, col, kind = COLUMNS[c]
+                cell = t[sec].get(p, {}).get(col)
+                if cell is None:
+                    sys.exit(f"validation-tables: {path}: no '{col}' for point '{p}'")
+                row.append(fmt(cell, kind, a.mj and c in ("W", "dPE")))
+            rows.append((tuple(sort_key(point_value(p, key)) for _, key in keys), row))
+    rows.sort(key=lambda r: r[0])  # stable: reports' own order where there is no key
+    heads = (["set"] if labelled else []) + [h for h, _ in keys]
+    for c in cols:
+        h = COLUMNS[c][0]
+        heads.append(h.replace("kJ", "MJ") if a.mj and c in ("W", "dPE") else h)
+    out = ["| " + " | ".join(heads) + " |", "|" + "---|" * len(heads)]
+    out += ["| " + " | ".join(r) + " |" for _, r in rows]
+    return "\n".join(out)
+
+
+if __name__ == "__main__":
+    main()
