@@ -7,10 +7,10 @@ wrote, so that each number is the report's (one source) and the page can be made
 
 Each REPORT contributes every grid point of its "Energy budget", "Ridge metrics" and
 "Rafting" tables as one row; REPORT#SUBSTRING#LABEL takes only the point whose name contains
-SUBSTRING and labels it LABEL (a first column "set"). Rows are
-sorted by the --key columns, in the reports' order where none is given. --key adds a leading column with the
-point's value of a scene key (e.g. --key "h (m)=sheet.thickness"). --mj gives W and ΔPE in
-MJ/m. --cols picks and orders the columns (default: every one below).
+SUBSTRING and labels it LABEL (a first column "set"). --key adds a leading column with the
+point's value of a scene key (e.g. --key "h (m)=sheet.thickness"); rows are sorted by the
+--key columns, in the reports' order where none is given. --mj gives W and ΔPE in MJ/m.
+--cols picks and orders the columns (default: every one below).
 
     scripts/validation-tables.py --check docs/validation.md
 
@@ -139,8 +139,10 @@ def check(page):
             i += 1
             continue
         j = i + 1
-        while lines[j].strip() != "```":
+        while j < len(lines) and lines[j].strip() != "```":
             j += 1
+        if j == len(lines):
+            sys.exit(f"validation-tables: {page}, line {i + 1}: a ```sh block is not closed")
         command = " ".join(l.rstrip("\\").strip() for l in lines[i + 1:j])
         i = j + 1
         if not command.startswith("scripts/validation-tables.py"):
@@ -178,6 +180,7 @@ def table(a):
     for c in cols:
         if c not in COLUMNS:
             sys.exit(f"validation-tables: --cols: unknown column '{c}' (known: {', '.join(COLUMNS)})")
+    in_mj = {c for c in cols if a.mj and c in ("W", "dPE")}
     keys = [k.partition("=")[::2] for k in a.key]
     labelled = any("#" in r for r in a.reports)
     rows = []
@@ -199,13 +202,11 @@ def table(a):
                 cell = t[sec].get(p, {}).get(col)
                 if cell is None:
                     sys.exit(f"validation-tables: {path}: no '{col}' for point '{p}'")
-                row.append(fmt(cell, kind, a.mj and c in ("W", "dPE")))
+                row.append(fmt(cell, kind, c in in_mj))
             rows.append((tuple(sort_key(point_value(p, key)) for _, key in keys), row))
     rows.sort(key=lambda r: r[0])  # stable: reports' own order where there is no key
     heads = (["set"] if labelled else []) + [h for h, _ in keys]
-    for c in cols:
-        h = COLUMNS[c][0]
-        heads.append(h.replace("kJ", "MJ") if a.mj and c in ("W", "dPE") else h)
+    heads += [COLUMNS[c][0].replace("kJ", "MJ") if c in in_mj else COLUMNS[c][0] for c in cols]
     out = ["| " + " | ".join(heads) + " |", "|" + "---|" * len(heads)]
     out += ["| " + " | ".join(r) + " |" for _, r in rows]
     return "\n".join(out)
