@@ -42,7 +42,10 @@ SECTIONS = {"energy": "## Energy budget", "metrics": "## Ridge metrics", "raftin
 
 def tables(path):
     """Section -> {point: {column: cell}} for the report at `path`."""
-    text = open(path, encoding="utf-8").read().split("\n")
+    try:
+        text = open(path, encoding="utf-8").read().split("\n")
+    except OSError as e:
+        sys.exit(f"validation-tables: cannot read the report {path}: {e.strerror}")
     out = {}
     for name, heading in SECTIONS.items():
         start = next((i for i, l in enumerate(text) if l.startswith(heading)), None)
