@@ -35,6 +35,7 @@ fn world(k_ne: f64, lift: f64) -> Result<World, Box<dyn std::error::Error>> {
         width: 0.30,
         thickness: 0.45,
         bevel: [0.02; 4],
+        bevel_run: None,
     };
     let mat = JointMaterial {
         e_top: 1.0e8,
@@ -64,6 +65,7 @@ fn world(k_ne: f64, lift: f64) -> Result<World, Box<dyn std::error::Error>> {
             width: 0.30,
             thickness: 0.45,
             bevel: [0.02; 4],
+            bevel_run: None,
         },
         V2::new(0.32, 0.45 + 0.001 + lift + 0.06),
         0.3,

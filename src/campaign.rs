@@ -261,6 +261,7 @@ pub fn prepare_campaign(
                     path.display()
                 )));
             }
+            check_model(&r, &path)?;
             skipped += 1;
         } else {
             todo.push(p.clone());
@@ -271,6 +272,23 @@ pub fn prepare_campaign(
         todo,
         skipped,
     })
+}
+
+/// Refuses the record `r` at `path` when an older model revision made it
+/// ([`crate::simulation::MODEL_REVISION`]): the same scene and seed no longer give its
+/// numbers, so it is no run of this campaign.
+fn check_model(r: &RunRecord, path: &Path) -> Result<(), CampaignError> {
+    let now = crate::simulation::MODEL_REVISION;
+    if r.summary.model == now {
+        return Ok(());
+    }
+    Err(CampaignError::Mismatch(format!(
+        "{} was made by model revision {} and this binary is revision {now} (the same scene \
+         and seed give other numbers now, docs/model.md \"Model revisions\"): run into a new \
+         output directory",
+        path.display(),
+        r.summary.model
+    )))
 }
 
 /// Refuses a result directory whose `campaign.json` holds another grid than `spec`.
@@ -344,6 +362,7 @@ pub fn adopt_records(
                 from.display()
             )));
         }
+        check_model(&r, &from)?;
         r.digest = Some(RunDigest {
             scene: scene_digest(&r.id, r.seed, &r.scene),
             files: Vec::new(),

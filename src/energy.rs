@@ -16,7 +16,7 @@ pub use terms::{Keep, LEDGER_TERMS, LedgerTerm, N_TERMS, Sign, TermSet, Terms, t
 /// Inputs: `work`. Sinks: `potential_energy`, `kinetic_energy`, `elastic_energy` (held, can
 /// be returned) and the dissipations, each of which can only grow from zero:
 /// `friction_dissipation`, `viscous_dissipation`, `drag_dissipation`, `joint_dissipation`,
-/// `boundary_dissipation`, `fracture_dissipation`; and two terms of the discrete model
+/// `boundary_dissipation`, `fracture_dissipation`, `plastic_dissipation`; and two terms of the discrete model
 /// without a physical sign, `contact_hysteresis` and `cut_away`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
@@ -49,6 +49,10 @@ pub struct EnergyBudget {
     pub boundary_dissipation: f64,
     /// Elastic energy joints held when they were severed (released by cracks).
     pub fracture_dissipation: f64,
+    /// Crushing at contacts: the work of the elastic normal forces held at the cap p_c·L
+    /// while the overlap grew beyond it (`contact.crushing_pressure`), a part of eq (12)'s
+    /// Φ_i (J/m). Zero without a cap.
+    pub plastic_dissipation: f64,
     /// Elastic work left in contacts when they separated, normal and tangential: zero for
     /// a conservative contact law; the area law of eq (2) with a normal that turns with the
     /// overlap is not exactly conservative, so this has no fixed sign.
@@ -58,8 +62,8 @@ pub struct EnergyBudget {
     pub cut_away: f64,
     /// Elastic energy held in contacts, joints and floe springs.
     pub elastic_energy: f64,
-    /// Everything not in Φ_f, Φ_i or drag: joint, boundary and fracture dissipation,
-    /// contact hysteresis and cut-away kinetic energy.
+    /// Everything not in Φ_f, the viscous part of Φ_i or drag: joint, boundary, fracture and
+    /// plastic dissipation, contact hysteresis and cut-away kinetic energy.
     pub other_dissipation: f64,
     /// Φ_i as eq (12) defines it: the net work of the normal contact forces, viscous
     /// (`viscous_dissipation`) plus elastic (`normal_elastic_work`) (J/m). A part of the
@@ -88,6 +92,7 @@ impl EnergyBudget {
             &mut self.joint_dissipation,
             &mut self.boundary_dissipation,
             &mut self.fracture_dissipation,
+            &mut self.plastic_dissipation,
             &mut self.contact_hysteresis,
             &mut self.cut_away,
             &mut self.elastic_energy,
@@ -184,11 +189,12 @@ mod tests {
                 "drag_dissipation",
                 "joint_dissipation",
                 "boundary_dissipation",
-                "fracture_dissipation"
+                "fracture_dissipation",
+                "plastic_dissipation"
             ]
         );
-        // Of the numbered terms, other_dissipation (14) is the largest that counts.
-        assert_eq!(b.largest_term(), 14.0);
+        // Of the numbered terms, other_dissipation (15) is the largest that counts.
+        assert_eq!(b.largest_term(), 15.0);
         assert!(LEDGER_TERMS.iter().all(|t| !t.description.is_empty()));
     }
 }

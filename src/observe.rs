@@ -441,6 +441,7 @@ mod tests {
             width,
             thickness,
             bevel: [0.0; 4],
+            bevel_run: None,
         };
         let mut add = |b: Block, x: f64, y: f64, role| {
             w.add_rect(b, V2::new(x, y), 0.0, Drive::FREE, role)

@@ -147,6 +147,7 @@ mod tests {
             joint_dissipation: 4.0,
             boundary_dissipation: 5.0,
             fracture_dissipation: 6.0,
+            plastic_dissipation: 7.0,
             ..Default::default()
         };
         let x = simulation::Sample {

@@ -18,6 +18,10 @@ pub struct Summary {
     pub seed: u64,
     /// Package version that produced the run.
     pub version: String,
+    /// Model revision that produced the run ([`MODEL_REVISION`]); runs made before it was
+    /// recorded are revision 1.
+    #[serde(default = "first_revision")]
+    pub model: u32,
     /// Simulated time (s).
     pub time: f64,
     /// Steps taken.
@@ -63,6 +67,50 @@ pub struct Summary {
     pub sheet_overrun_max: Option<f64>,
     /// Length of every rubble piece at the end (m).
     pub rubble_block_lengths: Vec<f64>,
+    /// The contacts' restitution at impacts and their damping ratios over the run; absent in
+    /// runs made before it was recorded (model revision 1).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub contacts: Option<ContactSummary>,
+}
+
+/// The revision of the simulator's physics: it changes whenever the same scene and seed give
+/// other numbers, so that a campaign never pools or resumes runs of two models
+/// (docs/model.md, "Model revisions"). 1: every run made before 2026-12-01; 2: the drag
+/// moment on the body's own outline (`dem::water`).
+pub const MODEL_REVISION: u32 = 2;
+
+fn first_revision() -> u32 {
+    1
+}
+
+/// The contacts of a run in numbers: restitution of the impacts and damping ratios of the
+/// active contacts (dimensionless), each as its 10th, 50th and 90th percentile, read from
+/// the histograms the world keeps ([`crate::dem::ContactTally`]; to the bin: 0.05 in e, a
+/// tenth of a decade in ζ).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct ContactSummary {
+    /// Impacts counted: contacts born by approach at ≥ 1 cm/s that ended within 0.1 s.
+    pub impacts: u64,
+    /// Restitution e = v_out/v_in of the impacts: 10th, 50th, 90th percentile (none without
+    /// impacts).
+    pub restitution: Option<[f64; 3]>,
+    /// Contact-samples counted for ζ (active contacts at every sample of the run).
+    pub contact_samples: u64,
+    /// Damping ratio ζ = c·sqrt(κ)/(2·sqrt(k_ne·L)) of the contacts' dashpots: 10th, 50th,
+    /// 90th percentile (none without contacts).
+    pub damping_ratio: Option<[f64; 3]>,
+}
+
+impl ContactSummary {
+    /// The summary of a world's contact tally.
+    pub fn of(t: &crate::dem::ContactTally) -> ContactSummary {
+        ContactSummary {
+            impacts: t.restitution.iter().sum(),
+            restitution: t.restitution_percentiles(),
+            contact_samples: t.zeta.iter().sum(),
+            damping_ratio: t.damping_ratio_percentiles(),
+        }
+    }
 }
 
 /// The terms of [`Summary::inputs`]: the inputs, which `summary.json` writes before
@@ -218,6 +266,7 @@ pub fn run_world(
             work_eq9 += speed * world.dt() * world.ridging_force();
         }
         if world.time() >= next - 0.5 * world.dt() {
+            world.tally_contacts();
             let s = sample(world, series.last());
             max_rel = max_rel.max(relative_residual(&s.energy));
             series.push(s);
@@ -235,6 +284,7 @@ pub fn run_world(
         scene: scene.name.clone(),
         seed: scene.seed,
         version: env!("CARGO_PKG_VERSION").into(),
+        model: MODEL_REVISION,
         time: world.time(),
         steps: world.steps(),
         dt: world.dt(),
@@ -255,6 +305,7 @@ pub fn run_world(
         max_handover_overlap: world.handovers().max_area,
         sheet_overrun_max: overrun,
         rubble_block_lengths: rubble_lengths(world),
+        contacts: Some(ContactSummary::of(world.contact_tally())),
     };
     Ok(RunOutput {
         summary,

@@ -16,6 +16,7 @@ fn block() -> Block {
         width: W,
         thickness: H,
         bevel: [0.0; 4],
+        bevel_run: None,
     }
 }
 

@@ -70,6 +70,7 @@ fn row_of(w: &mut World, n: usize, y: f64, first: Drive, mat: JointMaterial) -> 
             width: W,
             thickness: H,
             bevel: [0.0; 4],
+            bevel_run: None,
         };
         let drive = if k == 0 { first } else { Drive::FREE };
         let id = w

@@ -271,6 +271,7 @@ fn chain_limit_holds(dashpot: Dashpot, bound: f64) -> f64 {
                 width: 0.25,
                 thickness: 0.30,
                 bevel: [0.0; 4],
+                bevel_run: None,
             };
             let id = w
                 .add_rect(

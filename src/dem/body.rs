@@ -105,27 +105,48 @@ impl Shape {
         thickness: f64,
         bevel: [f64; 4],
     ) -> Result<Shape, ShapeError> {
+        Self::bevelled_rectangle_legs(width, thickness, bevel, bevel)
+    }
+
+    /// A rectangle `width × thickness` (m) whose corners are cut by straight bevels that
+    /// drop `drop[k]` (m) along the vertical faces and run `run[k]` (m) along the horizontal
+    /// faces (a bevel of slope drop/run, 45° when they are equal), corners ordered
+    /// bottom-left, bottom-right, top-right, top-left. A corner with a zero leg stays square.
+    pub fn bevelled_rectangle_legs(
+        width: f64,
+        thickness: f64,
+        drop: [f64; 4],
+        run: [f64; 4],
+    ) -> Result<Shape, ShapeError> {
         if !(width > 0.0 && thickness > 0.0 && width.is_finite() && thickness.is_finite()) {
             return Err(ShapeError::Dimensions(format!(
                 "width {width} m and thickness {thickness} m must be positive"
             )));
         }
-        for (k, &b) in bevel.iter().enumerate() {
-            if !(b >= 0.0 && b < width.min(thickness)) {
+        for k in 0..4 {
+            let (d, r) = (drop[k], run[k]);
+            if !(d >= 0.0 && d < thickness && r >= 0.0 && r < width) {
                 return Err(ShapeError::Dimensions(format!(
-                    "bevel {k} of {b} m must lie in [0, {}) m",
-                    width.min(thickness)
+                    "bevel {k} of drop {d} m and run {r} m must lie in [0, {thickness}) m and \
+                     [0, {width}) m",
+                )));
+            }
+            if (d > 0.0) != (r > 0.0) {
+                return Err(ShapeError::Dimensions(format!(
+                    "bevel {k} has a drop of {d} m and a run of {r} m: both or neither"
                 )));
             }
         }
-        // Neighbouring bevels must not meet: bottom, right, top and left sides in turn.
+        // Neighbouring bevels must not meet: bottom, right, top and left sides in turn
+        // (runs on the horizontal sides, drops on the vertical ones).
         for (k, side) in [width, thickness, width, thickness].iter().enumerate() {
-            if bevel[k] + bevel[(k + 1) % 4] >= *side {
+            let legs = if k % 2 == 0 { &run } else { &drop };
+            if legs[k] + legs[(k + 1) % 4] >= *side {
                 return Err(ShapeError::Dimensions(format!(
                     "bevels {k} and {} ({} m, {} m) overlap on a side of {side} m",
                     (k + 1) % 4,
-                    bevel[k],
-                    bevel[(k + 1) % 4]
+                    legs[k],
+                    legs[(k + 1) % 4]
                 )));
             }
         }
@@ -138,9 +159,15 @@ impl Shape {
         ];
         let mut v = Vec::with_capacity(8);
         for (k, &(c, into_prev, into_next)) in corners.iter().enumerate() {
-            if bevel[k] > 0.0 {
-                v.push(c + into_prev * bevel[k]);
-                v.push(c + into_next * bevel[k]);
+            if drop[k] > 0.0 {
+                // The edge before a corner is vertical at even corners, horizontal at odd.
+                let (before, after) = if k % 2 == 0 {
+                    (drop[k], run[k])
+                } else {
+                    (run[k], drop[k])
+                };
+                v.push(c + into_prev * before);
+                v.push(c + into_next * after);
             } else {
                 v.push(c);
             }
@@ -148,10 +175,12 @@ impl Shape {
         Self::convex(&v)
     }
 
-    /// Centroid of a bevelled rectangle relative to the rectangle's centre (m).
-    pub(crate) fn bevel_centroid(width: f64, thickness: f64, bevel: [f64; 4]) -> V2 {
-        // Each cut removes a right triangle of legs b at a corner; its centroid lies b/3
-        // in from the corner along both sides.
+    /// Centroid of a bevelled rectangle relative to the rectangle's centre (m), for the
+    /// bevels' drops `drop` and runs `run` (m) (see [`Shape::bevelled_rectangle_legs`]).
+    pub(crate) fn bevel_centroid(width: f64, thickness: f64, drop: [f64; 4], run: [f64; 4]) -> V2 {
+        // Each cut removes a right triangle of legs d (vertical) and r (horizontal) at a
+        // corner; its centroid lies r/3 in from the corner along the horizontal side and
+        // d/3 along the vertical one.
         let (w, h) = (0.5 * width, 0.5 * thickness);
         let corners = [
             V2::new(-w, -h),
@@ -162,10 +191,10 @@ impl Shape {
         let mut m = V2::default();
         let mut a = width * thickness;
         for (k, c) in corners.iter().enumerate() {
-            let b = bevel[k];
-            if b > 0.0 {
-                let tri = 0.5 * b * b;
-                let inward = V2::new(-c.x.signum(), -c.y.signum()) * (b / 3.0);
+            let (d, r) = (drop[k], run[k]);
+            if d > 0.0 {
+                let tri = 0.5 * d * r;
+                let inward = V2::new(-c.x.signum() * (r / 3.0), -c.y.signum() * (d / 3.0));
                 m = m - (*c + inward) * tri;
                 a -= tri;
             }
@@ -261,18 +290,36 @@ pub struct Block {
     pub width: f64,
     /// Thickness h (m).
     pub thickness: f64,
-    /// Bevel legs (m): bottom-left, bottom-right, top-right, top-left.
+    /// Bevel legs (m): bottom-left, bottom-right, top-right, top-left; for a bevel that is
+    /// not at 45° (`bevel_run`), its drop along the vertical face.
     pub bevel: [f64; 4],
+    /// The bevels' runs along the horizontal faces (m), in the order of `bevel`, where they
+    /// differ from the drops; `None` for 45° bevels (run = drop). Absent when `None`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bevel_run: Option<[f64; 4]>,
 }
 
 impl Block {
+    /// A block `width × thickness` (m) with 45° bevels of legs `bevel` (m).
+    pub fn new(width: f64, thickness: f64, bevel: [f64; 4]) -> Block {
+        Block {
+            width,
+            thickness,
+            bevel,
+            bevel_run: None,
+        }
+    }
+    /// The bevels' runs along the horizontal faces (m).
+    pub(crate) fn runs(&self) -> [f64; 4] {
+        self.bevel_run.unwrap_or(self.bevel)
+    }
     /// The rectangle's centre relative to the body's centroid, in the body frame (m).
     pub(crate) fn rect_centre(&self) -> V2 {
-        -Shape::bevel_centroid(self.width, self.thickness, self.bevel)
+        -Shape::bevel_centroid(self.width, self.thickness, self.bevel, self.runs())
     }
     /// The shape of this block.
     pub fn shape(&self) -> Result<Shape, ShapeError> {
-        Shape::bevelled_rectangle(self.width, self.thickness, self.bevel)
+        Shape::bevelled_rectangle_legs(self.width, self.thickness, self.bevel, self.runs())
     }
 }
 
@@ -499,7 +546,7 @@ mod tests {
     #[test]
     fn bevel_centroid_matches_the_polygon() {
         let bev = [0.05, 0.0, 0.12, 0.02];
-        let c = Shape::bevel_centroid(0.25, 0.3, bev);
+        let c = Shape::bevel_centroid(0.25, 0.3, bev, bev);
         let (w, h) = (0.125, 0.15);
         let mut v = vec![];
         let corners = [(-w, -h), (w, -h), (w, h), (-w, h)];

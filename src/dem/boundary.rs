@@ -39,8 +39,11 @@ pub(crate) struct SheetBoundary {
     pub(crate) seed: u64,
     /// Joints made so far (the variation of joint k is drawn from (seed, k)).
     pub(crate) joints_made: u64,
-    /// Bevel leg at the bottom of the sheet tip, point B (m).
+    /// Bevel leg at the bottom of the sheet tip, point B (m): its drop up the tip's face.
     pub(crate) tip_bevel: f64,
+    /// The tip bevel's run along the sheet's bottom (m), or `None` at 45° (run = drop).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(crate) tip_bevel_run: Option<f64>,
     /// Bevel leg on the corners of a broken face (m).
     pub(crate) corner_bevel: f64,
     /// Decay constant of eq (8) (dimensionless).

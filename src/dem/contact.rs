@@ -15,12 +15,51 @@
 //! it resists only further penetration, F_e = k_ne·max(A − A_f, 0), starts its rate from
 //! A₀ = A, and A_f only ever decreases (A_f ← min(A_f, A)), so once the blocks separate it
 //! is an ordinary contact. The paper does not discuss this hand-over.
+//!
+//! Two options the 1994 paper leaves open ([`ContactParams::crushing_pressure`],
+//! [`ContactParams::damping_law`]): a plastic limit on the elastic force, as the report the
+//! paper defers its details to describes the contact law ("the magnitude of the contact
+//! force is limited by the strength of the material. If the contact force reaches this
+//! limit, further deformation is non-recoverable", Hopkins 1992), and eq (3)'s k_nv read
+//! per contact. Off by default (the 1994 text: "a viscous elastic normal force model").
 
 use super::body::Bodies;
 use super::broadphase::{pair_key, unpack};
 use super::geometry::{Overlap, OverlapScratch, V2, overlap_with};
 use super::numerics::{ContactOnset, Dashpot};
+
+mod tally;
 use serde::{Deserialize, Serialize};
+pub use tally::ContactTally;
+
+/// Whose critical damping eq (3)'s k_nv is a fraction of.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum DampingLaw {
+    /// As the paper writes it: k_nv = f·2·sqrt(k_ne·h·ρ_i), the critical damping per unit
+    /// chord of a slab of the parent sheet's thickness h pressed flat on a rigid face, the
+    /// same for every contact (dashpot c = k_nv·L on the approach speed). A contact of chord
+    /// L between bodies of inverse effective normal mass κ then has the damping ratio
+    /// ζ = f·sqrt(L·h·ρ_i·κ): about 0.1 at a 1-cm corner chord against a 0.9-m piece.
+    #[default]
+    Sheet,
+    /// Each contact gets the fraction f of its own critical damping, c = f·2·sqrt(k_ne·L/κ)
+    /// (k_ne·L its normal stiffness per metre of approach, 1/κ its effective mass along
+    /// the normal): ζ = f at every chord.
+    Contact,
+}
+
+impl DampingLaw {
+    /// True for [`DampingLaw::Sheet`] (a serde skip test).
+    pub fn is_sheet(&self) -> bool {
+        *self == DampingLaw::Sheet
+    }
+}
+
+/// A serde skip test for a value that is absent when zero.
+pub(crate) fn is_zero_f64(x: &f64) -> bool {
+    *x == 0.0
+}
 
 /// Parameters of the contact law. Defaults follow Hopkins (1994), Table 1 and the text of
 /// "Numerical Ridge Growth Experiments".
@@ -48,6 +87,18 @@ pub struct ContactParams {
     /// Friction coefficient μ_w for contacts whose overlap centroid is below the water line
     /// (dimensionless). Default 0.6.
     pub mu_water: f64,
+    /// Whose critical damping `damping_fraction` refers to ([`DampingLaw`]). Default
+    /// [`DampingLaw::Sheet`], eq (3) as written; absent from scenes at the default.
+    #[serde(default, skip_serializing_if = "DampingLaw::is_sheet")]
+    pub damping_law: DampingLaw,
+    /// Crushing pressure p_c (Pa) that caps the elastic normal force of eq (2) at p_c·L, the
+    /// pressure on the contact's chord L over the 1-m depth: overlap pressed beyond the cap
+    /// is crushed, kept as the contact's plastic overlap A_p (F_e = k_ne·(A − A_p) after),
+    /// and its work p_c·ΔA_p is dissipated (`plastic_dissipation`, part of eq (12)'s Φ_i).
+    /// Default 0: no cap (the 1994 paper's "viscous elastic normal force model"); absent
+    /// from scenes at the default.
+    #[serde(default, skip_serializing_if = "is_zero_f64")]
+    pub crushing_pressure: f64,
 }
 
 impl Default for ContactParams {
@@ -59,6 +110,8 @@ impl Default for ContactParams {
             reference_thickness: None,
             mu: 1.0,
             mu_water: 0.6,
+            damping_law: DampingLaw::Sheet,
+            crushing_pressure: 0.0,
         }
     }
 }
@@ -76,10 +129,6 @@ impl ContactParams {
     /// for ice density `rho_i` (kg/m³), eq (3).
     pub fn viscous_coefficient(&self, rho_i: f64) -> f64 {
         self.damping_fraction * 2.0 * (self.normal_stiffness * self.thickness() * rho_i).sqrt()
-    }
-    /// k_nv for a parent sheet of thickness `h` (m) (kg/(m²·s)).
-    pub(crate) fn viscous_coefficient_for(&self, h: f64, rho_i: f64) -> f64 {
-        self.damping_fraction * 2.0 * (self.normal_stiffness * h * rho_i).sqrt()
     }
     /// Tangential stiffness of eq (4) per metre of a contact's chord L (N/m³): a contact's
     /// k_te = `tangential_fraction`·k_ne·L (N/m²), 60 % of its normal stiffness k_ne·L.
@@ -110,6 +159,24 @@ pub struct Contact {
     /// decreases. Zero for every contact born by approach.
     #[serde(default)]
     pub(crate) forgiven: f64,
+    /// Plastic overlap A_p (m²): overlap crushed beyond the cap p_c·L
+    /// ([`ContactParams::crushing_pressure`]), not pushed against; it only grows.
+    #[serde(default)]
+    pub(crate) plastic: f64,
+    /// Approach speed along the normal when the contact began (m/s, ≥ 0); 0 for a contact
+    /// born overlapping. With `vn` and `steps` it gives the restitution of an impact.
+    #[serde(default)]
+    pub(crate) approach: f64,
+    /// Normal relative speed of the last step (m/s, positive when separating).
+    #[serde(default)]
+    pub(crate) vn: f64,
+    /// Steps the contact has been active.
+    #[serde(default)]
+    pub(crate) steps: u32,
+    /// Damping ratio ζ of the contact's dashpot this step, c·sqrt(κ)/(2·sqrt(k_ne·L))
+    /// (dimensionless): a diagnostic, not state.
+    #[serde(skip)]
+    pub(crate) zeta: f64,
     /// Point of action: the overlap centroid (m).
     pub point: V2,
     /// Unit normal from `a` to `b`.
@@ -173,6 +240,11 @@ pub(crate) struct ContactWork {
     /// frictional dissipation Φ_f of eq (11).
     #[serde(default)]
     pub slip: f64,
+    /// Crushing dissipation of the cap on the elastic normal force (J/m): p_c·ΔA_p, the
+    /// capped force p_c·L times the plastic approach ΔA_p/L, summed over the steps; a part
+    /// of `normal_elastic` (eq (12) books it with the elastic force).
+    #[serde(default)]
+    pub plastic: f64,
 }
 
 /// All active contacts, sorted by pair key, with a swap buffer for the next step.
@@ -184,6 +256,8 @@ pub(crate) struct ContactSet {
     pending: Vec<Pending>,
     /// Working space of the overlap geometry.
     scratch: OverlapScratch,
+    /// Restitution and damping-ratio histograms.
+    pub(crate) tally: ContactTally,
 }
 
 /// A contact's viscous and friction inputs, kept between the passes of the implicit
@@ -200,6 +274,8 @@ struct Pending {
     slip: f64,
     /// The contact's tangential stiffness k_te (N/m²).
     k_te: f64,
+    /// The pair's inverse effective mass along the normal κ (1/(kg/m)).
+    kappa: f64,
 }
 
 impl ContactSet {
@@ -255,11 +331,13 @@ impl ContactSet {
         self.pending.clear();
         let k_ne = p.normal_stiffness;
         let k_te_per_chord = p.tangential_stiffness_per_chord();
+        let p_c = p.crushing_pressure;
         let mut j = 0;
         for &key in pairs {
             // Contacts of the last step whose pair is no longer a candidate have separated;
             // the elastic work they held stays booked and shows as `contact_hysteresis`.
             while j < self.prev.len() && self.prev[j].key < key {
+                self.tally.ended(&self.prev[j], dt);
                 j += 1;
             }
             let old = if j < self.prev.len() && self.prev[j].key == key {
@@ -277,41 +355,75 @@ impl ContactSet {
                 bodies.pos[b],
                 &mut self.scratch,
             ) else {
+                if let Some(o) = &old {
+                    self.tally.ended(o, dt);
+                }
                 continue;
             };
-            let (area0, ft0, stored, stored_t, forgiven) = old
-                .map_or((0.0, 0.0, 0.0, 0.0, 0.0), |o| {
-                    (o.area, o.ft, o.stored, o.stored_t, o.forgiven)
-                });
-            let forgiven = forgiven.min(ov.area);
+            let o = old.unwrap_or_default();
+            let forgiven = o.forgiven.min(ov.area);
             let n = ov.normal;
             let t = n.perp();
-            // Eq (2), less any forgiven overlap, and eq (3); the sum never pulls.
-            let fe = k_ne * (ov.area - forgiven);
             // Eq (4) with the relative velocity at the overlap centroid at n − ½.
             let vrel =
                 bodies.point_velocity(b, ov.centroid) - bodies.point_velocity(a, ov.centroid);
+            let vn = vrel.dot(n);
             // The contact's length L: its dashpot is k_nv·L and its tangential spring
             // k_te = f·k_ne·L (eq 4, "60% of the normal value" k_ne·L).
             let chord = contact_length(&ov, bodies, a, b);
+            // Eq (2), less any forgiven and crushed overlap, capped at p_c·L; the crushed
+            // part's work is dissipated.
+            let mut plastic = o.plastic;
+            let mut fe = (k_ne * (ov.area - forgiven - plastic)).max(0.0);
+            let mut stored = o.stored;
+            if p_c > 0.0 && fe > p_c * chord {
+                let grown = (fe - p_c * chord) / k_ne;
+                plastic += grown;
+                fe = p_c * chord;
+                stored -= p_c * grown;
+                work.plastic += p_c * grown;
+            }
+            let kappa = bodies.inverse_mass_along(a, ov.centroid, n)
+                + bodies.inverse_mass_along(b, ov.centroid, n);
+            // Eq (3): the dashpot c on the approach speed, from the paper's k_nv per unit
+            // chord or from this contact's own critical damping.
+            let damping = match p.damping_law {
+                DampingLaw::Sheet => k_nv * chord,
+                DampingLaw::Contact if kappa > 0.0 => {
+                    p.damping_fraction * 2.0 * (k_ne * chord / kappa).sqrt()
+                }
+                DampingLaw::Contact => 0.0,
+            };
             let rate = if old.is_none() && onset == ContactOnset::Velocity {
-                k_nv * chord * (-vrel.dot(n)).max(0.0)
+                damping * (-vn).max(0.0)
             } else {
-                k_nv * (ov.area - area0) / dt
+                match p.damping_law {
+                    DampingLaw::Sheet => k_nv * (ov.area - o.area) / dt,
+                    DampingLaw::Contact => damping * (ov.area - o.area) / (chord * dt),
+                }
             };
             let mu = match water_level {
                 Some(l) if ov.centroid.y < l => p.mu_water,
                 _ => p.mu,
             };
             let k_te = k_te_per_chord * chord;
-            let slip = ft0 - k_te * dt * vrel.dot(t);
+            let slip = o.ft - k_te * dt * vrel.dot(t);
             let mut c = Contact {
                 key: pair_key(a as u32, b as u32),
                 area: ov.area,
                 ft: 0.0,
                 stored,
-                stored_t,
+                stored_t: o.stored_t,
                 forgiven,
+                plastic,
+                approach: if old.is_none() {
+                    (-vn).max(0.0)
+                } else {
+                    o.approach
+                },
+                vn,
+                steps: o.steps.saturating_add(1),
+                zeta: damping * kappa.sqrt() / (2.0 * (k_ne * chord).sqrt()),
                 point: ov.centroid,
                 normal: n,
                 fn_elastic: fe,
@@ -324,19 +436,24 @@ impl ContactSet {
                     apply_pair(bodies, key, f, ov.centroid);
                 }
                 Dashpot::Implicit => {
-                    // The dashpot c = k_nv·L; its viscous and friction forces wait for
-                    // every other force of the step (pass 2 below).
+                    // The dashpot c; its viscous and friction forces wait for every other
+                    // force of the step (pass 2 below).
                     apply_pair(bodies, key, n * fe, ov.centroid);
                     self.pending.push(Pending {
                         rate,
-                        damping: k_nv * chord,
+                        damping,
                         mu,
                         slip,
                         k_te,
+                        kappa,
                     });
                 }
             }
             self.cur.push(c);
+        }
+        while j < self.prev.len() {
+            self.tally.ended(&self.prev[j], dt);
+            j += 1;
         }
         if dashpot == Dashpot::Implicit && sweeps > 0 {
             self.sweep_dashpots(bodies, dt, sweeps, work);
@@ -416,6 +533,13 @@ impl ContactSet {
         }
     }
 
+    /// Adds the damping ratio of every active contact to the tally.
+    pub(crate) fn tally_zeta(&mut self) {
+        for c in &self.cur {
+            self.tally.add_zeta(c.zeta);
+        }
+    }
+
     /// Energy held by the active contacts (J/m): elastic normal work not yet returned, and
     /// the tangential work booked less slip dissipation (the tangential springs' energy
     /// F_t²/(2·k_te) to the step's accuracy).
@@ -445,9 +569,8 @@ fn centred_viscous(bodies: &Bodies, c: &Contact, q: &Pending, dt: f64) -> f64 {
     let (a, b) = unpack(c.key);
     let (a, b) = (a as usize, b as usize);
     let n = c.normal;
-    let kappa = bodies.inverse_mass_along(a, c.point, n) + bodies.inverse_mass_along(b, c.point, n);
     let an = (bodies.point_acceleration(b, c.point) - bodies.point_acceleration(a, c.point)).dot(n);
-    let x = 0.5 * q.damping * dt * kappa;
+    let x = 0.5 * q.damping * dt * q.kappa;
     (q.rate - 0.5 * q.damping * dt * an) / (1.0 + x)
 }
 

@@ -68,11 +68,12 @@ pub(crate) fn budget(time: f64, acc: &Accumulators, kinetic_now: f64, st: &Store
     let friction_dissipation = c.slip;
     let elastic_energy =
         st.contact_normal + st.contact_tangential + acc.joints.held() + acc.boundary.springs;
-    let contact_hysteresis =
-        (c.normal_elastic + c.tangential - c.slip) - (st.contact_normal + st.contact_tangential);
+    let contact_hysteresis = (c.normal_elastic + c.tangential - c.slip - c.plastic)
+        - (st.contact_normal + st.contact_tangential);
     let fracture_dissipation = acc.joints.released;
     let boundary_dissipation = acc.boundary.damping + acc.global_damping;
     let other_dissipation = contact_hysteresis
+        + c.plastic
         + fracture_dissipation
         + acc.joints.viscous
         + boundary_dissipation
@@ -96,6 +97,7 @@ pub(crate) fn budget(time: f64, acc: &Accumulators, kinetic_now: f64, st: &Store
         joint_dissipation: acc.joints.viscous,
         boundary_dissipation,
         fracture_dissipation,
+        plastic_dissipation: c.plastic,
         contact_hysteresis,
         cut_away: acc.cut_away,
         elastic_energy,

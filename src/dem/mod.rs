@@ -29,7 +29,7 @@ mod water;
 mod world;
 
 pub use body::{Block, Bodies, BodyId, Drive, Role, Shape, ShapeError};
-pub use contact::{Contact, ContactParams, DEFAULT_REFERENCE_THICKNESS};
+pub use contact::{Contact, ContactParams, ContactTally, DEFAULT_REFERENCE_THICKNESS, DampingLaw};
 pub use geometry::{MAX_VERTS, Outline, Poly, V2};
 pub use joint::{Joint, JointMaterial, SurfaceStress};
 pub use numerics::{ContactOnset, Dashpot};

@@ -8,8 +8,16 @@
 //! - force  F = −(½·ρ_w·C_d·ℓ·|v_s| + c_lin·A_s)·v_s at the submerged centroid, where v_s is
 //!   the velocity of that point and ℓ the width of the submerged part seen by the flow
 //!   (its extent perpendicular to v_s);
-//! - moment M = −(ρ_w·C_d·D⁴/64)·|ω|·ω, the strip-theory moment on a plate of length D
-//!   spinning about its middle, with D the diagonal of the submerged part's bounding box.
+//! - moment M = −½·ρ_w·C_d·|ω|·ω·J, the same quadratic pressure ½·ρ_w·C_d·v_n² on every
+//!   element of the submerged outline that the spin drives into the water (v_n = ω·q, its
+//!   normal speed, q = (p − x_c) × n its lever about the body's centroid x_c), summed as a
+//!   moment: J = ∫ max(±q, 0)³ ds over the wetted edges (the water line is no face), the
+//!   sign that of ω. J belongs to the outline, so the moment does not change when the
+//!   same block turns ([`spin_drag_lever`]); for a plate of length D it is D⁴/32, the
+//!   strip-theory moment ρ_w·C_d·D⁴/64·ω² of a plate spinning about its middle. (Until
+//!   2026-12-01 J was taken from the diagonal of the submerged part's axis-aligned bounding
+//!   box, which made a block tilted by 45° feel up to three times the moment of the same
+//!   block level.)
 //!
 //! By default drag acts on free blocks and rubble, not on the blocks of the sheet or the
 //! floe ([`DragBodies::Rubble`]): the paper models the water's damping of those by the
@@ -19,6 +27,8 @@
 //! measure that choice (`docs/choices.md`).
 
 use super::body::{Bodies, Role};
+use super::broadphase::unpack;
+use super::contact::Contact;
 use super::geometry::{ClipPoly, V2, area_centroid, clip_below_into};
 use serde::{Deserialize, Serialize};
 
@@ -38,6 +48,11 @@ pub struct WaterParams {
     pub linear_drag: f64,
     /// Which bodies feel drag (both laws). Default [`DragBodies::Rubble`].
     pub drag_bodies: DragBodies,
+    /// Shielding of packed rubble (count of contacts): a body with at least this many
+    /// contacts centred below the water line at the last step feels no form drag, force or
+    /// moment (its faces are against other blocks, not open water). Default 0: never
+    /// shielded, every submerged block feels the drag of an isolated one.
+    pub shielding_contacts: u32,
 }
 
 /// Which bodies feel water drag. The paper names drag among the dissipative mechanisms
@@ -68,6 +83,7 @@ impl Default for WaterParams {
             drag_coefficient: 1.0,
             linear_drag: 0.0,
             drag_bodies: DragBodies::Rubble,
+            shielding_contacts: 0,
         }
     }
 }
@@ -93,8 +109,9 @@ pub(crate) struct WaterWork {
 
 impl WaterForces {
     /// Computes buoyancy and drag on every body from its current outline and half-step
-    /// velocities, and adds them to the body forces. `g` is gravity (m/s²).
-    pub fn apply(&mut self, bodies: &mut Bodies, w: &WaterParams, g: f64) {
+    /// velocities, and adds them to the body forces. `g` is gravity (m/s²). `shielded[i]`
+    /// (when not empty) exempts body `i` from form drag ([`WaterParams::shielding_contacts`]).
+    pub fn apply(&mut self, bodies: &mut Bodies, w: &WaterParams, g: f64, shielded: &[bool]) {
         let n = bodies.len();
         self.buoyancy.resize(n, (0.0, V2::default()));
         self.drag.resize(n, (V2::default(), V2::default(), 0.0));
@@ -125,9 +142,10 @@ impl WaterForces {
             // The sheet and the floe feel the water's damping through their own boundary
             // forces (eqs 7–8; the floe's dashpots): by default drag acts on free blocks
             // and rubble only.
-            let shielded =
+            let boundary_body =
                 w.drag_bodies.is_rubble() && matches!(bodies.role[i], Role::Sheet | Role::Floe);
-            if !drag_on || shielded {
+            let packed = shielded.get(i).copied().unwrap_or(false);
+            if !drag_on || boundary_body || packed {
                 self.drag[i] = (V2::default(), V2::default(), 0.0);
                 continue;
             }
@@ -152,20 +170,8 @@ impl WaterForces {
             let om = bodies.omega[i];
             let mut m = 0.0;
             if om != 0.0 && w.drag_coefficient > 0.0 {
-                let (mut x0, mut x1, mut y0, mut y1) = (
-                    f64::INFINITY,
-                    f64::NEG_INFINITY,
-                    f64::INFINITY,
-                    f64::NEG_INFINITY,
-                );
-                for &p in verts {
-                    x0 = x0.min(p.x);
-                    x1 = x1.max(p.x);
-                    y0 = y0.min(p.y);
-                    y1 = y1.max(p.y);
-                }
-                let d2 = (x1 - x0).powi(2) + (y1 - y0).powi(2);
-                m = -w.density * w.drag_coefficient * d2 * d2 / 64.0 * om.abs() * om;
+                let lever = spin_drag_lever(verts, bodies.pos[i], w.level, om > 0.0);
+                m = -0.5 * w.density * w.drag_coefficient * lever * om.abs() * om;
             }
             bodies.apply(i, f, c);
             bodies.torque[i] += m;
@@ -193,5 +199,97 @@ impl WaterForces {
             let vd = vbar[i] + (p - bodies.pos[i]).perp() * wbar[i];
             work.drag -= (f.dot(vd) + m * wbar[i]) * dt;
         }
+    }
+}
+
+/// Which of the `n` bodies are shielded from form drag ([`WaterParams::shielding_contacts`]):
+/// those with at least that many of `contacts` (the last step's) centred below the water
+/// line. Left empty when shielding is off.
+pub(crate) fn shielded_bodies(
+    contacts: &[Contact],
+    n: usize,
+    w: &WaterParams,
+    out: &mut Vec<bool>,
+) {
+    out.clear();
+    if w.shielding_contacts == 0 {
+        return;
+    }
+    let mut count = vec![0u32; n];
+    for c in contacts.iter().filter(|c| c.point.y < w.level) {
+        let (a, b) = unpack(c.key);
+        count[a as usize] += 1;
+        count[b as usize] += 1;
+    }
+    out.extend(count.into_iter().map(|k| k >= w.shielding_contacts));
+}
+
+/// The lever J (m⁴) of the spin drag moment M = −½·ρ_w·C_d·|ω|·ω·J on the wetted outline
+/// `verts` (a convex, counter-clockwise polygon, m) of a body turning about `centre` (m),
+/// for a positive spin when `positive` (else a negative one): J = ∫ max(±q, 0)³ ds over its
+/// edges, q = (p − centre) × n the lever of the outward normal n at p. Along an edge q falls
+/// at unit rate (dq/ds = −1), so each edge gives (max(±q_a, 0)⁴ − max(±q_b, 0)⁴)/4 from its
+/// ends a and b. Edges on the water line `level` (m) are the surface, not a face, and are
+/// left out. It depends on the outline alone, not on how the body is turned.
+pub(crate) fn spin_drag_lever(verts: &[V2], centre: V2, level: f64, positive: bool) -> f64 {
+    let n = verts.len();
+    let sign = if positive { 1.0 } else { -1.0 };
+    let on_surface = |p: V2| (p.y - level).abs() <= 1e-9;
+    let mut j = 0.0;
+    for k in 0..n {
+        let (a, b) = (verts[k], verts[(k + 1) % n]);
+        if on_surface(a) && on_surface(b) {
+            continue;
+        }
+        let e = b - a;
+        let len = e.norm();
+        if len == 0.0 {
+            continue;
+        }
+        let normal = V2::new(e.y / len, -e.x / len);
+        let qa = sign * (a - centre).cross(normal);
+        let qb = sign * (b - centre).cross(normal);
+        j += (qa.max(0.0).powi(4) - qb.max(0.0).powi(4)).abs() * 0.25;
+    }
+    j
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// J of a thin plate of length D is D⁴/32 (strip theory: the moment ρ_w·C_d·D⁴/64·ω²);
+    /// of a rectangle turned by any angle (a⁴ + b⁴)/32; a face on the water line adds
+    /// nothing, so the half below the line of a rectangle whose centroid lies on it has the
+    /// lever of its three wetted faces.
+    #[test]
+    fn spin_drag_lever_of_plates_rectangles_and_cut_outlines() {
+        let rect = |a: f64, b: f64, th: f64| {
+            let (s, c) = th.sin_cos();
+            [(-a, -b), (a, -b), (a, b), (-a, b)]
+                .map(|(x, y)| V2::new(0.5 * x, 0.5 * y).rotate(c, s))
+        };
+        let plate = spin_drag_lever(&rect(2.0, 1e-9, 0.0), V2::default(), -10.0, true);
+        assert!((plate - 16.0 / 32.0).abs() < 1e-9, "{plate}");
+        for th in [0.0, 0.3, 0.8, 2.0] {
+            let j = spin_drag_lever(&rect(1.0, 0.3, th), V2::default(), -10.0, th > 1.0);
+            assert!(
+                (j - (1.0 + 0.3f64.powi(4)) / 32.0).abs() < 1e-12,
+                "{th}: {j}"
+            );
+        }
+        // The lower half of a 1 × 0.3 rectangle, cut at its centroid's level y = 0, spun
+        // anticlockwise: the bottom face drives water ahead of its right half (0.5⁴/4), the
+        // wetted right face ahead of itself (0.15⁴/4), the left face not, the cut face is
+        // the surface.
+        let half = [
+            V2::new(-0.5, -0.15),
+            V2::new(0.5, -0.15),
+            V2::new(0.5, 0.0),
+            V2::new(-0.5, 0.0),
+        ];
+        let j = spin_drag_lever(&half, V2::default(), 0.0, true);
+        let want = 0.5f64.powi(4) / 4.0 + 0.15f64.powi(4) / 4.0;
+        assert!((j - want).abs() < 1e-12, "{j} against {want}");
     }
 }

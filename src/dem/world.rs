@@ -16,13 +16,13 @@
 use super::body::{Block, Bodies, BodyId, Drive, Role, Shape};
 use super::boundary::Boundary;
 use super::broadphase::{SweepAndPrune, pair_key};
-use super::contact::{Contact, ContactSet};
+use super::contact::{Contact, ContactSet, ContactTally};
 use super::fracture::JointSet;
 use super::geometry::{V2, below_line, overlap};
 use super::joint::{Joint, JointMaterial};
 use super::ledger::{Accumulators, Stored, budget};
 use super::numerics::Dashpot;
-use super::water::WaterForces;
+use super::water::{WaterForces, shielded_bodies};
 use crate::energy::EnergyBudget;
 use serde::{Deserialize, Serialize};
 
@@ -49,7 +49,7 @@ pub use snapshot::{BodyState, Snapshot};
 /// // Two 0.25 m × 0.30 m blocks centred on the water line (y = 0 m), joined face to face:
 /// // the left one held, the right one free to sag under gravity and buoyancy.
 /// let mut w = World::new(WorldParams::default())?;
-/// let block = Block { width: 0.25, thickness: 0.30, bevel: [0.0; 4] };
+/// let block = Block::new(0.25, 0.30, [0.0; 4]); // m: width, thickness, bevel legs
 /// let a = w.add_rect(block, V2::new(0.125, 0.0), 0.0, Drive::FIXED, Role::Sheet)?;
 /// let b = w.add_rect(block, V2::new(0.375, 0.0), 0.0, Drive::FREE, Role::Sheet)?;
 /// let mat = JointMaterial {
@@ -98,6 +98,8 @@ pub struct World {
     omega_old: Vec<f64>,
     vbar: Vec<V2>,
     wbar: Vec<f64>,
+    /// Bodies shielded from form drag this step (`dem::water::shielded_bodies`).
+    shielded: Vec<bool>,
 }
 
 impl World {
@@ -127,6 +129,7 @@ impl World {
             omega_old: Vec::new(),
             vbar: Vec::new(),
             wbar: Vec::new(),
+            shielded: Vec::new(),
         })
     }
 
@@ -213,7 +216,7 @@ impl World {
     /// use pressridge::dem::{Block, Drive, Role, V2, World, WorldParams};
     ///
     /// let mut w = World::new(WorldParams::default())?;
-    /// let block = Block { width: 0.25, thickness: 0.30, bevel: [0.0; 4] };
+    /// let block = Block::new(0.25, 0.30, [0.0; 4]); // m: width, thickness, bevel legs
     /// let id = w.add_rect(block, V2::new(0.0, 0.0), 0.0, Drive::FREE, Role::Rubble)?;
     /// for _ in 0..100 {
     ///     w.step(); // gravity and buoyancy move it towards its floating level
@@ -250,6 +253,18 @@ impl World {
             .map(|&(id, _)| self.bodies.aabb[id as usize].min.x)
             .reduce(f64::min)?;
         Some(self.bodies.aabb[tip as usize].max.x - nose)
+    }
+
+    /// Adds the damping ratio ζ of every active contact to the contacts' tally (call it at
+    /// regular instants, e.g. at every sample of a run): see [`World::contact_tally`].
+    pub fn tally_contacts(&mut self) {
+        self.contacts.tally_zeta();
+    }
+
+    /// The contacts' tally so far: the restitution of every impact, and the damping ratios
+    /// counted by [`World::tally_contacts`].
+    pub fn contact_tally(&self) -> &ContactTally {
+        &self.contacts.tally
     }
 
     /// Number of joints severed so far.
@@ -357,7 +372,8 @@ impl World {
             }
         }
         if let Some(w) = &self.params.water {
-            self.water.apply(b, w, g);
+            shielded_bodies(self.contacts.contacts(), n, w, &mut self.shielded);
+            self.water.apply(b, w, g, &self.shielded);
         }
         // Joints (eq 1) and boundary conditions (eqs 7–8, floe supports).
         self.joints

@@ -103,7 +103,7 @@ const BASE: LedgerTerm = LedgerTerm {
 
 /// Every term of an [`EnergyBudget`] but its time, in the order of [`EnergyBudget::values`]
 /// and of every file that keeps them (docs/model.md, "Energy ledger").
-pub const LEDGER_TERMS: [LedgerTerm; 17] = [
+pub const LEDGER_TERMS: [LedgerTerm; 18] = [
     LedgerTerm {
         name: "work",
         sign: Sign::Input,
@@ -200,6 +200,18 @@ pub const LEDGER_TERMS: [LedgerTerm; 17] = [
         ..BASE
     },
     LedgerTerm {
+        name: "plastic_dissipation",
+        sign: Sign::Dissipation,
+        label: "plastic contact dissipation",
+        equation: Some("eq (12)"),
+        description: "crushing at contacts: work of the elastic normal forces held at the \
+                      crushing cap while the overlap grew (zero without a cap); a part of \
+                      normal_elastic_work",
+        summary: Keep::Added,
+        sample: Keep::Added,
+        ..BASE
+    },
+    LedgerTerm {
         name: "contact_hysteresis",
         label: "contact hysteresis",
         description: "elastic contact work not returned at separation (no fixed sign)",
@@ -225,8 +237,8 @@ pub const LEDGER_TERMS: [LedgerTerm; 17] = [
     LedgerTerm {
         name: "other_dissipation",
         label: "other dissipation",
-        description: "joint, boundary and fracture dissipation, contact hysteresis and \
-                      cut-away kinetic energy",
+        description: "joint, boundary, fracture and plastic dissipation, contact \
+                      hysteresis and cut-away kinetic energy",
         scale: true,
         ..BASE
     },
@@ -246,7 +258,8 @@ pub const LEDGER_TERMS: [LedgerTerm; 17] = [
         label: "elastic normal contact work",
         equation: Some("eq (12)"),
         description: "the elastic part of eq (12): work of the elastic normal contact forces, \
-                      held by active contacts or left as hysteresis at separation",
+                      held by active contacts, dissipated by crushing or left as hysteresis \
+                      at separation",
         summary: Keep::Added,
         sample: Keep::Added,
         ..BASE

@@ -26,6 +26,7 @@ impl Scene {
                 drag_coefficient: self.water.drag_coefficient,
                 linear_drag: self.water.linear_drag,
                 drag_bodies: self.water.drag_bodies,
+                shielding_contacts: self.water.shielding_contacts,
             }),
             time_step_safety: self.numerics.time_step_safety,
             time_step: (self.numerics.time_step > 0.0).then_some(self.numerics.time_step),
@@ -108,13 +109,15 @@ impl Scene {
             seed: self.seed,
             joints_made: 0,
             tip_bevel: sh.tip_bevel(),
+            tip_bevel_run: sh.tip_bevel_run(),
             corner_bevel: sh.corner_bevel,
             decay: sh.viscous_decay,
             viscosity: sh.boundary_viscosity(&self.contact, self.ice.density),
             blocks: Vec::with_capacity(n),
         };
         for k in 0..n {
-            let bevel = if k + 1 == n {
+            let tip = k + 1 == n;
+            let bevel = if tip {
                 [0.0, sh.tip_bevel(), 0.0, 0.0]
             } else {
                 [0.0; 4]
@@ -123,6 +126,10 @@ impl Scene {
                 width: sh.block_width,
                 thickness: sh.thickness,
                 bevel,
+                bevel_run: sh
+                    .tip_bevel_run()
+                    .filter(|_| tip)
+                    .map(|r| [0.0, r, 0.0, 0.0]),
             };
             let drive = if k == 0 { sh.drive() } else { Drive::FREE };
             let x = front - (n - k) as f64 * sh.block_width + 0.5 * sh.block_width;
@@ -144,7 +151,11 @@ impl Scene {
     }
 
     fn build_floe(&self, world: &mut World, f: &FloeSection) -> Result<(), SceneError> {
-        let n = (f.length / f.block_width).round().max(1.0) as usize;
+        // The nose block is as many block widths wide as the ramp's run (and a corner bevel
+        // either side) needs; one width at 45°.
+        let nose_run = f.nose_run();
+        let widths = f.nose_block_widths();
+        let n = ((f.length / f.block_width).round().max(1.0) as usize).max(widths) + 1 - widths;
         let yc = self.floating_centre(f.thickness);
         let skeletal = f.thickness.min(0.3) * 0.2;
         let skeletal = skeletal.min(0.06);
@@ -169,16 +180,24 @@ impl Scene {
             corner_bevel: f.corner_bevel,
         };
         let mut prev = None;
+        let mut left = 0.0;
         for k in 0..n {
             let bevel = if k == 0 {
                 [0.0, 0.0, 0.0, f.nose_bevel]
             } else {
                 [0.0; 4]
             };
+            let width = if k == 0 {
+                widths as f64 * f.block_width
+            } else {
+                f.block_width
+            };
             let block = Block {
-                width: f.block_width,
+                width,
                 thickness: f.thickness,
                 bevel,
+                bevel_run: (k == 0 && nose_run != f.nose_bevel)
+                    .then_some([0.0, 0.0, 0.0, nose_run]),
             };
             let drive = if f.pin && k + 1 == n {
                 Drive {
@@ -189,16 +208,21 @@ impl Scene {
             } else {
                 Drive::FREE
             };
-            let x = (k as f64 + 0.5) * f.block_width;
+            let x = if widths == 1 {
+                (k as f64 + 0.5) * f.block_width
+            } else {
+                left + 0.5 * width
+            };
+            left += width;
             let id = world.add_rect(block, V2::new(x, yc), 0.0, drive, Role::Floe)?;
             if let Some(p) = prev {
                 world.join(p, id, skeletal, mat)?;
             }
             prev = Some(id);
             let i = id as usize;
-            let k_s = f.support_stiffness * f.block_width;
+            let k_s = f.support_stiffness * width;
             let m = world.bodies.mass[i];
-            let k_total = k_s + rho_w * g * f.block_width;
+            let k_total = k_s + rho_w * g * width;
             support.blocks.push((id, world.bodies.pos[i].y));
             support.stiffness.push(k_s);
             support

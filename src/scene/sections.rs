@@ -44,6 +44,11 @@ pub struct WaterSection {
     /// scene at its default, so that the records made before it keep their digests.
     #[serde(default, skip_serializing_if = "DragBodies::is_rubble")]
     pub drag_bodies: DragBodies,
+    /// Shielding of packed rubble (count of submerged contacts, 0 for none, the default): a
+    /// body with at least this many contacts below the water line feels no form drag; see
+    /// [`WaterParams::shielding_contacts`]. Absent from a written scene at its default.
+    #[serde(default, skip_serializing_if = "is_zero_u32")]
+    pub shielding_contacts: u32,
 }
 
 impl Default for WaterSection {
@@ -56,6 +61,7 @@ impl Default for WaterSection {
             drag_coefficient: w.drag_coefficient,
             linear_drag: w.linear_drag,
             drag_bodies: w.drag_bodies,
+            shielding_contacts: w.shielding_contacts,
         }
     }
 }
@@ -189,6 +195,34 @@ pub struct SheetSection {
     /// (docs/choices.md). Absent from scenes and states when unset.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub viscous_length: Option<f64>,
+    /// Eq (8)'s damping at the driven end as a fraction of the critical 2·sqrt(k_ne·h·ρ_i)
+    /// (dimensionless): k′ = f·2·sqrt(k_ne·h·ρ_i)·L_v·e^(−4(x_i − x_1)/(x_n − x_1)). Default
+    /// 0.5, the fraction the paper gives eq (3)'s k_nv, which eq (8) names; a key of its own
+    /// so that the contacts' damping and the sheet's move apart. Absent from a written
+    /// scene at its default.
+    #[serde(default = "half", skip_serializing_if = "is_half")]
+    pub boundary_damping_fraction: f64,
+    /// Slope of the bevel under the sheet tip, tan of its angle from the horizontal
+    /// (dimensionless): the bevel drops `tip_bevel_fraction`·h over a run of that divided by
+    /// the slope. Default 1 (45°); absent from a written scene at its default.
+    #[serde(default = "one", skip_serializing_if = "is_one")]
+    pub tip_bevel_slope: f64,
+}
+
+fn half() -> f64 {
+    0.5
+}
+fn is_half(x: &f64) -> bool {
+    *x == 0.5
+}
+fn one() -> f64 {
+    1.0
+}
+fn is_one(x: &f64) -> bool {
+    *x == 1.0
+}
+fn is_zero_u32(x: &u32) -> bool {
+    *x == 0
 }
 
 impl Default for SheetSection {
@@ -212,6 +246,8 @@ impl Default for SheetSection {
             gap: 0.05,
             clamp_driven_end: true,
             viscous_length: None,
+            boundary_damping_fraction: 0.5,
+            tip_bevel_slope: 1.0,
         }
     }
 }
@@ -226,9 +262,14 @@ impl SheetSection {
         }
     }
 
-    /// Bevel leg under the sheet tip (m).
+    /// Bevel leg under the sheet tip (m): its drop up the tip's face.
     pub(crate) fn tip_bevel(&self) -> f64 {
         self.tip_bevel_fraction * self.thickness
+    }
+
+    /// The tip bevel's run along the sheet's bottom (m), or `None` at 45° (run = drop).
+    pub(crate) fn tip_bevel_run(&self) -> Option<f64> {
+        (self.tip_bevel_slope != 1.0).then(|| self.tip_bevel() / self.tip_bevel_slope)
     }
 
     /// Skeletal layer (m): `skeletal_fraction·h`, at most `skeletal_max`.
@@ -236,11 +277,14 @@ impl SheetSection {
         (self.skeletal_fraction * self.thickness).min(self.skeletal_max)
     }
 
-    /// k′ of eqs (7)–(8) at the driven end (kg/(m·s)): the k_nv of eq (3) for this sheet's
-    /// thickness and ice density `rho_i` (kg/m³), times eq (8)'s length (`viscous_length`,
-    /// default h; docs/choices.md).
+    /// k′ of eqs (7)–(8) at the driven end (kg/(m·s)): `boundary_damping_fraction` of the
+    /// critical 2·sqrt(k_ne·h·ρ_i) for this sheet's thickness, the contacts' k_ne and ice
+    /// density `rho_i` (kg/m³), times eq (8)'s length (`viscous_length`, default h;
+    /// docs/choices.md).
     pub fn boundary_viscosity(&self, contact: &ContactParams, rho_i: f64) -> f64 {
-        contact.viscous_coefficient_for(self.thickness, rho_i)
+        self.boundary_damping_fraction
+            * 2.0
+            * (contact.normal_stiffness * self.thickness * rho_i).sqrt()
             * self.viscous_length.unwrap_or(self.thickness)
     }
 }
@@ -279,10 +323,18 @@ pub struct FloeSection {
     /// Damping of the support as a fraction of critical for spring plus buoyancy. Default
     /// 0.5.
     pub support_damping_fraction: f64,
-    /// Bevel leg of the floe nose, its top corner facing the sheet (m). Default 0.5: a 45°
-    /// ramp from the floe top (0.18 m above water) to 0.32 m below, spanning the waterline
-    /// where the sheet arrives.
+    /// Bevel leg of the floe nose, its top corner facing the sheet (m): the ramp's drop from
+    /// the floe top. Default 0.5: a ramp from the floe top (0.18 m above water) to 0.32 m
+    /// below, spanning the waterline where the sheet arrives.
     pub nose_bevel: f64,
+    /// Slope of the nose ramp, tan of its angle from the horizontal (dimensionless): the
+    /// ramp drops `nose_bevel` over a run of `nose_bevel / nose_slope`. Default 1 (45°). A
+    /// block pushed horizontally up a ramp with friction μ locks once μ·tan α ≥ 1, so at
+    /// 45° and μ = 1 the sheet can push no block up it (docs/choices.md). Where the run does
+    /// not fit the first floe block, that block is made as many block widths wide as it
+    /// needs. Absent from a written scene at its default.
+    #[serde(default = "one", skip_serializing_if = "is_one")]
+    pub nose_slope: f64,
     /// Bevel leg at the corners of broken floe faces (m). Default 0.02.
     pub corner_bevel: f64,
     /// Pin the far (rightmost) floe block in x and y, point C of Figure 1. Default true.
@@ -303,9 +355,29 @@ impl Default for FloeSection {
             support_stiffness: 3.0e4,
             support_damping_fraction: 0.5,
             nose_bevel: 0.5,
+            nose_slope: 1.0,
             corner_bevel: 0.02,
             pin: true,
         }
+    }
+}
+
+impl FloeSection {
+    /// The nose ramp's run along the floe top (m): `nose_bevel / nose_slope`, exactly
+    /// `nose_bevel` at 45°.
+    pub(crate) fn nose_run(&self) -> f64 {
+        if self.nose_slope == 1.0 {
+            self.nose_bevel
+        } else {
+            self.nose_bevel / self.nose_slope
+        }
+    }
+
+    /// How many block widths the nose block spans: the fewest that hold the ramp's run
+    /// and a corner bevel at each end of its top (1 at the defaults).
+    pub(crate) fn nose_block_widths(&self) -> usize {
+        let need = self.nose_run() + 2.0 * self.corner_bevel;
+        ((need / self.block_width).floor() as usize + 1).max(1)
     }
 }
 

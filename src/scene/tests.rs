@@ -217,3 +217,80 @@ fn overrides_are_split_once_with_the_key_trimmed() {
         .unwrap();
     assert_eq!(s.value_at("contact.mu").as_deref(), Some("0.4"));
 }
+
+/// The keys of the register's open options: absent from a written scene at their defaults
+/// (so that the records made before them keep their digests), written and read back when
+/// set, refused with their names when out of range.
+#[test]
+fn the_open_options_are_left_out_at_their_defaults_and_checked_when_set() {
+    let text = Scene::default().to_toml();
+    for key in [
+        "crushing_pressure",
+        "damping_law",
+        "shielding_contacts",
+        "boundary_damping_fraction",
+        "tip_bevel_slope",
+        "nose_slope",
+    ] {
+        assert!(!text.contains(key), "{key} is written at its default");
+    }
+    let s = Scene::default()
+        .with_overrides(&[
+            "contact.crushing_pressure=1e6",
+            "contact.damping_law=\"contact\"",
+            "water.shielding_contacts=2",
+            "sheet.boundary_damping_fraction=0.3",
+            "sheet.tip_bevel_slope=0.8",
+            "floe.nose_slope=0.36397",
+        ])
+        .unwrap();
+    assert_eq!(Scene::from_toml(&s.to_toml()).unwrap(), s);
+    assert_eq!(s.contact.damping_law, crate::dem::DampingLaw::Contact);
+    for (set, key) in [
+        ("contact.crushing_pressure=-1", "contact.crushing_pressure"),
+        ("floe.nose_slope=0", "floe.nose_slope"),
+        ("sheet.tip_bevel_slope=0.3", "sheet.tip_bevel_slope"),
+        (
+            "sheet.boundary_damping_fraction=-0.5",
+            "sheet.boundary_damping_fraction",
+        ),
+    ] {
+        let e = Scene::default()
+            .with_overrides(&[set])
+            .and_then(|s| s.build().map(|_| s));
+        let e = e.err().map(|e| e.to_string()).unwrap_or_default();
+        assert!(e.contains(key), "{set}: {e}");
+    }
+}
+
+/// A nose ramp at 20° (slope tan 20° = 0.364) drops its 0.5 m over a run of 1.37 m: the nose
+/// block becomes two floe blocks wide, the floe keeps its length, and the ramp's outline has
+/// that slope. At 45° the floe is built as before, one block per metre.
+#[test]
+fn a_shallow_nose_ramp_widens_the_nose_block() {
+    let s = Scene::default()
+        .with_overrides(&["floe.nose_slope=0.36397"])
+        .unwrap();
+    let w = s.build().unwrap();
+    let b = w.bodies();
+    let floe: Vec<usize> = (0..b.len()).filter(|&i| b.role[i] == Role::Floe).collect();
+    let nose = b.block[floe[0]].unwrap();
+    assert_eq!(nose.width, 2.0);
+    assert_eq!(floe.len(), 39);
+    let length: f64 = floe.iter().map(|&i| b.block[i].unwrap().width).sum();
+    assert_eq!(length, 40.0);
+    let run = nose.bevel_run.unwrap()[3];
+    assert!((nose.bevel[3] / run - 0.36397).abs() < 1e-12);
+    let d = Scene::default().build().unwrap();
+    let n = (0..d.bodies().len())
+        .filter(|&i| d.bodies().role[i] == Role::Floe)
+        .count();
+    assert_eq!(n, 40);
+    assert!(
+        d.bodies()
+            .block
+            .iter()
+            .flatten()
+            .all(|b| b.bevel_run.is_none())
+    );
+}

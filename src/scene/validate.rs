@@ -28,6 +28,12 @@ fn check_bevel(key: &str, leg: f64) -> Result<(), SceneError> {
     }
 }
 
+/// Checks a bevel's slope (tan of its angle, dimensionless) against
+/// [`limits::BEVEL_SLOPE`].
+fn check_slope(key: &str, slope: f64) -> Result<(), SceneError> {
+    check(limits::BEVEL_SLOPE, key, slope)
+}
+
 impl Scene {
     /// Checks the scene-level parameters (the world checks its own): each bounded parameter
     /// against its range in [`limits`], the ice lighter than the water, the block geometry,
@@ -104,6 +110,10 @@ impl Scene {
                 ("sheet.corner_bevel", sh.corner_bevel),
                 ("sheet.viscous_decay", sh.viscous_decay),
                 ("sheet.gap", sh.gap),
+                (
+                    "sheet.boundary_damping_fraction",
+                    sh.boundary_damping_fraction,
+                ),
             ] {
                 if !(v >= 0.0 && v.is_finite()) {
                     return bad(k, "must be non-negative");
@@ -131,6 +141,18 @@ impl Scene {
                     "sheet.tip_bevel_fraction",
                     "must be below 1: the bevel under the tip is a fraction of the thickness",
                 );
+            }
+            check_slope("sheet.tip_bevel_slope", sh.tip_bevel_slope)?;
+            if let Some(run) = sh.tip_bevel_run()
+                && run >= sh.block_width
+            {
+                return Err(SceneError::Invalid(
+                    "sheet.tip_bevel_slope".into(),
+                    format!(
+                        "{} makes the bevel under the tip run {run:.3} m along the sheet's bottom, not shorter than sheet.block_width = {} m: use a steeper slope or a smaller sheet.tip_bevel_fraction",
+                        sh.tip_bevel_slope, sh.block_width
+                    ),
+                ));
             }
             if sh.tip_bevel() >= sh.block_width {
                 // The bevel leg scales with the thickness: a thick sheet needs wide blocks.
@@ -200,13 +222,28 @@ impl Scene {
             }
             check_bevel("floe.nose_bevel", f.nose_bevel)?;
             check_bevel("floe.corner_bevel", f.corner_bevel)?;
+            check_slope("floe.nose_slope", f.nose_slope)?;
             let side = f.block_width.min(f.thickness);
-            if f.nose_bevel >= side {
+            // At 45° the nose block is one block wide; at another slope it is as wide as its
+            // run needs and only the floe's thickness bounds the drop.
+            let nose_side = if f.nose_slope == 1.0 {
+                side
+            } else {
+                f.thickness
+            };
+            if f.nose_bevel >= nose_side {
                 return Err(SceneError::Invalid(
                     "floe.nose_bevel".into(),
                     format!(
-                        "{} m must be shorter than the floe block's smaller side, min(floe.block_width, floe.thickness) = {side} m",
-                        f.nose_bevel
+                        "{} m must be shorter than {}",
+                        f.nose_bevel,
+                        if f.nose_slope == 1.0 {
+                            format!(
+                                "the floe block's smaller side, min(floe.block_width, floe.thickness) = {side} m"
+                            )
+                        } else {
+                            format!("floe.thickness = {} m", f.thickness)
+                        }
                     ),
                 ));
             }

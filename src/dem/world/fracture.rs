@@ -26,18 +26,26 @@ impl World {
             {
                 on_sheet = sh.blocks.iter().position(|&x| x == j.a);
             }
-            let (corner, tip) = if let Some(sh) = &self.boundary.sheet {
-                (sh.corner_bevel, sh.tip_bevel)
+            let (corner, tip, tip_run) = if let Some(sh) = &self.boundary.sheet {
+                (
+                    sh.corner_bevel,
+                    sh.tip_bevel,
+                    sh.tip_bevel_run.unwrap_or(sh.tip_bevel),
+                )
             } else if let Some(fl) = &self.boundary.floe {
-                (fl.corner_bevel, 0.0)
+                (fl.corner_bevel, 0.0, 0.0)
             } else {
-                (0.0, 0.0)
+                (0.0, 0.0, 0.0)
             };
             match on_sheet {
                 Some(pos) => {
                     // The new sheet tip gets the tip bevel underneath (point B); the piece
                     // that broke off becomes rubble with bevelled corners.
-                    self.bevel(a, [0.0, tip.max(corner), corner, 0.0]);
+                    self.bevel_legs(
+                        a,
+                        [0.0, tip.max(corner), corner, 0.0],
+                        [0.0, tip_run.max(corner), corner, 0.0],
+                    );
                     self.bevel(b, [corner, 0.0, 0.0, corner]);
                     let sh = self.boundary.sheet.as_mut().expect("sheet present");
                     let lost: Vec<BodyId> = sh.blocks.drain(pos + 1..).collect();
@@ -76,15 +84,24 @@ impl World {
         }
     }
 
-    /// Raises the bevel legs of block `i` to at least `legs` (m), re-cutting its shape.
+    /// Raises the 45° bevel legs of block `i` to at least `legs` (m), re-cutting its shape.
     fn bevel(&mut self, i: usize, legs: [f64; 4]) {
+        self.bevel_legs(i, legs, legs);
+    }
+
+    /// Raises the bevels of block `i` to at least the drops `drop` and runs `run` (m),
+    /// re-cutting its shape.
+    fn bevel_legs(&mut self, i: usize, drop: [f64; 4], run: [f64; 4]) {
         let Some(old) = self.bodies.block[i] else {
             return;
         };
         let mut new = old;
-        for (b, l) in new.bevel.iter_mut().zip(legs) {
-            *b = b.max(l);
+        let mut runs = old.runs();
+        for k in 0..4 {
+            new.bevel[k] = new.bevel[k].max(drop[k]);
+            runs[k] = runs[k].max(run[k]);
         }
+        new.bevel_run = (runs != new.bevel).then_some(runs);
         if new == old {
             return;
         }
@@ -136,6 +153,7 @@ impl World {
             width: w,
             thickness: h,
             bevel: [0.0; 4],
+            bevel_run: None,
         };
         let drive = Drive {
             u: Some(u),

@@ -188,6 +188,7 @@ impl WorldParams {
         pos("contact.reference_thickness", c.thickness())?;
         nonneg("contact.mu", c.mu)?;
         nonneg("contact.mu_water", c.mu_water)?;
+        nonneg("contact.crushing_pressure", c.crushing_pressure)?;
         if let Some(w) = &self.water {
             pos("water.density", w.density)?;
             nonneg("water.drag_coefficient", w.drag_coefficient)?;

@@ -33,6 +33,7 @@ impl World {
             blocks_broken: self.blocks_broken,
             handovers: self.handovers,
             ledger: self.acc,
+            contact_tally: self.contacts.tally.clone(),
         }
     }
 
@@ -73,6 +74,7 @@ impl World {
             return Err(WorldError::State("a contact names a missing body".into()));
         }
         w.contacts.restore(s.contacts.clone());
+        w.contacts.tally = s.contact_tally.clone();
         w.acc = s.ledger;
         w.time = s.time;
         w.steps = s.steps;
@@ -154,4 +156,7 @@ pub struct Snapshot {
     pub(crate) handovers: Handovers,
     /// Ledger integrals.
     pub(crate) ledger: Accumulators,
+    /// The contacts' restitution and damping-ratio histograms (absent in older snapshots).
+    #[serde(default)]
+    pub(crate) contact_tally: ContactTally,
 }
