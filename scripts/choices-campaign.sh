@@ -5,9 +5,11 @@
 # Resumable like every campaign: re-running continues where it stopped. Run it under nohup:
 #   nohup scripts/choices-campaign.sh [THREADS] [OUT_ROOT] > runs/choices.log 2>&1 &
 # CHOICES="baseline tip-bevel" runs only those probes (in that order). CHOICES_DIR picks
-# the folder of specs: data/campaigns/choices (the first look, on the 20-m floe; the default)
-# or data/campaigns/choices40 (eight seeds on the decided model, whose baseline is taken from
-# the friction set's records in data/paper2/friction). Then
+# the folder of specs: data/campaigns/choices (the first look, on the 20-m floe; the default),
+# data/campaigns/choices40 (eight seeds on model revision 1 with the 40-m floe, whose
+# baseline is taken from the friction set's records in data/paper2/friction) or
+# data/campaigns/choices-r2 (model revision 2; the baseline's later seeds, baseline-more, run
+# after the probes so that a first look at every probe comes first). Then
 #   pressridge findings --choices runs/choices
 # compares each probe with the baseline (docs/choices.md); scripts/archive-records.sh keeps
 # the records for the repository (data/choices/).
@@ -23,14 +25,16 @@ dir=${CHOICES_DIR:-data/campaigns/choices}
 if [ "$dir" = data/campaigns/choices ]; then
   default="baseline baseline-more tip-bevel nose-bevel drag floe-length floe-length-more floe-length-80 floe-damping eq8-length crack-speed floe-stiffness floe-pin gap floe-blocks"
 else
-  default=$(cd "$dir" && ls *.toml | sed 's/\.toml$//' | sort | tr '\n' ' ')
+  # The baseline first, its later seeds (baseline-more) last.
+  all=$(cd "$dir" && ls *.toml | sed 's/\.toml$//' | sort)
+  default="$(echo "$all" | grep -vx baseline-more | tr '\n' ' ')$(echo "$all" | grep -x baseline-more || true)"
 fi
 probes=${CHOICES:-$default}
 for p in $probes; do
   echo "== $p ($(date -u +%T))"
   resume=()
-  # The decided model's baseline is the friction set's two pairs: taken, not run again.
-  [ "$dir" != data/campaigns/choices ] && [ "$p" = baseline ] && [ -d data/paper2/friction ] &&
+  # The revision-1 register's baseline is the friction set's two pairs: taken, not run again.
+  [ "$dir" = data/campaigns/choices40 ] && [ "$p" = baseline ] && [ -d data/paper2/friction ] &&
     resume=(--resume-from data/paper2/friction)
   "$bin" campaign --spec "$dir/$p.toml" --out "$root/$p" "${resume[@]}" \
     --threads "$threads" --progress-interval 60 2> "$root/$p.log"

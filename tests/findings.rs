@@ -151,7 +151,7 @@ fn the_register_is_made_from_the_committed_probe_records() {
         assert!(text.contains(f), "{f}:\n{text}");
     }
     // The baseline's row at each friction pair, and in the table of the friction statements.
-    assert_eq!(text.matches("| baseline (n = ").count(), 3, "{text}");
+    assert_eq!(text.matches("| baseline (n = ").count(), 5, "{text}");
     assert!(text.contains("friction statements at μ_w = 0.6"), "{text}");
     assert!(text.contains("| floe.length=40.0 (n = 8, 8) |"), "{text}");
     for probe in ["tip_bevel_fraction=", "nose_bevel=", "viscous_length="] {
@@ -182,7 +182,7 @@ fn committed_register(dir: &str) -> String {
 #[test]
 fn the_decided_models_register_is_made_from_its_committed_records() {
     let text = committed_register("data/choices40");
-    assert_eq!(text.matches("| baseline (n = 12) |").count(), 2, "{text}");
+    assert_eq!(text.matches("| baseline (n = 12) |").count(), 4, "{text}");
     for probe in ["viscous_length=1.0 (n = 8)", "drag_coefficient=0.3 (n = 8)"] {
         assert!(text.contains(probe), "{probe}:\n{text}");
     }

@@ -86,6 +86,74 @@ pub const QUANTITIES: [Quantity; 10] = [
     ("overrun (m)", |r| r.summary.sheet_overrun_max, 1.0, 1),
 ];
 
+/// A share of the work (dimensionless): `part` over W.
+fn share(r: &RunRecord, part: fn(&crate::energy::EnergyBudget) -> f64) -> Option<f64> {
+    let e = r.summary.energy();
+    (e.work != 0.0).then(|| part(&e) / e.work)
+}
+
+/// The register's second table: where the work went besides friction, and the contacts
+/// (the parts of Φ_i, each other sink, the joints broken, the keel, the contacts' median
+/// damping ratio ζ and impact restitution e). Records made before the contacts were tallied
+/// (model revision 1) have no ζ or e.
+pub const SINKS: [Quantity; 10] = [
+    (
+        "Φ_i viscous/W (%)",
+        |r| share(r, |e| e.viscous_dissipation),
+        100.0,
+        2,
+    ),
+    (
+        "Φ_i elastic/W (%)",
+        |r| share(r, |e| e.normal_elastic_work - e.plastic_dissipation),
+        100.0,
+        2,
+    ),
+    (
+        "Φ_i plastic/W (%)",
+        |r| share(r, |e| e.plastic_dissipation),
+        100.0,
+        2,
+    ),
+    ("drag/W (%)", |r| share(r, |e| e.drag_dissipation), 100.0, 1),
+    (
+        "dashpots/W (%)",
+        |r| share(r, |e| e.boundary_dissipation),
+        100.0,
+        1,
+    ),
+    (
+        "joints/W (%)",
+        |r| share(r, |e| e.joint_dissipation + e.fracture_dissipation),
+        100.0,
+        2,
+    ),
+    (
+        "joints broken",
+        |r| Some(r.summary.blocks_broken as f64),
+        1.0,
+        0,
+    ),
+    ("max keel (m)", |r| Some(r.metrics.max_keel_depth), 1.0, 2),
+    (
+        "ζ median",
+        |r| {
+            r.summary
+                .contacts
+                .and_then(|c| c.damping_ratio)
+                .map(|q| q[1])
+        },
+        1.0,
+        2,
+    ),
+    (
+        "e median",
+        |r| r.summary.contacts.and_then(|c| c.restitution).map(|q| q[1]),
+        1.0,
+        2,
+    ),
+];
+
 /// The table of the paper's friction statements for the baseline and each probe setting: the
 /// difference of the means at μ = 1.0 and μ = 0.4 (same μ_w) with its 95 % Welch interval, in
 /// bold where the interval excludes zero; `agrees` counts the resolved differences of the
@@ -137,8 +205,13 @@ fn friction_contrast(s: &mut String, baseline: &[RunRecord], probes: &[(String, 
 /// with the difference (unscaled) and whether it is resolved.
 ///
 /// A quantity defined in fewer than two runs of either side (W/ΔPE of runs that built no
-/// ridge, ΔPE = 0) has no interval: the cell says `n/a` and how many runs define it.
+/// ridge, ΔPE = 0) has no interval: the cell says `n/a` and how many runs define it, or `—`
+/// when no run of either side does (ζ and e in records made before they were kept). Two
+/// sides without spread (a term that is zero in every run) get the difference alone.
 fn difference_cell(a: &Stat, b: &Stat, scale: f64, d: usize) -> (String, f64, bool) {
+    if a.n == 0 && b.n == 0 {
+        return ("—".into(), f64::NAN, false);
+    }
     if a.n < 2 || b.n < 2 {
         return (
             format!("n/a (defined in {} and {} runs)", a.n, b.n),
@@ -147,6 +220,15 @@ fn difference_cell(a: &Stat, b: &Stat, scale: f64, d: usize) -> (String, f64, bo
         );
     }
     let (diff, h) = a.welch_difference(b);
+    if h.is_nan() {
+        // Neither side varies (a term that is zero in every run, say): no interval.
+        let mark = if diff != 0.0 { "**" } else { "" };
+        return (
+            format!("{mark}{:+.d$} (no spread){mark}", diff * scale),
+            diff,
+            diff != 0.0,
+        );
+    }
     let resolved = (diff - h) * (diff + h) > 0.0;
     let mark = if resolved { "**" } else { "" };
     let cell = format!(
@@ -228,6 +310,48 @@ pub(crate) fn rafted_count(runs: &[&RunRecord]) -> usize {
         .count()
 }
 
+/// One table of the register at friction `f`: the baseline's means of `quantities` (with
+/// their 95 % half-widths), and every probe setting's difference from them.
+fn effect_table(
+    s: &mut String,
+    base: &[&RunRecord],
+    probes: &[(String, Vec<RunRecord>)],
+    f: (f64, f64),
+    quantities: &[Quantity],
+) {
+    let mut head = String::from("| choice | rafted |");
+    let mut rule = String::from("|---|---|");
+    for (label, ..) in quantities {
+        let _ = write!(head, " {label} |");
+        rule.push_str("---|");
+    }
+    let _ = writeln!(s, "{head}\n{rule}");
+    let mut row = format!("| baseline (n = {}) | {} |", base.len(), rafted(base));
+    for &(_, q, scale, d) in quantities {
+        let st = stat(base, q);
+        if st.n == 0 {
+            row.push_str(" — |");
+            continue;
+        }
+        let _ = write!(
+            row,
+            " {:.d$} ± {:.d$} |",
+            st.mean * scale,
+            st.half_width_95() * scale,
+            d = d
+        );
+    }
+    let _ = writeln!(s, "{row}");
+    for (label, these) in by_setting(probes, f) {
+        let mut row = format!("| {label} (n = {}) | {} |", these.len(), rafted(&these));
+        for &(_, q, scale, d) in quantities {
+            let (cell, ..) = difference_cell(&stat(base, q), &stat(&these, q), scale, d);
+            let _ = write!(row, " {cell} |");
+        }
+        let _ = writeln!(s, "{row}");
+    }
+}
+
 /// The register's effect table as Markdown: per friction pair, the baseline's means (with
 /// their 95 % half-widths) and, for every probe setting, its difference from them with the
 /// 95 % Welch interval; `rafted` counts the runs that rode over the floe.
@@ -241,40 +365,20 @@ pub fn effects(baseline: &[RunRecord], probes: &[(String, Vec<RunRecord>)]) -> S
     let mut s = String::new();
     for f in pairs {
         let base = at(baseline, f);
-        let _ = writeln!(s, "\n**μ = {}, μ_w = {}**\n", f.0, f.1);
-        let mut head = String::from("| choice | rafted |");
-        let mut rule = String::from("|---|---|");
-        for (label, ..) in QUANTITIES {
-            let _ = write!(head, " {label} |");
-            rule.push_str("---|");
-        }
-        let _ = writeln!(s, "{head}\n{rule}");
-        let mut row = format!("| baseline (n = {}) | {} |", base.len(), rafted(&base));
-        for (_, q, scale, d) in QUANTITIES {
-            let st = stat(&base, q);
-            let _ = write!(
-                row,
-                " {:.d$} ± {:.d$} |",
-                st.mean * scale,
-                st.half_width_95() * scale,
-                d = d
-            );
-        }
-        let _ = writeln!(s, "{row}");
-        for (label, these) in by_setting(probes, f) {
-            let mut row = format!("| {label} (n = {}) | {} |", these.len(), rafted(&these));
-            for (_, q, scale, d) in QUANTITIES {
-                let (cell, ..) = difference_cell(&stat(&base, q), &stat(&these, q), scale, d);
-                let _ = write!(row, " {cell} |");
-            }
-            let _ = writeln!(s, "{row}");
+        for (k, quantities) in [&QUANTITIES, &SINKS].into_iter().enumerate() {
+            let what = if k == 0 { "" } else { ": sinks and contacts" };
+            let _ = writeln!(s, "\n**μ = {}, μ_w = {}{what}**\n", f.0, f.1);
+            effect_table(&mut s, &base, probes, f, quantities);
         }
     }
     friction_contrast(&mut s, baseline, probes);
     s.push_str(
         "\nBaseline: mean ± 95 % half-width (Student's t). Probes: difference of means from the \
          baseline with its 95 % Welch interval; in bold where the interval excludes zero. \
-         Φ_i is eq (12)'s net normal contact work; other = W − Φ_f − Φ_i − ΔPE − ΔKE; \
+         Φ_i is eq (12)'s net normal contact work (viscous, elastic and plastic parts in the \
+         second table); other = W − Φ_f − Φ_i − ΔPE − ΔKE (drag, the eq (7)–(8) and floe \
+         dashpots, the joints' viscosity and fracture); ζ and e are each run's median damping \
+         ratio of its contacts and restitution of its impacts; \
          sail/keel is the rubble ice area above over below the water line; overrun is the \
          farthest the intact sheet passed the floe's nose; rafted counts the runs whose overrun \
          passed 2 m. The friction tables test the paper's statements within each setting: the \
