@@ -1242,3 +1242,39 @@ fn a_campaign_runs_seed_by_seed_over_the_grid() {
     got.sort_by(|a, b| a.partial_cmp(b).unwrap());
     assert_eq!(got, [(0.25, 1), (0.35, 1)]);
 }
+
+/// The volume grid ends at the volume the runs were set to reach, U·h·T, so its points are
+/// round (k·2.5 m³/m over the paper's six thicknesses in 19 points), and every run counts at
+/// its own final volume 100·h: a run stops within half a step of T, and its last sample stands
+/// for its end. Made from the committed records of the thickness set: all 7 runs of each
+/// thickness at 100·h, where the grid up to the largest sample's volume (45.000004 m³/m)
+/// held 0–3 of them.
+#[test]
+fn every_run_counts_at_its_final_volume() {
+    use pressridge::table::tabulate::tabulate;
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data/paper3/thickness");
+    let (_, records) = read_records(&dir).unwrap();
+    let t = tabulate(&records, 19).unwrap();
+    assert!(
+        t.volume
+            .iter()
+            .enumerate()
+            .all(|(k, &v)| v == 2.5 * k as f64),
+        "{:?}",
+        t.volume
+    );
+    for (hi, &h) in t.thickness.iter().enumerate() {
+        let n = records
+            .iter()
+            .filter(|r| r.scene.sheet.as_ref().unwrap().thickness == h)
+            .count();
+        let k = (100.0 * h / 2.5f64).round() as usize;
+        assert_eq!(
+            t.runs[[0, hi, k]] as usize,
+            n,
+            "h = {h} m at {} m³/m",
+            t.volume[k]
+        );
+        assert!(t.work_mean[[0, hi, k]].is_finite());
+    }
+}

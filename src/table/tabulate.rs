@@ -211,8 +211,38 @@ fn is_friction_key(s: &str) -> bool {
     s.starts_with("contact.mu=") || s.starts_with("contact.mu_water=")
 }
 
+/// The volume a run was set to ridge (m³/m): U·h·T of its scene, or its last sample's volume
+/// when the scene's values do not give one.
+fn nominal_volume(r: &RunRecord) -> f64 {
+    let v = r
+        .scene
+        .sheet
+        .as_ref()
+        .map_or(0.0, |s| s.speed * s.thickness * r.scene.duration);
+    if v > 0.0 && v.is_finite() {
+        v
+    } else {
+        r.samples.last().map_or(0.0, |s| s.volume)
+    }
+}
+
+/// The ridged volumes of a run's samples (m³/m), its last at the run's nominal volume
+/// U·h·T when the run reached its duration: a run stops within half a step of T, so its
+/// last sample lies up to U·h·Δt/2 short of (or past) U·h·T, and read as it is the run's end
+/// would fall off a grid point placed there (the shipped table's final volumes held 0–3 of
+/// their 7–12 runs until 2026-12-01).
+fn sample_volumes(r: &RunRecord) -> Vec<f64> {
+    let mut xs: Vec<f64> = r.samples.iter().map(|s| s.volume).collect();
+    if let (Some(last), Some(x)) = (r.samples.last(), xs.last_mut())
+        && (last.time - r.scene.duration).abs() <= r.summary.dt
+    {
+        *x = nominal_volume(r);
+    }
+    xs
+}
+
 /// Tabulates campaign records on a volume grid of `points` points from 0 to the largest
-/// volume reached. Runs whose dissipation went negative (a numerical energy source, see
+/// volume a run was set to reach, U·h·T of its scene. Runs whose dissipation went negative (a numerical energy source, see
 /// [`dissipation_violation`]) are left out and listed in [`RidgeTable::excluded`].
 pub fn tabulate(records: &[RunRecord], points: usize) -> Result<RidgeTable, TabulateError> {
     tabulate_scaled(records, points, &[])
@@ -372,10 +402,9 @@ pub fn tabulate_scaled(
     let recs = kept;
     thickness.sort_by(f64::total_cmp);
     seeds.sort_unstable();
-    let vmax = recs
-        .iter()
-        .flat_map(|r| r.samples.iter().map(|s| s.volume))
-        .fold(0.0, f64::max);
+    // The grid ends at the largest volume a run was set to reach, U·h·T: its points are
+    // then round numbers (k·2.5 m³/m for 0–600 in 241), and every run's end is one of them.
+    let vmax = recs.iter().map(|r| nominal_volume(r)).fold(0.0, f64::max);
     let points = points.max(2);
     let volume: Vec<f64> = (0..points)
         .map(|k| vmax * k as f64 / (points - 1) as f64)
@@ -443,7 +472,7 @@ pub fn tabulate_scaled(
             for (vi, &v) in volume.iter().enumerate() {
                 let (mut w, mut p, mut q, mut f) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
                 for r in &group {
-                    let xs: Vec<f64> = r.samples.iter().map(|s| s.volume).collect();
+                    let xs = sample_volumes(r);
                     let get = |g: fn(&crate::record::RunSample) -> f64| {
                         let ys: Vec<f64> = r.samples.iter().map(g).collect();
                         crate::interp::resample(&xs, &ys, v)
