@@ -85,8 +85,8 @@ fn first_revision() -> u32 {
 
 /// The contacts of a run in numbers: restitution of the impacts and damping ratios of the
 /// active contacts (dimensionless), each as its 10th, 50th and 90th percentile, read from
-/// the histograms the world keeps ([`crate::dem::ContactTally`]; to the bin: 0.05 in e, a
-/// tenth of a decade in ζ).
+/// the histograms the world keeps ([`crate::dem::ContactTally`]; to the bin: 0.01 in e, a
+/// hundredth of a decade in ζ).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct ContactSummary {
     /// Impacts counted: contacts born by approach at ≥ 1 cm/s that ended within 0.1 s.

@@ -13,15 +13,15 @@ pub(crate) const IMPACT_DURATION: f64 = 0.1;
 pub(crate) const IMPACT_SPEED: f64 = 0.01;
 
 /// Bins of restitution, in [0, 1.5).
-const RESTITUTION_BINS: usize = 30;
+const RESTITUTION_BINS: usize = 150;
 /// Width of a restitution bin (dimensionless).
-const RESTITUTION_BIN: f64 = 0.05;
+const RESTITUTION_BIN: f64 = 0.01;
 /// Bins of log₁₀ ζ, in [−3, 2).
-const ZETA_BINS: usize = 50;
+const ZETA_BINS: usize = 500;
 /// log₁₀ ζ at the first bin's lower edge.
 const ZETA_LOG_MIN: f64 = -3.0;
-/// Width of a log₁₀ ζ bin.
-const ZETA_LOG_BIN: f64 = 0.1;
+/// Width of a log₁₀ ζ bin: 2.3 % in ζ.
+const ZETA_LOG_BIN: f64 = 0.01;
 
 /// Histograms of the contacts' restitution at impacts and of their damping ratios, for
 /// the run summary (`crate::simulation::ContactSummary`).
@@ -29,10 +29,10 @@ const ZETA_LOG_BIN: f64 = 0.1;
 #[serde(default)]
 pub struct ContactTally {
     /// Impacts (contacts born by approach at ≥ 1 cm/s that ended within 0.1 s) by
-    /// restitution e = v_out/v_in, in bins of 0.05 from 0 (the last bin holds e ≥ 1.45).
+    /// restitution e = v_out/v_in, in bins of 0.01 from 0 (the last bin holds e ≥ 1.49).
     pub restitution: Vec<u64>,
     /// Active contacts, counted at each tally ([`crate::dem::World::tally_contacts`]), by
-    /// log₁₀ ζ in bins of 0.1 from −3 (the first and last bins hold what lies beyond).
+    /// log₁₀ ζ in bins of 0.01 from −3 (the first and last bins hold what lies beyond).
     pub zeta: Vec<u64>,
 }
 
@@ -55,14 +55,14 @@ impl ContactTally {
         let k = (k.max(0.0) as usize).min(ZETA_BINS - 1);
         self.zeta[k] += 1;
     }
-    /// The 10th, 50th and 90th percentiles of the impacts' restitution (to the bin, 0.05),
+    /// The 10th, 50th and 90th percentiles of the impacts' restitution (to the bin, 0.01),
     /// or `None` without impacts.
     pub fn restitution_percentiles(&self) -> Option<[f64; 3]> {
         percentiles(&self.restitution, |k| k * RESTITUTION_BIN)
     }
 
     /// The 10th, 50th and 90th percentiles of the contacts' damping ratios (to the bin, a
-    /// tenth of a decade), or `None` without contacts.
+    /// hundredth of a decade), or `None` without contacts.
     pub fn damping_ratio_percentiles(&self) -> Option<[f64; 3]> {
         percentiles(&self.zeta, |k| 10f64.powf(ZETA_LOG_MIN + k * ZETA_LOG_BIN))
     }
@@ -106,17 +106,21 @@ mod tests {
     fn percentiles_of_the_histograms() {
         let mut t = ContactTally::default();
         assert_eq!(t.restitution_percentiles(), None);
-        for e in [0.11, 0.12, 0.13, 0.14, 0.41, 0.42, 0.43, 0.44, 0.46, 0.9] {
+        for e in [
+            0.115, 0.125, 0.135, 0.145, 0.415, 0.425, 0.435, 0.445, 0.465, 0.905,
+        ] {
             t.add_restitution(e);
         }
-        // Four in [0.10, 0.15), four in [0.40, 0.45), one in [0.45, 0.50), one at 0.9.
+        // One in each bin of [0.11, 0.15) and of [0.41, 0.45), one in [0.46, 0.47), one at
+        // 0.905: the 10th percentile is the end of the first bin, the median the end of the
+        // fifth value's, the 90th the end of the ninth's.
         let [p10, p50, p90] = t.restitution_percentiles().unwrap();
-        assert!((p10 - 0.1125).abs() < 1e-12, "{p10}");
-        assert!((p50 - 0.4125).abs() < 1e-12, "{p50}");
-        assert!((p90 - 0.5).abs() < 1e-12, "{p90}");
+        assert!((p10 - 0.12).abs() < 1e-12, "{p10}");
+        assert!((p50 - 0.42).abs() < 1e-12, "{p50}");
+        assert!((p90 - 0.47).abs() < 1e-12, "{p90}");
         t.add_zeta(0.5);
-        // log₁₀ 0.5 = −0.301 lies in the bin [10^−0.4, 10^−0.3).
+        // log₁₀ 0.5 = −0.30103 lies in the bin [10^−0.31, 10^−0.30) = [0.490, 0.501).
         let z = t.damping_ratio_percentiles().unwrap();
-        assert!(z.iter().all(|&x| (0.398..0.502).contains(&x)), "{z:?}");
+        assert!(z.iter().all(|&x| (0.489..0.502).contains(&x)), "{z:?}");
     }
 }
