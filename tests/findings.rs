@@ -188,6 +188,24 @@ fn the_decided_models_register_is_made_from_its_committed_records() {
     }
 }
 
+/// The register of model revision 2 (`data/choices-r2/`: the drag moment on the body's own
+/// outline; its baseline twelve seeds per friction pair) is the command's output, with a row
+/// for each of its open options.
+#[test]
+fn the_revision_2_register_is_made_from_its_committed_records() {
+    let text = committed_register("data/choices-r2");
+    assert_eq!(text.matches("| baseline (n = 12) |").count(), 4, "{text}");
+    for probe in [
+        "crushing_pressure=1000000.0",
+        "damping_law=\"contact\"",
+        "nose_slope=0.36397",
+        "nose_slope=0.57735",
+        "shielding_contacts=2",
+    ] {
+        assert!(text.contains(probe), "{probe}:\n{text}");
+    }
+}
+
 /// Under the table, each statement the model disagrees with gets the register's evidence: the
 /// closest any open choice comes, from the committed probe records (`data/choices40`, read at
 /// the step they were made with). A register of another model (`data/choices`, the 20-m
