@@ -51,7 +51,7 @@ fn choices_at<'a>(reg: &'a Register, f: (f64, f64)) -> Vec<(String, Vec<&'a RunR
 /// The evidence section for the rows of `rows` that disagree, or `None` when none does or
 /// when the register is not of this model (its baseline holds no run of `base`'s Figure 5
 /// scene at any one step). The register is read at the step its baseline was made with,
-/// which may differ from the table's (`docs/choices.md`, "At which step": each effect is a
+/// which may differ from the table's (`docs/notes/choices-revision1.md`, "At which step": each effect is a
 /// difference between arms at one step), and the section then says so. `records` are the
 /// statement table's runs; `source` names where the register's records are, for the
 /// section's text.
@@ -114,8 +114,8 @@ fn step_note(register: f64, table: f64) -> String {
     format!(
         " The register's runs (its baseline and its probes) were made at {register} of the \
          stable limit, the table's above at {table}: where a row reads the register, its \
-         default and its closest choice are both runs at {register} (`docs/choices.md`, \
-         \"At which step\")."
+         default and its closest choice are both runs at {register} \
+         (`docs/notes/choices-revision1.md`, \"At which step\")."
     )
 }
 
