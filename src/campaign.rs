@@ -323,10 +323,14 @@ fn finished_record(out: &Path, id: &str) -> Option<RunRecord> {
 /// interrupted campaign committed under `data/paper/`) into `out`, so that resuming the
 /// campaign in `out` runs only what the archive lacks. A run is taken when the archive holds
 /// a record of the same planned run (same id) that passes the check of [`read_campaign`] there and
-/// has the planned scene and seed; its record is written into `out` (atomically) without its
-/// final state: the record's digest then lists no files, so `out` tabulates like the
-/// archive. Runs `out` already holds are left alone; an archive record of the same id with
-/// another scene or seed is an error. Returns the number of runs taken.
+/// has the planned scene and seed, or else a record of another id with the planned scene and
+/// seed (the same run planned by another campaign, e.g. a probe whose setting became the
+/// default): a run is its scene and seed, and its record takes this campaign's id and
+/// settings. Its record is written into `out` (atomically) without its final state: the
+/// record's digest then lists no files, so `out` tabulates like the archive. Runs `out`
+/// already holds are left alone; an archive record of the same id with another scene or seed
+/// is an error, and so is one an older model revision made. Returns the number of runs
+/// taken.
 pub fn adopt_records(
     spec: &CampaignSpec,
     base_dir: &Path,
@@ -341,27 +345,43 @@ pub fn adopt_records(
     }
     check_same_grid(spec, out)?;
     let mut taken = 0;
+    let mut by_run: Option<Vec<(PathBuf, RunRecord)>> = None;
     for p in spec.plan(base_dir)? {
         if finished_record(out, &p.id).is_some() {
             continue;
         }
         let from = record_path(archive, &p.id);
-        if !from.is_file() {
-            continue;
-        }
-        let mut r: RunRecord = read_json(&from)?;
-        if let Err(why) = r.verify(archive, &p.id) {
-            return Err(CampaignError::Mismatch(format!(
-                "{}: {why}",
-                from.display()
-            )));
-        }
-        if r.scene != p.scene || r.seed != p.seed {
-            return Err(CampaignError::Mismatch(format!(
-                "{} was made with another scene or seed than the spec now gives",
-                from.display()
-            )));
-        }
+        let (from, mut r) = if from.is_file() {
+            let r: RunRecord = read_json(&from)?;
+            if let Err(why) = r.verify(archive, &p.id) {
+                return Err(CampaignError::Mismatch(format!(
+                    "{}: {why}",
+                    from.display()
+                )));
+            }
+            if r.scene != p.scene || r.seed != p.seed {
+                return Err(CampaignError::Mismatch(format!(
+                    "{} was made with another scene or seed than the spec now gives",
+                    from.display()
+                )));
+            }
+            (from, r)
+        } else {
+            let all = match &mut by_run {
+                Some(all) => all,
+                None => by_run.insert(archive_records(archive)?),
+            };
+            let Some((from, r)) = all
+                .iter()
+                .find(|(_, r)| r.seed == p.seed && r.scene == p.scene)
+            else {
+                continue;
+            };
+            let mut r = r.clone();
+            r.id = p.id.clone();
+            r.settings = p.settings.clone();
+            (from.clone(), r)
+        };
         check_model(&r, &from)?;
         r.digest = Some(RunDigest {
             scene: scene_digest(&r.id, r.seed, &r.scene),
@@ -371,6 +391,22 @@ pub fn adopt_records(
         taken += 1;
     }
     Ok(taken)
+}
+
+/// Every record of the campaign archived in `archive` that passes the check of
+/// [`read_campaign`] there, with its path.
+fn archive_records(archive: &Path) -> Result<Vec<(PathBuf, RunRecord)>, CampaignError> {
+    let ids: Vec<String> = read_json(&archive.join("plan.json"))?;
+    let mut all = Vec::new();
+    for id in ids {
+        let path = record_path(archive, &id);
+        if let Ok(r) = read_json::<RunRecord>(&path)
+            && r.verify(archive, &id).is_ok()
+        {
+            all.push((path, r));
+        }
+    }
+    Ok(all)
 }
 
 /// Runs one planned run of a campaign prepared by [`prepare_campaign`] and writes it into

@@ -1289,3 +1289,54 @@ fn every_run_counts_at_its_final_volume() {
         assert!(t.work_mean[[0, hi, k]].is_finite());
     }
 }
+
+/// A run is its scene and seed: resuming from an archive takes a run planned under another
+/// id (a probe's axis setting a key to the value the spec now has anyway) and gives it this
+/// campaign's id and settings; nothing is run again, and the records read as this campaign.
+#[test]
+fn resuming_takes_the_same_run_planned_under_another_id() {
+    let dir = common::scratch("resume-by-scene");
+    let spec_a = dir.join("a.toml");
+    let spec_b = dir.join("b.toml");
+    std::fs::write(
+        &spec_a,
+        SPEC.replace("name = \"tiny\"", "name = \"a\"")
+            .replace("seeds = 2", "seeds = 1")
+            + "\n[[axis]]\nkey = \"sheet.gap\"\nvalues = [0.05]\n",
+    )
+    .unwrap();
+    std::fs::write(
+        &spec_b,
+        SPEC.replace("name = \"tiny\"", "name = \"b\"")
+            .replace("seeds = 2", "seeds = 1"),
+    )
+    .unwrap();
+    let run = |spec: &std::path::Path, out: &std::path::Path, from: Option<&std::path::Path>| {
+        let mut c = bin();
+        c.args(["campaign", "--threads", "1", "--quiet", "--spec"])
+            .arg(spec)
+            .arg("--out")
+            .arg(out);
+        if let Some(f) = from {
+            c.arg("--resume-from").arg(f);
+        }
+        c.output().unwrap()
+    };
+    common::succeeds(&run(&spec_a, &dir.join("a"), None));
+    let msg = common::succeeds(&run(&spec_b, &dir.join("b"), Some(&dir.join("a"))));
+    assert!(msg.contains("2 already done, 0 run now"), "{msg}");
+    let (_, a) = read_records(&dir.join("a")).unwrap();
+    let (_, b) = read_records(&dir.join("b")).unwrap();
+    for (x, y) in a.iter().zip(&b) {
+        assert!(
+            x.id.contains("gap=0.05") && !y.id.contains("gap"),
+            "{} {}",
+            x.id,
+            y.id
+        );
+        assert_eq!(
+            (&x.scene, x.seed, &x.summary.work_eq9),
+            (&y.scene, y.seed, &y.summary.work_eq9)
+        );
+    }
+}
