@@ -87,6 +87,7 @@ def simulate(
     *,
     sets: Optional[Sequence[str]] = None,
     progress: Any = True,
+    threads: int = 1,
     **overrides: Any,
 ) -> Simulation:
     """Runs the discrete-element ridge simulator on a scene.
@@ -103,6 +104,9 @@ def simulate(
         when tqdm is installed — a widget in notebooks —, else a line on stderr, every few
         seconds when stderr is not a terminal); False is silent; a callable is called with
         ``(time_s, duration_s)`` instead, at most five times a second.
+    threads : int, default 1
+        Threads each time step's force phases run on; the results are the same to the bit
+        on any number.
     **overrides
         Overrides by keyword; a dotted key is written with ``__`` (``contact__mu=0.4``) or
         passed as ``**{"contact.mu": 0.4}``. Values are numbers, booleans, strings or
@@ -117,9 +121,13 @@ def simulate(
     :class:`KeyboardInterrupt`. Unknown keys and bad values raise :class:`ValueError`.
     """
     path = None if scene is None else _os.fspath(scene)
+    if isinstance(threads, bool) or not isinstance(threads, int) or threads < 1:
+        raise ValueError(f"threads: expected a whole number of at least 1, got {threads!r}")
     show, bar = _progress.callback(progress, "simulate", "s simulated")
     try:
-        summary, toml, series = _core.simulate(path, _overrides(overrides, sets), show)
+        summary, toml, series = _core.simulate(
+            path, _overrides(overrides, sets), show, threads
+        )
     finally:
         if bar is not None:
             bar.close()

@@ -32,12 +32,13 @@ type SimOut<'py> = (String, String, Vec<(String, Bound<'py, PyArray1<f64>>)>);
 /// Runs a scene; returns (summary JSON, resolved scene TOML, [(column, samples)]).
 /// Ctrl-C stops the run at the next sample with `KeyboardInterrupt`.
 #[pyfunction]
-#[pyo3(signature = (scene, sets, progress=None))]
+#[pyo3(signature = (scene, sets, progress=None, threads=1))]
 pub(crate) fn simulate<'py>(
     py: Python<'py>,
     scene: Option<PathBuf>,
     sets: Vec<String>,
     progress: Option<Py<PyAny>>,
+    threads: usize,
 ) -> PyResult<SimOut<'py>> {
     let sc = guarded(|| load_scene(scene.as_deref(), &sets))?;
     let duration = sc.duration;
@@ -45,7 +46,7 @@ pub(crate) fn simulate<'py>(
         let mut interrupted: Option<PyErr> = None;
         // `progress(time, duration)` (s) at most every 0.2 s of wall time, and at the end.
         let mut last = std::time::Instant::now();
-        let out = simulation::run(&sc, &mut |w| {
+        let out = simulation::run_on(&sc, threads, &mut |w| {
             let t = w.time();
             let due = last.elapsed().as_secs_f64() >= 0.2 || t >= duration - 0.5 * w.dt();
             let r = Python::attach(|py| {

@@ -114,3 +114,18 @@ def test_a_run_directory_loads_and_plots(cli, tmp_path):
     assert len(coll) == 1 and len(coll[0].get_paths()) == want["bodies"]
     with pytest.raises(FileNotFoundError, match="not a run directory"):
         pr.load_run(tmp_path)
+
+
+def test_threads_give_the_same_bits():
+    """``threads=`` runs each step's force phases on several threads; the run is the same to
+    the bit, and a count below one is refused by name."""
+    one = pr.simulate(sets=SETS, progress=False)
+    two = pr.simulate(sets=SETS, progress=False, threads=2)
+    for s in (one.summary, two.summary):
+        s.pop("wall_seconds")
+    assert one.summary == two.summary
+    for name in one.series:
+        np.testing.assert_array_equal(one.series[name], two.series[name], err_msg=name)
+    for bad in (0, -1, 1.5, True):
+        with pytest.raises(ValueError, match="threads"):
+            pr.simulate(sets=SETS, progress=False, threads=bad)

@@ -422,6 +422,33 @@ impl Bodies {
         ke(self) - before
     }
 
+    /// Recomputes every body's world outline and bounding box from its pose
+    /// ([`Bodies::update_world`]), on the threads of `pool` when given (each body is its own:
+    /// the same bits on any number of threads).
+    pub(crate) fn update_all(&mut self, pool: Option<&rayon::ThreadPool>) {
+        let Some(pool) = pool else {
+            for i in 0..self.len() {
+                self.update_world(i);
+            }
+            return;
+        };
+        use rayon::prelude::*;
+        let (shape, theta, pos) = (&self.shape, &self.theta, &self.pos);
+        pool.install(|| {
+            self.axis
+                .par_iter_mut()
+                .zip(self.world.par_iter_mut())
+                .zip(self.aabb.par_iter_mut())
+                .enumerate()
+                .for_each(|(i, ((axis, world), aabb))| {
+                    let (s, c) = theta[i].sin_cos();
+                    *axis = V2::new(c, s);
+                    world.set_transformed(shape[i].outline(), c, s, pos[i]);
+                    *aabb = Aabb::of(world.verts());
+                });
+        });
+    }
+
     /// Recomputes the world outline and bounding box of body `i` from its pose.
     #[inline]
     pub(crate) fn update_world(&mut self, i: usize) {

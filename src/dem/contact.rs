@@ -256,6 +256,9 @@ pub(crate) struct ContactSet {
     pending: Vec<Pending>,
     /// Working space of the overlap geometry.
     scratch: OverlapScratch,
+    /// The candidate pairs' overlaps, computed on the threads of a pool
+    /// ([`ContactSet::update`]).
+    overlaps: Vec<Option<Overlap>>,
     /// Restitution and damping-ratio histograms.
     pub(crate) tally: ContactTally,
 }
@@ -325,7 +328,25 @@ impl ContactSet {
         onset: ContactOnset,
         sweeps: u32,
         work: &mut ContactWork,
+        pool: Option<&rayon::ThreadPool>,
     ) {
+        // The overlap geometry, the bulk of the work, pair by pair on the pool's threads;
+        // everything that sums follows in pair order below, so the bits do not depend on
+        // the number of threads.
+        if let Some(pool) = pool {
+            use rayon::prelude::*;
+            let b: &Bodies = bodies;
+            pool.install(|| {
+                pairs
+                    .par_iter()
+                    .map_init(OverlapScratch::default, |scratch, &key| {
+                        let (a, c) = unpack(key);
+                        let (a, c) = (a as usize, c as usize);
+                        overlap_with(&b.world[a], &b.world[c], b.pos[a], b.pos[c], scratch)
+                    })
+                    .collect_into_vec(&mut self.overlaps);
+            });
+        }
         std::mem::swap(&mut self.cur, &mut self.prev);
         self.cur.clear();
         self.pending.clear();
@@ -333,7 +354,7 @@ impl ContactSet {
         let k_te_per_chord = p.tangential_stiffness_per_chord();
         let p_c = p.crushing_pressure;
         let mut j = 0;
-        for &key in pairs {
+        for (k, &key) in pairs.iter().enumerate() {
             // Contacts of the last step whose pair is no longer a candidate have separated;
             // the elastic work they held stays booked and shows as `contact_hysteresis`.
             while j < self.prev.len() && self.prev[j].key < key {
@@ -348,13 +369,17 @@ impl ContactSet {
             };
             let (a, b) = unpack(key);
             let (a, b) = (a as usize, b as usize);
-            let Some(ov) = overlap_with(
-                &bodies.world[a],
-                &bodies.world[b],
-                bodies.pos[a],
-                bodies.pos[b],
-                &mut self.scratch,
-            ) else {
+            let overlap = match pool {
+                Some(_) => self.overlaps[k],
+                None => overlap_with(
+                    &bodies.world[a],
+                    &bodies.world[b],
+                    bodies.pos[a],
+                    bodies.pos[b],
+                    &mut self.scratch,
+                ),
+            };
+            let Some(ov) = overlap else {
                 if let Some(o) = &old {
                     self.tally.ended(o, dt);
                 }

@@ -150,8 +150,14 @@ impl JointSet {
 
     /// Applies every intact joint's forces to the bodies: all of them for the explicit
     /// dashpot, the elastic ones for the implicit one (then [`JointSet::apply_viscous`]).
-    pub fn apply(&mut self, bodies: &mut Bodies, rho_i: f64, dashpot: Dashpot) {
-        super::joint::apply_all(&mut self.joints, bodies, rho_i, dashpot);
+    pub fn apply(
+        &mut self,
+        bodies: &mut Bodies,
+        rho_i: f64,
+        dashpot: Dashpot,
+        pool: Option<&rayon::ThreadPool>,
+    ) {
+        super::joint::apply_all(&mut self.joints, bodies, rho_i, dashpot, pool);
     }
 
     /// Applies every intact joint's viscous force at the mid-step velocities, once every

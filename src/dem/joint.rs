@@ -303,7 +303,7 @@ impl Joint {
     /// [`apply_all`], which evaluates them four at a time.)
     #[cfg(test)]
     pub(crate) fn apply(&mut self, bodies: &mut Bodies, rho_i: f64, dashpot: Dashpot) {
-        apply_all(std::slice::from_mut(self), bodies, rho_i, dashpot);
+        apply_all(std::slice::from_mut(self), bodies, rho_i, dashpot, None);
     }
 
     /// Readies an intact joint for [`JointLanes::load`]: the Gauss points of its present
@@ -315,25 +315,31 @@ impl Joint {
         }
     }
 
-    /// Takes lane `l`'s results: keeps the stresses and forces and adds the forces to the
-    /// bodies (the viscous ones later, in [`Joint::apply_viscous`], for the implicit
-    /// dashpot).
+    /// Takes lane `l`'s results: keeps the stresses and the forces (the viscous ones zero for
+    /// the implicit dashpot: they follow in [`Joint::apply_viscous`]), for
+    /// [`Joint::add_forces`].
     #[inline]
-    fn finish(&mut self, x: &JointLanes, l: usize, bodies: &mut Bodies, dashpot: Dashpot) {
+    fn finish(&mut self, x: &JointLanes, l: usize, dashpot: Dashpot) {
         let ((top, bottom), el, mut vi) = x.result(l);
         self.stress = SurfaceStress { top, bottom };
         if dashpot == Dashpot::Implicit {
             // The viscous stress follows once every other force is known (`apply_viscous`).
             vi = JointForces::default();
         }
+        self.forces = [el, vi];
+    }
+
+    /// Adds the forces kept by [`Joint::finish`] to the bodies: the elastic, then the
+    /// viscous, each on `a` then `b`.
+    #[inline]
+    fn add_forces(&self, bodies: &mut Bodies) {
         let (ia, ib) = (self.a as usize, self.b as usize);
-        for f in [&el, &vi] {
+        for f in &self.forces {
             bodies.force[ia] = bodies.force[ia] + f.fa;
             bodies.torque[ia] += f.ma;
             bodies.force[ib] = bodies.force[ib] + f.fb;
             bodies.torque[ib] += f.mb;
         }
-        self.forces = [el, vi];
     }
 
     /// The viscous stress of eq (1) at the mid-step velocities ([`Dashpot::Implicit`] for
@@ -447,18 +453,46 @@ impl Joint {
 
 /// Applies every intact joint of `joints` to the bodies, in order: the stresses and forces
 /// of eq (1), kept in each joint for the fracture test and the ledger. The joint law is
-/// evaluated [`lanes::L`] joints at a time, and the forces are added to the
-/// bodies joint by joint in the order of `joints`, so that the sums are those of one joint
-/// after another.
-pub(crate) fn apply_all(joints: &mut [Joint], bodies: &mut Bodies, rho_i: f64, dashpot: Dashpot) {
+/// evaluated [`lanes::L`] joints at a time (each lane on its own, so a joint's result does
+/// not depend on its neighbours in the lanes), on the threads of `pool` when given, in
+/// chunks; the forces are then added to the bodies joint by joint in the order of `joints`,
+/// so that the sums are those of one joint after another on any number of threads.
+pub(crate) fn apply_all(
+    joints: &mut [Joint],
+    bodies: &mut Bodies,
+    rho_i: f64,
+    dashpot: Dashpot,
+    pool: Option<&rayon::ThreadPool>,
+) {
+    let b: &Bodies = bodies;
+    match pool {
+        Some(pool) => pool.install(|| {
+            use rayon::prelude::*;
+            joints
+                .par_chunks_mut(JOINT_CHUNK)
+                .for_each(|chunk| evaluate(chunk, b, rho_i, dashpot));
+        }),
+        None => evaluate(joints, b, rho_i, dashpot),
+    }
+    for j in joints.iter().filter(|j| j.is_intact()) {
+        j.add_forces(bodies);
+    }
+}
+
+/// Joints per chunk of a parallel evaluation ([`apply_all`]): a multiple of [`lanes::L`].
+const JOINT_CHUNK: usize = 16 * lanes::L;
+
+/// Evaluates the joint law of every intact joint of `joints`, [`lanes::L`] at a time, and
+/// keeps the results in each joint ([`Joint::finish`]); the bodies are only read.
+fn evaluate(joints: &mut [Joint], bodies: &Bodies, rho_i: f64, dashpot: Dashpot) {
     let mut x = JointLanes::default();
     let mut group = [0usize; lanes::L];
     let mut n = 0;
-    let flush = |x: &mut JointLanes, group: &[usize], joints: &mut [Joint], b: &mut Bodies| {
+    let flush = |x: &mut JointLanes, group: &[usize], joints: &mut [Joint]| {
         x.pad(group.len());
         x.evaluate();
         for (l, &i) in group.iter().enumerate() {
-            joints[i].finish(x, l, b, dashpot);
+            joints[i].finish(x, l, dashpot);
         }
     };
     for i in 0..joints.len() {
@@ -472,12 +506,12 @@ pub(crate) fn apply_all(joints: &mut [Joint], bodies: &mut Bodies, rho_i: f64, d
         group[n] = i;
         n += 1;
         if n == lanes::L {
-            flush(&mut x, &group, joints, bodies);
+            flush(&mut x, &group, joints);
             n = 0;
         }
     }
     if n > 0 {
-        flush(&mut x, &group[..n], joints, bodies);
+        flush(&mut x, &group[..n], joints);
     }
 }
 

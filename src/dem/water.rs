@@ -30,6 +30,7 @@ use super::body::{Bodies, Role};
 use super::broadphase::unpack;
 use super::contact::Contact;
 use super::geometry::{ClipPoly, V2, area_centroid, clip_below_into};
+use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 /// The water: level, density and drag law.
@@ -95,6 +96,8 @@ pub(crate) struct WaterForces {
     pub buoyancy: Vec<(f64, V2)>,
     /// Drag force (N/m), its point (m) and drag moment (N·m/m).
     pub drag: Vec<(V2, V2, f64)>,
+    /// Which of them act on each body this step.
+    applied: Vec<Applied>,
     scratch: ClipPoly,
 }
 
@@ -111,71 +114,51 @@ impl WaterForces {
     /// Computes buoyancy and drag on every body from its current outline and half-step
     /// velocities, and adds them to the body forces. `g` is gravity (m/s²). `shielded[i]`
     /// (when not empty) exempts body `i` from form drag ([`WaterParams::shielding_contacts`]).
-    pub fn apply(&mut self, bodies: &mut Bodies, w: &WaterParams, g: f64, shielded: &[bool]) {
+    /// With a thread `pool` the bodies are computed in parallel; each body's forces are its
+    /// own, so the result is the same to the bit on any number of threads.
+    pub fn apply(
+        &mut self,
+        bodies: &mut Bodies,
+        w: &WaterParams,
+        g: f64,
+        shielded: &[bool],
+        pool: Option<&rayon::ThreadPool>,
+    ) {
         let n = bodies.len();
         self.buoyancy.resize(n, (0.0, V2::default()));
         self.drag.resize(n, (V2::default(), V2::default(), 0.0));
-        let drag_on = w.drag_coefficient > 0.0 || w.linear_drag > 0.0;
-        for i in 0..n {
-            let aabb = bodies.aabb[i];
-            // Held bodies are external agents: no water forces on them.
-            if aabb.min.y >= w.level || bodies.drive[i].is_kinematic() {
-                self.buoyancy[i] = (0.0, V2::default());
-                self.drag[i] = (V2::default(), V2::default(), 0.0);
-                continue;
-            }
-            let partly = aabb.max.y > w.level;
-            let (area, c) = if partly {
-                clip_below_into(&bodies.world[i], w.level, &mut self.scratch);
-                self.scratch.area_centroid()
-            } else {
-                area_centroid(bodies.world[i].verts())
-            };
-            if area <= 0.0 {
-                self.buoyancy[i] = (0.0, V2::default());
-                self.drag[i] = (V2::default(), V2::default(), 0.0);
-                continue;
-            }
-            let fb = w.density * g * area;
-            bodies.apply(i, V2::new(0.0, fb), c);
-            self.buoyancy[i] = (fb, c);
-            // The sheet and the floe feel the water's damping through their own boundary
-            // forces (eqs 7–8; the floe's dashpots): by default drag acts on free blocks
-            // and rubble only.
-            let boundary_body =
-                w.drag_bodies.is_rubble() && matches!(bodies.role[i], Role::Sheet | Role::Floe);
-            let packed = shielded.get(i).copied().unwrap_or(false);
-            if !drag_on || boundary_body || packed {
-                self.drag[i] = (V2::default(), V2::default(), 0.0);
-                continue;
-            }
-            let verts = if partly {
-                self.scratch.verts()
-            } else {
-                bodies.world[i].verts()
-            };
-            let vs = bodies.point_velocity(i, c);
-            let speed = vs.norm();
-            let mut f = vs * (-w.linear_drag * area);
-            if speed > 0.0 && w.drag_coefficient > 0.0 {
-                let across = vs.perp() * (1.0 / speed);
-                let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-                for &p in verts {
-                    let s = p.dot(across);
-                    lo = lo.min(s);
-                    hi = hi.max(s);
+        self.applied.resize(n, Applied::None);
+        let b: &Bodies = bodies;
+        let one = |i: usize, scratch: &mut ClipPoly| body_water(b, i, w, g, shielded, scratch);
+        match pool {
+            Some(pool) => pool.install(|| {
+                self.buoyancy
+                    .par_iter_mut()
+                    .zip(self.drag.par_iter_mut())
+                    .zip(self.applied.par_iter_mut())
+                    .enumerate()
+                    .for_each_init(ClipPoly::default, |scratch, (i, ((bu, dr), ap))| {
+                        (*bu, *dr, *ap) = one(i, scratch);
+                    })
+            }),
+            None => {
+                for i in 0..n {
+                    (self.buoyancy[i], self.drag[i], self.applied[i]) = one(i, &mut self.scratch);
                 }
-                f = f + vs * (-0.5 * w.density * w.drag_coefficient * (hi - lo) * speed);
             }
-            let om = bodies.omega[i];
-            let mut m = 0.0;
-            if om != 0.0 && w.drag_coefficient > 0.0 {
-                let lever = spin_drag_lever(verts, bodies.pos[i], w.level, om > 0.0);
-                m = -0.5 * w.density * w.drag_coefficient * lever * om.abs() * om;
+        }
+        for i in 0..n {
+            let a = self.applied[i];
+            if a == Applied::None {
+                continue;
             }
-            bodies.apply(i, f, c);
-            bodies.torque[i] += m;
-            self.drag[i] = (f, c, m);
+            let (fb, c) = self.buoyancy[i];
+            bodies.apply(i, V2::new(0.0, fb), c);
+            if a == Applied::BuoyancyAndDrag {
+                let (f, p, m) = self.drag[i];
+                bodies.apply(i, f, p);
+                bodies.torque[i] += m;
+            }
         }
     }
 
@@ -189,10 +172,10 @@ impl WaterForces {
         work: &mut WaterWork,
     ) {
         for i in 0..self.buoyancy.len() {
-            let (fb, c) = self.buoyancy[i];
-            if fb == 0.0 {
+            if self.applied[i] == Applied::None {
                 continue;
             }
+            let (fb, c) = self.buoyancy[i];
             let v = vbar[i] + (c - bodies.pos[i]).perp() * wbar[i];
             work.buoyancy -= fb * v.y * dt;
             let (f, p, m) = self.drag[i];
@@ -200,6 +183,87 @@ impl WaterForces {
             work.drag -= (f.dot(vd) + m * wbar[i]) * dt;
         }
     }
+}
+
+/// Which water forces act on a body this step.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+enum Applied {
+    /// None: above the water, held, or without a submerged area.
+    #[default]
+    None,
+    /// Buoyancy alone (no drag on it: drag off, the sheet or floe under the default, or
+    /// shielded).
+    Buoyancy,
+    /// Buoyancy and drag.
+    BuoyancyAndDrag,
+}
+
+/// The water forces on body `i` of `b` ([`WaterForces::apply`]): buoyancy (N/m) at the
+/// submerged centroid (m), drag force (N/m), its point (m) and moment (N·m/m), and which of
+/// them act. `scratch` holds the submerged part of a body the water line cuts.
+fn body_water(
+    b: &Bodies,
+    i: usize,
+    w: &WaterParams,
+    g: f64,
+    shielded: &[bool],
+    scratch: &mut ClipPoly,
+) -> ((f64, V2), (V2, V2, f64), Applied) {
+    let none = (
+        (0.0, V2::default()),
+        (V2::default(), V2::default(), 0.0),
+        Applied::None,
+    );
+    let aabb = b.aabb[i];
+    // Held bodies are external agents: no water forces on them.
+    if aabb.min.y >= w.level || b.drive[i].is_kinematic() {
+        return none;
+    }
+    let partly = aabb.max.y > w.level;
+    let (area, c) = if partly {
+        clip_below_into(&b.world[i], w.level, scratch);
+        scratch.area_centroid()
+    } else {
+        area_centroid(b.world[i].verts())
+    };
+    if area <= 0.0 {
+        return none;
+    }
+    let fb = w.density * g * area;
+    let buoyancy = (fb, c);
+    // The sheet and the floe feel the water's damping through their own boundary forces
+    // (eqs 7–8; the floe's dashpots): by default drag acts on free blocks and rubble only.
+    let drag_on = w.drag_coefficient > 0.0 || w.linear_drag > 0.0;
+    let boundary_body = w.drag_bodies.is_rubble() && matches!(b.role[i], Role::Sheet | Role::Floe);
+    let packed = shielded.get(i).copied().unwrap_or(false);
+    if !drag_on || boundary_body || packed {
+        return (buoyancy, none.1, Applied::Buoyancy);
+    }
+    let verts = if partly {
+        scratch.verts()
+    } else {
+        b.world[i].verts()
+    };
+    let vs = b.point_velocity(i, c);
+    let speed = vs.norm();
+    let mut f = vs * (-w.linear_drag * area);
+    if speed > 0.0 && w.drag_coefficient > 0.0 {
+        let across = vs.perp() * (1.0 / speed);
+        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for &p in verts {
+            let s = p.dot(across);
+            lo = lo.min(s);
+            hi = hi.max(s);
+        }
+        f = f + vs * (-0.5 * w.density * w.drag_coefficient * (hi - lo) * speed);
+    }
+    let om = b.omega[i];
+    let mut m = 0.0;
+    if om != 0.0 && w.drag_coefficient > 0.0 {
+        let lever = spin_drag_lever(verts, b.pos[i], w.level, om > 0.0);
+        m = -0.5 * w.density * w.drag_coefficient * lever * om.abs() * om;
+    }
+    (buoyancy, (f, c, m), Applied::BuoyancyAndDrag)
 }
 
 /// Which of the `n` bodies are shielded from form drag ([`WaterParams::shielding_contacts`]):

@@ -100,6 +100,8 @@ pub struct World {
     wbar: Vec<f64>,
     /// Bodies shielded from form drag this step (`dem::water::shielded_bodies`).
     shielded: Vec<bool>,
+    /// Threads the force phases of a step run on ([`World::set_threads`]); none: one.
+    pool: Option<std::sync::Arc<rayon::ThreadPool>>,
 }
 
 impl World {
@@ -130,6 +132,7 @@ impl World {
             vbar: Vec::new(),
             wbar: Vec::new(),
             shielded: Vec::new(),
+            pool: None,
         })
     }
 
@@ -303,6 +306,30 @@ impl World {
         self.acc.kinetic_start += self.body_kinetic_energy(i) - before;
     }
 
+    /// Runs the force phases of every step (outlines, water, joints, the contact geometry)
+    /// on `threads` threads (1: on the calling thread, the default). Everything that is
+    /// summed is summed in the same order whatever the count, so the same world gives the
+    /// same bits on any number of threads; a count is a speed, not a parameter (it is in no
+    /// scene or saved state). An error when the threads cannot be started.
+    pub fn set_threads(&mut self, threads: usize) -> Result<(), WorldError> {
+        self.pool = if threads <= 1 {
+            None
+        } else {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .thread_name(|k| format!("pressridge-step-{k}"))
+                .build()
+                .map_err(|e| WorldError::State(format!("{threads} threads: {e}")))?;
+            Some(std::sync::Arc::new(pool))
+        };
+        Ok(())
+    }
+
+    /// The number of threads a step runs on ([`World::set_threads`]).
+    pub fn threads(&self) -> usize {
+        self.pool.as_ref().map_or(1, |p| p.current_num_threads())
+    }
+
     /// The parameters.
     pub fn params(&self) -> &WorldParams {
         &self.params
@@ -359,9 +386,10 @@ impl World {
     fn gather_forces(&mut self, dt: f64) {
         let n = self.bodies.len();
         let g = self.params.gravity;
+        let pool = self.pool.as_deref();
         let b = &mut self.bodies;
+        b.update_all(pool);
         for i in 0..n {
-            b.update_world(i);
             b.force[i] = V2::default();
             b.torque[i] = 0.0;
         }
@@ -373,11 +401,11 @@ impl World {
         }
         if let Some(w) = &self.params.water {
             shielded_bodies(self.contacts.contacts(), n, w, &mut self.shielded);
-            self.water.apply(b, w, g, &self.shielded);
+            self.water.apply(b, w, g, &self.shielded, pool);
         }
         // Joints (eq 1) and boundary conditions (eqs 7–8, floe supports).
         self.joints
-            .apply(b, self.params.ice_density, self.params.joint_dashpot);
+            .apply(b, self.params.ice_density, self.params.joint_dashpot, pool);
         self.boundary.apply(b);
         for &(id, f) in &self.loads {
             b.force[id as usize] = b.force[id as usize] + f;
@@ -408,6 +436,7 @@ impl World {
             self.params.contact_onset,
             self.params.contact_dashpot_sweeps,
             &mut self.acc.contact,
+            pool,
         );
         if self.params.joint_dashpot == Dashpot::Implicit {
             self.joints.apply_viscous(b, dt);
