@@ -49,14 +49,23 @@ pub fn reach_of(r: &RunRecord, reach: f64) -> f64 {
 }
 
 /// The reach (m) in `scene` given the reach `reach` (m) for the paper's scene
-/// ([`reach_of`], for a scene rather than a run's record).
+/// ([`reach_of`], for a scene rather than a run's record). It is counted from the top of
+/// the floe's nose ramp: a longer ramp than the paper's scene's (a shallower `floe.nose_slope`)
+/// adds its extra run, so that a sheet whose tip climbs the ramp and breaks there is not
+/// taken for a raft (a 20° ramp runs 1.37 m where the 45° one runs 0.5 m).
 pub fn reach_in(scene: &crate::scene::Scene, reach: f64) -> f64 {
     match (&scene.floe, &scene.sheet) {
         (Some(f), Some(s)) => {
             let scale = (s.thickness / REACH_THICKNESS)
                 .min(f.thickness / REACH_FLOE_THICKNESS)
-                .min(f.length / REACH_FLOE_LENGTH);
-            reach * scale.max(1.0)
+                .min(f.length / REACH_FLOE_LENGTH)
+                .max(1.0);
+            let extra_run = if f.nose_slope == 1.0 {
+                0.0
+            } else {
+                (f.nose_run() - f.nose_bevel).max(0.0)
+            };
+            reach * scale + extra_run
         }
         _ => reach,
     }
@@ -68,7 +77,8 @@ pub fn reach_rule(reach: f64) -> String {
     format!(
         "{reach} m in a scene of the paper's size, and that times the scene's scale in a scene \
          larger in all of sheet thickness, floe thickness and floe length (the smallest of \
-         h/0.30 m, floe thickness/2 m and floe length/20 m)"
+         h/0.30 m, floe thickness/2 m and floe length/20 m), plus the run a nose ramp \
+         shallower than 45° has beyond its drop"
     )
 }
 
@@ -173,6 +183,7 @@ mod tests {
         json["sheet_overrun_max"] = overrun.into();
         let mut scene = crate::scene::Scene::default();
         scene.sheet.as_mut().expect("a sheet").thickness = thickness;
+        scene.floe.as_mut().expect("a floe").nose_slope = 1.0;
         match floe_length {
             Some(l) => {
                 let f = scene.floe.as_mut().expect("a floe");
@@ -235,5 +246,24 @@ mod tests {
             outcome(&record(Some(40.0), 0.30, 3.8), r),
             Outcome::Rafted(3.8)
         );
+    }
+
+    /// A nose ramp shallower than 45° adds its extra run to the reach: at 20° the 0.5-m drop
+    /// runs 1.37 m, 0.87 m more than at 45°, so the reach is 2.87 m; a tip that stopped
+    /// 2.6 m past the ramp's foot broke at the floe, one 3.0 m past it rode over.
+    #[test]
+    fn a_longer_nose_ramp_lengthens_the_reach() {
+        let at = |overrun: f64| {
+            let mut r = record(Some(40.0), 0.30, overrun);
+            r.scene.floe.as_mut().unwrap().nose_slope = 0.36397;
+            r
+        };
+        let reach = reach_of(&at(0.0), RAFTING_REACH);
+        assert!(
+            (reach - (2.0 + 0.5 / 0.36397 - 0.5)).abs() < 1e-12,
+            "{reach}"
+        );
+        assert_eq!(outcome(&at(2.6), RAFTING_REACH), Outcome::Ridged);
+        assert_eq!(outcome(&at(3.0), RAFTING_REACH), Outcome::Rafted(3.0));
     }
 }
