@@ -14,7 +14,9 @@
 # progress goes to runs/paper2/<set>.log. Most of a day on two cores with the binary of
 # 2026-11-23 (docs/tables.md); run it under nohup:
 #   nohup scripts/paper-campaign.sh [THREADS] [OUT_ROOT] > runs/paper2.log 2>&1 &
-# PAPER_SETS="friction modulus" runs only those sets (in that order).
+# PAPER_SETS="friction modulus" runs only those sets (in that order). PAPER_EXTRA names more
+# archives to take finished runs from (space-separated), e.g. a probe of the register whose
+# setting is now the default: a run of the same scene and seed is taken whatever its id.
 # Then tabulate a set with `pressridge tabulate --campaign runs/paper2/<set> ...`
 # (data/README.md gives the commands behind each committed table and report).
 set -euo pipefail
@@ -39,6 +41,7 @@ for set in $sets; do
   # are taken, not run again.
   resume=()
   [ -d "$records/$set" ] && resume=(--resume-from "$records/$set")
+  for extra in ${PAPER_EXTRA:-}; do resume+=(--resume-from "$extra"); done
   "$bin" campaign --spec "data/campaigns/$set.toml" --out "$root/$set" "${resume[@]}" \
     --threads "$threads" --progress-interval 60 2> "$root/$set.log"
 done
