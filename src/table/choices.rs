@@ -381,7 +381,8 @@ pub fn effects(baseline: &[RunRecord], probes: &[(String, Vec<RunRecord>)]) -> S
          ratio of its contacts and restitution of its impacts; \
          sail/keel is the rubble ice area above over below the water line; overrun is the \
          farthest the intact sheet passed the floe's nose; rafted counts the runs whose overrun \
-         passed 2 m. The friction tables test the paper's statements within each setting: the \
+         passed the rafting reach, 2 m past the top of the nose ramp (a 45° ramp's 0.5 m; a \
+         20° ramp adds its longer run, 2.87 m). The friction tables test the paper's statements within each setting: the \
          change of each mean from μ = 0.4 to μ = 1.0 at one μ_w, with the paper's sign in the \
          column's name.\n",
     );
