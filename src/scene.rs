@@ -25,8 +25,8 @@ use crate::limits::Range;
 mod build;
 mod sections;
 pub use sections::{
-    ExperimentalSection, FloeSection, IceSection, JointSection, NumericsSection, OutputSection,
-    PileSection, SheetSection, WallSection, WaterSection,
+    ExperimentalSection, FloeSection, IceSection, JointSection, NOSE_SLOPE, NumericsSection,
+    OutputSection, PileSection, SheetSection, WallSection, WaterSection,
 };
 mod validate;
 

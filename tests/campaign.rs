@@ -10,7 +10,7 @@ const SPEC: &str = r#"
 name = "tiny"
 seeds = 2
 sample_interval = 1.0
-set = ["duration=3.0", "sheet.length=8.0"]
+set = ["duration=3.0", "sheet.length=8.0", "floe.nose_slope=1.0"]
 
 [[axis]]
 keys = ["sheet.thickness", "sheet.block_width"]
@@ -929,7 +929,7 @@ fn friction_is_chosen_by_its_value_across_campaigns() {
 name = "tinyfriction"
 seeds = 1
 sample_interval = 1.0
-set = ["duration=3.0", "sheet.length=8.0", "sheet.thickness=0.25", "sheet.block_width=0.25"]
+set = ["duration=3.0", "sheet.length=8.0", "sheet.thickness=0.25", "sheet.block_width=0.25", "floe.nose_slope=1.0"]
 
 [[axis]]
 key = "contact.mu"
@@ -1077,7 +1077,7 @@ fn keys_scaled_with_the_thickness_join_two_campaigns_into_one_set() {
 name = "tinyscaled"
 seeds = 1
 sample_interval = 1.0
-set = ["duration=3.0", "sheet.length=8.0"]
+set = ["duration=3.0", "sheet.length=8.0", "floe.nose_slope=1.0"]
 
 [[axis]]
 keys = ["sheet.thickness", "sheet.block_width", "floe.thickness", "floe.length"]

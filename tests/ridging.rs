@@ -117,7 +117,8 @@ fn ridging_is_reproducible_and_seed_dependent() {
     );
 }
 
-/// A broken piece of the floe (one 1 m block on its support spring, no pin) under the weight
+/// A broken piece of the floe (one 1 m block on its support spring, no pin, with a 45° nose:
+/// a 1-m floe cannot hold the 20° ramp's 2-m nose block) under the weight
 /// of a sail subsides at most 0.5 m, as the paper chose its support stiffness to ensure.
 /// Per metre of piece the resistance is the spring k plus buoyancy ρ_w·g while the top is
 /// above water, the spring alone once the 0.18 m freeboard is under: δ = F/(k + ρ_w·g) up to
@@ -127,7 +128,12 @@ fn ridging_is_reproducible_and_seed_dependent() {
 fn broken_floe_piece_subsides_at_most_half_a_metre() {
     use pressridge::dem::{Role, V2};
     let scene = Scene::default()
-        .with_overrides(&["floe.length=1.0", "floe.pin=false", "duration=30"])
+        .with_overrides(&[
+            "floe.length=1.0",
+            "floe.nose_slope=1",
+            "floe.pin=false",
+            "duration=30",
+        ])
         .unwrap();
     let mut scene = scene;
     scene.sheet = None;

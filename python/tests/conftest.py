@@ -19,7 +19,7 @@ TINY_SPEC = """\
 name = "tiny"
 seeds = 2
 sample_interval = 1.0
-set = ["duration=5.0", "sheet.length=8.0"]
+set = ["duration=5.0", "sheet.length=8.0", "floe.nose_slope=1.0"]
 
 [[axis]]
 keys = ["sheet.thickness", "sheet.block_width"]

@@ -230,10 +230,20 @@ fn the_open_options_are_left_out_at_their_defaults_and_checked_when_set() {
         "shielding_contacts",
         "boundary_damping_fraction",
         "tip_bevel_slope",
-        "nose_slope",
     ] {
         assert!(!text.contains(key), "{key} is written at its default");
     }
+    // The nose ramp's default (20°) is not the meaning of an absent key (45°, as files of
+    // model revisions 1-2 were written): the built-in scene writes it; a 45° scene omits it
+    // and reads back at 45°.
+    assert!(text.contains("nose_slope = 0.36397"), "{text}");
+    let steep = Scene::default()
+        .with_overrides(&["floe.nose_slope=1"])
+        .unwrap();
+    assert!(!steep.to_toml().contains("nose_slope"));
+    assert_eq!(Scene::from_toml(&steep.to_toml()).unwrap(), steep);
+    let partial = Scene::from_toml("[floe]\nthickness = 2.0").unwrap();
+    assert_eq!(partial.floe.unwrap().nose_slope, 1.0);
     let s = Scene::default()
         .with_overrides(&[
             "contact.crushing_pressure=1e6",
@@ -248,6 +258,8 @@ fn the_open_options_are_left_out_at_their_defaults_and_checked_when_set() {
     assert_eq!(s.contact.damping_law, crate::dem::DampingLaw::Contact);
     for (set, key) in [
         ("contact.crushing_pressure=-1", "contact.crushing_pressure"),
+        // A 1-m floe cannot hold the 2-m nose block of a 20° ramp.
+        ("floe.length=1", "floe.length"),
         ("floe.nose_slope=0", "floe.nose_slope"),
         ("sheet.tip_bevel_slope=0.3", "sheet.tip_bevel_slope"),
         (
@@ -263,14 +275,17 @@ fn the_open_options_are_left_out_at_their_defaults_and_checked_when_set() {
     }
 }
 
-/// A nose ramp at 20° (slope tan 20° = 0.364) drops its 0.5 m over a run of 1.37 m: the nose
-/// block becomes two floe blocks wide, the floe keeps its length, and the ramp's outline has
-/// that slope. At 45° the floe is built as before, one block per metre.
+/// The default nose ramp at 20° (slope tan 20° = 0.364) drops its 0.5 m over a run of
+/// 1.37 m: the nose block becomes two floe blocks wide, the floe keeps its length, and the
+/// ramp's outline has that slope. At 45° the floe is built as in model revisions 1–2, one
+/// block per metre.
 #[test]
 fn a_shallow_nose_ramp_widens_the_nose_block() {
-    let s = Scene::default()
-        .with_overrides(&["floe.nose_slope=0.36397"])
-        .unwrap();
+    let s = Scene::default();
+    assert_eq!(
+        s.floe.as_ref().unwrap().nose_slope,
+        crate::scene::NOSE_SLOPE
+    );
     let w = s.build().unwrap();
     let b = w.bodies();
     let floe: Vec<usize> = (0..b.len()).filter(|&i| b.role[i] == Role::Floe).collect();
@@ -281,7 +296,11 @@ fn a_shallow_nose_ramp_widens_the_nose_block() {
     assert_eq!(length, 40.0);
     let run = nose.bevel_run.unwrap()[3];
     assert!((nose.bevel[3] / run - 0.36397).abs() < 1e-12);
-    let d = Scene::default().build().unwrap();
+    let d = Scene::default()
+        .with_overrides(&["floe.nose_slope=1"])
+        .unwrap()
+        .build()
+        .unwrap();
     let n = (0..d.bodies().len())
         .filter(|&i| d.bodies().role[i] == Role::Floe)
         .count();

@@ -247,6 +247,21 @@ impl Scene {
                     ),
                 ));
             }
+            let blocks = (f.length / f.block_width).round().max(1.0) as usize;
+            if f.nose_block_widths() > blocks {
+                return bad(
+                    "floe.length",
+                    &format!(
+                        "{} m holds {blocks} floe block(s) of floe.block_width = {} m, fewer than \
+                         the {} the nose block needs for its ramp's run of {:.2} m \
+                         (floe.nose_bevel / floe.nose_slope)",
+                        f.length,
+                        f.block_width,
+                        f.nose_block_widths(),
+                        f.nose_run()
+                    ),
+                );
+            }
             if 2.0 * f.corner_bevel >= side {
                 return Err(SceneError::Invalid(
                     "floe.corner_bevel".into(),

@@ -85,10 +85,13 @@ pub fn reach_rule(reach: f64) -> String {
 /// In words, what a run whose intact sheet passed the floe's nose by at most `overrun` (m)
 /// did against rafting reach `reach` (m): it rode over the floe, or it broke at it.
 pub fn verdict(overrun: f64, reach: f64) -> String {
+    // The reach to the centimetre, without trailing zeros ("2 m", "2.87 m").
+    let text = format!("{reach:.2}");
+    let text = text.trim_end_matches('0').trim_end_matches('.');
     let what = if overrun > reach {
-        format!("it rode over the floe (more than the {reach} m rafting reach)")
+        format!("it rode over the floe (more than the {text} m rafting reach)")
     } else {
-        format!("it broke at the floe (within the {reach} m rafting reach)")
+        format!("it broke at the floe (within the {text} m rafting reach)")
     };
     format!("the intact sheet passed the floe's nose by at most {overrun:.2} m: {what}")
 }
@@ -214,6 +217,7 @@ mod tests {
         );
         assert!(v.contains("by at most 20.46 m"), "{v}");
         assert!(verdict(2.0, 2.0).ends_with("it broke at the floe (within the 2 m rafting reach)"));
+        assert!(verdict(1.33, 2.873739593922576).ends_with("(within the 2.87 m rafting reach)"));
     }
 
     /// The reach is the given one in a scene of the paper's size (a 0.30-m sheet on a 20-m
