@@ -26,7 +26,7 @@
 use super::body::Bodies;
 use super::broadphase::{pair_key, unpack};
 use super::geometry::{Overlap, OverlapScratch, V2, overlap_with};
-use super::numerics::{ContactOnset, Dashpot};
+use super::numerics::{ContactOnset, Dashpot, StepNumerics};
 
 mod params;
 mod tally;
@@ -178,6 +178,17 @@ struct Pending {
     kappa: f64,
 }
 
+/// The contact law of a step: its parameters, eq (3)'s coefficient k_nv (kg/(m²·s)) and the
+/// water level (m) below which contacts take μ_w (`None` in a dry scene).
+pub(crate) struct ContactLaw<'a> {
+    /// Eqs (2)–(4)'s parameters.
+    pub params: &'a ContactParams,
+    /// Eq (3)'s k_nv (kg/(m²·s)).
+    pub k_nv: f64,
+    /// The water level (m), or `None`.
+    pub water_level: Option<f64>,
+}
+
 impl ContactSet {
     /// The active contacts of the last step, sorted by key.
     pub fn contacts(&self) -> &[Contact] {
@@ -212,21 +223,22 @@ impl ContactSet {
     /// half-step velocities stored in `bodies`, and adds the forces to the bodies.
     /// `water_level` (m) selects μ_w for contacts centred below it; `dashpot` says how
     /// eq (3) is advanced ([`Dashpot`]).
-    #[allow(clippy::too_many_arguments)]
-    pub fn update(
+    pub(crate) fn update(
         &mut self,
         bodies: &mut Bodies,
         pairs: &[u64],
-        p: &ContactParams,
-        k_nv: f64,
-        dt: f64,
-        water_level: Option<f64>,
-        dashpot: Dashpot,
-        onset: ContactOnset,
-        sweeps: u32,
+        law: &ContactLaw<'_>,
+        num: &StepNumerics,
         work: &mut ContactWork,
         pool: Option<&rayon::ThreadPool>,
     ) {
+        let (p, k_nv, water_level) = (law.params, law.k_nv, law.water_level);
+        let (dt, dashpot, onset, sweeps) = (
+            num.dt,
+            num.contact_dashpot,
+            num.contact_onset,
+            num.contact_dashpot_sweeps,
+        );
         // The overlap geometry, the bulk of the work, pair by pair on the pool's threads;
         // everything that sums follows in pair order below, so the bits do not depend on
         // the number of threads.

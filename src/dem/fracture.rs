@@ -16,7 +16,7 @@ use super::body::Bodies;
 use super::broadphase::pair_key;
 use super::geometry::V2;
 use super::joint::{Joint, SurfaceStress};
-use super::numerics::Dashpot;
+use super::numerics::{Dashpot, StepNumerics};
 use serde::{Deserialize, Serialize};
 
 /// All joints of a world, with the index of intact pairs for the contact exclusion.
@@ -190,15 +190,14 @@ impl JointSet {
     /// first step of a joint: σⁿ): for every mode of the leapfrog scheme that mean swings
     /// as far as the exact motion of the same energy, where σⁿ overshoots by 1/cos(θ/2)
     /// (θ the mode's phase per step; docs/speed-vs-error.md).
-    pub fn advance(
+    pub(crate) fn advance(
         &mut self,
         crack_speed: f64,
-        incubation: Option<f64>,
-        step_mean: bool,
         time: f64,
-        dt: f64,
+        num: &StepNumerics,
         w: &mut JointWork,
     ) {
+        let (incubation, step_mean, dt) = (num.incubation_time, num.fracture_step_mean, num.dt);
         self.severed.clear();
         let gain = incubation.map(|tau| -(-dt / tau).exp_m1());
         for (k, j) in self.joints.iter_mut().enumerate() {
@@ -289,13 +288,22 @@ mod tests {
             mat,
         ));
         let mut w = JointWork::default();
+        let num = StepNumerics {
+            dt,
+            contact_dashpot: Dashpot::Implicit,
+            contact_onset: crate::dem::ContactOnset::Area,
+            contact_dashpot_sweeps: 0,
+            joint_dashpot: Dashpot::Explicit,
+            incubation_time: incubation,
+            fracture_step_mean: step_mean,
+        };
         for n in 1..=20_000 {
             set.joints[k].stress = SurfaceStress {
                 top: top(n),
                 bottom: 0.0,
             };
             let t = n as f64 * dt;
-            set.advance(50.0, incubation, step_mean, t, dt, &mut w);
+            set.advance(50.0, t, &num, &mut w);
             if set.joints[k].crack_top {
                 return Some(t);
             }

@@ -1,7 +1,8 @@
 //! The numerical options of the step that the paper does not fix and several modules read:
-//! how eq (3)'s contact dashpot and the joints' dashpot are advanced ([`Dashpot`]) and how a
-//! new contact reads its first rate of overlap ([`ContactOnset`]). `world`, `contact`,
-//! `joint` and `fracture` import them from here; nothing here imports them back.
+//! how eq (3)'s contact dashpot and the joints' dashpot are advanced ([`Dashpot`]), how a
+//! new contact reads its first rate of overlap ([`ContactOnset`]), and the one struct of a
+//! step's numerics that the world passes to every force stage ([`StepNumerics`]). `world`,
+//! `contact`, `joint` and `fracture` import them from here; nothing here imports them back.
 
 use serde::{Deserialize, Serialize};
 
@@ -64,4 +65,24 @@ impl Dashpot {
     pub fn is_explicit(&self) -> bool {
         *self == Dashpot::Explicit
     }
+}
+
+/// The numerics of one time step, made by the world once per step and read by every stage
+/// that needs them (contacts, joints, fracture), so that none takes them one by one.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct StepNumerics {
+    /// The time step Δt (s).
+    pub dt: f64,
+    /// How eq (3)'s contact dashpot is advanced.
+    pub contact_dashpot: Dashpot,
+    /// How a new contact reads its first overlap rate.
+    pub contact_onset: ContactOnset,
+    /// Gauss–Seidel sweeps of the implicit contact dashpot (count).
+    pub contact_dashpot_sweeps: u32,
+    /// How the joints' dashpot of eq (1) is advanced.
+    pub joint_dashpot: Dashpot,
+    /// Incubation time of crack initiation (s), or `None` (the paper's instantaneous start).
+    pub incubation_time: Option<f64>,
+    /// Fracture tested on the mean stress of the last two poses (experimental).
+    pub fracture_step_mean: bool,
 }

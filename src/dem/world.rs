@@ -16,7 +16,7 @@
 use super::body::{Block, Bodies, BodyId, Drive, Role, Shape};
 use super::boundary::Boundary;
 use super::broadphase::{SweepAndPrune, pair_key};
-use super::contact::{Contact, ContactSet, ContactTally};
+use super::contact::{Contact, ContactLaw, ContactSet, ContactTally};
 use super::fracture::JointSet;
 use super::geometry::{V2, below_line, overlap};
 use super::joint::{Joint, JointMaterial};
@@ -385,6 +385,7 @@ impl World {
     /// `bodies.torque`: gravity, buoyancy and drag, joints (eq 1), boundary conditions
     /// (eqs 7–8, floe supports), external loads, numerical damping, contacts (eqs 2–4).
     fn gather_forces(&mut self, dt: f64) {
+        let num = self.params.step_numerics(dt);
         let n = self.bodies.len();
         let g = self.params.gravity;
         let pool = self.pool.as_deref();
@@ -406,7 +407,7 @@ impl World {
         }
         // Joints (eq 1) and boundary conditions (eqs 7–8, floe supports).
         self.joints
-            .apply(b, self.params.ice_density, self.params.joint_dashpot, pool);
+            .apply(b, self.params.ice_density, num.joint_dashpot, pool);
         self.boundary.apply(b);
         for &(id, f) in &self.loads {
             b.force[id as usize] = b.force[id as usize] + f;
@@ -425,21 +426,14 @@ impl World {
             (drive[i as usize].is_kinematic() && drive[j as usize].is_kinematic())
                 || joints.joined(i, j)
         });
-        let level = self.params.water.as_ref().map(|w| w.level);
-        self.contacts.update(
-            b,
-            pairs,
-            &self.params.contact,
-            self.k_nv,
-            dt,
-            level,
-            self.params.contact_dashpot,
-            self.params.contact_onset,
-            self.params.contact_dashpot_sweeps,
-            &mut self.acc.contact,
-            pool,
-        );
-        if self.params.joint_dashpot == Dashpot::Implicit {
+        let law = ContactLaw {
+            params: &self.params.contact,
+            k_nv: self.k_nv,
+            water_level: self.params.water.as_ref().map(|w| w.level),
+        };
+        self.contacts
+            .update(b, pairs, &law, &num, &mut self.acc.contact, pool);
+        if num.joint_dashpot == Dashpot::Implicit {
             self.joints.apply_viscous(b, dt);
         }
     }
@@ -547,12 +541,11 @@ impl World {
         self.time += dt;
         self.steps += 1;
         if !self.joints.is_empty() {
+            let num = self.params.step_numerics(dt);
             self.joints.advance(
                 self.params.crack_speed,
-                self.params.incubation_time,
-                self.params.fracture_step_mean,
                 self.time,
-                dt,
+                &num,
                 &mut self.acc.joints,
             );
             if !self.joints.severed().is_empty() {

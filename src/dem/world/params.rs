@@ -155,6 +155,19 @@ pub enum WorldError {
 }
 
 impl WorldParams {
+    /// The numerics of a step of `dt` (s) that the force stages read.
+    pub(crate) fn step_numerics(&self, dt: f64) -> super::super::numerics::StepNumerics {
+        super::super::numerics::StepNumerics {
+            dt,
+            contact_dashpot: self.contact_dashpot,
+            contact_onset: self.contact_onset,
+            contact_dashpot_sweeps: self.contact_dashpot_sweeps,
+            joint_dashpot: self.joint_dashpot,
+            incubation_time: self.incubation_time,
+            fracture_step_mean: self.fracture_step_mean,
+        }
+    }
+
     /// Checks every parameter; the message names the first offending one.
     pub(crate) fn validate(&self) -> Result<(), WorldError> {
         let pos = |name, value: f64| {
