@@ -32,7 +32,9 @@ use super::redistribution::{RidgedEnsemble, RidgedIce};
 use crate::record::RunRecord;
 use ndarray::{Array2, Array3};
 
+mod sets;
 mod warnings;
+use sets::Sets;
 pub use warnings::fit_warnings;
 
 /// The fits of one group of samples (J/m against m³/m).
@@ -290,118 +292,18 @@ pub fn tabulate_scaled(
     if recs.is_empty() {
         return Err(TabulateError::Empty);
     }
-    // A set is what the scene is apart from the thickness (and the block width tied to it),
-    // the keys scaled with it, the seed and the name.
-    let set_key = |r: &RunRecord| {
-        let mut sc = r.scene.clone();
-        sc.seed = 0;
-        sc.name.clear();
-        if let Some(sh) = sc.sheet.as_mut() {
-            sh.thickness = 0.0;
-            sh.block_width = 0.0;
-        }
-        if scaled.is_empty() {
-            return sc.to_toml();
-        }
-        sc.toml_without(scaled)
-    };
-    // The values of the scaled keys of a run, in their order.
-    let scaled_of = |r: &RunRecord| -> Vec<String> {
-        scaled
-            .iter()
-            .map(|k| r.scene.value_at(k).unwrap_or_else(|| "-".into()))
-            .collect()
-    };
-    // The whole scene but its name: two records of one run must agree in it.
-    let whole = |r: &RunRecord| {
-        let mut sc = r.scene.clone();
-        sc.name.clear();
-        sc.to_toml()
-    };
-    let is_scaled_setting = |s: &str| {
-        crate::scene::split_override(s).is_some_and(|(k, _)| scaled.iter().any(|x| x == k))
-    };
+    let Sets {
+        sets,
+        mu,
+        mu_w,
+        thickness,
+        seeds,
+        duplicates,
+        scaled_seen,
+        set_index,
+        runs: recs,
+    } = Sets::of(recs, scaled)?;
     let h_of = |r: &RunRecord| r.scene.sheet.as_ref().expect("filtered").thickness;
-    let mut keys: Vec<String> = Vec::new();
-    let mut sets: Vec<String> = Vec::new();
-    let (mut mu, mut mu_w) = (Vec::new(), Vec::new());
-    let mut thickness: Vec<f64> = Vec::new();
-    let mut seeds: Vec<u64> = Vec::new();
-    let mut duplicates = Vec::new();
-    let mut seen: Vec<(usize, u64, u64, &RunRecord)> = Vec::new();
-    // The scaled values of each (set, thickness) met, with the run that set them.
-    let mut scaled_seen: Vec<(usize, u64, Vec<String>, &RunRecord)> = Vec::new();
-    let mut set_index = Vec::with_capacity(recs.len());
-    let mut kept = Vec::with_capacity(recs.len());
-    for r in recs {
-        let key = set_key(r);
-        let si = match keys.iter().position(|k| *k == key) {
-            Some(si) => si,
-            None => {
-                keys.push(key);
-                let c = &r.scene.contact;
-                let mut label = vec![format!("mu={}, mu_w={}", c.mu, c.mu_water)];
-                label.extend(
-                    r.settings
-                        .iter()
-                        .filter(|s| {
-                            !is_thickness_key(s) && !is_friction_key(s) && !is_scaled_setting(s)
-                        })
-                        .cloned(),
-                );
-                sets.push(label.join(", "));
-                mu.push(c.mu);
-                mu_w.push(c.mu_water);
-                keys.len() - 1
-            }
-        };
-        let h = h_of(r);
-        if let Some(&(.., first)) = seen
-            .iter()
-            .find(|&&(s, hb, seed, _)| s == si && hb == h.to_bits() && seed == r.seed)
-        {
-            if whole(first) != whole(r) {
-                return Err(TabulateError::Conflict(
-                    first.id.clone(),
-                    r.id.clone(),
-                    format!("have the same seed {} and different scenes", r.seed),
-                ));
-            }
-            duplicates.push((r.id.clone(), first.id.clone()));
-            continue;
-        }
-        seen.push((si, h.to_bits(), r.seed, r));
-        let values = scaled_of(r);
-        match scaled_seen
-            .iter()
-            .find(|&&(s, hb, ..)| s == si && hb == h.to_bits())
-        {
-            Some((.., v, first)) if *v != values => {
-                return Err(TabulateError::Conflict(
-                    first.id.clone(),
-                    r.id.clone(),
-                    format!(
-                        "differ in the keys scaled with the thickness ({} against {})",
-                        key_values(scaled, v),
-                        key_values(scaled, &values)
-                    ),
-                ));
-            }
-            Some(_) => {}
-            None => scaled_seen.push((si, h.to_bits(), values, r)),
-        }
-        if !thickness.contains(&h) {
-            thickness.push(h);
-        }
-        if !seeds.contains(&r.seed) {
-            seeds.push(r.seed);
-        }
-        set_index.push(si);
-        kept.push(r);
-    }
-    let recs = kept;
-    thickness.sort_by(f64::total_cmp);
-    seeds.sort_unstable();
     // The grid ends at the largest volume a run was set to reach, U·h·T: its points are
     // then round numbers (k·2.5 m³/m for 0–600 in 241), and every run's end is one of them.
     let vmax = recs.iter().map(|r| nominal_volume(r)).fold(0.0, f64::max);
@@ -453,10 +355,6 @@ pub fn tabulate_scaled(
             .expect("a thickness met");
         t.scaled_values[[*si, hi]] = v.clone();
     }
-    let mean_std = |xs: &[f64]| -> (f64, f64) {
-        let s = Stat::of(xs);
-        (s.mean, s.std)
-    };
     for si in 0..ns {
         let (mut pv, mut pw, mut pp) = (Vec::new(), Vec::new(), Vec::new());
         for (hi, &h) in thickness.iter().enumerate() {
@@ -469,82 +367,7 @@ pub fn tabulate_scaled(
             if group.is_empty() {
                 continue;
             }
-            for (vi, &v) in volume.iter().enumerate() {
-                let (mut w, mut p, mut q, mut f) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-                for r in &group {
-                    let xs = sample_volumes(r);
-                    let get = |g: fn(&crate::record::RunSample) -> f64| {
-                        let ys: Vec<f64> = r.samples.iter().map(g).collect();
-                        crate::interp::resample(&xs, &ys, v)
-                    };
-                    let (wv, pv_) = (
-                        get(|s| s.energy().work),
-                        get(|s| s.energy().potential_energy),
-                    );
-                    if wv.is_finite() && pv_.is_finite() {
-                        w.push(wv);
-                        p.push(pv_);
-                        if pv_ > 0.0 {
-                            q.push(wv / pv_);
-                        }
-                        let fv = get(|s| s.mean_force);
-                        if fv.is_finite() && v > 0.0 {
-                            f.push(fv);
-                        }
-                    }
-                }
-                let c = [si, hi, vi];
-                if !w.is_empty() {
-                    t.runs[c] = w.len() as u32;
-                    (t.work_mean[c], t.work_std[c]) = mean_std(&w);
-                    (t.pe_mean[c], t.pe_std[c]) = mean_std(&p);
-                }
-                if !q.is_empty() {
-                    t.ratio_mean[c] = mean_std(&q).0;
-                }
-                if !f.is_empty() {
-                    t.force_mean[c] = mean_std(&f).0;
-                }
-            }
-            // Fits over every sample of every run of this thickness (V > 0).
-            let (mut fv, mut fw, mut fp) = (Vec::new(), Vec::new(), Vec::new());
-            let mut finals = Vec::new();
-            for r in &group {
-                for s in r.samples.iter().filter(|s| s.volume > 0.0) {
-                    let e = s.energy();
-                    fv.push(s.volume);
-                    fw.push(e.work);
-                    fp.push(e.potential_energy);
-                }
-                let last = r.samples.last().expect("≥ 2 samples").energy();
-                if last.potential_energy > 0.0 {
-                    finals.push(last.work / last.potential_energy);
-                }
-            }
-            if !finals.is_empty() {
-                let st = Stat::of(&finals);
-                t.cf[[si, hi]] = st.mean;
-                t.cf_std[[si, hi]] = st.std;
-                t.cf_runs[[si, hi]] = st.n as u32;
-                if st.n > 1 {
-                    let half = student_t_quantile(0.975, (st.n - 1) as f64) * st.std
-                        / (st.n as f64).sqrt();
-                    t.cf_conf[[si, hi]] = (st.mean - half, st.mean + half);
-                }
-            }
-            t.cf_finals[[si, hi]] = finals;
-            let ridged: Vec<RidgedIce> = group
-                .iter()
-                .filter_map(|r| RidgedIce::of(&r.profile, h).ok())
-                .collect();
-            t.ridged[[si, hi]] = RidgedEnsemble::of(&ridged);
-            if let (Ok(work), Ok(pe)) = (fit_through_origin(&fv, &fw), fit_through_origin(&fv, &fp))
-            {
-                t.fits[[si, hi]] = Some(SetFits {
-                    work,
-                    potential_energy: pe,
-                });
-            }
+            let (fv, fw, fp) = fill_setting(&mut t, [si, hi], h, &group, &volume);
             pv.extend(fv);
             pw.extend(fw);
             pp.extend(fp);
@@ -568,4 +391,96 @@ pub fn tabulate_scaled(
         }
     }
     Ok(t)
+}
+
+/// Fills the table's cells of set and thickness `[si, hi]` (thickness `h`, m) from the runs
+/// `group`: the ensemble statistics at each volume, C_f from the final W/ΔPE, the ridged ice,
+/// and the fits of eqs (13)–(14) over every sample with V > 0, whose samples (volume, work,
+/// potential energy) it returns for the set's pooled fit.
+fn fill_setting(
+    t: &mut RidgeTable,
+    [si, hi]: [usize; 2],
+    h: f64,
+    group: &[&&RunRecord],
+    volume: &[f64],
+) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+    let mean_std = |xs: &[f64]| -> (f64, f64) {
+        let s = Stat::of(xs);
+        (s.mean, s.std)
+    };
+    for (vi, &v) in volume.iter().enumerate() {
+        let (mut w, mut p, mut q, mut f) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+        for r in group {
+            let xs = sample_volumes(r);
+            let get = |g: fn(&crate::record::RunSample) -> f64| {
+                let ys: Vec<f64> = r.samples.iter().map(g).collect();
+                crate::interp::resample(&xs, &ys, v)
+            };
+            let (wv, pv_) = (
+                get(|s| s.energy().work),
+                get(|s| s.energy().potential_energy),
+            );
+            if wv.is_finite() && pv_.is_finite() {
+                w.push(wv);
+                p.push(pv_);
+                if pv_ > 0.0 {
+                    q.push(wv / pv_);
+                }
+                let fv = get(|s| s.mean_force);
+                if fv.is_finite() && v > 0.0 {
+                    f.push(fv);
+                }
+            }
+        }
+        let c = [si, hi, vi];
+        if !w.is_empty() {
+            t.runs[c] = w.len() as u32;
+            (t.work_mean[c], t.work_std[c]) = mean_std(&w);
+            (t.pe_mean[c], t.pe_std[c]) = mean_std(&p);
+        }
+        if !q.is_empty() {
+            t.ratio_mean[c] = mean_std(&q).0;
+        }
+        if !f.is_empty() {
+            t.force_mean[c] = mean_std(&f).0;
+        }
+    }
+    // Fits over every sample of every run of this thickness (V > 0).
+    let (mut fv, mut fw, mut fp) = (Vec::new(), Vec::new(), Vec::new());
+    let mut finals = Vec::new();
+    for r in group {
+        for s in r.samples.iter().filter(|s| s.volume > 0.0) {
+            let e = s.energy();
+            fv.push(s.volume);
+            fw.push(e.work);
+            fp.push(e.potential_energy);
+        }
+        let last = r.samples.last().expect("≥ 2 samples").energy();
+        if last.potential_energy > 0.0 {
+            finals.push(last.work / last.potential_energy);
+        }
+    }
+    if !finals.is_empty() {
+        let st = Stat::of(&finals);
+        t.cf[[si, hi]] = st.mean;
+        t.cf_std[[si, hi]] = st.std;
+        t.cf_runs[[si, hi]] = st.n as u32;
+        if st.n > 1 {
+            let half = student_t_quantile(0.975, (st.n - 1) as f64) * st.std / (st.n as f64).sqrt();
+            t.cf_conf[[si, hi]] = (st.mean - half, st.mean + half);
+        }
+    }
+    t.cf_finals[[si, hi]] = finals;
+    let ridged: Vec<RidgedIce> = group
+        .iter()
+        .filter_map(|r| RidgedIce::of(&r.profile, h).ok())
+        .collect();
+    t.ridged[[si, hi]] = RidgedEnsemble::of(&ridged);
+    if let (Ok(work), Ok(pe)) = (fit_through_origin(&fv, &fw), fit_through_origin(&fv, &fp)) {
+        t.fits[[si, hi]] = Some(SetFits {
+            work,
+            potential_energy: pe,
+        });
+    }
+    (fv, fw, fp)
 }
