@@ -84,167 +84,11 @@ pub fn campaign_report(
         }
         let _ = writeln!(o);
     }
-    let _ = writeln!(
-        o,
-        "## Energy budget\n\n\"Born overlapping\" counts contacts that started with their \
-         overlap forgiven (a joint severed with its blocks overlapping, or a sheet block grown \
-         where rubble lay; docs/model.md): many of them mean the sheet rafted until its driven \
-         end reached the ridge.\n"
-    );
-    let _ = writeln!(
-        o,
-        "| point | seeds | W (kJ/m) | ΔPE (kJ/m) | Φ_f/W | ΔPE/W | Φ_i/W | drag/W | abs(residual)/W | W/ΔPE | mean force (kN/m) | joints severed | born overlapping |"
-    );
-    let _ = writeln!(o, "|---|---|---|---|---|---|---|---|---|---|---|---|---|");
-    for p in points {
-        let g = |k: &str| p.get(k);
-        let _ = writeln!(
-            o,
-            "| {} | {} | {} | {} | {} | {} | {} | {} | {:.1e} | {} | {} | {} | {} |",
-            p.label,
-            p.seeds.len(),
-            pm(g("work"), 1e-3, 1),
-            pm(g("potential_energy"), 1e-3, 1),
-            pm(g("friction_fraction"), 1.0, 2),
-            pm(g("pe_fraction"), 1.0, 3),
-            pm(g("viscous_fraction"), 1.0, 3),
-            pm(g("drag_fraction"), 1.0, 3),
-            g("residual_fraction").map_or(f64::NAN, |s| s.mean),
-            pm(g("ratio_work_to_pe"), 1.0, 1),
-            pm(g("mean_force"), 1e-3, 2),
-            pm(g("blocks_broken"), 1.0, 0),
-            pm(g("handover_contacts"), 1.0, 1),
-        );
-    }
-    let _ = writeln!(
-        o,
-        "\n## Ridge metrics (final rubble profile in 1-m strips)\n"
-    );
-    let _ = writeln!(
-        o,
-        "| point | sail height (m) | keel depth (m) | sail area (m²/m) | keel area (m²/m) | θ₁ lead sail (°) | θ₂ floe sail (°) | φ₁ lead keel (°) | φ₂ floe keel (°) | L/h |"
-    );
-    let _ = writeln!(o, "|---|---|---|---|---|---|---|---|---|---|");
-    for p in points {
-        let g = |k: &str| p.get(k);
-        let _ = writeln!(
-            o,
-            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
-            p.label,
-            pm(g("max_sail_height"), 1.0, 2),
-            pm(g("max_keel_depth"), 1.0, 2),
-            pm(g("sail_area"), 1.0, 1),
-            pm(g("keel_area"), 1.0, 1),
-            slope(p, "sail_slope_lead"),
-            slope(p, "sail_slope_floe"),
-            slope(p, "keel_slope_lead"),
-            slope(p, "keel_slope_floe"),
-            pm(g("length_to_thickness"), 1.0, 2),
-        );
-    }
-    let _ = writeln!(
-        o,
-        "\n## Rafting\n\nA run *rafted* when the leading edge of its intact lead sheet passed the \
-         floe's nose by more than the rafting reach at some step (`sheet_overrun_max`; \
-         docs/tables.md, \"Rafting\"): it slid over or under the floe instead of breaking \
-         against it. The reach is {}. Runs made before the diagnostic existed are unknown. \
-         The statistics above include rafted runs.\n",
-        crate::table::rafting::reach_rule(reach)
-    );
-    let _ = writeln!(
-        o,
-        "| point | reach (m) | rafted / known | rafted runs (overrun, W/ΔPE) | largest overrun of the others (m) | W/ΔPE of the others |"
-    );
-    let _ = writeln!(o, "|---|---|---|---|---|---|");
-    for p in rafting {
-        let runs: Vec<String> = p
-            .rafted
-            .iter()
-            .map(|(id, x, q)| format!("`{id}` ({x:.1} m, {q:.1})"))
-            .collect();
-        let _ = writeln!(
-            o,
-            "| {} | {:.1} | {} / {} | {} | {} | {} |",
-            p.label,
-            p.reach,
-            p.rafted.len(),
-            p.known,
-            if runs.is_empty() {
-                "–".to_string()
-            } else {
-                runs.join(", ")
-            },
-            pm(Some(p.ridged_overrun), 1.0, 2),
-            pm(Some(p.ridged_ratio), 1.0, 1),
-        );
-    }
-    let _ = writeln!(
-        o,
-        "\n## Fits of eqs (13)–(14): W = V(a_W V + b_W), PE = V(a_P V + b_P)\n\n\
-         Least squares through the origin over every sample (at the campaign's interval) of every run; ± one \
-         standard error (which assumes independent residuals: see docs/tables.md).\n"
-    );
-    let _ = writeln!(
-        o,
-        "| set | thickness (m) | samples | a_W (J/m⁵) | b_W (J/m³) | R²(W) | a_P (J/m⁵) | b_P (J/m³) | R²(PE) |"
-    );
-    let _ = writeln!(o, "|---|---|---|---|---|---|---|---|---|");
-    let fit_row = |o: &mut String, set: &str, h: &str, f: &crate::table::tabulate::SetFits| {
-        let (w, p) = (&f.work, &f.potential_energy);
-        let (we, pe) = (w.standard_errors(), p.standard_errors());
-        let _ = writeln!(
-            o,
-            "| {set} | {h} | {} | {:.0} ± {:.0} | {:.0} ± {:.0} | {:.3} | {:.1} ± {:.1} | {:.0} ± {:.0} | {:.3} |",
-            w.n, w.a, we[0], w.b, we[1], w.r_squared, p.a, pe[0], p.b, pe[1], p.r_squared
-        );
-    };
-    for (si, set) in table.sets.iter().enumerate() {
-        let label = if set.is_empty() { "all" } else { set.as_str() };
-        for (hi, h) in table.thickness.iter().enumerate() {
-            if let Some(f) = &table.fits[[si, hi]] {
-                fit_row(&mut o, label, &format!("{h}"), f);
-            }
-        }
-        if let Some(f) = &table.pooled[si] {
-            fit_row(&mut o, label, "pooled", f);
-        }
-    }
-    let warnings = crate::table::tabulate::fit_warnings(table);
-    if !warnings.is_empty() {
-        let _ = writeln!(o, "\n**Warnings:**\n");
-        for w in &warnings {
-            let _ = writeln!(o, "- {w}");
-        }
-    }
-    let _ = writeln!(
-        o,
-        "\n## Eq (16): dW/dPE from the pooled fits, and C_f per thickness\n"
-    );
-    let nv = table.volume.len();
-    let picks: Vec<usize> = [0.25, 0.5, 0.75, 1.0]
-        .iter()
-        .map(|f| ((nv - 1) as f64 * f).round() as usize)
-        .collect();
-    let _ = write!(o, "| set |");
-    for &k in &picks {
-        let _ = write!(o, " dW/dPE at V = {:.2} m³/m |", table.volume[k]);
-    }
-    let _ = writeln!(o, " C_f = mean final W/ΔPE ± s.d. per thickness |");
-    let _ = writeln!(o, "|---|{}---|", "---|".repeat(picks.len()));
-    for (si, set) in table.sets.iter().enumerate() {
-        let label = if set.is_empty() { "all" } else { set.as_str() };
-        let _ = write!(o, "| {label} |");
-        for &k in &picks {
-            let _ = write!(o, " {:.1} |", table.ratio_fit[[si, k]]);
-        }
-        let cf: Vec<String> = table
-            .thickness
-            .iter()
-            .zip(table.cf_finals.row(si))
-            .map(|(h, runs)| format!("{h} m: {}", pm(Some(Stat::of(runs)), 1.0, 1)))
-            .collect();
-        let _ = writeln!(o, " {} |", cf.join(", "));
-    }
+    budget_section(&mut o, points);
+    metrics_section(&mut o, points);
+    rafting_section(&mut o, rafting, reach);
+    fits_section(&mut o, table);
+    ratio_section(&mut o, table);
     ridged_section(&mut o, table);
     o
 }
@@ -294,5 +138,186 @@ fn ridged_section(o: &mut String, table: &RidgeTable) {
                 None => {}
             }
         }
+    }
+}
+
+/// The energy budget of every grid point, with the contacts born overlapping.
+fn budget_section(o: &mut String, points: &[PointStats]) {
+    let _ = writeln!(
+        o,
+        "## Energy budget\n\n\"Born overlapping\" counts contacts that started with their \
+         overlap forgiven (a joint severed with its blocks overlapping, or a sheet block grown \
+         where rubble lay; docs/model.md): many of them mean the sheet rafted until its driven \
+         end reached the ridge.\n"
+    );
+    let _ = writeln!(
+        o,
+        "| point | seeds | W (kJ/m) | ΔPE (kJ/m) | Φ_f/W | ΔPE/W | Φ_i/W | drag/W | abs(residual)/W | W/ΔPE | mean force (kN/m) | joints severed | born overlapping |"
+    );
+    let _ = writeln!(o, "|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+    for p in points {
+        let g = |k: &str| p.get(k);
+        let _ = writeln!(
+            o,
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {:.1e} | {} | {} | {} | {} |",
+            p.label,
+            p.seeds.len(),
+            pm(g("work"), 1e-3, 1),
+            pm(g("potential_energy"), 1e-3, 1),
+            pm(g("friction_fraction"), 1.0, 2),
+            pm(g("pe_fraction"), 1.0, 3),
+            pm(g("viscous_fraction"), 1.0, 3),
+            pm(g("drag_fraction"), 1.0, 3),
+            g("residual_fraction").map_or(f64::NAN, |s| s.mean),
+            pm(g("ratio_work_to_pe"), 1.0, 1),
+            pm(g("mean_force"), 1e-3, 2),
+            pm(g("blocks_broken"), 1.0, 0),
+            pm(g("handover_contacts"), 1.0, 1),
+        );
+    }
+}
+
+/// The ridge metrics of every grid point (final rubble profile in 1-m strips).
+fn metrics_section(o: &mut String, points: &[PointStats]) {
+    let _ = writeln!(
+        o,
+        "\n## Ridge metrics (final rubble profile in 1-m strips)\n"
+    );
+    let _ = writeln!(
+        o,
+        "| point | sail height (m) | keel depth (m) | sail area (m²/m) | keel area (m²/m) | θ₁ lead sail (°) | θ₂ floe sail (°) | φ₁ lead keel (°) | φ₂ floe keel (°) | L/h |"
+    );
+    let _ = writeln!(o, "|---|---|---|---|---|---|---|---|---|---|");
+    for p in points {
+        let g = |k: &str| p.get(k);
+        let _ = writeln!(
+            o,
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            p.label,
+            pm(g("max_sail_height"), 1.0, 2),
+            pm(g("max_keel_depth"), 1.0, 2),
+            pm(g("sail_area"), 1.0, 1),
+            pm(g("keel_area"), 1.0, 1),
+            slope(p, "sail_slope_lead"),
+            slope(p, "sail_slope_floe"),
+            slope(p, "keel_slope_lead"),
+            slope(p, "keel_slope_floe"),
+            pm(g("length_to_thickness"), 1.0, 2),
+        );
+    }
+}
+
+/// The rafting of every grid point at reach `reach` (m).
+fn rafting_section(o: &mut String, rafting: &[PointRafting], reach: f64) {
+    let _ = writeln!(
+        o,
+        "\n## Rafting\n\nA run *rafted* when the leading edge of its intact lead sheet passed the \
+         floe's nose by more than the rafting reach at some step (`sheet_overrun_max`; \
+         docs/tables.md, \"Rafting\"): it slid over or under the floe instead of breaking \
+         against it. The reach is {}. Runs made before the diagnostic existed are unknown. \
+         The statistics above include rafted runs.\n",
+        crate::table::rafting::reach_rule(reach)
+    );
+    let _ = writeln!(
+        o,
+        "| point | reach (m) | rafted / known | rafted runs (overrun, W/ΔPE) | largest overrun of the others (m) | W/ΔPE of the others |"
+    );
+    let _ = writeln!(o, "|---|---|---|---|---|---|");
+    for p in rafting {
+        let runs: Vec<String> = p
+            .rafted
+            .iter()
+            .map(|(id, x, q)| format!("`{id}` ({x:.1} m, {q:.1})"))
+            .collect();
+        let _ = writeln!(
+            o,
+            "| {} | {:.1} | {} / {} | {} | {} | {} |",
+            p.label,
+            p.reach,
+            p.rafted.len(),
+            p.known,
+            if runs.is_empty() {
+                "–".to_string()
+            } else {
+                runs.join(", ")
+            },
+            pm(Some(p.ridged_overrun), 1.0, 2),
+            pm(Some(p.ridged_ratio), 1.0, 1),
+        );
+    }
+}
+
+/// The fits of eqs (13)–(14) per set and thickness, pooled per set, and their warnings.
+fn fits_section(o: &mut String, table: &RidgeTable) {
+    let _ = writeln!(
+        o,
+        "\n## Fits of eqs (13)–(14): W = V(a_W V + b_W), PE = V(a_P V + b_P)\n\n\
+         Least squares through the origin over every sample (at the campaign's interval) of every run; ± one \
+         standard error (which assumes independent residuals: see docs/tables.md).\n"
+    );
+    let _ = writeln!(
+        o,
+        "| set | thickness (m) | samples | a_W (J/m⁵) | b_W (J/m³) | R²(W) | a_P (J/m⁵) | b_P (J/m³) | R²(PE) |"
+    );
+    let _ = writeln!(o, "|---|---|---|---|---|---|---|---|---|");
+    let fit_row = |o: &mut String, set: &str, h: &str, f: &crate::table::tabulate::SetFits| {
+        let (w, p) = (&f.work, &f.potential_energy);
+        let (we, pe) = (w.standard_errors(), p.standard_errors());
+        let _ = writeln!(
+            o,
+            "| {set} | {h} | {} | {:.0} ± {:.0} | {:.0} ± {:.0} | {:.3} | {:.1} ± {:.1} | {:.0} ± {:.0} | {:.3} |",
+            w.n, w.a, we[0], w.b, we[1], w.r_squared, p.a, pe[0], p.b, pe[1], p.r_squared
+        );
+    };
+    for (si, set) in table.sets.iter().enumerate() {
+        let label = if set.is_empty() { "all" } else { set.as_str() };
+        for (hi, h) in table.thickness.iter().enumerate() {
+            if let Some(f) = &table.fits[[si, hi]] {
+                fit_row(o, label, &format!("{h}"), f);
+            }
+        }
+        if let Some(f) = &table.pooled[si] {
+            fit_row(o, label, "pooled", f);
+        }
+    }
+    let warnings = crate::table::tabulate::fit_warnings(table);
+    if !warnings.is_empty() {
+        let _ = writeln!(o, "\n**Warnings:**\n");
+        for w in &warnings {
+            let _ = writeln!(o, "- {w}");
+        }
+    }
+}
+
+/// Eq (16): dW/dPE from the pooled fits at a quarter, half, three quarters and all of the volume axis, and C_f per thickness.
+fn ratio_section(o: &mut String, table: &RidgeTable) {
+    let _ = writeln!(
+        o,
+        "\n## Eq (16): dW/dPE from the pooled fits, and C_f per thickness\n"
+    );
+    let nv = table.volume.len();
+    let picks: Vec<usize> = [0.25, 0.5, 0.75, 1.0]
+        .iter()
+        .map(|f| ((nv - 1) as f64 * f).round() as usize)
+        .collect();
+    let _ = write!(o, "| set |");
+    for &k in &picks {
+        let _ = write!(o, " dW/dPE at V = {:.2} m³/m |", table.volume[k]);
+    }
+    let _ = writeln!(o, " C_f = mean final W/ΔPE ± s.d. per thickness |");
+    let _ = writeln!(o, "|---|{}---|", "---|".repeat(picks.len()));
+    for (si, set) in table.sets.iter().enumerate() {
+        let label = if set.is_empty() { "all" } else { set.as_str() };
+        let _ = write!(o, "| {label} |");
+        for &k in &picks {
+            let _ = write!(o, " {:.1} |", table.ratio_fit[[si, k]]);
+        }
+        let cf: Vec<String> = table
+            .thickness
+            .iter()
+            .zip(table.cf_finals.row(si))
+            .map(|(h, runs)| format!("{h} m: {}", pm(Some(Stat::of(runs)), 1.0, 1)))
+            .collect();
+        let _ = writeln!(o, " {} |", cf.join(", "));
     }
 }
