@@ -25,8 +25,10 @@ use crate::table::fit::student_t_quantile;
 use crate::table::rafting::{Outcome, RAFTING_REACH, outcome};
 use std::fmt::Write as _;
 
+mod energy;
 mod evidence;
 mod friction;
+mod modulus_speed;
 
 pub use evidence::{NOT_CHOICES, Register, evidence};
 
@@ -334,198 +336,20 @@ pub fn findings(
     let mut out = Vec::new();
     let fig5 = sel(FIGURE5)?;
 
-    // (a) Sinks other than Φ_f, Φ_i, ΔPE and kinetic energy.
-    let share = |term: fn(&EnergyBudget) -> f64| {
-        let s = stat(&fig5, |r| {
-            let e = r.summary.energy();
-            Some(term(&e) / e.work)
-        });
-        100.0 * s.mean
-    };
-    let s = stat(&fig5, |r| Some(other_sinks_fraction(r)));
-    let h = s.half_width_95();
-    out.push(Finding {
-        item: "a",
-        paper: "water drag, kinetic energy and viscous boundary forces \"in total, typically \
-                amount to less than 5% of the energy consumed\" (Energetics; Figure 5 point)",
-        ours: format!(
-            "(W − Φ_f − Φ_i − ΔPE − ΔKE)/W = {}; drag {:.1} %, boundary {:.1} %, joints \
-             {:.1} %, fracture {:.1} %",
-            interval(&s, 100.0, 1, " %"),
-            share(|e| e.drag_dissipation),
-            share(|e| e.boundary_dissipation),
-            share(|e| e.joint_dissipation),
-            share(|e| e.fracture_dissipation),
-        ),
-        verdict: Verdict::of(s.mean - h, s.mean + h, OTHER_SINKS_BOUND, false),
-    });
-
-    // (b) Φ_i as eq (12) defines it, with its parts.
-    let recorded = fig5
-        .iter()
-        .all(|r| r.summary.energy().normal_contact_work != 0.0);
-    let total = stat(&fig5, |r| Some(phi_i(r) / r.summary.energy().work));
-    let visc = stat(&fig5, |r| {
-        let e = r.summary.energy();
-        Some(e.viscous_dissipation / e.work)
-    });
-    out.push(Finding {
-        item: "b",
-        paper: "Φ_i \"is the net work performed by the normal contact forces at each point of \
-                contact\" (eq 12)",
-        ours: format!(
-            "Φ_i/W = {}: viscous {:.2} %, elastic {:.2} %{}",
-            interval(&total, 100.0, 2, " %"),
-            100.0 * visc.mean,
-            100.0 * (total.mean - visc.mean),
-            if recorded {
-                ""
-            } else {
-                " (records without `normal_contact_work`: elastic part read as the contact hysteresis)"
-            }
-        ),
-        verdict: if recorded {
-            Verdict::Agree
-        } else {
-            Verdict::Unresolved
-        },
-    });
+    // (a), (b): where the energy goes at the Figure 5 point.
+    energy::findings(&fig5, &mut out);
 
     // (c) and (d): low friction, and the trends with μ.
     friction::findings(&sel, &fig5, &mut out)?;
 
     // (e) The modulus ×10.
-    let stiff = sel(Point {
-        e_top: 1.0e9,
-        e_bottom: 6.7e8,
-        ..FIGURE5
-    })?;
-    for (name, paper, f, lower) in [
-        (
-            "L/h",
-            "with the higher modulus \"the blocks were somewhat smaller\" (Effects of modulus)",
-            (|r: &RunRecord| Some(r.metrics.length_to_thickness)) as fn(&RunRecord) -> Option<f64>,
-            Some(true),
-        ),
-        (
-            "W (kJ/m)",
-            "\"the average energy consumed using the highest modulus was lower\"",
-            |r: &RunRecord| Some(r.summary.energy().work / 1e3),
-            Some(true),
-        ),
-        (
-            evidence::SAIL_AT_MODULUS,
-            "\"there were no significant differences between the final profiles\"",
-            |r: &RunRecord| Some(r.metrics.max_sail_height),
-            None,
-        ),
-        (
-            "max keel depth (m)",
-            "\"there were no significant differences between the final profiles\"",
-            |r: &RunRecord| Some(r.metrics.max_keel_depth),
-            None,
-        ),
-    ] {
-        let (a, b) = (stat(&fig5, f), stat(&stiff, f));
-        let (d, lo, hi) = difference(&a, &b);
-        out.push(Finding {
-            item: "e",
-            paper,
-            ours: format!(
-                "{name} at E = 1 GPa minus 0.1 GPa: {d:+.2} [{lo:+.2}, {hi:+.2}] ({:.2} against \
-                 {:.2}; n = {}, {})",
-                b.mean, a.mean, b.n, a.n
-            ),
-            verdict: match lower {
-                Some(_) => Verdict::of(lo, hi, 0.0, false),
-                None if lo > 0.0 || hi < 0.0 => Verdict::Disagree,
-                None => Verdict::Agree,
-            },
-        });
-    }
-    let s = stat(&stiff, |r| {
-        let e = r.summary.energy();
-        Some(e.fracture_dissipation / e.work)
-    });
-    let h = s.half_width_95();
-    out.push(Finding {
-        item: "e",
-        paper: "\"breakage, per se, consumed little energy\" (ours: below 5 % of W at 1 GPa)",
-        ours: format!("fracture/W at E = 1 GPa: {}", interval(&s, 100.0, 2, " %")),
-        verdict: Verdict::of(s.mean - h, s.mean + h, BREAKAGE_BOUND, false),
-    });
+    modulus_speed::modulus(&sel, &fig5, &mut out)?;
 
     // (f) The speed.
-    let slow = sel(Point {
-        speed: 0.0625,
-        ..FIGURE5
-    })?;
-    for (name, f) in [
-        (
-            "W",
-            (|r: &RunRecord| Some(r.summary.energy().work)) as fn(&RunRecord) -> Option<f64>,
-        ),
-        ("ΔPE", |r: &RunRecord| {
-            Some(r.summary.energy().potential_energy)
-        }),
-        ("max keel depth", |r: &RunRecord| {
-            Some(r.metrics.max_keel_depth)
-        }),
-        ("max sail height", |r: &RunRecord| {
-            Some(r.metrics.max_sail_height)
-        }),
-    ] {
-        let (a, b) = (stat(&fig5, f), stat(&slow, f));
-        let (d, lo, hi) = difference(&a, &b);
-        out.push(Finding {
-            item: "f",
-            paper: "at 6.25 and 25 cm/s \"the average final ridge profiles and energetics in the \
-                    two sets of experiments were nearly identical\" (ours: within ±15 %)",
-            ours: format!(
-                "{name} at 6.25 cm/s minus 25 cm/s: {:+.0} % [{:+.0}, {:+.0}] (n = {}, {})",
-                100.0 * d / a.mean,
-                100.0 * lo / a.mean,
-                100.0 * hi / a.mean,
-                b.n,
-                a.n
-            ),
-            verdict: Verdict::within(lo / a.mean, hi / a.mean, NEARLY_IDENTICAL),
-        });
-    }
-    let fi = |r: &RunRecord| Some(phi_i(r) / r.summary.energy().work);
-    let (a, b) = (stat(&slow, fi), stat(&fig5, fi));
-    let (d, lo, hi) = difference(&a, &b);
-    out.push(Finding {
-        item: "f",
-        paper: "\"the inelastic dissipation increased slightly at 25 cm/s\"",
-        ours: format!(
-            "Φ_i/W at 25 cm/s minus 6.25 cm/s: {:+.2} [{:+.2}, {:+.2}] points of % (n = {}, {})",
-            100.0 * d,
-            100.0 * lo,
-            100.0 * hi,
-            b.n,
-            a.n
-        ),
-        verdict: Verdict::of(lo, hi, 0.0, true),
-    });
+    modulus_speed::speed(&sel, &fig5, &mut out)?;
 
     // (g) W/ΔPE over primary ridge growth, at the Figure 5 point.
-    let s = stat(&fig5, |r| {
-        let t = r.scene.duration;
-        Some(ratio_at(r, t)? / ratio_at(r, 0.25 * t)? - 1.0)
-    });
-    let h = s.half_width_95();
-    out.push(Finding {
-        item: "g",
-        paper: "\"for a given ice thickness and set of friction coefficients the ratio remains \
-                nearly constant over the period of primary ridge growth\" (Conclusions; ours: \
-                within ±25 % from a quarter of the run to its end)",
-        ours: format!(
-            "W/ΔPE at the end over W/ΔPE at a quarter of the run, less 1: {}",
-            interval(&s, 100.0, 0, " %")
-        ),
-        verdict: Verdict::within(s.mean - h, s.mean + h, NEARLY_CONSTANT),
-    });
+    energy::growth(&fig5, &mut out);
     Ok(out)
 }
 
