@@ -11,6 +11,16 @@ pub(super) fn findings<'a>(
     fig5: &[&'a RunRecord],
     out: &mut Vec<Finding>,
 ) -> Result<(), MissingRuns> {
+    low_friction(sel, fig5, out)?;
+    trends(sel, out)
+}
+
+/// Finding c1–c3: at μ = 0.4 the sheet fails at the floe, the sail against the keel, ΔPE.
+fn low_friction<'a>(
+    sel: &dyn Fn(Point) -> Result<Vec<&'a RunRecord>, MissingRuns>,
+    fig5: &[&'a RunRecord],
+    out: &mut Vec<Finding>,
+) -> Result<(), MissingRuns> {
     // (c) Low friction ridges; sail relative to keel; ΔPE.
     let mut low = Vec::new();
     for mu_w in [0.6, 0.3] {
@@ -108,7 +118,14 @@ pub(super) fn findings<'a>(
             });
         }
     }
+    Ok(())
+}
 
+/// Finding d at each μ_w: the trends with μ, the spread of W, μ_w and the keel slope.
+fn trends<'a>(
+    sel: &dyn Fn(Point) -> Result<Vec<&'a RunRecord>, MissingRuns>,
+    out: &mut Vec<Finding>,
+) -> Result<(), MissingRuns> {
     // (d) Trends with μ at each μ_w; the spread of W; μ_w and the keel slope.
     for mu_w in [0.6, 0.3] {
         let mut runs = Vec::new();
