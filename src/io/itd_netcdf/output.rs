@@ -90,37 +90,7 @@ fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), Netc
     let e = nc_err(path);
     let g = out.grid;
     let ncol = g.ncol();
-    for (meta, data) in out.category_fields {
-        if data.len() != ncol * g.ncat() {
-            return Err(NetcdfError::Shape {
-                path: path.to_path_buf(),
-                var: meta.name.into(),
-                expected: format!("{} values", ncol * g.ncat()),
-                found: format!("{} values", data.len()),
-            });
-        }
-    }
-    for (meta, data) in out.fields {
-        if data.len() != ncol {
-            return Err(NetcdfError::Shape {
-                path: path.to_path_buf(),
-                var: meta.name.into(),
-                expected: format!("{ncol} values"),
-                found: format!("{} values", data.len()),
-            });
-        }
-    }
-    for d in out.dim_fields {
-        let n: usize = d.dims.iter().map(|x| x.1).product();
-        if d.data.len() != n {
-            return Err(NetcdfError::Shape {
-                path: path.to_path_buf(),
-                var: d.name.into(),
-                expected: format!("{n} values ({})", fmt_dims(&d.dims)),
-                found: format!("{} values", d.data.len()),
-            });
-        }
-    }
+    check_shapes(path, out)?;
     let spatial: Vec<&str> = g.spatial_dims.iter().map(|d| d.0.as_str()).collect();
     let mut cat_dims: Vec<&str> = spatial.clone();
     cat_dims.insert(g.cat_axis.min(spatial.len()), g.ncat_dim.as_str());
@@ -237,35 +207,7 @@ fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), Netc
             f.add_dimension(&bdim, h.len()).map_err(&e)?;
         }
     }
-    for d in out.dim_fields {
-        for (n, l) in &d.dims {
-            match f.dimension(n) {
-                Some(have) if have.len() == *l => {}
-                Some(have) => {
-                    return Err(NetcdfError::Shape {
-                        path: path.to_path_buf(),
-                        var: d.name.into(),
-                        expected: format!("dimension {n}={}", have.len()),
-                        found: format!("{n}={l}"),
-                    });
-                }
-                None => {
-                    f.add_dimension(n, *l).map_err(&e)?;
-                }
-            }
-        }
-        let names: Vec<&str> = d.dims.iter().map(|x| x.0.as_str()).collect();
-        let mut var = f.add_variable::<f64>(d.name, &names).map_err(&e)?;
-        for (k, v) in &d.attrs {
-            var.put_attribute(k, v.as_str()).map_err(&e)?;
-        }
-        if let Some(fill) = out.fill {
-            var.put_attribute("_FillValue", fill).map_err(&e)?;
-        }
-        if let Some(c) = &coordinates {
-            var.put_attribute("coordinates", c.as_str()).map_err(&e)?;
-        }
-    }
+    define_dim_fields(&mut f, path, out, coordinates.as_deref())?;
     for (meta, dims, _) in &items {
         let mut var = f.add_variable::<f64>(meta.name, dims).map_err(&e)?;
         var.put_attribute("units", meta.units).map_err(&e)?;
@@ -291,6 +233,112 @@ fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), Netc
             var.put_attribute(k, val.clone()).map_err(&e)?;
         }
     }
+    global_attributes(&mut f, path, out)?;
+    f.enddef().map_err(&e)?;
+    for (meta, _, data) in &items {
+        let mut var = f.variable_mut(meta.name).expect("just defined");
+        var.put_values(data, ..).map_err(&e)?;
+    }
+    for d in out.dim_fields {
+        let mut var = f.variable_mut(d.name).expect("just defined");
+        var.put_values(d.data, ..).map_err(&e)?;
+    }
+    for c in &coords {
+        let mut var = f.variable_mut(&c.name).expect("just defined");
+        c.values.put(&mut var).map_err(&e)?;
+    }
+    f.close().map_err(&e)?;
+    Ok(())
+}
+
+/// Refuses an output whose fields do not have the grid's shape, naming the field.
+fn check_shapes(path: &Path, out: &Output<'_>) -> Result<(), NetcdfError> {
+    let g = out.grid;
+    let ncol = g.ncol();
+    for (meta, data) in out.category_fields {
+        if data.len() != ncol * g.ncat() {
+            return Err(NetcdfError::Shape {
+                path: path.to_path_buf(),
+                var: meta.name.into(),
+                expected: format!("{} values", ncol * g.ncat()),
+                found: format!("{} values", data.len()),
+            });
+        }
+    }
+    for (meta, data) in out.fields {
+        if data.len() != ncol {
+            return Err(NetcdfError::Shape {
+                path: path.to_path_buf(),
+                var: meta.name.into(),
+                expected: format!("{ncol} values"),
+                found: format!("{} values", data.len()),
+            });
+        }
+    }
+    for d in out.dim_fields {
+        let n: usize = d.dims.iter().map(|x| x.1).product();
+        if d.data.len() != n {
+            return Err(NetcdfError::Shape {
+                path: path.to_path_buf(),
+                var: d.name.into(),
+                expected: format!("{n} values ({})", fmt_dims(&d.dims)),
+                found: format!("{} values", d.data.len()),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Defines the dimensions and variables of the output's fields of their own dimensions
+/// (`out.dim_fields`), with the fill value and the coordinates attribute `coordinates`.
+fn define_dim_fields(
+    f: &mut netcdf::FileMut,
+    path: &Path,
+    out: &Output<'_>,
+    coordinates: Option<&str>,
+) -> Result<(), NetcdfError> {
+    let e = nc_err(path);
+    for d in out.dim_fields {
+        for (n, l) in &d.dims {
+            match f.dimension(n) {
+                Some(have) if have.len() == *l => {}
+                Some(have) => {
+                    return Err(NetcdfError::Shape {
+                        path: path.to_path_buf(),
+                        var: d.name.into(),
+                        expected: format!("dimension {n}={}", have.len()),
+                        found: format!("{n}={l}"),
+                    });
+                }
+                None => {
+                    f.add_dimension(n, *l).map_err(&e)?;
+                }
+            }
+        }
+        let names: Vec<&str> = d.dims.iter().map(|x| x.0.as_str()).collect();
+        let mut var = f.add_variable::<f64>(d.name, &names).map_err(&e)?;
+        for (k, v) in &d.attrs {
+            var.put_attribute(k, v.as_str()).map_err(&e)?;
+        }
+        if let Some(fill) = out.fill {
+            var.put_attribute("_FillValue", fill).map_err(&e)?;
+        }
+        if let Some(c) = coordinates {
+            var.put_attribute("coordinates", c).map_err(&e)?;
+        }
+    }
+    Ok(())
+}
+
+/// The global attributes: `Conventions`, `source`, `pressridge_version`, the output's own,
+/// and `history` (the input's with this step's line appended).
+fn global_attributes(
+    f: &mut netcdf::FileMut,
+    path: &Path,
+    out: &Output<'_>,
+) -> Result<(), NetcdfError> {
+    let e = nc_err(path);
+    let g = out.grid;
     f.add_attribute("Conventions", "CF-1.8").map_err(&e)?;
     f.add_attribute(
         "source",
@@ -310,20 +358,6 @@ fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), Netc
     if let Some(h) = history {
         f.add_attribute("history", h).map_err(&e)?;
     }
-    f.enddef().map_err(&e)?;
-    for (meta, _, data) in &items {
-        let mut var = f.variable_mut(meta.name).expect("just defined");
-        var.put_values(data, ..).map_err(&e)?;
-    }
-    for d in out.dim_fields {
-        let mut var = f.variable_mut(d.name).expect("just defined");
-        var.put_values(d.data, ..).map_err(&e)?;
-    }
-    for c in &coords {
-        let mut var = f.variable_mut(&c.name).expect("just defined");
-        c.values.put(&mut var).map_err(&e)?;
-    }
-    f.close().map_err(&e)?;
     Ok(())
 }
 
