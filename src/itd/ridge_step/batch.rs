@@ -10,7 +10,7 @@
 use ndarray::{ArrayView1, ArrayViewMut1, ArrayViewMut2, ArrayViewMut3};
 
 use super::{
-    Closing, ColumnMut, OceanFluxes, RidgeStepOptions, StepForcing, StepWorkspace,
+    Closing, ColumnMut, OceanFluxes, RidgeStepOptions, StepDiagnostics, StepForcing, StepWorkspace,
     ridge_step_column,
 };
 use crate::itd::tracers::TracerLayout;
@@ -302,19 +302,13 @@ pub fn ridge_step_batch(
     let mut t = vec![0.0; ncat * nt];
     for c in 0..ncol {
         if valid.as_ref().is_some_and(|m| !m[c]) {
-            for o in cell.iter_mut() {
-                o[c] = fill;
-            }
-            if let Some(cat) = category.as_deref_mut() {
-                for o in cat.iter_mut() {
-                    o.column_mut(c).fill(fill);
-                }
-            }
-            if let Some(sp) = species.as_deref_mut() {
-                for o in sp.iter_mut() {
-                    o.column_mut(c).fill(fill);
-                }
-            }
+            fill_outputs(
+                c,
+                fill,
+                cell,
+                category.as_deref_mut(),
+                species.as_deref_mut(),
+            );
             continue;
         }
         for n in 0..ncat {
@@ -363,56 +357,97 @@ pub fn ridge_step_batch(
         }
         aice0[c] = a0;
         aice[c] = ai;
-        let values = [
-            fl.fresh,
-            fl.fsalt,
-            fl.fhocn,
-            fl.fpond,
-            fl.dpnd_ridge,
-            d.closing,
-            d.opening,
-            d.dardg1dt,
-            d.dardg2dt,
-            d.dvirdgdt,
-            d.ice_to_ocean,
-            d.snow_to_ocean,
-            d.niter as f64,
+        write_outputs(
+            c,
+            &fl,
+            &d,
+            &ws,
+            cell,
+            category.as_deref_mut(),
+            species.as_deref_mut(),
+        );
+    }
+    Ok(())
+}
+
+/// Fills column `c` of every output with `fill` (a column the mask leaves out).
+fn fill_outputs(
+    c: usize,
+    fill: f64,
+    cell: &mut [ArrayViewMut1<'_, f64>],
+    category: Option<&mut [ArrayViewMut2<'_, f64>]>,
+    species: Option<&mut [ArrayViewMut2<'_, f64>]>,
+) {
+    for o in cell.iter_mut() {
+        o[c] = fill;
+    }
+    for o in category.into_iter().flat_map(|x| x.iter_mut()) {
+        o.column_mut(c).fill(fill);
+    }
+    for o in species.into_iter().flat_map(|x| x.iter_mut()) {
+        o.column_mut(c).fill(fill);
+    }
+}
+
+/// Writes column `c`'s diagnostics: the cell outputs from its fluxes `fl` and step `d`,
+/// and, where given, the category outputs from the workspace `ws` and the species outputs.
+fn write_outputs(
+    c: usize,
+    fl: &OceanFluxes,
+    d: &StepDiagnostics,
+    ws: &StepWorkspace,
+    cell: &mut [ArrayViewMut1<'_, f64>],
+    category: Option<&mut [ArrayViewMut2<'_, f64>]>,
+    species: Option<&mut [ArrayViewMut2<'_, f64>]>,
+) {
+    let values = [
+        fl.fresh,
+        fl.fsalt,
+        fl.fhocn,
+        fl.fpond,
+        fl.dpnd_ridge,
+        d.closing,
+        d.opening,
+        d.dardg1dt,
+        d.dardg2dt,
+        d.dvirdgdt,
+        d.ice_to_ocean,
+        d.snow_to_ocean,
+        d.niter as f64,
+    ];
+    for (o, x) in cell.iter_mut().zip(values) {
+        o[c] = x;
+    }
+    if let Some(cat) = category {
+        let per = [
+            &ws.dardg1ndt,
+            &ws.dardg2ndt,
+            &ws.dvirdgndt,
+            &ws.aparticn,
+            &ws.krdgn,
+            &ws.araftn,
+            &ws.vraftn,
+            &ws.aredistn,
+            &ws.vredistn,
         ];
-        for (o, x) in cell.iter_mut().zip(values) {
-            o[c] = x;
-        }
-        if let Some(cat) = category.as_deref_mut() {
-            let per = [
-                &ws.dardg1ndt,
-                &ws.dardg2ndt,
-                &ws.dvirdgndt,
-                &ws.aparticn,
-                &ws.krdgn,
-                &ws.araftn,
-                &ws.vraftn,
-                &ws.aredistn,
-                &ws.vredistn,
-            ];
-            for (o, xs) in cat.iter_mut().zip(per) {
-                for (n, x) in xs.iter().enumerate() {
-                    o[[n, c]] = *x;
-                }
-            }
-            let first_ice = cat.last_mut().expect("ten category outputs");
-            for (n, z) in ws.zapped.iter().enumerate() {
-                first_ice[[n, c]] = if *z { 1.0 } else { 0.0 };
+        for (o, xs) in cat.iter_mut().zip(per) {
+            for (n, x) in xs.iter().enumerate() {
+                o[[n, c]] = *x;
             }
         }
-        if let Some(sp) = species.as_deref_mut() {
-            let rows = [&fl.faero_ocn[..], &fl.fiso_ocn[..], &fl.flux_bio[..]];
-            for (o, xs) in sp.iter_mut().zip(rows) {
-                for k in 0..o.nrows() {
-                    o[[k, c]] = xs[k];
-                }
+        let first_ice = cat.last_mut().expect("ten category outputs");
+        for (n, z) in ws.zapped.iter().enumerate() {
+            first_ice[[n, c]] = if *z { 1.0 } else { 0.0 };
+        }
+    }
+    if let Some(sp) = species {
+        let rows = [&fl.faero_ocn[..], &fl.fiso_ocn[..], &fl.flux_bio[..]];
+        for (o, xs) in sp.iter_mut().zip(rows) {
+            for k in 0..o.nrows() {
+                o[[k, c]] = xs[k];
             }
         }
     }
-    Ok(())
 }
 
 #[cfg(test)]
