@@ -2,19 +2,8 @@
 
 use pressridge::dem::{ContactOnset, ContactParams, Dashpot, Drive, Shape, V2, World, WorldParams};
 
-fn dry(mu: f64, gravity: f64) -> World {
-    World::new(WorldParams {
-        gravity,
-        water: None,
-        contact: ContactParams {
-            mu,
-            mu_water: mu,
-            ..ContactParams::default()
-        },
-        ..WorldParams::default()
-    })
-    .unwrap()
-}
+mod common;
+use common::pair::dry;
 
 /// A 0.5 m × 0.3 m block resting on a fixed 20 m plank tilted by `alpha` (rad).
 /// Returns the world and the unit vector down the slope.
@@ -112,32 +101,17 @@ fn sliding_block_dissipates_mu_n_distance() {
 /// m), closing at 0.5 m/s each, in a world without gravity or water and with μ = μ_w = 0.5;
 /// the rest of the parameters from `params`.
 fn face_on_pair(params: WorldParams, shift: f64) -> World {
-    let mut w = World::new(WorldParams {
-        gravity: 0.0,
-        water: None,
-        contact: ContactParams {
-            mu: 0.5,
-            mu_water: 0.5,
-            ..ContactParams::default()
+    common::pair::face_on_pair(
+        WorldParams {
+            contact: ContactParams {
+                mu: 0.5,
+                mu_water: 0.5,
+                ..ContactParams::default()
+            },
+            ..params
         },
-        ..params
-    })
-    .unwrap();
-    let a = w.add_block(
-        Shape::rectangle(1.0, 0.3).unwrap(),
-        V2::new(-0.51 - shift, 0.0),
-        0.0,
-        Drive::FREE,
-    );
-    let b = w.add_block(
-        Shape::rectangle(1.0, 0.3).unwrap(),
-        V2::new(0.51, 0.0),
-        0.0,
-        Drive::FREE,
-    );
-    w.set_velocity(a, V2::new(0.5, 0.0), 0.0);
-    w.set_velocity(b, V2::new(-0.5, 0.0), 0.0);
-    w
+        shift,
+    )
 }
 
 /// The kinetic energy the collision lost (from `ke0`, J/m) is the booked viscous dissipation

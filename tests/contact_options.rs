@@ -8,35 +8,22 @@ use pressridge::dem::{ContactParams, DampingLaw, Drive, Shape, V2, World, WorldP
 const RHO_I: f64 = 920.0;
 const K_NE: f64 = 1e8;
 
+mod common;
+
 /// Two 1 m × 0.3 m blocks 2 cm apart face to face, closing at 0.5 m/s each, without gravity,
 /// water or friction, with the contact parameters `contact`.
 fn face_on_pair(contact: ContactParams) -> World {
-    let mut w = World::new(WorldParams {
-        gravity: 0.0,
-        water: None,
-        contact: ContactParams {
-            mu: 0.0,
-            mu_water: 0.0,
-            ..contact
+    common::pair::face_on_pair(
+        WorldParams {
+            contact: ContactParams {
+                mu: 0.0,
+                mu_water: 0.0,
+                ..contact
+            },
+            ..WorldParams::default()
         },
-        ..WorldParams::default()
-    })
-    .unwrap();
-    let a = w.add_block(
-        Shape::rectangle(1.0, 0.3).unwrap(),
-        V2::new(-0.51, 0.0),
         0.0,
-        Drive::FREE,
-    );
-    let b = w.add_block(
-        Shape::rectangle(1.0, 0.3).unwrap(),
-        V2::new(0.51, 0.0),
-        0.0,
-        Drive::FREE,
-    );
-    w.set_velocity(a, V2::new(0.5, 0.0), 0.0);
-    w.set_velocity(b, V2::new(-0.5, 0.0), 0.0);
-    w
+    )
 }
 
 /// An undamped face-on collision loaded past the cap p_c·h (p_c = 0.1 MPa on the 0.3-m face)
@@ -227,16 +214,7 @@ fn a_corner_impact_has_the_restitution_of_its_own_damping() {
 /// dry with friction `mu`, pushed horizontally towards the uphill side by `p` (N/m) from
 /// t = 0.05 s. Returns how far it moved up the slope between 0.25 s and 0.75 s (m).
 fn pushed_up_ramp(mu: f64, alpha: f64, p: f64) -> f64 {
-    let mut w = World::new(WorldParams {
-        water: None,
-        contact: ContactParams {
-            mu,
-            mu_water: mu,
-            ..ContactParams::default()
-        },
-        ..WorldParams::default()
-    })
-    .unwrap();
+    let mut w = common::pair::dry(mu, WorldParams::default().gravity);
     let up = V2::new(alpha.cos(), alpha.sin());
     let n = up.perp();
     w.add_block(

@@ -155,15 +155,16 @@ fn records_of_two_steps_are_refused_naming_them() {
         "data/speed-vs-error/decided-half",
         "data/speed-vs-error/decided-default",
     );
-    let nose45 = ["--set", "floe.nose_slope=1"];
-    let o = findings(&[
+    // The 45° nose of their records.
+    let both = [
         "--records",
         half,
         "--records",
         default,
-        nose45[0],
-        nose45[1],
-    ]);
+        "--set",
+        "floe.nose_slope=1",
+    ];
+    let o = findings(&both);
     assert!(!o.status.success());
     let e = String::from_utf8_lossy(&o.stderr);
     assert!(
@@ -171,16 +172,7 @@ fn records_of_two_steps_are_refused_naming_them() {
         "{e}"
     );
     // One step chosen: its Figure 5 runs are found, and the friction points are missing.
-    let o = findings(&[
-        "--records",
-        half,
-        "--records",
-        default,
-        nose45[0],
-        nose45[1],
-        "--set",
-        "numerics.time_step_safety=0.8",
-    ]);
+    let o = findings(&[&both[..], &["--set", "numerics.time_step_safety=0.8"]].concat());
     assert!(!o.status.success());
     let e = String::from_utf8_lossy(&o.stderr);
     assert!(

@@ -5,6 +5,7 @@
 
 pub mod column;
 pub mod icepack;
+pub mod pair;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
