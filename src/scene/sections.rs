@@ -389,7 +389,8 @@ impl FloeSection {
     /// and a corner bevel at each end of its top (1 at the defaults).
     pub(crate) fn nose_block_widths(&self) -> usize {
         let need = self.nose_run() + 2.0 * self.corner_bevel;
-        ((need / self.block_width).floor() as usize + 1).max(1)
+        // Saturating: a nonsense bevel or width (refused by validation) must not overflow.
+        ((need / self.block_width).floor() as usize).saturating_add(1)
     }
 }
 

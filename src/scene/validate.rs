@@ -343,6 +343,16 @@ fn floe(f: &FloeSection) -> Result<f64, SceneError> {
             ),
         ));
     }
+    if 2.0 * f.corner_bevel >= side {
+        return Err(SceneError::Invalid(
+            "floe.corner_bevel".into(),
+            format!(
+                "{} m must be shorter than half the floe block's smaller side, min(floe.block_width, floe.thickness) / 2 = {} m",
+                f.corner_bevel,
+                0.5 * side
+            ),
+        ));
+    }
     let held = (f.length / f.block_width).round().max(1.0) as usize;
     if f.nose_block_widths() > held {
         return bad(
@@ -357,16 +367,6 @@ fn floe(f: &FloeSection) -> Result<f64, SceneError> {
                 f.nose_run()
             ),
         );
-    }
-    if 2.0 * f.corner_bevel >= side {
-        return Err(SceneError::Invalid(
-            "floe.corner_bevel".into(),
-            format!(
-                "{} m must be shorter than half the floe block's smaller side, min(floe.block_width, floe.thickness) / 2 = {} m",
-                f.corner_bevel,
-                0.5 * side
-            ),
-        ));
     }
     Ok(blocks)
 }
