@@ -36,6 +36,11 @@ for p in $probes; do
   # The revision-1 register's baseline is the friction set's two pairs: taken, not run again.
   [ "$dir" = data/campaigns/choices40 ] && [ "$p" = baseline ] && [ -d data/paper2/friction ] &&
     resume=(--resume-from data/paper2/friction)
+  # On model revision 2 (choices-r2*), the probe's committed records (a finished or
+  # interrupted campaign archived under data/<folder of specs>/<probe>) are taken, not run
+  # again; the older registers' archives are of revision 1, which a campaign refuses.
+  archive="data/$(basename "$dir")/$p"
+  case "$dir" in *choices-r2*) [ -f "$archive/campaign.json" ] && resume+=(--resume-from "$archive") ;; esac
   "$bin" campaign --spec "$dir/$p.toml" --out "$root/$p" "${resume[@]}" \
     --threads "$threads" --progress-interval 60 2> "$root/$p.log"
 done
