@@ -120,6 +120,8 @@
 //! ```
 //!
 
+#![warn(missing_docs)]
+
 pub mod campaign;
 pub mod dem;
 pub mod energy;
