@@ -8,7 +8,9 @@ use pressridge::io::table_netcdf::write_ridge_table;
 use pressridge::observe::{Profile, mean_profile, profile_spread};
 use pressridge::plot;
 use pressridge::plot::table::ProfileGroup;
-use std::path::PathBuf;
+use pressridge::record::RunRecord;
+use pressridge::table::tabulate::RidgeTable;
+use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -106,84 +108,7 @@ pub fn run(a: Args) -> Result<(), BoxError> {
     let spec = &specs[0];
     write_ridge_table(&a.out, &table, &prov)?;
     if let Some(dir) = &a.figures {
-        std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-        // Ensemble final profiles per grid point (all seeds of a set and thickness), runs
-        // left out by the gate and second copies of runs shared by two campaigns excepted.
-        let mut points: Vec<(usize, f64, Vec<Profile>)> = Vec::new();
-        for r in records.iter() {
-            let (Some(si), Some(h)) = (
-                table.set_of(&r.id),
-                r.scene.sheet.as_ref().map(|s| s.thickness),
-            ) else {
-                continue;
-            };
-            match points.iter_mut().find(|(s, hh, _)| *s == si && *hh == h) {
-                Some((.., v)) => v.push(r.profile.clone()),
-                None => points.push((si, h, vec![r.profile.clone()])),
-            }
-        }
-        let group = |label: String, ps: &[Profile]| {
-            Some(ProfileGroup {
-                label,
-                mean: mean_profile(ps)?,
-                spread: profile_spread(ps)?,
-                runs: ps.len(),
-            })
-        };
-        // One set: every thickness in `profiles` (cf. Figure 10). Several sets: per set
-        // (`profiles_set<k>`, its thicknesses) and per thickness that several sets share
-        // (`profiles_h<h>`, one curve per set, cf. Figure 8).
-        let mut profile_figures: Vec<(String, Vec<ProfileGroup>)> = Vec::new();
-        for s in 0..table.sets.len() {
-            let mut groups: Vec<ProfileGroup> = points
-                .iter()
-                .filter(|p| p.0 == s)
-                .filter_map(|(_, h, ps)| group(format!("h = {h:.2} m"), ps))
-                .collect();
-            groups.sort_by(|a, b| a.label.cmp(&b.label));
-            let name = if table.sets.len() == 1 {
-                "profiles".to_string()
-            } else {
-                format!("profiles_set{s}")
-            };
-            profile_figures.push((name, groups));
-        }
-        let mut shared = Vec::new();
-        if table.sets.len() > 1 {
-            for (hi, h) in table.thickness.iter().enumerate() {
-                if plot::table::sets_at(&table, hi).len() < 2 {
-                    continue;
-                }
-                shared.push(hi);
-                let groups: Vec<ProfileGroup> = points
-                    .iter()
-                    .filter(|p| p.1 == *h)
-                    .filter_map(|(s, _, ps)| group(plot::table::set_display(&table.sets[*s]), ps))
-                    .collect();
-                profile_figures.push((format!("profiles_h{h:.2}"), groups));
-            }
-        }
-        for ext in ["png", "svg"] {
-            for s in 0..table.sets.len() {
-                plot::table::plot_work(&table, s, &dir.join(format!("work_set{s}.{ext}")))?;
-                plot::table::plot_force(&table, s, &dir.join(format!("force_set{s}.{ext}")))?;
-            }
-            for &hi in &shared {
-                let h = table.thickness[hi];
-                plot::table::plot_work_sets(
-                    &table,
-                    hi,
-                    &dir.join(format!("work_sets_h{h:.2}.{ext}")),
-                )?;
-            }
-            plot::table::plot_cf(&table, &dir.join(format!("cf.{ext}")))?;
-            if table.ridged.iter().any(Option::is_some) {
-                plot::redistribution::plot_mu_rdg(&table, &dir.join(format!("mu_rdg.{ext}")))?;
-            }
-            for (name, groups) in &profile_figures {
-                plot::table::plot_profiles(groups, &dir.join(format!("{name}.{ext}")))?;
-            }
-        }
+        write_figures(dir, &table, &records)?;
     }
     for w in pressridge::table::tabulate::fit_warnings(&table) {
         eprintln!("pressridge: warning: {w}");
@@ -197,26 +122,15 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         eprintln!("pressridge: note: run {id} left out: its {why}");
     }
     if let Some(path) = &a.report {
-        let kept: Vec<_> = records
-            .iter()
-            .filter(|r| !table.excluded.iter().any(|(id, _)| *id == r.id))
-            .cloned()
-            .collect();
-        let points = pressridge::table::ensemble::summarise(&kept);
-        let sound: Vec<_> = all_records
-            .iter()
-            .filter(|r| !gate_excluded.iter().any(|(id, _)| *id == r.id))
-            .cloned()
-            .collect();
-        let rafting = pressridge::table::rafting::by_point(&sound, a.rafting_reach);
-        let text = pressridge::io::report::campaign_report(
-            &spec.name,
-            &points,
-            &table,
-            &rafting,
-            a.rafting_reach,
-        );
-        pressridge::io::write_atomic(path, text.as_bytes())?;
+        let report = Report {
+            name: &spec.name,
+            table: &table,
+            records: &records,
+            all_records: &all_records,
+            gate_excluded: &gate_excluded,
+            reach: a.rafting_reach,
+        };
+        write_report(path, &report)?;
     }
     let rafting = pressridge::table::rafting::by_point(&all_records, a.rafting_reach);
     let (rafted, known) = rafting
@@ -253,5 +167,117 @@ pub fn run(a: Args) -> Result<(), BoxError> {
             }
         }
     }
+    Ok(())
+}
+
+/// The ensemble figures of a table: work, force and C_f per set, work per thickness that
+/// several sets share, μ_rdg, and the ensemble final profiles (PNG and SVG) into `dir`.
+fn write_figures(dir: &Path, table: &RidgeTable, records: &[RunRecord]) -> Result<(), BoxError> {
+    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    // Ensemble final profiles per grid point (all seeds of a set and thickness), runs
+    // left out by the gate and second copies of runs shared by two campaigns excepted.
+    let mut points: Vec<(usize, f64, Vec<Profile>)> = Vec::new();
+    for r in records.iter() {
+        let (Some(si), Some(h)) = (
+            table.set_of(&r.id),
+            r.scene.sheet.as_ref().map(|s| s.thickness),
+        ) else {
+            continue;
+        };
+        match points.iter_mut().find(|(s, hh, _)| *s == si && *hh == h) {
+            Some((.., v)) => v.push(r.profile.clone()),
+            None => points.push((si, h, vec![r.profile.clone()])),
+        }
+    }
+    let group = |label: String, ps: &[Profile]| {
+        Some(ProfileGroup {
+            label,
+            mean: mean_profile(ps)?,
+            spread: profile_spread(ps)?,
+            runs: ps.len(),
+        })
+    };
+    // One set: every thickness in `profiles` (cf. Figure 10). Several sets: per set
+    // (`profiles_set<k>`, its thicknesses) and per thickness that several sets share
+    // (`profiles_h<h>`, one curve per set, cf. Figure 8).
+    let mut profile_figures: Vec<(String, Vec<ProfileGroup>)> = Vec::new();
+    for s in 0..table.sets.len() {
+        let mut groups: Vec<ProfileGroup> = points
+            .iter()
+            .filter(|p| p.0 == s)
+            .filter_map(|(_, h, ps)| group(format!("h = {h:.2} m"), ps))
+            .collect();
+        groups.sort_by(|a, b| a.label.cmp(&b.label));
+        let name = if table.sets.len() == 1 {
+            "profiles".to_string()
+        } else {
+            format!("profiles_set{s}")
+        };
+        profile_figures.push((name, groups));
+    }
+    let mut shared = Vec::new();
+    if table.sets.len() > 1 {
+        for (hi, h) in table.thickness.iter().enumerate() {
+            if plot::table::sets_at(table, hi).len() < 2 {
+                continue;
+            }
+            shared.push(hi);
+            let groups: Vec<ProfileGroup> = points
+                .iter()
+                .filter(|p| p.1 == *h)
+                .filter_map(|(s, _, ps)| group(plot::table::set_display(&table.sets[*s]), ps))
+                .collect();
+            profile_figures.push((format!("profiles_h{h:.2}"), groups));
+        }
+    }
+    for ext in ["png", "svg"] {
+        for s in 0..table.sets.len() {
+            plot::table::plot_work(table, s, &dir.join(format!("work_set{s}.{ext}")))?;
+            plot::table::plot_force(table, s, &dir.join(format!("force_set{s}.{ext}")))?;
+        }
+        for &hi in &shared {
+            let h = table.thickness[hi];
+            plot::table::plot_work_sets(table, hi, &dir.join(format!("work_sets_h{h:.2}.{ext}")))?;
+        }
+        plot::table::plot_cf(table, &dir.join(format!("cf.{ext}")))?;
+        if table.ridged.iter().any(Option::is_some) {
+            plot::redistribution::plot_mu_rdg(table, &dir.join(format!("mu_rdg.{ext}")))?;
+        }
+        for (name, groups) in &profile_figures {
+            plot::table::plot_profiles(groups, &dir.join(format!("{name}.{ext}")))?;
+        }
+    }
+    Ok(())
+}
+
+/// What the report of a tabulation is made from.
+struct Report<'a> {
+    name: &'a str,
+    table: &'a RidgeTable,
+    records: &'a [RunRecord],
+    all_records: &'a [RunRecord],
+    gate_excluded: &'a [(String, String)],
+    reach: f64,
+}
+
+/// The campaign report (Markdown) of a tabulation into `path`: the ensembles of the runs
+/// kept, and the rafting of every sound run.
+fn write_report(path: &Path, r: &Report<'_>) -> Result<(), BoxError> {
+    let kept: Vec<_> = r
+        .records
+        .iter()
+        .filter(|run| !r.table.excluded.iter().any(|(id, _)| *id == run.id))
+        .cloned()
+        .collect();
+    let points = pressridge::table::ensemble::summarise(&kept);
+    let sound: Vec<_> = r
+        .all_records
+        .iter()
+        .filter(|run| !r.gate_excluded.iter().any(|(id, _)| *id == run.id))
+        .cloned()
+        .collect();
+    let rafting = pressridge::table::rafting::by_point(&sound, r.reach);
+    let text = pressridge::io::report::campaign_report(r.name, &points, r.table, &rafting, r.reach);
+    pressridge::io::write_atomic(path, text.as_bytes())?;
     Ok(())
 }
