@@ -21,7 +21,7 @@ use super::fracture::JointSet;
 use super::geometry::{V2, below_line, overlap};
 use super::joint::{Joint, JointMaterial};
 use super::ledger::{Accumulators, Stored, budget};
-use super::numerics::Dashpot;
+use super::numerics::{Dashpot, StepNumerics};
 use super::water::{WaterForces, shielded_bodies};
 use crate::energy::EnergyBudget;
 use serde::{Deserialize, Serialize};
@@ -372,20 +372,21 @@ impl World {
         if dt.is_nan() || dt <= 0.0 || dt.is_infinite() || self.fault.is_some() {
             return;
         }
-        self.gather_forces(dt);
+        let num = self.params.step_numerics(dt);
+        self.gather_forces(&num);
         let driver = self.integrate(dt);
         if self.fault.is_some() {
             return;
         }
         self.book_ledger(dt, driver);
-        self.advance_positions(dt);
+        self.advance_positions(&num);
     }
 
     /// Outlines at the present poses, then every force of the step into `bodies.force` and
     /// `bodies.torque`: gravity, buoyancy and drag, joints (eq 1), boundary conditions
     /// (eqs 7–8, floe supports), external loads, numerical damping, contacts (eqs 2–4).
-    fn gather_forces(&mut self, dt: f64) {
-        let num = self.params.step_numerics(dt);
+    fn gather_forces(&mut self, num: &StepNumerics) {
+        let dt = num.dt;
         let n = self.bodies.len();
         let g = self.params.gravity;
         let pool = self.pool.as_deref();
@@ -432,7 +433,7 @@ impl World {
             water_level: self.params.water.as_ref().map(|w| w.level),
         };
         self.contacts
-            .update(b, pairs, &law, &num, &mut self.acc.contact, pool);
+            .update(b, pairs, &law, num, &mut self.acc.contact, pool);
         if num.joint_dashpot == Dashpot::Implicit {
             self.joints.apply_viscous(b, dt);
         }
@@ -532,7 +533,8 @@ impl World {
 
     /// Positions, eq (6), the clock, then fracture: new cracks at the new poses, running
     /// cracks advance, and what they sever is handled ([`World::after_fracture`]).
-    fn advance_positions(&mut self, dt: f64) {
+    fn advance_positions(&mut self, num: &StepNumerics) {
+        let dt = num.dt;
         let b = &mut self.bodies;
         for i in 0..b.len() {
             b.pos[i] = b.pos[i] + b.vel[i] * dt;
@@ -541,11 +543,10 @@ impl World {
         self.time += dt;
         self.steps += 1;
         if !self.joints.is_empty() {
-            let num = self.params.step_numerics(dt);
             self.joints.advance(
                 self.params.crack_speed,
                 self.time,
-                &num,
+                num,
                 &mut self.acc.joints,
             );
             if !self.joints.severed().is_empty() {

@@ -155,7 +155,7 @@ impl Scene {
         // either side) needs; one width at 45°.
         let nose_run = f.nose_run();
         let widths = f.nose_block_widths();
-        let n = ((f.length / f.block_width).round().max(1.0) as usize).max(widths) + 1 - widths;
+        let n = f.block_count().max(widths) + 1 - widths;
         let yc = self.floating_centre(f.thickness);
         let skeletal = f.thickness.min(0.3) * 0.2;
         let skeletal = skeletal.min(0.06);

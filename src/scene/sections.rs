@@ -375,6 +375,12 @@ impl Default for FloeSection {
 }
 
 impl FloeSection {
+    /// The floe's length in block widths, at least one (count): how many blocks of
+    /// `block_width` it would be cut into were its nose block one width wide.
+    pub(crate) fn block_count(&self) -> usize {
+        (self.length / self.block_width).round().max(1.0) as usize
+    }
+
     /// The nose ramp's run along the floe top (m): `nose_bevel / nose_slope`, exactly
     /// `nose_bevel` at 45°.
     pub(crate) fn nose_run(&self) -> f64 {

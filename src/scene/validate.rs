@@ -302,7 +302,7 @@ fn floe(f: &FloeSection) -> Result<f64, SceneError> {
     check(YOUNGS_MODULUS, "floe.e_bottom", f.e_bottom)?;
     check(TENSILE_STRENGTH, "floe.strength_top", f.strength_top)?;
     check(TENSILE_STRENGTH, "floe.strength_bottom", f.strength_bottom)?;
-    blocks += (f.length / f.block_width).round().max(1.0);
+    blocks += f.block_count() as f64;
     for (k, v) in [
         ("floe.support_stiffness", f.support_stiffness),
         ("floe.support_damping_fraction", f.support_damping_fraction),
@@ -353,7 +353,7 @@ fn floe(f: &FloeSection) -> Result<f64, SceneError> {
             ),
         ));
     }
-    let held = (f.length / f.block_width).round().max(1.0) as usize;
+    let held = f.block_count();
     if f.nose_block_widths() > held {
         return bad(
             "floe.length",

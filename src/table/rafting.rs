@@ -60,12 +60,8 @@ pub fn reach_in(scene: &crate::scene::Scene, reach: f64) -> f64 {
                 .min(f.thickness / REACH_FLOE_THICKNESS)
                 .min(f.length / REACH_FLOE_LENGTH)
                 .max(1.0);
-            let extra_run = if f.nose_slope == 1.0 {
-                0.0
-            } else {
-                (f.nose_run() - f.nose_bevel).max(0.0)
-            };
-            reach * scale + extra_run
+            // The run beyond the drop: none at 45°, where `nose_run` is the drop exactly.
+            reach * scale + (f.nose_run() - f.nose_bevel).max(0.0)
         }
         _ => reach,
     }
