@@ -38,10 +38,12 @@ case "$stage" in
     export MIRIFLAGS="-Zmiri-deterministic-floats ${MIRIFLAGS:-}"
     echo "== miri: unit tests of the modules with unsafe code ($SECONDS s)"
     # ffi (the options cache, the C layouts, the error protocol), the strength routines and
-    # the joint lanes (their portable twins under Miri). itd::vexp is left out: its only
-    # unsafe code is the AVX2+FMA path, which Miri cannot run, and its portable path is
-    # f64::exp. The batched strength's lanes and unchecked gather run in tests/ffi.rs below.
-    cargo +nightly miri test --lib -- ffi:: itd::strength dem::joint::lanes
+    # the joint lanes (their portable twins under Miri); the strength routines are the column
+    # crate's (crates/column). Its vexp is left out: its only unsafe code is the AVX2+FMA
+    # path, which Miri cannot run, and its portable path is f64::exp. The batched strength's
+    # lanes and unchecked gather run in tests/ffi.rs below.
+    cargo +nightly miri test -p pressridge --lib -- ffi:: dem::joint::lanes
+    cargo +nightly miri test -p pressridge-column --lib -- strength
     echo "== miri: the C ABI called from Rust on in-memory data ($SECONDS s)"
     # Every test of tests/ffi.rs (their sample grid is synthetic under Miri) but the two that
     # read and write NetCDF files, 4 threads and a tiny scene run included.

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Prints the table of src/itd/vexp.rs: 2^(k/N), N = 128, as the exp of glibc >= 2.28 (the
+"""Prints the table of crates/column/src/vexp.rs: 2^(k/N), N = 128, as the exp of glibc >= 2.28 (the
 algorithm of ARM's optimized-routines) stores it, computed here from its definition with
 80-digit decimal arithmetic:
 
@@ -7,7 +7,7 @@ algorithm of ARM's optimized-routines) stores it, computed here from its definit
     T[k]  = (2^(k/N) - H[k]) / H[k] rounded to the nearest double,
     tab[2k] = bits(T[k]),  tab[2k+1] = bits(H[k]) - (k << 45)   (45 = 52 - log2 N).
 
-Usage: scripts/exp-table.py > /tmp/table.rs; its output is the table of src/itd/vexp.rs as it
+Usage: scripts/exp-table.py > /tmp/table.rs; its output is the table of crates/column/src/vexp.rs as it
 stands there, line for line (kept out of rustfmt).
 The test `vexp_is_the_platform_exp_bit_for_bit` checks the result against libm's exp.
 """

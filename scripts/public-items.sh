@@ -10,7 +10,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 module=${1:-dem}
-cargo +nightly rustdoc --quiet --lib --no-default-features --target-dir target/rdjson \
+cargo +nightly rustdoc --quiet -p pressridge --lib --no-default-features --target-dir target/rdjson \
   -- -Z unstable-options --output-format json
 python3 - "$module" <<'PY'
 import json, sys

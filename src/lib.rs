@@ -18,7 +18,8 @@
 //! - [`observe`] — ridge profiles and metrics from a state;
 //! - [`campaign`] — seeded ensembles over parameter grids, resumable;
 //! - [`itd`] — thickness-distribution physics: category bounds, participation, ridged-ice
-//!   redistribution, ice strength, the ridging step, on plain per-column slices;
+//!   redistribution, ice strength, the ridging step, on plain per-column slices (the crate
+//!   `pressridge-column`, which a host model can depend on alone);
 //! - [`io`] — files (JSON states and summaries, CSV time series, NetCDF distributions);
 //! - `plot` — figures (feature `plot`, on by default with `cli`);
 //! - [`ffi`] — the C ABI (`include/pressridge.h`) for C and Fortran host models;
@@ -127,9 +128,10 @@ pub mod dem;
 pub mod energy;
 pub mod eta;
 pub mod ffi;
-pub(crate) mod interp;
 pub mod io;
-pub mod itd;
+/// The column physics (thickness distribution, strength, ridging step): the crate
+/// `pressridge-column`, which a host can link alone.
+pub use pressridge_column as itd;
 pub mod limits;
 pub mod observe;
 #[cfg(feature = "plot")]

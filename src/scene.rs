@@ -19,8 +19,8 @@ use rand_xoshiro::Xoshiro256PlusPlus;
 use rand_xoshiro::rand_core::{Rng, SeedableRng};
 use serde::{Deserialize, Serialize};
 
+use crate::itd::limits::Range;
 use crate::limits;
-use crate::limits::Range;
 
 mod build;
 mod sections;

@@ -31,7 +31,7 @@
 
 use std::collections::BTreeMap;
 
-use crate::interp::{bracket, lerp};
+use crate::itd::interp::{bracket, lerp};
 use ndarray::ArrayD;
 
 mod tables;
@@ -196,7 +196,7 @@ fn check_axis(name: &str, xs: &[f64]) -> Result<(), LookupError> {
     if xs.is_empty() {
         return Err(LookupError::Invalid(format!("the {name} axis is empty")));
     }
-    crate::interp::check_axis(name, xs).map_err(LookupError::Invalid)
+    crate::itd::interp::check_axis(name, xs).map_err(LookupError::Invalid)
 }
 
 impl RidgeLookup {

@@ -414,7 +414,7 @@ fn fill_setting(
             let xs = sample_volumes(r);
             let get = |g: fn(&crate::record::RunSample) -> f64| {
                 let ys: Vec<f64> = r.samples.iter().map(g).collect();
-                crate::interp::resample(&xs, &ys, v)
+                crate::itd::interp::resample(&xs, &ys, v)
             };
             let (wv, pv_) = (
                 get(|s| s.energy().work),

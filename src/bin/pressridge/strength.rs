@@ -199,7 +199,7 @@ pub fn options(
         }
     } else {
         let value = cf.unwrap_or(CfPreset::Cice.value());
-        if let Some(why) = pressridge::limits::CF.violation(value) {
+        if let Some(why) = pressridge::itd::limits::CF.violation(value) {
             return Err(format!("--cf: {why}").into());
         }
         Cf::Constant(value)

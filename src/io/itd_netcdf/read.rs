@@ -310,12 +310,12 @@ pub fn read_itd_with(path: &Path, opts: &ReadOptions) -> Result<ItdGrid, NetcdfE
     Ok(grid)
 }
 
-/// Refuses a category volume beyond [`crate::limits::CATEGORY_THICKNESS`] (vicen ≤ vicen /
+/// Refuses a category volume beyond [`crate::itd::limits::CATEGORY_THICKNESS`] (vicen ≤ vicen /
 /// aicen, so a larger vicen means thicker ice than any), which would overflow the squares
 /// and exponentials of the strength and ridging formulas into inf or NaN. Masked columns are
 /// not checked; NaN, infinite and negative values are the physics' to name.
 fn check_volume_range(path: &Path, g: &ItdGrid) -> Result<(), NetcdfError> {
-    let range = crate::limits::CATEGORY_THICKNESS;
+    let range = crate::itd::limits::CATEGORY_THICKNESS;
     for c in 0..g.ncol() {
         if g.valid.as_ref().is_some_and(|v| !v[c]) {
             continue;

@@ -3,7 +3,7 @@
 //! per-tracer tables they give.
 
 use super::{MAX_AERO, MAX_ISO, TracerBase, TracerField, TracerRole};
-use crate::itd::ItdError;
+use crate::ItdError;
 
 /// The first tracer index of each field, and the number of tracers; refuses fields of no
 /// level, names used twice, two fields of a role that does not repeat, and more than two

@@ -195,7 +195,7 @@ pub struct OceanFluxes {
     /// Biogeochemical tracers into the ocean per bio tracer (the tracer's unit times m s⁻¹,
     /// e.g. mmol m⁻² s⁻¹, over `ndtd·dt`; Icepack `flux_bio`), as `faero_ocn`: with ridged
     /// snow (vertical bio tracers) and with zapped ice and snow
-    /// ([`TracerLayout::with_bgc`](crate::itd::TracerLayout::with_bgc)).
+    /// ([`TracerLayout::with_bgc`](crate::TracerLayout::with_bgc)).
     pub flux_bio: [f64; MAX_NBTRCR],
 }
 
@@ -263,7 +263,7 @@ pub fn percent_per_day_to_per_second(x: f64) -> f64 {
 /// goes to the ocean).
 ///
 /// ```
-/// use pressridge::itd::{
+/// use pressridge_column::{
 ///     CiceTracerFlags, Closing, ColumnMut, OceanFluxes, RidgeStepOptions, StepForcing,
 ///     StepWorkspace, TracerLayout, ridge_step_column,
 /// };

@@ -4,7 +4,7 @@
 //! those names ([`TracerLayout::detect_cice`]).
 
 use super::{CiceLayoutSpec, MAX_AERO, MAX_ISO, TracerBase, TracerField, TracerLayout, TracerRole};
-use crate::itd::ItdError;
+use crate::ItdError;
 
 /// Which optional CICE tracers a column carries (Icepack's `tr_iage`, `tr_FY`, `tr_lvl`,
 /// `tr_pond_lvl`, `tr_snow`, `tr_iso` with `n_iso`, `tr_aero` with `n_aero`).

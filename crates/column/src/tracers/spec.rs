@@ -21,7 +21,7 @@ use std::fmt;
 use std::str::FromStr;
 
 use super::{CiceTracerFlags, MAX_AERO, MAX_ISO, TracerLayout};
-use crate::itd::ItdError;
+use crate::ItdError;
 
 mod bgc;
 pub use bgc::IcedrvBgc;

@@ -6,8 +6,8 @@
 //! Python's `ridge_step` keywords).
 
 use super::RidgeStepOptions;
-use crate::itd::named_params::{NamedParams, ParamGroup, ParamMeta};
-use crate::itd::{ItdError, ItdParams};
+use crate::named_params::{NamedParams, ParamGroup, ParamMeta};
+use crate::{ItdError, ItdParams};
 
 /// How the zapped ice's salt flux is computed (Icepack `saltflux_option`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

@@ -6,7 +6,7 @@
 //! `icepack_itd.F90` `zap_small_areas`, `zap_snow`, `zap_small_bgc`).
 
 use super::{TracerBase, TracerField, TracerLayout, TracerRole};
-use crate::itd::ItdError;
+use crate::ItdError;
 
 /// Most bio tracers a layout may carry (Icepack's `icepack_max_nbtrcr`: algal nitrogen and
 /// chlorophyll for 3 algae, DIC, 3 DOC, DON, nitrate, ammonium, silicate, PON, humics, 3 DMS

@@ -2,7 +2,7 @@
 //! forcing and bounds) before, its state and ocean fluxes (finite, physical) after.
 
 use super::{Closing, ColumnMut, OceanFluxes, StepForcing};
-use crate::itd::ColumnError;
+use crate::ColumnError;
 
 fn not_finite(var: &'static str, category: Option<usize>, value: f64) -> ColumnError {
     ColumnError::NotFinite {

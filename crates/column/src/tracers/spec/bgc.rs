@@ -9,8 +9,8 @@
 //! tables that say how each is carried, and the driver's tables follow from its switches.
 
 use super::LayoutSpecError;
-use crate::itd::ItdError;
-use crate::itd::tracers::{BgcKind, BgcTracers, TracerLayout};
+use crate::ItdError;
+use crate::tracers::{BgcKind, BgcTracers, TracerLayout};
 
 /// Icepack's skeletal layer thickness `sk_l` (m), which the column driver does not change.
 const SK_L: f64 = 0.03;
@@ -268,13 +268,13 @@ impl IcedrvBgc {
             counts: used,
         };
         let nb = bgc.nbtrcr();
-        if nb == 0 || nb > crate::itd::tracers::MAX_NBTRCR {
+        if nb == 0 || nb > crate::tracers::MAX_NBTRCR {
             return Err(err(
                 kind,
                 format!(
                     "{nb} bio tracers from the switches and counts given: Icepack carries 1 to \
                      {}",
-                    crate::itd::tracers::MAX_NBTRCR
+                    crate::tracers::MAX_NBTRCR
                 ),
             ));
         }
@@ -306,7 +306,7 @@ impl IcedrvBgc {
 
 #[cfg(test)]
 mod tests {
-    use crate::itd::CiceLayoutSpec;
+    use crate::CiceLayoutSpec;
 
     /// The layout of `text` and its tables: `trcr_depend`, base codes, strata (1-based).
     struct Tables {

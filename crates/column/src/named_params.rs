@@ -216,7 +216,7 @@ fn edit_distance(a: &str, b: &str) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::itd::{ItdParams, RidgeStepOptions, RidgeStepParams};
+    use crate::{ItdParams, RidgeStepOptions, RidgeStepParams};
 
     /// The complete step's constants are the ridging parameters and the thermodynamic
     /// constants, once each, and each name reaches its own field.

@@ -310,7 +310,7 @@ impl TracerLayout {
     }
 
     /// Per tracer, its base as a code 0 (area), 1 (ice volume), 2 (snow volume).
-    pub(crate) fn base_codes(&self) -> Vec<i32> {
+    pub fn base_codes(&self) -> Vec<i32> {
         self.base
             .iter()
             .map(|b| match b {
@@ -322,7 +322,7 @@ impl TracerLayout {
     }
 
     /// Per tracer, its strata as 1-based tracer indices (0 = none), Icepack's `nt_strata`.
-    pub(crate) fn strata_one_based(&self) -> Vec<[i32; 2]> {
+    pub fn strata_one_based(&self) -> Vec<[i32; 2]> {
         (0..self.ntrcr)
             .map(|it| {
                 let mut s = [0; 2];

@@ -2,7 +2,7 @@
 //! diagnostics, sized once) and the saved input that restores a column on error.
 
 use super::ColumnMut;
-use crate::itd::Workspace;
+use crate::Workspace;
 
 /// Scratch and per-category diagnostics of the ridging step, sized once for `ncat`
 /// categories and `ntrcr` tracers. One per thread gives allocation-free column calls.

@@ -12,8 +12,8 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::{ColumnMut, OceanFluxes, RidgeStepParams, SaltFlux, StepWorkspace};
-use crate::itd::ColumnError;
-use crate::itd::tracers::{BgcKind, MAX_AERO, MAX_ISO, MAX_NBTRCR, TracerLayout};
+use crate::ColumnError;
+use crate::tracers::{BgcKind, MAX_AERO, MAX_ISO, MAX_NBTRCR, TracerLayout};
 
 /// Zapped-ice fluxes accumulated during the clean-up (Icepack's `dfresh`, `dfsalt`,
 /// `dfhocn`, `dfpond`, `dfaero_ocn`, `dfiso_ocn`), kg m⁻² s⁻¹, kg m⁻² s⁻¹, W m⁻², m,

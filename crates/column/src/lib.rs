@@ -11,7 +11,15 @@
 //! drivers ([`strength_batch`], [`ridge_batch`]) loop over `ncol` columns
 //! given as 2-D `ndarray` views of shape `(ncat, ncol)` with any strides (so Fortran
 //! column-major `aicen(ncat, ncol)` and NetCDF `(ncat, y, x)` both pass without copies).
-//! No module here knows about NetCDF, plotting or the command line.
+//! No module here knows about NetCDF, plotting or the command line: the crate depends on
+//! `ndarray` and `thiserror` only, so a host model that wants the strength or the ridging step
+//! links nothing else. The ridge simulator, its tables and NetCDF I/O are the `pressridge`
+//! crate, which re-exports this one as `pressridge::itd`.
+
+#![warn(missing_docs)]
+
+pub mod interp;
+pub mod limits;
 
 mod bounds;
 mod cf;
@@ -27,8 +35,7 @@ mod strength;
 mod tracers;
 mod vexp;
 
-pub(crate) use bounds::validate_bounds;
-pub use bounds::{CategoryBounds, category_bounds};
+pub use bounds::{CategoryBounds, category_bounds, validate_bounds};
 pub use cf::{Cf, CfLookup, CfPreset, CfProvider, CfTable};
 pub use mu_rdg::{MU_RDG_MAX_NODES, MuRdgLookup, MuRdgTable};
 pub use named_params::{NamedParams, ParamError, ParamGroup, ParamMeta};
@@ -55,7 +62,7 @@ pub use strength::{
     BatchSummary, CF_CLAMPED_MATERIAL_SHARE, ColumnStrength, StrengthOptions, strength_batch,
     strength_batch_masked, strength_column,
 };
-pub(crate) use strength::{FAST_MAX_NCAT, StrengthConsts, strength_column_constant_cf};
+pub use strength::{FAST_MAX_NCAT, StrengthConsts, strength_column_constant_cf};
 pub use tracers::{
     BgcKind, BgcTracers, CiceLayoutSpec, CiceTracerFlags, IcedrvBgc, LAYOUT_PRESETS,
     LayoutDetectError, LayoutSpecError, MAX_AERO, MAX_ISO, MAX_NBTRCR, TracerBase, TracerField,

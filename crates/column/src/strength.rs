@@ -36,7 +36,7 @@ pub struct StrengthOptions {
 
 impl StrengthOptions {
     /// Checks option values that could otherwise give garbage (C_f).
-    pub(crate) fn validate(&self) -> Result<(), ItdError> {
+    pub fn validate(&self) -> Result<(), ItdError> {
         self.cf.validate()
     }
 }
@@ -91,7 +91,7 @@ impl ColumnStrength {
 ///
 /// # Example
 /// ```
-/// use pressridge::itd::{StrengthOptions, Workspace, strength_column};
+/// use pressridge_column::{StrengthOptions, Workspace, strength_column};
 ///
 /// // Five categories: areas (dimensionless) and volumes per unit area (m), i.e. ice
 /// // 0.3, 1.0, 1.9, 3.0 and 4.0 m thick, and 10 % open water.
@@ -102,7 +102,7 @@ impl ColumnStrength {
 /// let opts = StrengthOptions::default();
 /// let p = strength_column(&aicen, &vicen, None, &opts, &mut ws)?; // aice0 = 1 − Σ aicen
 /// assert!(p.strength > 0.0 && !p.cf_clamped); // N/m
-/// # Ok::<(), pressridge::itd::ColumnError>(())
+/// # Ok::<(), pressridge_column::ColumnError>(())
 /// ```
 pub fn strength_column(
     aicen: &[f64],
@@ -348,14 +348,15 @@ fn category_terms_generic(
 }
 
 /// Largest number of categories [`strength_column_constant_cf`] handles.
-pub(crate) const FAST_MAX_NCAT: usize = lanes::MAX_NCAT;
+pub const FAST_MAX_NCAT: usize = lanes::MAX_NCAT;
 
 /// Constants of the Rothrock strength with a constant C_f that depend on the options only,
 /// computed once as Icepack computes them, so with the same bits: those of the exponential
 /// participation and C_f·C_p (Icepack's `Cf * Cp * strength / aksum` multiplies left to
-/// right).
+/// right). A host's per-cell loop (the C ABI's) makes them once per call with
+/// [`StrengthConsts::new`] and passes them to [`strength_column_constant_cf`].
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct StrengthConsts {
+pub struct StrengthConsts {
     pub(crate) exp: ExpCache,
     pub(crate) cfcp: f64,
     shape: FastShape,
@@ -372,7 +373,7 @@ enum FastShape {
 impl StrengthConsts {
     /// The constants of `opts`, or `None` unless Rothrock with a constant C_f and one μ_rdg
     /// (a μ_rdg table goes through [`strength_column`], which counts its clamps).
-    pub(crate) fn new(opts: &StrengthOptions) -> Option<Self> {
+    pub fn new(opts: &StrengthOptions) -> Option<Self> {
         let shape = match opts.redistribution {
             Redistribution::Uniform => FastShape::Uniform,
             Redistribution::Exponential => FastShape::Exponential,
@@ -395,7 +396,7 @@ impl StrengthConsts {
 ///
 /// # Panics
 /// If the slice lengths differ or exceed 16.
-pub(crate) fn strength_column_constant_cf(
+pub fn strength_column_constant_cf(
     aicen: &[f64],
     vicen: &[f64],
     aice0: Option<f64>,

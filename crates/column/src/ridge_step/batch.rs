@@ -13,8 +13,8 @@ use super::{
     Closing, ColumnMut, OceanFluxes, RidgeStepOptions, StepDiagnostics, StepForcing, StepWorkspace,
     ridge_step_column,
 };
-use crate::itd::tracers::TracerLayout;
-use crate::itd::{ItdError, check_len, check_shape};
+use crate::tracers::TracerLayout;
+use crate::{ItdError, check_len, check_shape};
 
 /// Name, CF units and long name of one output of the batched step.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -453,7 +453,7 @@ fn write_outputs(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::itd::CiceTracerFlags;
+    use crate::CiceTracerFlags;
     use ndarray::{Array1, Array2, Array3};
 
     /// The batch equals the column routine bit for bit, in any column order and stride.

@@ -11,9 +11,9 @@ use super::cleanup::cleanup_itd;
 use super::{
     Closing, ColumnMut, OceanFluxes, RidgeStepOptions, StepDiagnostics, StepForcing, StepWorkspace,
 };
-use crate::itd::ColumnError;
-use crate::itd::redistribution::{RidgeGeometry, category_fractions_all};
-use crate::itd::tracers::{MAX_AERO, MAX_ISO, MAX_NBTRCR, TracerLayout};
+use crate::ColumnError;
+use crate::redistribution::{RidgeGeometry, category_fractions_all};
+use crate::tracers::{MAX_AERO, MAX_ISO, MAX_NBTRCR, TracerLayout};
 
 /// Sums of one ridging pass and of the whole step (Icepack `ridge_ice` locals).
 #[derive(Default)]

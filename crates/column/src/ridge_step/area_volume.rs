@@ -15,10 +15,10 @@
 
 use ndarray::{ArrayView1, ArrayViewMut1, ArrayViewMut2, Axis};
 
-use crate::itd::bounds::validate_bounds;
-use crate::itd::params::{ItdParams, Participation, Redistribution};
-use crate::itd::redistribution::{RidgeGeometry, category_fractions};
-use crate::itd::{ColumnError, ItdError, Workspace, check_column, check_len, check_shape};
+use crate::bounds::validate_bounds;
+use crate::params::{ItdParams, Participation, Redistribution};
+use crate::redistribution::{RidgeGeometry, category_fractions};
+use crate::{ColumnError, ItdError, Workspace, check_column, check_len, check_shape};
 
 /// Options of the ridging step; the default is CICE's (exponential, exponential).
 #[derive(Debug, Clone, Copy, Default)]
@@ -77,7 +77,7 @@ pub struct RidgeDiagnostics {
 ///
 /// # Example
 /// ```
-/// use pressridge::itd::{
+/// use pressridge_column::{
 ///     CategoryBounds, RidgeForcing, RidgeOptions, Workspace, category_bounds, ridge_column,
 /// };
 ///

@@ -1,8 +1,8 @@
-//! Piecewise-linear interpolation, every routine of the crate: on a strictly increasing axis
+//! Piecewise-linear interpolation, every routine of pressridge: on a strictly increasing axis
 //! ([`bracket`], [`lerp`]), the one rule behind every table lookup: the C_f table of the
-//! strength routine ([`crate::itd::CfTable`]) and the ridging lookup table
-//! ([`crate::table::lookup::RidgeLookup`]); and [`resample`], a run's samples onto the
-//! table's volume grid ([`crate::table::tabulate`]).
+//! strength routine ([`crate::CfTable`]) and the simulator's ridging lookup table
+//! (`pressridge::table::lookup::RidgeLookup`); and [`resample`], a run's samples onto the
+//! table's volume grid (`pressridge::table::tabulate`).
 //!
 //! Written here rather than taken from a crate (ndarray-interp and the like) because the
 //! lookups need two things such crates do not offer: the clamp flag, so that a value held at
@@ -12,7 +12,7 @@
 
 /// Checks that an axis is finite and strictly increasing; the message names the axis and
 /// the first bad index.
-pub(crate) fn check_axis(name: &str, xs: &[f64]) -> Result<(), String> {
+pub fn check_axis(name: &str, xs: &[f64]) -> Result<(), String> {
     for (i, &x) in xs.iter().enumerate() {
         if !x.is_finite() {
             return Err(format!("{name}[{i}] = {x} is not finite"));
@@ -28,9 +28,9 @@ pub(crate) fn check_axis(name: &str, xs: &[f64]) -> Result<(), String> {
 }
 
 /// Where `x` falls on the axis `xs` (non-empty, strictly increasing): the index `i` and the
-/// weight `w` such that the value is y[i]·(1 − w) + y[i + 1]·w (w = 0 uses y[i] alone), and
+/// weight `w` such that the value is `y[i]·(1 − w) + y[i + 1]·w` (w = 0 uses `y[i]` alone), and
 /// whether `x` was outside the axis and clamped to its nearest end.
-pub(crate) fn bracket(xs: &[f64], x: f64) -> (usize, f64, bool) {
+pub fn bracket(xs: &[f64], x: f64) -> (usize, f64, bool) {
     let last = xs.len() - 1;
     if x <= xs[0] {
         return (0, 0.0, x < xs[0]);
@@ -44,16 +44,16 @@ pub(crate) fn bracket(xs: &[f64], x: f64) -> (usize, f64, bool) {
 
 /// `a + w·(b − a)`, reading `b` only when its weight is non-zero (so a NaN beyond the
 /// bracket does not leak in at a node).
-pub(crate) fn lerp(a: f64, b: impl FnOnce() -> f64, w: f64) -> f64 {
+pub fn lerp(a: f64, b: impl FnOnce() -> f64, w: f64) -> f64 {
     if w == 0.0 { a } else { a + w * (b() - a) }
 }
 
-/// Linear interpolation of `ys(xs)` at `x` within [xs[0], xs[last]], else NaN: one run's
+/// Linear interpolation of `ys(xs)` at `x` within `[xs[0], xs[last]]`, else NaN: one run's
 /// samples resampled onto the table's volume grid. Not [`bracket`] and [`lerp`]'s rule on purpose:
 /// a run's samples may repeat a volume (a sheet at rest) and a volume beyond them is missing,
 /// not clamped; and its operation order, (y₁ − y₀)·(x − x₀)/(x₁ − x₀), is kept so that
 /// tables made before stay bit-identical.
-pub(crate) fn resample(xs: &[f64], ys: &[f64], x: f64) -> f64 {
+pub fn resample(xs: &[f64], ys: &[f64], x: f64) -> f64 {
     if xs.is_empty() || x < xs[0] || x > xs[xs.len() - 1] {
         return f64::NAN;
     }

@@ -2,7 +2,7 @@
 //! `nt_strata`) laid over a layout ([`TracerLayout::with_host_tables`]).
 
 use super::{TracerBase, TracerLayout};
-use crate::itd::ItdError;
+use crate::ItdError;
 
 impl TracerLayout {
     /// The layout with each tracer carried as a host's tables say (Icepack's `trcr_depend`,
