@@ -38,13 +38,15 @@
 //! Files: this one holds the category dimension and the errors; `vars.rs` the reading of
 //! single variables, `grid.rs` the grid type, `read.rs` the distribution's reader,
 //! `forcing.rs` the per-cell forcing, `tracers.rs` snow and tracers, `output.rs` the
-//! writer, `cf_table.rs` the C_f tables.
+//! writer, `complete_step.rs` the complete ridging step from file to file, `cf_table.rs` the
+//! C_f tables.
 
 use std::path::{Path, PathBuf};
 
 use crate::itd::ItdError;
 
 mod cf_table;
+mod complete_step;
 mod forcing;
 mod grid;
 mod output;
@@ -55,6 +57,7 @@ mod vars;
 pub use cf_table::{
     read_cf_table, read_cf_table_at_friction, read_mu_rdg_table_at_friction, write_cf_table,
 };
+pub use complete_step::{CompleteStep, FileClosing, FreezingTemperature, StepInput, step_complete};
 pub use forcing::{CellField, CellUnits, read_cell_field};
 pub use grid::{CoordValues, CoordVar, ItdGrid};
 pub use output::{
