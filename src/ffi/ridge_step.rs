@@ -11,8 +11,9 @@ use std::cell::RefCell;
 use super::layout::{Region, check_disjoint, check_ptr};
 use super::{FfiError, FfiResult, PRESSRIDGE_ERR_BAD_SIZE, guard, put};
 use crate::itd::{
-    Closing, ColumnMut, ItdError, MAX_AERO, MAX_ISO, MAX_NBTRCR, OceanFluxes, StepDiagnostics,
-    StepForcing, StepWorkspace, ridge_step_column, species_counts,
+    CellForcing, CellOutputs, CellState, Closing, ColumnMut, ItdError, MAX_AERO, MAX_ISO,
+    MAX_NBTRCR, OceanFluxes, StepDiagnostics, StepForcing, StepWorkspace, ridge_step_cells,
+    ridge_step_column, species_counts,
 };
 
 mod ridger;
@@ -448,12 +449,6 @@ pub unsafe extern "C" fn pressridge_ridge_cells(
             Region::new(c.valid, n, "cells.valid"),
         ];
         check_disjoint(&written, &read)?;
-        let a = slice_mut(aicen, ncat * n, "aicen")?;
-        let v = slice_mut(vicen, ncat * n, "vicen")?;
-        let s = slice_mut(vsnon, ncat * n, "vsnon")?;
-        let t = slice_mut(trcrn, nt * ncat * n, "trcrn")?;
-        let a0 = slice_mut(aice0, n, "aice0")?;
-        let ai = slice_mut(aice, n, "aice")?;
         let opt_in = |p: *const f64, what: &str| -> FfiResult<Option<&[f64]>> {
             if p.is_null() {
                 Ok(None)
@@ -468,11 +463,19 @@ pub unsafe extern "C" fn pressridge_ridge_cells(
                 slice_mut(p, n, what).map(Some)
             }
         };
-        let conv = opt_in(c.rdg_conv, "cells.rdg_conv")?;
+        let state = CellState {
+            aicen: slice_mut(aicen, ncat * n, "aicen")?,
+            vicen: slice_mut(vicen, ncat * n, "vicen")?,
+            vsnon: slice_mut(vsnon, ncat * n, "vsnon")?,
+            trcrn: slice_mut(trcrn, nt * ncat * n, "trcrn")?,
+            aice0: slice_mut(aice0, n, "aice0")?,
+            aice: slice_mut(aice, n, "aice")?,
+        };
+        let convergence = opt_in(c.rdg_conv, "cells.rdg_conv")?;
         let shear = opt_in(c.rdg_shear, "cells.rdg_shear")?;
         let closing = opt_in(c.closing, "cells.closing")?;
         let tf = opt_in(c.tf, "cells.tf")?;
-        let mut opening = opt_out(c.opening, "cells.opening")?;
+        let opening = opt_out(c.opening, "cells.opening")?;
         if closing.is_some() && opening.is_none() {
             return Err(FfiError::new(
                 super::PRESSRIDGE_ERR_NULL_POINTER,
@@ -485,13 +488,12 @@ pub unsafe extern "C" fn pressridge_ridge_cells(
             check_ptr(c.valid, "cells.valid")?;
             Some(std::slice::from_raw_parts(c.valid, n))
         };
-        let mut outs = [
+        let fluxes = [
             opt_out(c.fresh, "cells.fresh")?,
             opt_out(c.fsalt, "cells.fsalt")?,
             opt_out(c.fhocn, "cells.fhocn")?,
             opt_out(c.fpond, "cells.fpond")?,
         ];
-        let [na, ni, nb] = species_counts(&r.layout);
         let species_out = |p: *mut f64, k: usize, what: &str| -> FfiResult<Option<&mut [f64]>> {
             if p.is_null() || k == 0 {
                 Ok(None)
@@ -499,89 +501,36 @@ pub unsafe extern "C" fn pressridge_ridge_cells(
                 slice_mut(p, k * n, what).map(Some)
             }
         };
-        let mut faero = species_out(c.faero_ocn, na, "cells.faero_ocn")?;
-        let mut fiso = species_out(c.fiso_ocn, ni, "cells.fiso_ocn")?;
-        let mut fbio = species_out(c.flux_bio, nb, "cells.flux_bio")?;
-        let mut rates = [
+        let [na, ni, nb] = species_counts(&r.layout);
+        let species = [
+            species_out(c.faero_ocn, na, "cells.faero_ocn")?,
+            species_out(c.fiso_ocn, ni, "cells.fiso_ocn")?,
+            species_out(c.flux_bio, nb, "cells.flux_bio")?,
+        ];
+        let rates = [
             opt_out(c.dardg1dt, "cells.dardg1dt")?,
             opt_out(c.dardg2dt, "cells.dardg2dt")?,
             opt_out(c.dvirdgdt, "cells.dvirdgdt")?,
         ];
-        with_step_scratch(ncat, nt, |ws| -> FfiResult<()> {
-            for i in 0..n {
-                if valid.is_some_and(|m| m[i] == 0) {
-                    continue;
-                }
-                let mode = match (closing, &opening) {
-                    (Some(cl), Some(op)) => Closing::Rates {
-                        closing: cl[i],
-                        opening: op[i],
-                    },
-                    _ => Closing::Deformation {
-                        convergence: conv.map_or(0.0, |x| x[i]),
-                        shear: shear.map_or(0.0, |x| x[i]),
-                    },
-                };
-                let forcing = StepForcing {
-                    closing: mode,
-                    dt,
-                    ndtd: ndtd as u32,
-                    tf: tf.map_or(-1.8, |x| x[i]),
-                };
-                let mut fl = OceanFluxes {
-                    fresh: outs[0].as_ref().map_or(0.0, |x| x[i]),
-                    fsalt: outs[1].as_ref().map_or(0.0, |x| x[i]),
-                    fhocn: outs[2].as_ref().map_or(0.0, |x| x[i]),
-                    fpond: outs[3].as_ref().map_or(0.0, |x| x[i]),
-                    dpnd_ridge: 0.0,
-                    ..OceanFluxes::default()
-                };
-                if let Some(x) = faero.as_ref() {
-                    fl.faero_ocn[..na].copy_from_slice(&x[i * na..(i + 1) * na]);
-                }
-                if let Some(x) = fiso.as_ref() {
-                    fl.fiso_ocn[..ni].copy_from_slice(&x[i * ni..(i + 1) * ni]);
-                }
-                if let Some(x) = fbio.as_ref() {
-                    fl.flux_bio[..nb].copy_from_slice(&x[i * nb..(i + 1) * nb]);
-                }
-                let mut col = ColumnMut {
-                    aicen: &mut a[i * ncat..(i + 1) * ncat],
-                    vicen: &mut v[i * ncat..(i + 1) * ncat],
-                    vsnon: &mut s[i * ncat..(i + 1) * ncat],
-                    trcrn: &mut t[i * ncat * nt..(i + 1) * ncat * nt],
-                    aice0: &mut a0[i],
-                    aice: &mut ai[i],
-                };
-                let d = ridge_step_column(&mut col, hin, forcing, &r.opts, &r.layout, &mut fl, ws)
-                    .map_err(|source| FfiError::from(ItdError::Column { column: i, source }))?;
-                if let Some(op) = opening.as_mut() {
-                    op[i] = d.opening;
-                }
-                for (o, x) in outs
-                    .iter_mut()
-                    .zip([fl.fresh, fl.fsalt, fl.fhocn, fl.fpond])
-                {
-                    if let Some(o) = o {
-                        o[i] = x;
-                    }
-                }
-                for (o, x) in rates.iter_mut().zip([d.dardg1dt, d.dardg2dt, d.dvirdgdt]) {
-                    if let Some(o) = o {
-                        o[i] = x;
-                    }
-                }
-                if let Some(x) = faero.as_mut() {
-                    x[i * na..(i + 1) * na].copy_from_slice(&fl.faero_ocn[..na]);
-                }
-                if let Some(x) = fiso.as_mut() {
-                    x[i * ni..(i + 1) * ni].copy_from_slice(&fl.fiso_ocn[..ni]);
-                }
-                if let Some(x) = fbio.as_mut() {
-                    x[i * nb..(i + 1) * nb].copy_from_slice(&fl.flux_bio[..nb]);
-                }
-            }
-            Ok(())
+        let out = CellOutputs {
+            opening,
+            fluxes,
+            rates,
+            species,
+        };
+        let selected = |i: usize| valid.is_none_or(|m| m[i] != 0);
+        let forcing = CellForcing {
+            convergence,
+            shear,
+            closing,
+            tf,
+            dt,
+            ndtd: ndtd as u32,
+            step: Some(&selected),
+        };
+        with_step_scratch(ncat, nt, |ws| {
+            ridge_step_cells(state, forcing, out, hin, &r.opts, &r.layout, ws)
+                .map_err(FfiError::from)
         })
     })
 }

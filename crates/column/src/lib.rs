@@ -53,6 +53,7 @@ pub use ridge_step::batch::{
     BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, OutputMeta, SPECIES_OUTPUTS,
     StepBatchMut, ridge_step_batch, species_counts,
 };
+pub use ridge_step::cells::{CellForcing, CellOutputs, CellState, ridge_step_cells};
 pub use ridge_step::{
     Closing, ColumnMut, OceanFluxes, RidgeStepOptions, RidgeStepParams, SECONDS_PER_DAY, SaltFlux,
     StepDiagnostics, StepForcing, StepParamMeta, StepWorkspace, deformation_terms,

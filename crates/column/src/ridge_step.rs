@@ -25,10 +25,12 @@
 //! Files: this one holds the step's interface (options, forcing, column, fluxes,
 //! diagnostics) and [`ridge_step_column`]; `constants.rs` the thermodynamic constants,
 //! `workspace.rs` the scratch, `passes.rs` the ridging passes, `checks.rs` the input and
-//! output checks.
+//! output checks; `batch.rs` the step over `ndarray` views and `cells.rs` over a host's
+//! contiguous cell arrays.
 
 pub(crate) mod area_volume;
 pub(crate) mod batch;
+pub(crate) mod cells;
 mod checks;
 mod cleanup;
 mod constants;
