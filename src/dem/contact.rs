@@ -189,6 +189,128 @@ pub(crate) struct ContactLaw<'a> {
     pub water_level: Option<f64>,
 }
 
+/// The contact law as one step applies it to every touching pair: [`ContactLaw`] with the
+/// step's Δt and onset, and the constants each pair uses, taken once per step.
+struct PairLaw<'a> {
+    p: &'a ContactParams,
+    k_nv: f64,
+    water_level: Option<f64>,
+    dt: f64,
+    onset: ContactOnset,
+    k_ne: f64,
+    k_te_per_chord: f64,
+    p_c: f64,
+}
+
+impl<'a> PairLaw<'a> {
+    fn new(law: &ContactLaw<'a>, num: &StepNumerics) -> Self {
+        let p = law.params;
+        PairLaw {
+            p,
+            k_nv: law.k_nv,
+            water_level: law.water_level,
+            dt: num.dt,
+            onset: num.contact_onset,
+            k_ne: p.normal_stiffness,
+            k_te_per_chord: p.tangential_stiffness_per_chord(),
+            p_c: p.crushing_pressure,
+        }
+    }
+
+    /// Eqs (2)–(4) for the touching pair `(a, b)` with overlap `ov`: this step's contact
+    /// from the last step's `old` (`None`: a new contact), with its elastic normal force, and
+    /// what its dashpot and friction need ([`Pending`]). Crushed overlap's work goes to
+    /// `work.plastic`.
+    #[inline]
+    fn contact(
+        &self,
+        bodies: &Bodies,
+        (a, b): (usize, usize),
+        ov: &Overlap,
+        old: Option<Contact>,
+        work: &mut ContactWork,
+    ) -> (Contact, Pending) {
+        let (p, k_ne, dt) = (self.p, self.k_ne, self.dt);
+        let o = old.unwrap_or_default();
+        let forgiven = o.forgiven.min(ov.area);
+        let n = ov.normal;
+        let t = n.perp();
+        // Eq (4) with the relative velocity at the overlap centroid at n − ½.
+        let vrel = bodies.point_velocity(b, ov.centroid) - bodies.point_velocity(a, ov.centroid);
+        let vn = vrel.dot(n);
+        // The contact's length L: its dashpot is k_nv·L and its tangential spring
+        // k_te = f·k_ne·L (eq 4, "60% of the normal value" k_ne·L).
+        let chord = contact_length(ov, bodies, a, b);
+        // Eq (2), less any forgiven and crushed overlap, capped at p_c·L; the crushed
+        // part's work is dissipated.
+        let mut plastic = o.plastic;
+        let mut fe = (k_ne * (ov.area - forgiven - plastic)).max(0.0);
+        let mut stored = o.stored;
+        if self.p_c > 0.0 && fe > self.p_c * chord {
+            let grown = (fe - self.p_c * chord) / k_ne;
+            plastic += grown;
+            fe = self.p_c * chord;
+            stored -= self.p_c * grown;
+            work.plastic += self.p_c * grown;
+        }
+        let kappa = bodies.inverse_mass_along(a, ov.centroid, n)
+            + bodies.inverse_mass_along(b, ov.centroid, n);
+        // Eq (3): the dashpot c on the approach speed, from the paper's k_nv per unit
+        // chord or from this contact's own critical damping.
+        let damping = match p.damping_law {
+            DampingLaw::Sheet => self.k_nv * chord,
+            DampingLaw::Contact if kappa > 0.0 => {
+                p.damping_fraction * 2.0 * (k_ne * chord / kappa).sqrt()
+            }
+            DampingLaw::Contact => 0.0,
+        };
+        let rate = if old.is_none() && self.onset == ContactOnset::Velocity {
+            damping * (-vn).max(0.0)
+        } else {
+            match p.damping_law {
+                DampingLaw::Sheet => self.k_nv * (ov.area - o.area) / dt,
+                DampingLaw::Contact => damping * (ov.area - o.area) / (chord * dt),
+            }
+        };
+        let mu = match self.water_level {
+            Some(l) if ov.centroid.y < l => p.mu_water,
+            _ => p.mu,
+        };
+        let k_te = self.k_te_per_chord * chord;
+        let slip = o.ft - k_te * dt * vrel.dot(t);
+        let c = Contact {
+            key: pair_key(a as u32, b as u32),
+            area: ov.area,
+            ft: 0.0,
+            stored,
+            stored_t: o.stored_t,
+            forgiven,
+            plastic,
+            approach: if old.is_none() {
+                (-vn).max(0.0)
+            } else {
+                o.approach
+            },
+            vn,
+            steps: o.steps.saturating_add(1),
+            zeta: damping * kappa.sqrt() / (2.0 * (k_ne * chord).sqrt()),
+            point: ov.centroid,
+            normal: n,
+            fn_elastic: fe,
+            fn_viscous: 0.0,
+        };
+        let q = Pending {
+            rate,
+            damping,
+            mu,
+            slip,
+            k_te,
+            kappa,
+        };
+        (c, q)
+    }
+}
+
 impl ContactSet {
     /// The active contacts of the last step, sorted by key.
     pub fn contacts(&self) -> &[Contact] {
@@ -232,13 +354,8 @@ impl ContactSet {
         work: &mut ContactWork,
         pool: Option<&rayon::ThreadPool>,
     ) {
-        let (p, k_nv, water_level) = (law.params, law.k_nv, law.water_level);
-        let (dt, dashpot, onset, sweeps) = (
-            num.dt,
-            num.contact_dashpot,
-            num.contact_onset,
-            num.contact_dashpot_sweeps,
-        );
+        let (dt, dashpot, sweeps) = (num.dt, num.contact_dashpot, num.contact_dashpot_sweeps);
+        let law = PairLaw::new(law, num);
         // The overlap geometry, the bulk of the work, pair by pair on the pool's threads;
         // everything that sums follows in pair order below, so the bits do not depend on
         // the number of threads.
@@ -259,9 +376,6 @@ impl ContactSet {
         std::mem::swap(&mut self.cur, &mut self.prev);
         self.cur.clear();
         self.pending.clear();
-        let k_ne = p.normal_stiffness;
-        let k_te_per_chord = p.tangential_stiffness_per_chord();
-        let p_c = p.crushing_pressure;
         let mut j = 0;
         for (k, &key) in pairs.iter().enumerate() {
             // Contacts of the last step whose pair is no longer a candidate have separated;
@@ -294,93 +408,20 @@ impl ContactSet {
                 }
                 continue;
             };
-            let o = old.unwrap_or_default();
-            let forgiven = o.forgiven.min(ov.area);
-            let n = ov.normal;
-            let t = n.perp();
-            // Eq (4) with the relative velocity at the overlap centroid at n − ½.
-            let vrel =
-                bodies.point_velocity(b, ov.centroid) - bodies.point_velocity(a, ov.centroid);
-            let vn = vrel.dot(n);
-            // The contact's length L: its dashpot is k_nv·L and its tangential spring
-            // k_te = f·k_ne·L (eq 4, "60% of the normal value" k_ne·L).
-            let chord = contact_length(&ov, bodies, a, b);
-            // Eq (2), less any forgiven and crushed overlap, capped at p_c·L; the crushed
-            // part's work is dissipated.
-            let mut plastic = o.plastic;
-            let mut fe = (k_ne * (ov.area - forgiven - plastic)).max(0.0);
-            let mut stored = o.stored;
-            if p_c > 0.0 && fe > p_c * chord {
-                let grown = (fe - p_c * chord) / k_ne;
-                plastic += grown;
-                fe = p_c * chord;
-                stored -= p_c * grown;
-                work.plastic += p_c * grown;
-            }
-            let kappa = bodies.inverse_mass_along(a, ov.centroid, n)
-                + bodies.inverse_mass_along(b, ov.centroid, n);
-            // Eq (3): the dashpot c on the approach speed, from the paper's k_nv per unit
-            // chord or from this contact's own critical damping.
-            let damping = match p.damping_law {
-                DampingLaw::Sheet => k_nv * chord,
-                DampingLaw::Contact if kappa > 0.0 => {
-                    p.damping_fraction * 2.0 * (k_ne * chord / kappa).sqrt()
-                }
-                DampingLaw::Contact => 0.0,
-            };
-            let rate = if old.is_none() && onset == ContactOnset::Velocity {
-                damping * (-vn).max(0.0)
-            } else {
-                match p.damping_law {
-                    DampingLaw::Sheet => k_nv * (ov.area - o.area) / dt,
-                    DampingLaw::Contact => damping * (ov.area - o.area) / (chord * dt),
-                }
-            };
-            let mu = match water_level {
-                Some(l) if ov.centroid.y < l => p.mu_water,
-                _ => p.mu,
-            };
-            let k_te = k_te_per_chord * chord;
-            let slip = o.ft - k_te * dt * vrel.dot(t);
-            let mut c = Contact {
-                key: pair_key(a as u32, b as u32),
-                area: ov.area,
-                ft: 0.0,
-                stored,
-                stored_t: o.stored_t,
-                forgiven,
-                plastic,
-                approach: if old.is_none() {
-                    (-vn).max(0.0)
-                } else {
-                    o.approach
-                },
-                vn,
-                steps: o.steps.saturating_add(1),
-                zeta: damping * kappa.sqrt() / (2.0 * (k_ne * chord).sqrt()),
-                point: ov.centroid,
-                normal: n,
-                fn_elastic: fe,
-                fn_viscous: 0.0,
-            };
+            let (c, q) = law.contact(bodies, (a, b), &ov, old, work);
+            let mut c = c;
+            let (n, fe) = (c.normal, c.fn_elastic);
             match dashpot {
                 Dashpot::Explicit => {
-                    c.close(rate, mu, slip, k_te, work);
-                    let f = n * (fe + c.fn_viscous) + t * c.ft;
+                    c.close(q.rate, q.mu, q.slip, q.k_te, work);
+                    let f = n * (fe + c.fn_viscous) + n.perp() * c.ft;
                     apply_pair(bodies, key, f, ov.centroid);
                 }
                 Dashpot::Implicit => {
                     // The dashpot c; its viscous and friction forces wait for every other
                     // force of the step (pass 2 below).
                     apply_pair(bodies, key, n * fe, ov.centroid);
-                    self.pending.push(Pending {
-                        rate,
-                        damping,
-                        mu,
-                        slip,
-                        k_te,
-                        kappa,
-                    });
+                    self.pending.push(q);
                 }
             }
             self.cur.push(c);
