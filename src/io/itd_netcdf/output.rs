@@ -124,7 +124,7 @@ fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), Netc
             })
             .collect(),
     };
-    let mut items: Vec<(FieldMeta<'_>, Vec<&str>, &[f64])> = Vec::new();
+    let mut items: Vec<Item<'_>> = Vec::new();
     if out.write_itd {
         items.push((
             FieldMeta {
@@ -176,24 +176,7 @@ fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), Netc
         items.push((*meta, cat_dims.clone(), data));
     }
     let has_cat = out.write_itd || !out.category_fields.is_empty();
-    // Coordinates whose dimensions are all written.
-    let coords: Vec<&CoordVar> = g
-        .coords
-        .iter()
-        .filter(|c| {
-            c.dims
-                .iter()
-                .all(|d| spatial.contains(&d.as_str()) || (has_cat && *d == g.ncat_dim))
-        })
-        .filter(|c| !items.iter().any(|(m, _, _)| m.name == c.name))
-        .collect();
-    let coordinates: Option<String> = g.coordinates.as_ref().and_then(|list| {
-        let kept: Vec<&str> = list
-            .split_whitespace()
-            .filter(|n| coords.iter().any(|c| c.name == *n))
-            .collect();
-        (!kept.is_empty()).then(|| kept.join(" "))
-    });
+    let (coords, coordinates) = kept_coordinates(g, &items, &spatial, has_cat);
 
     let mut f = netcdf::create_with(tmp, netcdf::Options::_64BIT_OFFSET).map_err(&e)?;
     for (n, l) in &g.spatial_dims {
@@ -208,24 +191,7 @@ fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), Netc
         }
     }
     define_dim_fields(&mut f, path, out, coordinates.as_deref())?;
-    for (meta, dims, _) in &items {
-        let mut var = f.add_variable::<f64>(meta.name, dims).map_err(&e)?;
-        var.put_attribute("units", meta.units).map_err(&e)?;
-        var.put_attribute("long_name", meta.long_name).map_err(&e)?;
-        if let Some(s) = meta.standard_name {
-            var.put_attribute("standard_name", s).map_err(&e)?;
-        }
-        if let Some(fill) = out.fill
-            && meta.name != "hin_max"
-        {
-            var.put_attribute("_FillValue", fill).map_err(&e)?;
-        }
-        if let Some(c) = &coordinates
-            && meta.name != "hin_max"
-        {
-            var.put_attribute("coordinates", c.as_str()).map_err(&e)?;
-        }
-    }
+    define_items(&mut f, path, out, &items, coordinates.as_deref())?;
     for c in &coords {
         let dims: Vec<&str> = c.dims.iter().map(String::as_str).collect();
         let mut var = c.values.define(&mut f, &c.name, &dims).map_err(&e)?;
@@ -248,6 +214,68 @@ fn write_output_at(tmp: &Path, path: &Path, out: &Output<'_>) -> Result<(), Netc
         c.values.put(&mut var).map_err(&e)?;
     }
     f.close().map_err(&e)?;
+    Ok(())
+}
+
+/// A field to write: its metadata, dimensions and values in file order.
+type Item<'a> = (FieldMeta<'a>, Vec<&'a str>, &'a [f64]);
+
+/// The input's coordinate variables whose dimensions are all written (and that no field
+/// replaces), and the `coordinates` attribute naming the auxiliary ones among them.
+fn kept_coordinates<'g>(
+    g: &'g ItdGrid,
+    items: &[Item<'_>],
+    spatial: &[&str],
+    has_cat: bool,
+) -> (Vec<&'g CoordVar>, Option<String>) {
+    let coords: Vec<&CoordVar> = g
+        .coords
+        .iter()
+        .filter(|c| {
+            c.dims
+                .iter()
+                .all(|d| spatial.contains(&d.as_str()) || (has_cat && *d == g.ncat_dim))
+        })
+        .filter(|c| !items.iter().any(|(m, _, _)| m.name == c.name))
+        .collect();
+    let coordinates: Option<String> = g.coordinates.as_ref().and_then(|list| {
+        let kept: Vec<&str> = list
+            .split_whitespace()
+            .filter(|n| coords.iter().any(|c| c.name == *n))
+            .collect();
+        (!kept.is_empty()).then(|| kept.join(" "))
+    });
+    (coords, coordinates)
+}
+
+/// Defines each field with its CF attributes, the fill value and the coordinates (not on
+/// the category bounds).
+fn define_items(
+    f: &mut netcdf::FileMut,
+    path: &Path,
+    out: &Output<'_>,
+    items: &[Item<'_>],
+    coordinates: Option<&str>,
+) -> Result<(), NetcdfError> {
+    let e = nc_err(path);
+    for (meta, dims, _) in items {
+        let mut var = f.add_variable::<f64>(meta.name, dims).map_err(&e)?;
+        var.put_attribute("units", meta.units).map_err(&e)?;
+        var.put_attribute("long_name", meta.long_name).map_err(&e)?;
+        if let Some(s) = meta.standard_name {
+            var.put_attribute("standard_name", s).map_err(&e)?;
+        }
+        if let Some(fill) = out.fill
+            && meta.name != "hin_max"
+        {
+            var.put_attribute("_FillValue", fill).map_err(&e)?;
+        }
+        if let Some(c) = coordinates
+            && meta.name != "hin_max"
+        {
+            var.put_attribute("coordinates", c).map_err(&e)?;
+        }
+    }
     Ok(())
 }
 

@@ -174,6 +174,54 @@ fn ridge_itd(col: &ColumnMut<'_>, opts: &RidgeStepOptions, ws: &mut StepWorkspac
     aksum
 }
 
+/// What ridging category `n` loses to the ocean with the snow it sheds (the fraction
+/// `1 − fsnowrdg` of its ridged snow `vsrdgn`, m) and the pond water on its ridging area
+/// `ardg1n`: snow mass and enthalpy, aerosols, isotopes, snow bio tracers and pond water,
+/// added to the step's sums in Icepack's order. `trc`: the category's tracers.
+fn book_ridged_losses(
+    s: &mut Sums,
+    layout: &TracerLayout,
+    trc: &[f64],
+    (ardg1n, vsrdgn): (f64, f64),
+    one_minus_f: f64,
+    rhos: f64,
+) {
+    let nslyr = layout.nslyr as f64;
+    s.msnow_mlt += rhos * vsrdgn * one_minus_f;
+    s.vsno_ocean += vsrdgn * one_minus_f;
+    for (m, a) in s.maero.iter_mut().zip(&layout.aero) {
+        *m += vsrdgn * one_minus_f * (trc[a[0]] + trc[a[1]]);
+    }
+    if let Some((isno, iice, niso)) = layout.iso {
+        // Icepack counts the ice's isotopes with the snow's here.
+        for k in 0..niso {
+            s.miso[k] += vsrdgn * one_minus_f * (trc[isno + k] + trc[iice + k]);
+        }
+    }
+    // Vertical bio tracers in the ridged snow: its surface layer (half the top snow
+    // layer) and interior, as fractions of the snow depth (Icepack's dzssl, dzint).
+    if let Some(b) = &layout.bgc {
+        let dzssl = 0.5 / layout.nslyr as f64;
+        let dzint = 1.0 - dzssl;
+        for (m, snow) in s.mbio.iter_mut().zip(b.snow_content(trc, dzssl, dzint)) {
+            *m += vsrdgn * one_minus_f * snow;
+        }
+    }
+    // Pond water on the ridging ice (Icepack's diagnostic of every pond scheme).
+    if let (Some(ip), Some(ih)) = (layout.nt_apnd, layout.nt_hpnd) {
+        match layout.nt_alvl {
+            Some(ia) if layout.ponds_on_level_ice => {
+                s.mpond += ardg1n * trc[ip] * trc[ih] * trc[ia];
+            }
+            _ => s.mpond += ardg1n * trc[ip] * trc[ih],
+        }
+    }
+    for k in 0..layout.nslyr {
+        let esrdgn = vsrdgn * trc[layout.nt_qsno + k] / nslyr;
+        s.esnow_mlt += esrdgn * one_minus_f;
+    }
+}
+
 /// Icepack `ridge_shift`: one ridging pass with area, volume, snow and tracers.
 #[allow(clippy::too_many_arguments)]
 fn ridge_shift(
@@ -195,7 +243,6 @@ fn ridge_shift(
     let puny = p.puny;
     let ncat = ws.ncat();
     let nt = layout.ntrcr();
-    let nslyr = layout.nslyr as f64;
     ws.core.aicen_init.copy_from_slice(col.aicen);
     ws.core.vicen_init.copy_from_slice(col.vicen);
     ws.vsnon_init.copy_from_slice(col.vsnon);
@@ -246,39 +293,7 @@ fn ridge_shift(
         ws.core.virdgn[n] = virdgn;
 
         let trc = &col.trcrn[n * nt..(n + 1) * nt];
-        s.msnow_mlt += c.rhos * vsrdgn * one_minus_f;
-        s.vsno_ocean += vsrdgn * one_minus_f;
-        for (m, a) in s.maero.iter_mut().zip(&layout.aero) {
-            *m += vsrdgn * one_minus_f * (trc[a[0]] + trc[a[1]]);
-        }
-        if let Some((isno, iice, niso)) = layout.iso {
-            // Icepack counts the ice's isotopes with the snow's here.
-            for k in 0..niso {
-                s.miso[k] += vsrdgn * one_minus_f * (trc[isno + k] + trc[iice + k]);
-            }
-        }
-        // Vertical bio tracers in the ridged snow: its surface layer (half the top snow
-        // layer) and interior, as fractions of the snow depth (Icepack's dzssl, dzint).
-        if let Some(b) = &layout.bgc {
-            let dzssl = 0.5 / layout.nslyr as f64;
-            let dzint = 1.0 - dzssl;
-            for (m, snow) in s.mbio.iter_mut().zip(b.snow_content(trc, dzssl, dzint)) {
-                *m += vsrdgn * one_minus_f * snow;
-            }
-        }
-        // Pond water on the ridging ice (Icepack's diagnostic of every pond scheme).
-        if let (Some(ip), Some(ih)) = (layout.nt_apnd, layout.nt_hpnd) {
-            match layout.nt_alvl {
-                Some(ia) if layout.ponds_on_level_ice => {
-                    s.mpond += ardg1n * trc[ip] * trc[ih] * trc[ia];
-                }
-                _ => s.mpond += ardg1n * trc[ip] * trc[ih],
-            }
-        }
-        for k in 0..layout.nslyr {
-            let esrdgn = vsrdgn * trc[layout.nt_qsno + k] / nslyr;
-            s.esnow_mlt += esrdgn * one_minus_f;
-        }
+        book_ridged_losses(s, layout, trc, (ardg1n, vsrdgn), one_minus_f, c.rhos);
         for it in 0..nt {
             ws.atrcrn[n * nt + it] -= layout.amount(it, trc, ardg1n, virdgn, vsrdgn);
         }
