@@ -429,7 +429,8 @@ typedef struct PressridgeTracers {
   double smice_empty;
   // See `rhos_empty`.
   double rsnw_empty;
-  // Null, or the host's Icepack tracer tables, `host_ntrcr` tracers (the layout's count):
+  // Null, or the host's Icepack tracer tables, `host_ntrcr` tracers (the layout's count, or
+  // up to 8 more: unnamed area tracers after the layout's, as CICE's extra slot):
   // `trcr_depend(ntrcr)`, `trcr_base(ntrcr, 3)` and `nt_strata(ntrcr, 2)` in Fortran order
   // (1-based tracer numbers), `n_trcr_strata(ntrcr)`; all four or none. Each tracer is then
   // carried as they say, as Icepack moves every tracer through them (its roles stay the

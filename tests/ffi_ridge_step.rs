@@ -660,6 +660,41 @@ fn host_tracer_tables_through_the_c_abi() {
         ..host
     };
     assert_eq!(new(&short).0, PRESSRIDGE_ERR_BAD_SIZE);
+    // CICE's array: one slot more than its flags count, an area tracer there (its tables say
+    // so); nine more are refused.
+    let (mut dep1, mut b1, mut nst1, mut st1) = (dep.clone(), Vec::new(), nst.clone(), Vec::new());
+    dep1.push(0);
+    nst1.push(0);
+    for k in 0..3 {
+        b1.extend_from_slice(&b[k * nt..(k + 1) * nt]);
+        b1.push(if k == 0 { 1.0 } else { 0.0 });
+    }
+    for k in 0..2 {
+        st1.extend_from_slice(&st[k * nt..(k + 1) * nt]);
+        st1.push(0);
+    }
+    let cice = PressridgeTracers {
+        host_trcr_depend: dep1.as_ptr(),
+        host_trcr_base: b1.as_ptr(),
+        host_n_trcr_strata: nst1.as_ptr(),
+        host_nt_strata: st1.as_ptr(),
+        host_ntrcr: nt as i64 + 1,
+        ..host
+    };
+    let (rc, r) = new(&cice);
+    assert_eq!(rc, PRESSRIDGE_OK);
+    assert_eq!(
+        tables(r, nt + 1).0,
+        dep1,
+        "the layout and one unnamed area tracer"
+    );
+    // SAFETY: as above.
+    unsafe { pressridge_ridger_free(r) };
+    let long = PressridgeTracers {
+        host_ntrcr: nt as i64 + 9,
+        ..host
+    };
+    assert_eq!(new(&long).0, PRESSRIDGE_ERR_BAD_SIZE);
     // A trcr_depend of no base and no tracer is refused, naming the tracer; one that only
     // disagrees with its base is kept, as Icepack keeps it (the with_host_tables doc).
     dep[24] = -1;

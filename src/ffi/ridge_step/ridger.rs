@@ -15,6 +15,10 @@ use crate::itd::{
     TracerLayout,
 };
 
+/// Most tracers a host may carry after the flags' layout (`host_ntrcr` beyond its count):
+/// CICE carries one.
+const MAX_UNNAMED: usize = 8;
+
 /// Tracer flag: ice age `iage` (s, on ice volume), Icepack `tr_iage`.
 pub const PRESSRIDGE_TRACER_AGE: i32 = 1;
 /// Tracer flag: first-year ice fraction `FY` (on area), Icepack `tr_FY`.
@@ -67,7 +71,8 @@ pub struct PressridgeTracers {
     pub smice_empty: f64,
     /// See `rhos_empty`.
     pub rsnw_empty: f64,
-    /// Null, or the host's Icepack tracer tables, `host_ntrcr` tracers (the layout's count):
+    /// Null, or the host's Icepack tracer tables, `host_ntrcr` tracers (the layout's count, or
+    /// up to 8 more: unnamed area tracers after the layout's, as CICE's extra slot):
     /// `trcr_depend(ntrcr)`, `trcr_base(ntrcr, 3)` and `nt_strata(ntrcr, 2)` in Fortran order
     /// (1-based tracer numbers), `n_trcr_strata(ntrcr)`; all four or none. Each tracer is then
     /// carried as they say, as Icepack moves every tracer through them (its roles stay the
@@ -332,18 +337,23 @@ pub unsafe extern "C" fn pressridge_ridger_new(
                     "tracers.host_*: give all four host tables or none".to_string(),
                 ));
             }
-            let nt = layout.ntrcr();
-            if t.host_ntrcr != nt as i64 {
+            // A host array longer than the flags' layout (CICE's slot after its tracers)
+            // carries the rest as unnamed area tracers, as its tables say.
+            let named = layout.ntrcr();
+            if t.host_ntrcr < named as i64 || t.host_ntrcr > (named + MAX_UNNAMED) as i64 {
                 return Err(FfiError::new(
                     PRESSRIDGE_ERR_BAD_SIZE,
                     format!(
-                        "tracers.host_ntrcr = {}: the layout of these flags has {nt} tracers",
+                        "tracers.host_ntrcr = {}: the layout of these flags has {named} tracers \
+                         (a host may carry up to {MAX_UNNAMED} more, unnamed, after them)",
                         t.host_ntrcr
                     ),
                 ));
             }
+            layout = layout.with_unnamed_tracers(t.host_ntrcr as usize - named);
+            let nt = layout.ntrcr();
             // SAFETY: non-null, and the caller's promise is that each holds host_ntrcr
-            // (trcr_base 3·, nt_strata 2·) values, checked equal to the layout's count above.
+            // (trcr_base 3·, nt_strata 2·) values, checked to be the layout's count above.
             let (dep, base, nst, st) = (
                 std::slice::from_raw_parts(t.host_trcr_depend, nt),
                 std::slice::from_raw_parts(t.host_trcr_base, 3 * nt),

@@ -5,6 +5,40 @@ use super::{TracerBase, TracerLayout};
 use crate::ItdError;
 
 impl TracerLayout {
+    /// The layout with `n` more single-level tracers at its end that the flags do not name
+    /// (role [`super::TracerRole::Other`], carried on the area, no strata, one field
+    /// `unnamed` with `n` levels), for a host whose tracer array is longer than its flags'
+    /// layout: CICE adds one slot after every tracer its flags count (`ice_init_column.F90`,
+    /// `count_tracers`: `ntrcr = ntrcr + 1`), where the indices of the tracers that are off
+    /// point, and Icepack ridges it as any area tracer. The layout's other settings are kept;
+    /// a host's tables given after this ([`TracerLayout::with_host_tables`]) may carry them
+    /// otherwise. `n = 0` gives the layout back.
+    pub fn with_unnamed_tracers(mut self, n: usize) -> Self {
+        if n == 0 {
+            return self;
+        }
+        self.starts.push(self.ntrcr);
+        self.fields.push(super::TracerField {
+            name: "unnamed".to_string(),
+            role: super::TracerRole::Other,
+            levels: n,
+            base: TracerBase::Area,
+            strata: Vec::new(),
+            empty: 0.0,
+        });
+        self.ntrcr += n;
+        self.base.extend(std::iter::repeat_n(TracerBase::Area, n));
+        self.base_idx.extend(std::iter::repeat_n(0, n));
+        self.nstrata.extend(std::iter::repeat_n(0, n));
+        self.strata.extend(std::iter::repeat_n([0, 0], n));
+        self.empty.extend(std::iter::repeat_n(0.0, n));
+        if let Some(d) = &mut self.host_depend {
+            d.extend(std::iter::repeat_n(0, n));
+        }
+        self.derive_lists();
+        self
+    }
+
     /// The layout with each tracer carried as a host's tables say (Icepack's `trcr_depend`,
     /// `trcr_base(ntrcr, 3)` in Fortran order, `n_trcr_strata`, `nt_strata(ntrcr, 2)` in
     /// Fortran order, 1-based tracer numbers), as Icepack moves every tracer through them:

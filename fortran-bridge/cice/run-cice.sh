@@ -1,0 +1,205 @@
+#!/usr/bin/env bash
+# CICE's own box cases with pressridge swapped in, from YOUR CICE checkout with its Icepack
+# (github.com/CICE-Consortium/CICE and its icepack submodule; nothing of either is in this
+# repository):
+#
+#   fortran-bridge/cice/run-cice.sh /path/to/CICE [CASE ...]
+#
+# Copies the checkout twice into $WORK (default fortran-bridge/build/cice): stock, and
+# swapped, where the `use icepack_intfc` lines of icepack_step_ridge and icepack_ice_strength
+# in ice_step_mod.F90, ice_dyn_evp.F90, ice_dyn_eap.F90 and ice_dyn_vp.F90 name the drop-in
+# instead (fortran-bridge/icepack/pressridge_icepack.F90, compiled beside CICE with the
+# pressridge module; the changed lines are printed). Adds a serial GNU machine to both copies
+# (machines/Macros.conda_pressridge: gfortran, the system's netCDF through nf-config, no MPI;
+# CICE's own Makefile and flags: -cpp, -fconvert=big-endian, -ffree-line-length-none, and
+# with the debug option -fcheck=bounds -finit-real=nan -ffpe-trap=invalid,zero,overflow) and
+# a few option files of its own (options/set_nml.pr*: ridging on, daily history of the
+# ridging and dynamics fields, the option variants). Builds CICE once per copy (and once more
+# in the debug build) with CICE's cice.setup/cice.build, runs every case in both and compares
+# every history and restart file value for value (ncdump, all but the creation date and the
+# history line). Prints a line per case and `cice: N of N cases bit-identical` last; exit
+# status 1 if any differs. Needs gfortran, tcsh (CICE's scripts are csh), netCDF-Fortran and
+# Rust (scripts/setup.sh --cice installs the first three).
+# Cases (default): the gbox128 case, base_suite's box cases that need no external data (with
+# ridging on and one day), each of kstrength, krdg_partic and krdg_redist at 0, EVP, EAP and
+# VP dynamics, and a restart test (two days against one day and a restart).
+set -euo pipefail
+if [ $# -lt 1 ] || [ ! -f "$1/cice.setup" ] || [ ! -d "$1/icepack/columnphysics" ]; then
+  echo "usage: $0 CICE_SOURCE_DIR [CASE ...]  (a CICE checkout with its icepack submodule)" >&2
+  exit 2
+fi
+SRC=$(cd "$1" && pwd)
+shift
+HERE=$(cd "$(dirname "$0")" && pwd)
+ROOT=$(cd "$HERE/../.." && pwd)
+WORK=${WORK:-$ROOT/fortran-bridge/build/cice}
+CASES=("$@")
+[ ${#CASES[@]} -gt 0 ] || CASES=(gbox128 boxnodyn boxadv boxrestore box2001 boxslotcyl boxchan \
+  kstrength0 krdg_partic0 krdg_redist0 eap vp restart)
+
+# A case: grid and CICE option sets (comma-separated; pr* are this script's own, below).
+case_options() {
+  case $1 in
+    gbox128) echo "gbox128 short,prhist" ;;
+    boxnodyn) echo "gbox128 boxnodyn,short,prridge,prhist" ;;
+    boxadv) echo "gbox128 boxadv,short,prridge,prhist" ;;
+    boxrestore) echo "gbox128 boxrestore,short,prridge,prhist" ;;
+    box2001) echo "gbox80 box2001,short,prridge,prhist" ;;
+    boxslotcyl) echo "gbox80 boxslotcyl,short,prridge,prhist" ;;
+    boxchan) echo "gbox12 boxchan,diag1,short,prridge,prhist" ;;
+    kstrength0) echo "gbox128 short,prhist,prkstrength0" ;;
+    krdg_partic0) echo "gbox128 short,prhist,prpartic0" ;;
+    krdg_redist0) echo "gbox128 short,prhist,prredist0" ;;
+    eap) echo "gbox128 short,prhist,preap" ;;
+    vp) echo "gbox128 short,prhist,prvp" ;;
+    restart) echo "gbox128 short,prhist,prtwodays" ;;
+    debug) echo "gbox128 short,prhist,debug" ;;
+    *) echo "unknown case $1" >&2; return 1 ;;
+  esac
+}
+
+mkdir -p "$WORK"
+LIB=$ROOT/target/release
+(cd "$ROOT" && cargo build --release --lib --no-default-features)
+export PRESSRIDGE_LIBS="-L$LIB -lpressridge -Wl,-rpath,$LIB"
+export ICE_PRESSRIDGE_WKDIR=$WORK/runs
+
+# The two sandboxes: copies of the checkout (its sources, scripts and Icepack), then the
+# machine and the option files of this script.
+for kind in stock swapped; do
+  mkdir -p "$WORK/$kind"
+  (cd "$SRC" && tar cf - --exclude=.git --exclude=doc cice.setup cicecore configuration icepack) \
+    | (cd "$WORK/$kind" && tar xf -)
+  cp "$HERE/Macros.conda_pressridge" "$HERE/env.conda_pressridge" \
+    "$WORK/$kind/configuration/scripts/machines/"
+  for f in "$HERE"/options/set_nml.*; do cp "$f" "$WORK/$kind/configuration/scripts/options/"; done
+done
+
+# The swap: the use lines only.
+dyn=cicecore/cicedyn/dynamics
+swap_strength='use pressridge_icepack, only: icepack_ice_strength => pressridge_icepack_ice_strength'
+sed -i 's/^\( *\)use icepack_intfc, only: icepack_step_ridge *$/\1use pressridge_icepack, only: icepack_step_ridge => pressridge_icepack_step_ridge/' \
+  "$WORK/swapped/cicecore/cicedyn/general/ice_step_mod.F90"
+sed -i "s/^\( *\)use icepack_intfc, only: icepack_ice_strength *\$/\1$swap_strength/" \
+  "$WORK/swapped/$dyn/ice_dyn_eap.F90"
+for f in ice_dyn_evp.F90 ice_dyn_vp.F90; do
+  sed -i "s/^\( *\)use icepack_intfc, only: icepack_ice_strength, icepack_query_parameters *\$/\1use icepack_intfc, only: icepack_query_parameters\n\1$swap_strength/" \
+    "$WORK/swapped/$dyn/$f"
+done
+changed=0
+for f in cicecore/cicedyn/general/ice_step_mod.F90 $dyn/ice_dyn_eap.F90 $dyn/ice_dyn_evp.F90 \
+  $dyn/ice_dyn_vp.F90; do
+  n=$(diff "$SRC/$f" "$WORK/swapped/$f" | grep -c '^>' || true)
+  changed=$((changed + n))
+done
+echo "swapped build: $changed changed line(s) in CICE:"
+for f in cicecore/cicedyn/general/ice_step_mod.F90 $dyn/ice_dyn_eap.F90 $dyn/ice_dyn_evp.F90 \
+  $dyn/ice_dyn_vp.F90; do
+  diff "$SRC/$f" "$WORK/swapped/$f" | grep '^[<>]' | sed "s|^|  $(basename "$f"): |" || true
+done
+# The pressridge module and the drop-in, as CICE's Makefile compiles them: .F90 files named
+# after the module each holds (its dependency generator finds a module by its file's name).
+rm -rf "$WORK/pressridge-src" && mkdir -p "$WORK/pressridge-src"
+for f in "$ROOT"/fortran-bridge/src/*.f90 "$ROOT/fortran-bridge/icepack/pressridge_icepack.F90"; do
+  m=$(sed -n 's/^ *module \([a-z_0-9]*\) *$/\1/p' "$f" | head -n 1)
+  cp "$f" "$WORK/pressridge-src/$m.F90"
+done
+
+# Sets up a case in a sandbox: $1 stock|swapped, $2 case name, $3 grid, $4 options.
+setup_case() {
+  # The case's name (hence its run folder under $ICE_PRESSRIDGE_WKDIR) says its sandbox.
+  local kind=$1 name=$2 grid=$3 opts=$4 dir=$WORK/cases/$1-$2
+  rm -rf "$dir" "$ICE_PRESSRIDGE_WKDIR/$kind-$name"
+  mkdir -p "$WORK/cases"
+  (cd "$WORK/$kind" && ./cice.setup -m conda -e pressridge -c "$dir" -g "$grid" -p 1x1 -s "$opts" \
+    > "$dir.setup.log" 2>&1) || { tail -5 "$dir.setup.log" >&2; return 1; }
+  # The drop-in's sources in the swapped build's path.
+  if [ "$kind" = swapped ]; then
+    sed -i "s|^\${ICE_SANDBOX}/icepack/columnphysics\$|&\n$WORK/pressridge-src|" "$dir/cice.build"
+  fi
+  echo "$dir"
+}
+
+# One executable per sandbox and build type (CICE's grids are set at run time).
+declare -A EXE
+build_exe() {
+  local kind=$1 flavour=$2 opts="short" dir
+  [ "$flavour" = debug ] && opts="short,debug"
+  dir=$(setup_case "$kind" "build-$flavour" gbox128 "$opts")
+  (cd "$dir" && ./cice.build > build.log 2>&1) || { tail -20 "$dir/build.log" >&2; return 1; }
+  EXE[$kind-$flavour]=$ICE_PRESSRIDGE_WKDIR/$kind-build-$flavour/cice
+}
+for kind in stock swapped; do
+  build_exe "$kind" opt
+done
+
+# Compares two run folders' history and restart files: prints the differing files.
+compare_runs() {
+  local a=$1 b=$2 f
+  for f in $(cd "$a" && find history restart -name '*.nc' | sort); do
+    if [ ! -f "$b/$f" ]; then echo "$f (missing)"; continue; fi
+    diff -q <(ncdump "$a/$f" | grep -v -e ':date' -e ':history' -e '^netcdf ' -e ':time_stamp') \
+      <(ncdump "$b/$f" | grep -v -e ':date' -e ':history' -e '^netcdf ' -e ':time_stamp') \
+      > /dev/null || echo "$f"
+  done
+}
+
+same=0
+total=0
+for name in "${CASES[@]}"; do
+  read -r grid opts <<< "$(case_options "$name")"
+  flavour=opt
+  [[ ",$opts," == *,debug,* ]] && flavour=debug
+  for kind in stock swapped; do
+    [ -n "${EXE[$kind-$flavour]:-}" ] || build_exe "$kind" "$flavour"
+    dir=$(setup_case "$kind" "$name" "$grid" "$opts")
+    (cd "$dir" && ./cice.build --exe "${EXE[$kind-$flavour]}" > build.log 2>&1)
+    t0=$(date +%s.%N)
+    (cd "$dir" && ./cice.run > run.log 2>&1) || true
+    echo "$(date +%s.%N) - $t0" | bc > "$WORK/cases/$kind-$name.seconds"
+  done
+  total=$((total + 1))
+  a=$ICE_PRESSRIDGE_WKDIR/stock-$name
+  b=$ICE_PRESSRIDGE_WKDIR/swapped-$name
+  times="stock $(printf %.1f "$(cat "$WORK/cases/stock-$name.seconds")") s, swapped $(printf %.1f "$(cat "$WORK/cases/swapped-$name.seconds")") s"
+  if ! grep -q "CICE COMPLETED SUCCESSFULLY" "$a"/cice.runlog.* 2>/dev/null; then
+    echo "$name ($grid $opts): the stock build did not complete ($(tail -n 2 "$a"/cice.runlog.* | tr '\n' ' '))"
+    continue
+  fi
+  if ! grep -q "CICE COMPLETED SUCCESSFULLY" "$b"/cice.runlog.* 2>/dev/null; then
+    echo "$name ($grid $opts): the swapped build did not complete ($(tail -n 2 "$b"/cice.runlog.* | tr '\n' ' '))"
+    continue
+  fi
+  nfiles=$(cd "$a" && find history restart -name '*.nc' | wc -l)
+  diffs=$(compare_runs "$a" "$b")
+  extra=""
+  if [ "$name" = restart ]; then
+    # The restart test: day 2 again from the restart of day 1, in each build, equals the
+    # two-day run's final restart.
+    for kind in stock swapped; do
+      r=$ICE_PRESSRIDGE_WKDIR/$kind-$name
+      dir=$WORK/cases/$kind-$name
+      first=$(cd "$r/restart" && ls iced.*.nc | sort | head -n 1)
+      last=$(cd "$r/restart" && ls iced.*.nc | sort | tail -n 1)
+      mkdir -p "$r/twoday" && cp "$r/restart/$last" "$r/twoday/"
+      echo "$r/restart/$first" > "$r/ice.restart_file"
+      sed -i -e "s/^ *runtype *=.*/    runtype = 'continue'/" -e "s/^ *npt *=.*/    npt = 24/" "$r/ice_in"
+      (cd "$dir" && ./cice.run > run2.log 2>&1) || true
+      if cmp -s <(ncdump "$r/twoday/$last" | grep -v -e ':date' -e ':history' -e '^netcdf ') \
+                <(ncdump "$r/restart/$last" | grep -v -e ':date' -e ':history' -e '^netcdf '); then
+        extra="$extra, $kind restart exact"
+      else
+        extra="$extra, $kind restart DIFFERS"
+        diffs="$diffs restart($kind)"
+      fi
+    done
+  fi
+  if [ -z "$diffs" ]; then
+    same=$((same + 1))
+    echo "$name ($grid $opts): bit-identical ($nfiles history and restart files; $times$extra)"
+  else
+    echo "$name ($grid $opts): DIFFERS in $(echo $diffs | wc -w) of $nfiles files: $(echo $diffs | head -c 300) ($times$extra)"
+  fi
+done
+echo "cice: $same of $total cases bit-identical (CICE $(git -C "$SRC" rev-parse --short HEAD 2>/dev/null || echo '?'), Icepack $(git -C "$SRC/icepack" rev-parse --short HEAD 2>/dev/null || echo '?'))"
+[ "$same" -eq "$total" ]
