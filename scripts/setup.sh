@@ -2,10 +2,13 @@
 # Installs what pressridge needs on a fresh Debian 12 machine, and only what is missing.
 #   scripts/setup.sh            system packages + Rust components
 #   scripts/setup.sh --python   also the Python virtual environment (.venv) used by the tests
+#   scripts/setup.sh --cice     also tcsh and bc, for CICE's csh scripts and the CICE host
+#                               run (fortran-bridge/cice/run-cice.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 apt_pkgs=(pkg-config gfortran libnetcdf-dev libnetcdff-dev libhdf5-dev netcdf-bin fonts-dejavu-core ffmpeg)
+[ "${1:-}" = "--cice" ] && apt_pkgs+=(tcsh bc)
 missing=()
 for p in "${apt_pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
