@@ -31,7 +31,8 @@ use pressridge::itd::{
 
 use crate::BoxError;
 use crate::strength::{PartArg, RedistArg};
-use forcing::{Forcing, deformation, host_rates};
+use forcing::{deformation, host_rates};
+use pressridge::io::itd_netcdf::FileClosing;
 use settings::parse_all_params;
 
 /// Where the closing and opening rates of `ridge-step` come from.
@@ -259,7 +260,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         ),
         // The host's rates need the complete step; without snow or tracers it runs on
         // empty ones (zero snow, zero tracers of the minimal CICE layout), not written out.
-        (None, forcing @ Forcing::Host { .. }) => {
+        (None, forcing @ FileClosing::Rates { .. }) => {
             let layout = TracerLayout::cice(1, 1, CiceTracerFlags::default())?;
             let nt = layout.ntrcr();
             let st = SnowTracers {
@@ -280,10 +281,10 @@ pub fn run(args: Args) -> Result<(), BoxError> {
                 (o, all),
             )
         }
-        (None, Forcing::Deformation { conv, shear }) => area_volume::run(
+        (None, FileClosing::Deformation { convergence, shear }) => area_volume::run(
             &args,
             grid,
-            (conv, shear),
+            (convergence, shear),
             (hin_max, bounds_source),
             aice0,
             (o, all),

@@ -9,7 +9,6 @@ use pressridge::io::itd_netcdf::{
 };
 use pressridge::itd::{RidgeOptions, RidgeStepOptions, RidgeStepParams, SaltFlux};
 
-use super::forcing::Forcing;
 use super::settings::{AllParams, global_attrs};
 use super::{Args, SaltFluxArg, TF_DEFAULT};
 use crate::BoxError;
@@ -62,7 +61,7 @@ pub(super) fn run_complete(
     args: &Args,
     grid: ItdGrid,
     (snow, write_tracers): (SnowTracers, bool),
-    forcing: Forcing,
+    closing: FileClosing,
     (hin_max, bounds_source): (Vec<f64>, String),
     aice0: Array1<f64>,
     (o, all): (RidgeOptions, AllParams),
@@ -73,18 +72,9 @@ pub(super) fn run_complete(
         return Err(format!("--ndtd must be at least 1, got {n}").into());
     }
     let tf = freezing_temperature(args, &grid)?;
-    let (closing, host_names) = match forcing {
-        Forcing::Deformation { conv, shear } => (
-            FileClosing::Deformation {
-                convergence: conv,
-                shear,
-            },
-            None,
-        ),
-        Forcing::Host { closing, opening } => {
-            let names = (closing.0.clone(), opening.0.clone());
-            (FileClosing::Rates { closing, opening }, Some(names))
-        }
+    let host_names = match &closing {
+        FileClosing::Rates { closing, opening } => Some((closing.0.clone(), opening.0.clone())),
+        FileClosing::Deformation { .. } => None,
     };
     let options = RidgeStepOptions {
         participation: o.participation,

@@ -3,28 +3,14 @@
 //! file in 1/s).
 
 use ndarray::Array1;
-use pressridge::io::itd_netcdf::{CellField, CellUnits, ItdGrid, read_cell_field};
+use pressridge::io::itd_netcdf::{CellUnits, FileClosing, ItdGrid, read_cell_field};
 
 use super::Args;
 use crate::BoxError;
 
-/// Closing and opening of the step, per column.
-pub(super) enum Forcing {
-    /// CICE: convergence and shear terms (1/s).
-    Deformation {
-        conv: Array1<f64>,
-        shear: Array1<f64>,
-    },
-    /// SIS2: the host's closing and opening rates (1/s), with their variable names.
-    Host {
-        closing: (String, CellField),
-        opening: (String, CellField),
-    },
-}
-
 /// The host's closing and opening rates (1/s) per column, from the variables named by
 /// --closing-var and --opening-var (SIS2).
-pub(super) fn host_rates(args: &Args, grid: &ItdGrid) -> Result<Forcing, BoxError> {
+pub(super) fn host_rates(args: &Args, grid: &ItdGrid) -> Result<FileClosing, BoxError> {
     let read = |flag: &str, given: &Option<String>, default: &str, what: &str| {
         let name = given.clone().unwrap_or_else(|| default.to_string());
         match read_cell_field(&args.input, grid, &name, CellUnits::PerSecond)? {
@@ -39,11 +25,11 @@ pub(super) fn host_rates(args: &Args, grid: &ItdGrid) -> Result<Forcing, BoxErro
     };
     let closing = read("--closing-var", &args.closing_var, "closing", "net closing")?;
     let opening = read("--opening-var", &args.opening_var, "opening", "opening")?;
-    Ok(Forcing::Host { closing, opening })
+    Ok(FileClosing::Rates { closing, opening })
 }
 
 /// Convergence and shear terms (1/s) per column from the options or the file (CICE).
-pub(super) fn deformation(args: &Args, grid: &ItdGrid) -> Result<Forcing, BoxError> {
+pub(super) fn deformation(args: &Args, grid: &ItdGrid) -> Result<FileClosing, BoxError> {
     let ncol = grid.ncol();
     let conv: Array1<f64> = match (args.convergence, &grid.divu) {
         (Some(c), _) => Array1::from_elem(ncol, c),
@@ -88,5 +74,8 @@ pub(super) fn deformation(args: &Args, grid: &ItdGrid) -> Result<Forcing, BoxErr
             Array1::zeros(ncol)
         }
     };
-    Ok(Forcing::Deformation { conv, shear })
+    Ok(FileClosing::Deformation {
+        convergence: conv,
+        shear,
+    })
 }
