@@ -291,6 +291,18 @@ fn category_terms_avx2(
     category_terms_generic(aicen, vicen, shape, p)
 }
 
+/// A category's thickness v/a (m), or 1 m where it holds no ice (`live` false, its terms
+/// unused): the empty categories and the padding lanes then divide by 1, not 0, so that a
+/// host that traps floating-point exceptions (gfortran's `-ffpe-trap=invalid,zero`, CICE's
+/// debug build) sees none; a category with ice gets v/a itself, so the same bits.
+#[inline(always)]
+fn thickness_or_one(live: bool, v: f64, a: f64) -> f64 {
+    // The operands are chosen before the division, so that a vectorised form divides no lane
+    // by zero either.
+    let (num, den) = if live { (v, a) } else { (1.0, 1.0) };
+    num / den
+}
+
 #[inline(always)]
 fn category_terms_generic(
     aicen: &[f64],
@@ -314,13 +326,13 @@ fn category_terms_generic(
             for gi in 0..groups {
                 for j in 0..4 {
                     let n = 4 * gi + j;
-                    let hi = v[n] / a[n];
+                    let live = a[n] > puny;
+                    let hi = thickness_or_one(live, v[n], a[n]);
                     let hrmin = f64::min(2.0 * hi, hi + maxraft);
                     let hrmax = f64::max(2.0 * (hstar * hi).sqrt(), hrmin + puny);
                     let k = 0.5 * (hrmin + hrmax) / hi;
                     let cube = |x: f64| x * x * x;
                     let h2 = (1.0 / 3.0) * (cube(hrmax) - cube(hrmin)) / (hrmax - hrmin);
-                    let live = a[n] > puny;
                     krdg[n] = if live { k } else { 1.0 };
                     term[n] = -hi * hi + h2 / k;
                 }
@@ -331,13 +343,13 @@ fn category_terms_generic(
             for gi in 0..groups {
                 for j in 0..4 {
                     let n = 4 * gi + j;
-                    let hi = v[n] / a[n];
+                    let live = a[n] > puny;
+                    let hi = thickness_or_one(live, v[n], a[n]);
                     let hc = f64::max(hi, puny);
                     let hrmin = f64::min(2.0 * hc, hc + maxraft);
                     let hrexp = mu_rdg * hc.sqrt();
                     let k = (hrmin + hrexp) / hc;
                     let h2 = hrmin * hrmin + 2.0 * hrmin * hrexp + 2.0 * hrexp * hrexp;
-                    let live = a[n] > puny;
                     krdg[n] = if live { k } else { 1.0 };
                     term[n] = -hi * hi + h2 / k;
                 }
