@@ -120,7 +120,8 @@ setup_case() {
   echo "$dir"
 }
 
-# One executable per sandbox and build type (CICE's grids are set at run time).
+# One executable per sandbox and build type (CICE's grids are set at run time), built when a
+# case first needs it.
 declare -A EXE
 build_exe() {
   local kind=$1 flavour=$2 opts="short" dir
@@ -129,9 +130,6 @@ build_exe() {
   (cd "$dir" && ./cice.build > build.log 2>&1) || { tail -20 "$dir/build.log" >&2; return 1; }
   EXE[$kind-$flavour]=$ICE_PRESSRIDGE_WKDIR/$kind-build-$flavour/cice
 }
-for kind in stock swapped; do
-  build_exe "$kind" opt
-done
 
 # Compares two run folders' history and restart files: prints the differing files.
 compare_runs() {
