@@ -7,7 +7,10 @@
 use std::sync::Arc;
 
 use ndarray::{ArrayViewMut1, ArrayViewMut2, ArrayViewMut3, CowArray, Ix3};
-use numpy::{PyArray1, PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn, PyUntypedArrayMethods};
+use numpy::{
+    PyArray1, PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn, PyReadwriteArrayDyn,
+    PyUntypedArrayMethods,
+};
 use pyo3::prelude::*;
 
 use pressridge::itd::{
@@ -17,8 +20,8 @@ use pressridge::itd::{
 };
 
 use crate::arrays::{
-    category_shapes, check_array, choose_order, columns, columns_mut, flat, flat_bool, flat_mut,
-    flatten, flatten_mut, itd_err, new_array,
+    Order, category_shapes, check_array, choose_order, columns, columns_mut, flat, flat_bool,
+    flat_mut, flatten, flatten_mut, itd_err, new_array,
 };
 use crate::errors::{BindError, detached, value_err};
 use crate::options::{participation, redistribution};
@@ -134,36 +137,107 @@ pub(crate) fn ridge_step_full<'py>(
     if let Some(v) = &valid {
         check_array("valid", v, &spatial, "the spatial shape of aicen")?;
     }
+    let ndtd = step_timing(dt, ndtd)?;
+    let layout = step_layout(trcrn.is_some(), layout.as_deref())?;
+    let mut tshape = vec![ncat, layout.ntrcr()];
+    tshape.extend_from_slice(&spatial);
+    if let Some(t) = &trcrn {
+        check_array("trcrn", t, &tshape, "(ncat, layout.ntrcr, spatial...) =")?;
+    }
+    let opts = step_options(
+        participation_name,
+        redistribution_name,
+        mu_rdg_nodes,
+        params,
+        salt_flux,
+        cleanup,
+        rebin,
+    )?;
+    let hin_max = step_bounds(hin_max, ncat)?;
+    let order = choose_order(&aicen.as_array());
+    let out = StepArrays::new(py, &full, &tshape, &spatial, &layout, order);
+    let inputs = StepInputs {
+        state: [&aicen, &vicen, &vsnon],
+        trcrn: trcrn.as_ref(),
+        cell_state: [aice0.as_ref(), aice.as_ref()],
+        forcing: [&c1, &c2, &tf],
+        rates,
+        dt,
+        ndtd,
+        valid: valid.as_ref(),
+    };
+    run_step(py, &inputs, &out, &hin_max, &opts, &layout)?;
+    let mut h_used = hin_max;
+    if !rates {
+        h_used[ncat] = opts.params.big;
+    }
+    let StepArrays {
+        state,
+        trcrn: t_out,
+        scal,
+        cell,
+        cats,
+        species,
+        ..
+    } = out;
+    Ok((
+        state,
+        trcrn.is_some().then_some(t_out),
+        scal,
+        PyArray1::from_vec(py, h_used),
+        CELL_OUTPUTS.iter().map(|m| m.name).zip(cell).collect(),
+        CATEGORY_OUTPUTS.iter().map(|m| m.name).zip(cats).collect(),
+        SPECIES_OUTPUTS
+            .iter()
+            .map(|m| m.name)
+            .zip(species)
+            .collect(),
+    ))
+}
+
+/// The step's time step (s, positive and finite) and its number of dynamic subcycles (≥ 1).
+fn step_timing(dt: f64, ndtd: i64) -> PyResult<u32> {
     if !(dt > 0.0 && dt.is_finite()) {
         return Err(value_err(format!(
             "dt = {dt}: must be a positive, finite number of seconds"
         ))
         .into());
     }
-    if !(1..=i64::from(u32::MAX)).contains(&ndtd) {
-        return Err(value_err(format!("ndtd = {ndtd}: must be at least 1")).into());
-    }
-    let layout: Arc<TracerLayout> = match (&trcrn, &layout) {
-        (Some(_), Some(l)) => l.inner.clone(),
-        (Some(_), None) => return Err(value_err("trcrn needs its layout: pass layout=").into()),
-        (None, Some(_)) => {
-            return Err(value_err("layout is given but trcrn is not: pass both or neither").into());
+    u32::try_from(ndtd)
+        .ok()
+        .filter(|&n| n >= 1)
+        .ok_or_else(|| value_err(format!("ndtd = {ndtd}: must be at least 1")).into())
+}
+
+/// The tracer layout of the step: the caller's with `trcrn`, a minimal one without.
+fn step_layout(has_trcrn: bool, layout: Option<&PyTracerLayout>) -> PyResult<Arc<TracerLayout>> {
+    match (has_trcrn, layout) {
+        (true, Some(l)) => Ok(l.inner.clone()),
+        (true, None) => Err(value_err("trcrn needs its layout: pass layout=").into()),
+        (false, Some(_)) => {
+            Err(value_err("layout is given but trcrn is not: pass both or neither").into())
         }
-        (None, None) => {
-            Arc::new(TracerLayout::cice(1, 1, CiceTracerFlags::default()).map_err(value_err)?)
-        }
-    };
-    let nt = layout.ntrcr();
-    let mut tshape = vec![ncat, nt];
-    tshape.extend_from_slice(&spatial);
-    if let Some(t) = &trcrn {
-        check_array("trcrn", t, &tshape, "(ncat, layout.ntrcr, spatial...) =")?;
+        (false, None) => Ok(Arc::new(
+            TracerLayout::cice(1, 1, CiceTracerFlags::default()).map_err(value_err)?,
+        )),
     }
+}
+
+/// The participation and redistribution (by name, with the redistribution's μ_rdg nodes)
+/// and every constant of the step by name, through the library's parser.
+fn step_options(
+    participation_name: &str,
+    redistribution_name: &str,
+    mu_rdg_nodes: Option<(Vec<f64>, Vec<f64>)>,
+    params: Vec<(String, f64)>,
+    salt_flux: &str,
+    cleanup: bool,
+    rebin: bool,
+) -> PyResult<RidgeStepOptions> {
     let participation = participation(participation_name)?;
     let redistribution = redistribution(redistribution_name, mu_rdg_nodes)?;
-    // Every constant of the step by name: the library's parser.
     let constants = RidgeStepOptions::from_pairs(params).map_err(BindError::from)?;
-    let opts = RidgeStepOptions {
+    Ok(RidgeStepOptions {
         participation,
         redistribution,
         step: RidgeStepParams {
@@ -173,7 +247,11 @@ pub(crate) fn ridge_step_full<'py>(
         cleanup,
         rebin,
         ..constants
-    };
+    })
+}
+
+/// The category bounds (m): the caller's `ncat + 1` values, or the round-number bounds.
+fn step_bounds(hin_max: Option<Vec<f64>>, ncat: usize) -> PyResult<Vec<f64>> {
     let hin_max = match hin_max {
         Some(h) => h,
         None => category_bounds(&CategoryBounds::RoundNumbers, ncat).map_err(value_err)?,
@@ -186,154 +264,192 @@ pub(crate) fn ridge_step_full<'py>(
         ))
         .into());
     }
-    let a = aicen.as_array();
-    let order = choose_order(&a);
-    let state: [Bound<'py, PyArrayDyn<f64>>; 3] =
-        std::array::from_fn(|_| new_array(py, &full, order));
-    let t_out = new_array(py, &tshape, order);
-    let scal: [Bound<'py, PyArrayDyn<f64>>; 2] =
-        std::array::from_fn(|_| new_array(py, &spatial, order));
-    let cell: Vec<Bound<'py, PyArrayDyn<f64>>> = CELL_OUTPUTS
-        .iter()
-        .map(|_| new_array(py, &spatial, order))
-        .collect();
-    let cats: Vec<Bound<'py, PyArrayDyn<f64>>> = CATEGORY_OUTPUTS
-        .iter()
-        .map(|_| new_array(py, &full, order))
-        .collect();
-    let species: Vec<Bound<'py, PyArrayDyn<f64>>> = species_counts(&layout)
-        .iter()
-        .map(|&n| {
-            let mut shape = vec![n];
-            shape.extend_from_slice(&spatial);
-            new_array(py, &shape, order)
-        })
-        .collect();
-    {
-        let mut s_rw: Vec<_> = state.iter().map(|x| x.readwrite()).collect();
-        let mut s_cols: Vec<ArrayViewMut2<'_, f64>> = s_rw
-            .iter_mut()
-            .map(|x| columns_mut(x.as_array_mut(), order))
-            .collect();
-        let mut t_rw = t_out.readwrite();
-        let mut t_cols: ArrayViewMut3<'_, f64> = flatten_mut(t_rw.as_array_mut(), 2, order);
-        let mut sc_rw: Vec<_> = scal.iter().map(|x| x.readwrite()).collect();
-        let mut sc_flat: Vec<ArrayViewMut1<'_, f64>> = sc_rw
-            .iter_mut()
-            .map(|x| flat_mut(x.as_array_mut(), order))
-            .collect();
-        s_cols[0].assign(&columns(a, order));
-        s_cols[1].assign(&columns(vicen.as_array(), order));
-        s_cols[2].assign(&columns(vsnon.as_array(), order));
-        if let Some(t) = &trcrn {
-            let tv: CowArray<'_, f64, Ix3> = flatten(t.as_array(), 2, order);
-            t_cols.assign(&tv);
+    Ok(hin_max)
+}
+
+/// The step's inputs, checked against the shapes of `aicen`.
+struct StepInputs<'a, 'py> {
+    /// aicen, vicen, vsnon: (ncat, spatial...).
+    state: [&'a PyReadonlyArrayDyn<'py, f64>; 3],
+    /// (ncat, ntrcr, spatial...), or none.
+    trcrn: Option<&'a PyReadonlyArrayDyn<'py, f64>>,
+    /// aice0, aice (spatial); where absent, derived from aicen.
+    cell_state: [Option<&'a PyReadonlyArrayDyn<'py, f64>>; 2],
+    /// The closing terms (`rates`: closing, opening; else convergence, shear, 1/s) and tf (°C).
+    forcing: [&'a PyReadonlyArrayDyn<'py, f64>; 3],
+    rates: bool,
+    /// Time step (s).
+    dt: f64,
+    /// Dynamic subcycles.
+    ndtd: u32,
+    /// Which cells to step; the others are written as NaN.
+    valid: Option<&'a PyReadonlyArrayDyn<'py, bool>>,
+}
+
+/// The arrays the step writes, new, in the memory order of the input.
+struct StepArrays<'py> {
+    state: [Bound<'py, PyArrayDyn<f64>>; 3],
+    trcrn: Bound<'py, PyArrayDyn<f64>>,
+    /// aice0, aice.
+    scal: [Bound<'py, PyArrayDyn<f64>>; 2],
+    cell: Vec<Bound<'py, PyArrayDyn<f64>>>,
+    cats: Vec<Bound<'py, PyArrayDyn<f64>>>,
+    species: Vec<Bound<'py, PyArrayDyn<f64>>>,
+    spatial: Vec<usize>,
+    order: Order,
+}
+
+impl<'py> StepArrays<'py> {
+    fn new(
+        py: Python<'py>,
+        full: &[usize],
+        tshape: &[usize],
+        spatial: &[usize],
+        layout: &TracerLayout,
+        order: Order,
+    ) -> Self {
+        let cells = |n: usize| (0..n).map(|_| new_array(py, spatial, order)).collect();
+        let cats = |n: usize| (0..n).map(|_| new_array(py, full, order)).collect();
+        StepArrays {
+            state: std::array::from_fn(|_| new_array(py, full, order)),
+            trcrn: new_array(py, tshape, order),
+            scal: std::array::from_fn(|_| new_array(py, spatial, order)),
+            cell: cells(CELL_OUTPUTS.len()),
+            cats: cats(CATEGORY_OUTPUTS.len()),
+            species: species_counts(layout)
+                .iter()
+                .map(|&n| {
+                    let mut shape = vec![n];
+                    shape.extend_from_slice(spatial);
+                    new_array(py, &shape, order)
+                })
+                .collect(),
+            spatial: spatial.to_vec(),
+            order,
         }
-        match &aice0 {
-            Some(x) => sc_flat[0].assign(&flat(x.as_array(), order)),
-            None => {
-                for (c, x) in sc_flat[0].iter_mut().enumerate() {
-                    *x = f64::max(1.0 - s_cols[0].column(c).sum(), 0.0);
-                }
-            }
-        }
-        match &aice {
-            Some(x) => sc_flat[1].assign(&flat(x.as_array(), order)),
-            None => {
-                for (c, x) in sc_flat[1].iter_mut().enumerate() {
-                    *x = s_cols[0].column(c).sum();
-                }
-            }
-        }
-        let c1f = flat(c1.as_array(), order);
-        let c2f = flat(c2.as_array(), order);
-        let tff = flat(tf.as_array(), order);
-        let ok = valid.as_ref().map(|x| flat_bool(x.as_array(), order));
-        let mut cell_rw: Vec<_> = cell.iter().map(|x| x.readwrite()).collect();
-        let mut cell_views: Vec<ArrayViewMut1<'_, f64>> = cell_rw
-            .iter_mut()
-            .map(|x| flat_mut(x.as_array_mut(), order))
-            .collect();
-        let mut cat_rw: Vec<_> = cats.iter().map(|x| x.readwrite()).collect();
-        let mut cat_views: Vec<ArrayViewMut2<'_, f64>> = cat_rw
-            .iter_mut()
-            .map(|x| columns_mut(x.as_array_mut(), order))
-            .collect();
-        let mut sp_rw: Vec<_> = species.iter().map(|x| x.readwrite()).collect();
-        let mut sp_views: Vec<ArrayViewMut2<'_, f64>> = sp_rw
-            .iter_mut()
-            .map(|x| columns_mut(x.as_array_mut(), order))
-            .collect();
-        let layout_ref = &*layout;
-        detached(py, || {
-            let closing = if rates {
-                BatchClosing::Rates {
-                    closing: c1f.view(),
-                    opening: c2f.view(),
-                }
-            } else {
-                BatchClosing::Deformation {
-                    convergence: c1f.view(),
-                    shear: c2f.view(),
-                }
-            };
-            let [sa, sv, ss] = <[ArrayViewMut2<'_, f64>; 3]>::try_from(s_cols)
-                .map_err(|_| BindError::Internal("three state arrays".into()))?;
-            let [s0, s1] = <[ArrayViewMut1<'_, f64>; 2]>::try_from(sc_flat)
-                .map_err(|_| BindError::Internal("two cell state arrays".into()))?;
-            let mut a0_keep = s0;
-            ridge_step_batch(
-                StepBatchMut {
-                    aicen: sa,
-                    vicen: sv,
-                    vsnon: ss,
-                    trcrn: t_cols,
-                    aice0: a0_keep.view_mut(),
-                    aice: s1,
-                },
-                &hin_max,
-                BatchForcing {
-                    closing,
-                    tf: tff.view(),
-                    dt,
-                    ndtd: ndtd as u32,
-                },
-                ok.as_ref().map(|x| x.view()),
-                f64::NAN,
-                &opts,
-                layout_ref,
-                &mut cell_views,
-                Some(&mut cat_views),
-                Some(&mut sp_views),
-            )
-            .map_err(|e| itd_err(e, &spatial, order))?;
-            // Masked columns: their open water is missing, like their outputs.
-            if let Some(ok) = &ok {
-                for (x, &good) in a0_keep.iter_mut().zip(ok.iter()) {
-                    if !good {
-                        *x = f64::NAN;
-                    }
-                }
-            }
-            Ok(())
-        })?;
     }
-    let mut h_used = hin_max.clone();
-    if !rates {
-        h_used[ncat] = opts.params.big;
+}
+
+/// Copies the inputs into the new arrays and steps them there with `ridge_step_batch`, the
+/// Python thread detached.
+fn run_step(
+    py: Python<'_>,
+    inputs: &StepInputs<'_, '_>,
+    out: &StepArrays<'_>,
+    hin_max: &[f64],
+    opts: &RidgeStepOptions,
+    layout: &TracerLayout,
+) -> PyResult<()> {
+    let order = out.order;
+    let mut s_rw: Vec<_> = out.state.iter().map(|x| x.readwrite()).collect();
+    let mut s_cols: Vec<ArrayViewMut2<'_, f64>> = s_rw
+        .iter_mut()
+        .map(|x| columns_mut(x.as_array_mut(), order))
+        .collect();
+    let mut t_rw = out.trcrn.readwrite();
+    let mut t_cols: ArrayViewMut3<'_, f64> = flatten_mut(t_rw.as_array_mut(), 2, order);
+    let mut sc_rw: Vec<_> = out.scal.iter().map(|x| x.readwrite()).collect();
+    let mut sc_flat: Vec<ArrayViewMut1<'_, f64>> = sc_rw
+        .iter_mut()
+        .map(|x| flat_mut(x.as_array_mut(), order))
+        .collect();
+    for (o, x) in s_cols.iter_mut().zip(inputs.state) {
+        o.assign(&columns(x.as_array(), order));
     }
-    let [aicen_o, vicen_o, vsnon_o] = state;
-    Ok((
-        [aicen_o, vicen_o, vsnon_o],
-        trcrn.is_some().then_some(t_out),
-        scal,
-        PyArray1::from_vec(py, h_used),
-        CELL_OUTPUTS.iter().map(|m| m.name).zip(cell).collect(),
-        CATEGORY_OUTPUTS.iter().map(|m| m.name).zip(cats).collect(),
-        SPECIES_OUTPUTS
-            .iter()
-            .map(|m| m.name)
-            .zip(species)
-            .collect(),
-    ))
+    if let Some(t) = inputs.trcrn {
+        let tv: CowArray<'_, f64, Ix3> = flatten(t.as_array(), 2, order);
+        t_cols.assign(&tv);
+    }
+    // aice0 = max(1 − Σ aicen, 0) and aice = Σ aicen where the caller gives neither.
+    for (k, (o, x)) in sc_flat.iter_mut().zip(inputs.cell_state).enumerate() {
+        match x {
+            Some(x) => o.assign(&flat(x.as_array(), order)),
+            None => {
+                for (c, x) in o.iter_mut().enumerate() {
+                    let area = s_cols[0].column(c).sum();
+                    *x = if k == 0 {
+                        f64::max(1.0 - area, 0.0)
+                    } else {
+                        area
+                    };
+                }
+            }
+        }
+    }
+    let [c1f, c2f, tff] = inputs.forcing.map(|x| flat(x.as_array(), order));
+    let ok = inputs.valid.map(|x| flat_bool(x.as_array(), order));
+    let mut cell_rw = readwrite_all(&out.cell);
+    let mut cat_rw = readwrite_all(&out.cats);
+    let mut sp_rw = readwrite_all(&out.species);
+    let mut cell_views: Vec<ArrayViewMut1<'_, f64>> = cell_rw
+        .iter_mut()
+        .map(|x| flat_mut(x.as_array_mut(), order))
+        .collect();
+    let mut cat_views: Vec<ArrayViewMut2<'_, f64>> = cat_rw
+        .iter_mut()
+        .map(|x| columns_mut(x.as_array_mut(), order))
+        .collect();
+    let mut sp_views: Vec<ArrayViewMut2<'_, f64>> = sp_rw
+        .iter_mut()
+        .map(|x| columns_mut(x.as_array_mut(), order))
+        .collect();
+    let (rates, dt, ndtd) = (inputs.rates, inputs.dt, inputs.ndtd);
+    let spatial = &out.spatial;
+    detached(py, || {
+        let closing = if rates {
+            BatchClosing::Rates {
+                closing: c1f.view(),
+                opening: c2f.view(),
+            }
+        } else {
+            BatchClosing::Deformation {
+                convergence: c1f.view(),
+                shear: c2f.view(),
+            }
+        };
+        let [sa, sv, ss] = <[ArrayViewMut2<'_, f64>; 3]>::try_from(s_cols)
+            .map_err(|_| BindError::Internal("three state arrays".into()))?;
+        let [mut a0, a1] = <[ArrayViewMut1<'_, f64>; 2]>::try_from(sc_flat)
+            .map_err(|_| BindError::Internal("two cell state arrays".into()))?;
+        ridge_step_batch(
+            StepBatchMut {
+                aicen: sa,
+                vicen: sv,
+                vsnon: ss,
+                trcrn: t_cols,
+                aice0: a0.view_mut(),
+                aice: a1,
+            },
+            hin_max,
+            BatchForcing {
+                closing,
+                tf: tff.view(),
+                dt,
+                ndtd,
+            },
+            ok.as_ref().map(|x| x.view()),
+            f64::NAN,
+            opts,
+            layout,
+            &mut cell_views,
+            Some(&mut cat_views),
+            Some(&mut sp_views),
+        )
+        .map_err(|e| itd_err(e, spatial, order))?;
+        // Masked columns: their open water is missing, like their outputs.
+        if let Some(ok) = &ok {
+            for (x, &good) in a0.iter_mut().zip(ok.iter()) {
+                if !good {
+                    *x = f64::NAN;
+                }
+            }
+        }
+        Ok(())
+    })?;
+    Ok(())
+}
+
+/// Write access to each of `v`.
+fn readwrite_all<'py>(v: &[Bound<'py, PyArrayDyn<f64>>]) -> Vec<PyReadwriteArrayDyn<'py, f64>> {
+    v.iter().map(|x| x.readwrite()).collect()
 }

@@ -280,11 +280,13 @@ mod tests {
         let k = set.push(Joint::new(
             0,
             1,
-            V2::new(0.125, 0.0),
-            V2::new(-0.125, 0.0),
-            0.3,
-            0.06,
-            0.25,
+            crate::dem::joint::JointGeometry {
+                pa: V2::new(0.125, 0.0),
+                pb: V2::new(-0.125, 0.0),
+                h: 0.3,
+                skeletal: 0.06,
+                gauge: 0.25,
+            },
             mat,
         ));
         let mut w = JointWork::default();

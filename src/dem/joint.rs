@@ -132,21 +132,32 @@ pub struct SurfaceStress {
     pub bottom: f64,
 }
 
+/// Where a joint sits and how deep it is: the shape of eq (1)'s glued faces.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct JointGeometry {
+    /// Centre of the right face of body a, in a's frame (m).
+    pub(crate) pa: V2,
+    /// Centre of the left face of body b, in b's frame (m).
+    pub(crate) pb: V2,
+    /// Face height (m): the thinner block's thickness.
+    pub(crate) h: f64,
+    /// Skeletal layer at the bottom of the face, without joint (m).
+    pub(crate) skeletal: f64,
+    /// Gauge length (m): the spring's length, half of each block.
+    pub(crate) gauge: f64,
+}
+
 impl Joint {
-    /// A joint at rest between the right face of `a` and the left face of `b`, whose centres
-    /// are `pa`, `pb` in the bodies' frames (m); face height `h` (m), skeletal layer
-    /// `skeletal` (m) without joint at the bottom, gauge length `gauge` (m).
-    #[allow(clippy::too_many_arguments)]
-    pub(crate) fn new(
-        a: BodyId,
-        b: BodyId,
-        pa: V2,
-        pb: V2,
-        h: f64,
-        skeletal: f64,
-        gauge: f64,
-        mat: JointMaterial,
-    ) -> Joint {
+    /// A joint at rest between the right face of `a` and the left face of `b`, shaped as
+    /// `geom` says.
+    pub(crate) fn new(a: BodyId, b: BodyId, geom: JointGeometry, mat: JointMaterial) -> Joint {
+        let JointGeometry {
+            pa,
+            pb,
+            h,
+            skeletal,
+            gauge,
+        } = geom;
         Joint {
             a,
             b,

@@ -19,7 +19,7 @@ use super::broadphase::{SweepAndPrune, pair_key};
 use super::contact::{Contact, ContactLaw, ContactSet, ContactTally};
 use super::fracture::JointSet;
 use super::geometry::{V2, below_line, overlap};
-use super::joint::{Joint, JointMaterial};
+use super::joint::{Joint, JointGeometry, JointMaterial};
 use super::ledger::{Accumulators, Stored, budget};
 use super::numerics::{Dashpot, StepNumerics};
 use super::water::{WaterForces, shielded_bodies};
@@ -193,13 +193,14 @@ impl World {
                 )));
             }
         };
-        let pa = ba.rect_centre() + V2::new(0.5 * ba.width, 0.0);
-        let pb = bb.rect_centre() + V2::new(-0.5 * bb.width, 0.0);
-        let h = ba.thickness.min(bb.thickness);
-        let gauge = 0.5 * (ba.width + bb.width);
-        let k = self
-            .joints
-            .push(Joint::new(a, b, pa, pb, h, skeletal, gauge, mat));
+        let geom = JointGeometry {
+            pa: ba.rect_centre() + V2::new(0.5 * ba.width, 0.0),
+            pb: bb.rect_centre() + V2::new(-0.5 * bb.width, 0.0),
+            h: ba.thickness.min(bb.thickness),
+            skeletal,
+            gauge: 0.5 * (ba.width + bb.width),
+        };
+        let k = self.joints.push(Joint::new(a, b, geom, mat));
         // The time step is derived while the world is built and then kept for the run
         // (blocks the sheet grows later are alike and need no new bound).
         if self.steps == 0 && !self.defer_time_step {

@@ -21,11 +21,13 @@ fn pair() -> (Bodies, Joint) {
     let j = Joint::new(
         0,
         1,
-        V2::new(0.125, 0.0),
-        V2::new(-0.125, 0.0),
-        0.30,
-        0.06,
-        0.25,
+        crate::dem::joint::JointGeometry {
+            pa: V2::new(0.125, 0.0),
+            pb: V2::new(-0.125, 0.0),
+            h: 0.30,
+            skeletal: 0.06,
+            gauge: 0.25,
+        },
         mat,
     );
     (b, j)
