@@ -47,6 +47,18 @@ use checks::{check_inputs, check_outputs};
 use passes::step;
 use workspace::Saved;
 
+/// What every routine of one column's step reads and none changes: the category bounds
+/// (m), the time step (s; the clean-up's is `ndtd` times the ridging passes'), the freezing
+/// temperature (°C), the options and the tracer layout.
+#[derive(Clone, Copy)]
+pub(crate) struct StepContext<'a> {
+    pub(crate) hin_max: &'a [f64],
+    pub(crate) dt: f64,
+    pub(crate) tf: f64,
+    pub(crate) opts: &'a RidgeStepOptions,
+    pub(crate) layout: &'a TracerLayout,
+}
+
 /// Options of the ridging step; the default is Icepack's.
 #[derive(Debug, Clone, Copy)]
 pub struct RidgeStepOptions {

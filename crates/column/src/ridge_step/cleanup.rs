@@ -11,7 +11,7 @@
 // Several parallel per-category arrays are indexed by the category number, as in Icepack.
 #![allow(clippy::needless_range_loop)]
 
-use super::{ColumnMut, OceanFluxes, RidgeStepParams, SaltFlux, StepWorkspace};
+use super::{ColumnMut, OceanFluxes, RidgeStepParams, SaltFlux, StepContext, StepWorkspace};
 use crate::ColumnError;
 use crate::tracers::{BgcKind, MAX_AERO, MAX_ISO, MAX_NBTRCR, TracerLayout};
 
@@ -33,23 +33,23 @@ struct Zapped {
     vsno: f64,
 }
 
-/// Icepack `cleanup_itd` for one column with time step `dt` (s; the caller passes
+/// Icepack `cleanup_itd` for one column with the context's time step (s; the caller passes
 /// `ndtd · dt`). Adds the zapped fluxes to `fluxes`; returns the ice and snow volumes (m)
 /// put into the ocean.
-#[allow(clippy::too_many_arguments)]
 pub(crate) fn cleanup_itd(
     col: &mut ColumnMut<'_>,
-    hin_max: &[f64],
-    dt: f64,
-    tf: f64,
-    dorebin: bool,
-    puny: f64,
-    rhoi: f64,
-    c: &RidgeStepParams,
-    layout: &TracerLayout,
+    ctx: &StepContext<'_>,
     fluxes: &mut OceanFluxes,
     ws: &mut StepWorkspace,
 ) -> Result<(f64, f64), ColumnError> {
+    let StepContext {
+        hin_max,
+        dt,
+        tf,
+        opts,
+        layout,
+    } = *ctx;
+    let (puny, c) = (opts.params.puny, &opts.step);
     let mut z = Zapped::default();
     // aggregate_area
     let mut aice = 0.0;
@@ -66,10 +66,10 @@ pub(crate) fn cleanup_itd(
             value: aice,
         });
     }
-    if dorebin && aice > puny {
+    if opts.rebin && aice > puny {
         rebin(col, hin_max, tf, puny, layout, ws)?;
     }
-    zap_small_areas(col, dt, tf, puny, rhoi, c, layout, &mut z, ws)?;
+    zap_small_areas(col, ctx, &mut z, ws)?;
     zap_snow_temperature(col, dt, puny, c, layout, &mut z);
     fluxes.fpond += z.fpond;
     fluxes.fresh += z.fresh;
@@ -224,18 +224,20 @@ fn mean_thickness(col: &ColumnMut<'_>, puny: f64, hicen: &mut [f64]) {
 /// Icepack `zap_small_areas`: empties categories with 0 < |area| ≤ `puny` (or any leftover
 /// volume or snow without area), or every category when the cell holds almost no ice, into
 /// the ocean; scales a total area in (1, 1 + puny) back to 1.
-#[allow(clippy::too_many_arguments)]
 fn zap_small_areas(
     col: &mut ColumnMut<'_>,
-    dt: f64,
-    tf: f64,
-    puny: f64,
-    rhoi: f64,
-    c: &RidgeStepParams,
-    layout: &TracerLayout,
+    ctx: &StepContext<'_>,
     z: &mut Zapped,
     ws: &mut StepWorkspace,
 ) -> Result<(), ColumnError> {
+    let StepContext {
+        dt,
+        tf,
+        opts,
+        layout,
+        ..
+    } = *ctx;
+    let (puny, rhoi, c) = (opts.params.puny, opts.params.rhoi, &opts.step);
     let ncat = col.aicen.len();
     let nt = layout.ntrcr();
     let nilyr = layout.nilyr as f64;

@@ -9,7 +9,8 @@
 use super::area_volume::{asum_ridging, close_and_open};
 use super::cleanup::cleanup_itd;
 use super::{
-    Closing, ColumnMut, OceanFluxes, RidgeStepOptions, StepDiagnostics, StepForcing, StepWorkspace,
+    Closing, ColumnMut, OceanFluxes, RidgeStepOptions, StepContext, StepDiagnostics, StepForcing,
+    StepWorkspace,
 };
 use crate::ColumnError;
 use crate::redistribution::{RidgeGeometry, category_fractions_all};
@@ -67,25 +68,24 @@ pub(super) fn step(
         ..Default::default()
     };
 
+    let ctx = StepContext {
+        hin_max,
+        dt,
+        tf: forcing.tf,
+        opts,
+        layout,
+    };
     let mut niter = 0;
     ws.mu_rdg_clamped = false;
     loop {
         niter += 1;
         let aksum = ridge_itd(col, opts, ws);
-        ridge_shift(
-            col,
-            hin_max,
+        let pass = Pass {
             top,
-            dt,
-            forcing.tf,
-            opts,
-            layout,
             aksum,
             closing_net,
-            &mut opning,
-            &mut s,
-            ws,
-        )?;
+        };
+        ridge_shift(col, &ctx, pass, &mut opning, &mut s, ws)?;
         asum = asum_ridging(col.aicen, *col.aice0);
         if (asum - 1.0).abs() < puny {
             break;
@@ -129,19 +129,11 @@ pub(super) fn step(
     d.snow_to_ocean = s.vsno_ocean;
 
     if opts.cleanup {
-        let (vice, vsno) = cleanup_itd(
-            col,
-            hin_max,
-            dt * f64::from(forcing.ndtd),
-            forcing.tf,
-            opts.rebin,
-            puny,
-            p.rhoi,
-            &opts.step,
-            layout,
-            fluxes,
-            ws,
-        )?;
+        let ctx = StepContext {
+            dt: dt * f64::from(forcing.ndtd),
+            ..ctx
+        };
+        let (vice, vsno) = cleanup_itd(col, &ctx, fluxes, ws)?;
         d.ice_to_ocean = vice;
         d.snow_to_ocean += vsno;
     }
@@ -222,22 +214,37 @@ fn book_ridged_losses(
     }
 }
 
-/// Icepack `ridge_shift`: one ridging pass with area, volume, snow and tracers.
-#[allow(clippy::too_many_arguments)]
-fn ridge_shift(
-    col: &mut ColumnMut<'_>,
-    hin_max: &[f64],
+/// One ridging pass's inputs: the top bound of the thickest category (m), the participating
+/// area `aksum` (1) and the net closing rate (1/s).
+#[derive(Clone, Copy)]
+struct Pass {
     top: f64,
-    dt: f64,
-    tf: f64,
-    opts: &RidgeStepOptions,
-    layout: &TracerLayout,
     aksum: f64,
     closing_net: f64,
+}
+
+/// Icepack `ridge_shift`: one ridging pass with area, volume, snow and tracers; `opning`
+/// the opening rate (1/s), raised where nothing can ridge.
+fn ridge_shift(
+    col: &mut ColumnMut<'_>,
+    ctx: &StepContext<'_>,
+    pass: Pass,
     opning: &mut f64,
     s: &mut Sums,
     ws: &mut StepWorkspace,
 ) -> Result<(), ColumnError> {
+    let StepContext {
+        hin_max,
+        dt,
+        tf,
+        opts,
+        layout,
+    } = *ctx;
+    let Pass {
+        top,
+        aksum,
+        closing_net,
+    } = pass;
     let p = &opts.params;
     let c = &opts.step;
     let puny = p.puny;
