@@ -9,8 +9,9 @@ use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use ndarray::{Array1, Array2, ShapeBuilder};
 use pressridge::itd::{
     CategoryBounds, CiceTracerFlags, Closing, ColumnMut, OceanFluxes, Participation,
-    Redistribution, RidgeOptions, RidgeRatesMut, RidgeStepOptions, StepForcing, StepWorkspace,
-    StrengthOptions, TracerLayout, category_bounds, ridge_batch, ridge_step_column, strength_batch,
+    Redistribution, RidgeBatchForcing, RidgeOptions, RidgeRatesMut, RidgeStepOptions, StepForcing,
+    StepWorkspace, StrengthOptions, TracerLayout, category_bounds, ridge_batch, ridge_step_column,
+    strength_batch,
 };
 
 const NCAT: usize = 5;
@@ -134,9 +135,12 @@ fn bench(c: &mut Criterion) {
                     v.view_mut(),
                     a0.view_mut(),
                     &h,
-                    conv.view(),
-                    shear.view(),
-                    3600.0,
+                    RidgeBatchForcing {
+                        convergence: conv.view(),
+                        shear: shear.view(),
+                        dt: 3600.0,
+                        valid: None,
+                    },
                     &RidgeOptions::default(),
                     RidgeRatesMut {
                         closing: c.view_mut(),
@@ -144,6 +148,7 @@ fn bench(c: &mut Criterion) {
                         dardg1dt: d1.view_mut(),
                         dardg2dt: d2.view_mut(),
                         dvirdgdt: dv.view_mut(),
+                        fill: f64::NAN,
                     },
                 )
                 .unwrap()

@@ -15,8 +15,8 @@ use pressridge::ffi::tables::*;
 use pressridge::ffi::*;
 use pressridge::io::itd_netcdf::{read_itd, write_cf_table};
 use pressridge::itd::{
-    CategoryBounds, Cf, CfTable, Participation, Redistribution, RidgeOptions, RidgeRatesMut,
-    StrengthFormula, StrengthOptions, category_bounds, ridge_batch, strength_batch,
+    CategoryBounds, Cf, CfTable, Participation, Redistribution, RidgeBatchForcing, RidgeOptions,
+    RidgeRatesMut, StrengthFormula, StrengthOptions, category_bounds, ridge_batch, strength_batch,
 };
 
 /// The fields of the sample grid the tests use.
@@ -759,9 +759,12 @@ fn ridge_step_matches_rust_api_and_conserves() {
             rv.view_mut(),
             ra0.view_mut(),
             &hin,
-            conv.view(),
-            shear.view(),
-            dt,
+            RidgeBatchForcing {
+                convergence: conv.view(),
+                shear: shear.view(),
+                dt,
+                valid: None,
+            },
             &RidgeOptions::default(),
             RidgeRatesMut {
                 closing: c.view_mut(),
@@ -769,6 +772,7 @@ fn ridge_step_matches_rust_api_and_conserves() {
                 dardg1dt: d1.view_mut(),
                 dardg2dt: d2.view_mut(),
                 dvirdgdt: dv.view_mut(),
+                fill: f64::NAN,
             },
         )
         .unwrap();

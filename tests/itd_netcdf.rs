@@ -251,9 +251,12 @@ fn sample_file_is_valid_and_ridging_conserves_it() {
         vicen.view_mut(),
         aice0.view_mut(),
         g.hin_max.as_ref().unwrap(),
-        conv.view(),
-        shear.view(),
-        86_400.0,
+        pressridge::itd::RidgeBatchForcing {
+            convergence: conv.view(),
+            shear: shear.view(),
+            dt: 86_400.0,
+            valid: None,
+        },
         &Default::default(),
         pressridge::itd::RidgeRatesMut {
             closing: c.view_mut(),
@@ -261,6 +264,7 @@ fn sample_file_is_valid_and_ridging_conserves_it() {
             dardg1dt: d1.view_mut(),
             dardg2dt: d2.view_mut(),
             dvirdgdt: dv.view_mut(),
+            fill: f64::NAN,
         },
     )
     .unwrap();

@@ -4,8 +4,9 @@
 use approx::assert_relative_eq;
 use ndarray::{Array1, Array2};
 use pressridge::itd::{
-    CategoryBounds, ColumnError, ItdError, Participation, Redistribution, RidgeForcing,
-    RidgeOptions, RidgeRatesMut, Workspace, category_bounds, ridge_batch, ridge_column,
+    CategoryBounds, ColumnError, ItdError, Participation, Redistribution, RidgeBatchForcing,
+    RidgeForcing, RidgeOptions, RidgeRatesMut, Workspace, category_bounds, ridge_batch,
+    ridge_column,
 };
 use proptest::prelude::*;
 
@@ -202,9 +203,12 @@ fn bad_input_names_variable_and_column() {
                 vicen.view_mut(),
                 aice0.view_mut(),
                 &h,
-                conv.view(),
-                shear.view(),
-                3600.0,
+                RidgeBatchForcing {
+                    convergence: conv.view(),
+                    shear: shear.view(),
+                    dt: 3600.0,
+                    valid: None,
+                },
                 &o,
                 RidgeRatesMut {
                     closing: c.view_mut(),
@@ -212,6 +216,7 @@ fn bad_input_names_variable_and_column() {
                     dardg1dt: d1.view_mut(),
                     dardg2dt: d2.view_mut(),
                     dvirdgdt: dv.view_mut(),
+                    fill: f64::NAN,
                 },
             )
         }};

@@ -514,7 +514,7 @@ def ridge_step(
       ``trcrn``, ``vsnon`` or ``closing`` is given: ice area, ice volume, snow volume and
       every tracer move together, the clean-up zaps tiny categories into the ocean fluxes;
     * **the area-volume step** (Icepack ``ridge_ice`` on ``aicen``, ``vicen`` only, Rust
-      ``itd::ridge_batch_masked``; the call of earlier versions, numbers unchanged)
+      ``itd::ridge_batch``; the call of earlier versions, numbers unchanged)
       otherwise.
 
     Parameters

@@ -16,7 +16,7 @@ use pyo3::prelude::*;
 use pressridge::itd::{
     BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, CategoryBounds, CiceTracerFlags,
     NamedParams, RidgeStepOptions, RidgeStepParams, SPECIES_OUTPUTS, SaltFlux, StepBatchMut,
-    TracerLayout, category_bounds, ridge_step_batch, species_counts,
+    StepBatchOutputs, TracerLayout, category_bounds, ridge_step_batch, species_counts,
 };
 
 use crate::arrays::{
@@ -426,14 +426,16 @@ fn run_step(
                 tf: tff.view(),
                 dt,
                 ndtd,
+                valid: ok.as_ref().map(|x| x.view()),
             },
-            ok.as_ref().map(|x| x.view()),
-            f64::NAN,
             opts,
             layout,
-            &mut cell_views,
-            Some(&mut cat_views),
-            Some(&mut sp_views),
+            StepBatchOutputs {
+                cell: &mut cell_views,
+                category: Some(&mut cat_views),
+                species: Some(&mut sp_views),
+                fill: f64::NAN,
+            },
         )
         .map_err(|e| itd_err(e, spatial, order))?;
         // Masked columns: their open water is missing, like their outputs.

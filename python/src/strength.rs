@@ -9,7 +9,7 @@ use numpy::{PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn, PyUntypedArrayMethod
 use pyo3::prelude::*;
 
 use pressridge::itd::{
-    CategoryBounds, RidgeOptions, RidgeRatesMut, category_bounds, ridge_batch_masked,
+    CategoryBounds, RidgeBatchForcing, RidgeOptions, RidgeRatesMut, category_bounds, ridge_batch,
     strength_batch_masked,
 };
 
@@ -176,16 +176,17 @@ pub(crate) fn ridge_step<'py>(
         let opening = r_views.pop().expect("five rates");
         let closing = r_views.pop().expect("five rates");
         detached(py, || {
-            ridge_batch_masked(
+            ridge_batch(
                 a_cols,
                 v_cols,
                 a0_flat.view_mut(),
                 &hin_max,
-                conv.view(),
-                shr.view(),
-                ok.as_ref().map(|x| x.view()),
-                f64::NAN,
-                dt,
+                RidgeBatchForcing {
+                    convergence: conv.view(),
+                    shear: shr.view(),
+                    dt,
+                    valid: ok.as_ref().map(|x| x.view()),
+                },
                 &opts,
                 RidgeRatesMut {
                     closing,
@@ -193,6 +194,7 @@ pub(crate) fn ridge_step<'py>(
                     dardg1dt,
                     dardg2dt,
                     dvirdgdt,
+                    fill: f64::NAN,
                 },
             )
             .map_err(|e| itd_err(e, &spatial, order))?;

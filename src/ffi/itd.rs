@@ -13,8 +13,8 @@ use super::{FfiError, FfiResult, PRESSRIDGE_ERR_BAD_VALUE, PressridgeGrid, guard
 use crate::itd::validate_bounds;
 use crate::itd::{
     CategoryBounds, Cf, CfPreset, ColumnStrength, ItdError, ItdParams, Participation,
-    Redistribution, RidgeDiagnostics, RidgeForcing, RidgeOptions, RidgeRatesMut, StrengthFormula,
-    StrengthOptions, Workspace, category_bounds, ridge_batch_masked, ridge_column,
+    Redistribution, RidgeBatchForcing, RidgeDiagnostics, RidgeForcing, RidgeOptions, RidgeRatesMut,
+    StrengthFormula, StrengthOptions, Workspace, category_bounds, ridge_batch, ridge_column,
     strength_batch_masked, strength_column,
 };
 use crate::itd::{FAST_MAX_NCAT, StrengthConsts, strength_column_constant_cf};
@@ -536,21 +536,16 @@ pub unsafe extern "C" fn pressridge_ridge_step(
             dardg1dt,
             dardg2dt,
             dvirdgdt,
+            fill: o.fill,
         };
         let ro = o.ridge_options()?;
-        ridge_batch_masked(
-            a,
-            v,
-            a0,
-            &bounds,
-            conv,
-            sh,
-            m.as_ref().map(|m| m.view()),
-            o.fill,
+        let forcing = RidgeBatchForcing {
+            convergence: conv,
+            shear: sh,
             dt,
-            &ro,
-            rates,
-        )?;
+            valid: m.as_ref().map(|m| m.view()),
+        };
+        ridge_batch(a, v, a0, &bounds, forcing, &ro, rates)?;
         Ok(())
     })
 }

@@ -46,12 +46,12 @@ pub use redistribution::{
     net_to_gross, ridge_geometry,
 };
 pub use ridge_step::area_volume::{
-    RidgeDiagnostics, RidgeForcing, RidgeOptions, RidgeRatesMut, ridge_batch, ridge_batch_masked,
+    RidgeBatchForcing, RidgeDiagnostics, RidgeForcing, RidgeOptions, RidgeRatesMut, ridge_batch,
     ridge_column,
 };
 pub use ridge_step::batch::{
     BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, OutputMeta, SPECIES_OUTPUTS,
-    StepBatchMut, ridge_step_batch, species_counts,
+    StepBatchMut, StepBatchOutputs, ridge_step_batch, species_counts,
 };
 pub use ridge_step::cells::{CellForcing, CellOutputs, CellState, ridge_step_cells};
 pub use ridge_step::{

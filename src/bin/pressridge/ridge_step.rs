@@ -2,7 +2,7 @@
 //! complete step (snow, tracers, ocean fluxes; `itd::ridge_step_batch`) when the input has
 //! snow or tracers under their CICE restart names, or packed in one array whose layout
 //! `--tracer-layout` names (Icepack column driver's history), else the area-volume step
-//! (`itd::ridge_batch_masked`). Closing and opening are derived from the deformation (CICE,
+//! (`itd::ridge_batch`). Closing and opening are derived from the deformation (CICE,
 //! `--rates deformation`) or read as the host's rates (SIS2, `--rates host`, always the
 //! complete step); the freezing temperature comes from `--tf`, the file's `Tf` (degC), or
 //! the default −1.8 °C.

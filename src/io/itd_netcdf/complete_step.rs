@@ -15,7 +15,8 @@ use super::{
 };
 use crate::itd::{
     BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, OutputMeta, RidgeStepOptions,
-    RidgeStepParams, SPECIES_OUTPUTS, StepBatchMut, TracerLayout, ridge_step_batch, species_counts,
+    RidgeStepParams, SPECIES_OUTPUTS, StepBatchMut, StepBatchOutputs, TracerLayout,
+    ridge_step_batch, species_counts,
 };
 
 /// Closing and opening of the step per column.
@@ -198,14 +199,16 @@ fn run_step(
             tf: step.tf.values.view(),
             dt: step.dt,
             ndtd: step.ndtd,
+            valid: valid.map(|v| v.view()),
         },
-        valid.map(|v| v.view()),
-        fill,
         step.options,
         &snow.layout,
-        &mut cell_v,
-        Some(&mut cat_v),
-        Some(&mut sp_v),
+        StepBatchOutputs {
+            cell: &mut cell_v,
+            category: Some(&mut cat_v),
+            species: Some(&mut sp_v),
+            fill,
+        },
     )
     .map_err(|e| grid.locate(step.input, e))?;
     Ok(out)

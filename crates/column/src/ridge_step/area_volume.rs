@@ -325,57 +325,47 @@ pub struct RidgeRatesMut<'a> {
     pub dardg2dt: ArrayViewMut1<'a, f64>,
     /// Rate of ice volume ridged (m/s).
     pub dvirdgdt: ArrayViewMut1<'a, f64>,
+    /// The value of every rate of a column [`RidgeBatchForcing::valid`] leaves out (NaN, a
+    /// file's fill value).
+    pub fill: f64,
+}
+
+/// The forcing of [`ridge_batch`]: per column the deformation (1/s, `ncol` values each, as
+/// [`RidgeForcing`]) and which columns to step, one time step for all.
+#[derive(Debug, Clone, Copy)]
+pub struct RidgeBatchForcing<'a> {
+    /// Convergence rate (1/s, ≥ 0), `ncol`.
+    pub convergence: ArrayView1<'a, f64>,
+    /// Shear term (1/s, ≥ 0), `ncol`.
+    pub shear: ArrayView1<'a, f64>,
+    /// Time step (s, > 0).
+    pub dt: f64,
+    /// Columns to step (`ncol`; land and missing data false): the others are left untouched
+    /// and unvalidated, their rates set to [`RidgeRatesMut::fill`]. `None`: every column.
+    pub valid: Option<ArrayView1<'a, bool>>,
 }
 
 /// One ridging step over `ncol` columns, in place.
 ///
-/// `aicen`, `vicen`: shape `(ncat, ncol)`, any strides; `aice0`, `convergence`, `shear`:
-/// length `ncol`; `hin_max`: `ncat + 1` bounds (m) shared by all columns; `dt` (s). Writes the
-/// rates into `rates`. Stops at the first bad column with [`ItdError::Column`]; columns before
-/// it have been updated, the bad one and those after are unchanged.
-#[allow(clippy::too_many_arguments)]
+/// `aicen`, `vicen`: shape `(ncat, ncol)`, any strides; `aice0`: length `ncol`; `hin_max`:
+/// `ncat + 1` bounds (m) shared by all columns. Writes the rates into `rates`. Stops at the
+/// first bad column with [`ItdError::Column`]; columns before it have been updated, the bad
+/// one and those after are unchanged.
 pub fn ridge_batch(
-    aicen: ArrayViewMut2<f64>,
-    vicen: ArrayViewMut2<f64>,
-    aice0: ArrayViewMut1<f64>,
-    hin_max: &[f64],
-    convergence: ArrayView1<f64>,
-    shear: ArrayView1<f64>,
-    dt: f64,
-    opts: &RidgeOptions,
-    rates: RidgeRatesMut<'_>,
-) -> Result<(), ItdError> {
-    ridge_batch_masked(
-        aicen,
-        vicen,
-        aice0,
-        hin_max,
-        convergence,
-        shear,
-        None,
-        f64::NAN,
-        dt,
-        opts,
-        rates,
-    )
-}
-
-/// As [`ridge_batch`], leaving the columns where `valid[c]` is false (land, missing data)
-/// untouched and unvalidated; their rates are set to `fill`.
-#[allow(clippy::too_many_arguments)]
-pub fn ridge_batch_masked(
     mut aicen: ArrayViewMut2<f64>,
     mut vicen: ArrayViewMut2<f64>,
     mut aice0: ArrayViewMut1<f64>,
     hin_max: &[f64],
-    convergence: ArrayView1<f64>,
-    shear: ArrayView1<f64>,
-    valid: Option<ArrayView1<bool>>,
-    fill: f64,
-    dt: f64,
+    forcing: RidgeBatchForcing<'_>,
     opts: &RidgeOptions,
     rates: RidgeRatesMut<'_>,
 ) -> Result<(), ItdError> {
+    let RidgeBatchForcing {
+        convergence,
+        shear,
+        dt,
+        valid,
+    } = forcing;
     let (ncat, ncol) = aicen.dim();
     check_shape("vicen", vicen.shape(), &[ncat, ncol])?;
     validate_bounds(hin_max)?;
@@ -389,6 +379,7 @@ pub fn ridge_batch_masked(
         mut dardg1dt,
         mut dardg2dt,
         mut dvirdgdt,
+        fill,
     } = rates;
     for (var, l) in [
         ("closing", closing.len()),

@@ -210,33 +210,42 @@ pub struct BatchForcing<'a> {
     /// Dynamics subcycles per thermodynamic step (≥ 1); ocean fluxes are averaged over
     /// `ndtd·dt`.
     pub ndtd: u32,
+    /// Columns to step (`ncol`); the others keep their state and get
+    /// [`StepBatchOutputs::fill`] in every output. `None`: every column.
+    pub valid: Option<ArrayView1<'a, bool>>,
+}
+
+/// What [`ridge_step_batch`] writes per column.
+#[derive(Debug)]
+pub struct StepBatchOutputs<'a, 'b> {
+    /// The [`CELL_OUTPUTS`], `ncol` values each (one step's values).
+    pub cell: &'a mut [ArrayViewMut1<'b, f64>],
+    /// The [`CATEGORY_OUTPUTS`], `(ncat, ncol)` each, or `None`.
+    pub category: Option<&'a mut [ArrayViewMut2<'b, f64>]>,
+    /// The [`SPECIES_OUTPUTS`], `(n, ncol)` each for the layout's [`species_counts`], or
+    /// `None`.
+    pub species: Option<&'a mut [ArrayViewMut2<'b, f64>]>,
+    /// The value of every output of a column [`BatchForcing::valid`] leaves out (NaN, a
+    /// file's fill value).
+    pub fill: f64,
 }
 
 /// The complete ridging step of `ncol` columns (Icepack `icepack_step_ridge` per column, see
 /// [`ridge_step_column`]).
 ///
 /// `hin_max`: `ncat + 1` category bounds (m), shared; with [`BatchClosing::Deformation`] the
-/// top bound used is `opts.params.big`, as Icepack's. `valid` (`ncol`): columns to step; the
-/// others keep their state and get `fill` in every output. `cell`: the [`CELL_OUTPUTS`],
-/// `ncol` values each, written (one step's values); `category`: the [`CATEGORY_OUTPUTS`],
-/// `(ncat, ncol)` each, written, or `None`; `species`: the [`SPECIES_OUTPUTS`], written, or
-/// `None`.
+/// top bound used is `opts.params.big`, as Icepack's. The outputs are written, not added to.
 ///
 /// Stops at the first failing column with [`ItdError::Column`] (its flat index): earlier
 /// columns are stepped, that one and later ones keep their state. Allocates only the scratch
 /// of one column.
-#[allow(clippy::too_many_arguments)]
 pub fn ridge_step_batch(
     state: StepBatchMut<'_>,
     hin_max: &[f64],
     forcing: BatchForcing<'_>,
-    valid: Option<ArrayView1<'_, bool>>,
-    fill: f64,
     opts: &RidgeStepOptions,
     layout: &TracerLayout,
-    cell: &mut [ArrayViewMut1<'_, f64>],
-    mut category: Option<&mut [ArrayViewMut2<'_, f64>]>,
-    mut species: Option<&mut [ArrayViewMut2<'_, f64>]>,
+    mut out: StepBatchOutputs<'_, '_>,
 ) -> Result<(), ItdError> {
     let StepBatchMut {
         mut aicen,
@@ -274,21 +283,22 @@ pub fn ridge_step_batch(
             (closing, opening)
         }
     };
+    let valid = forcing.valid;
     if let Some(m) = &valid {
         check_len("valid", m.len(), ncol)?;
     }
-    check_len("cell outputs", cell.len(), CELL_OUTPUTS.len())?;
-    for (m, o) in CELL_OUTPUTS.iter().zip(cell.iter()) {
+    check_len("cell outputs", out.cell.len(), CELL_OUTPUTS.len())?;
+    for (m, o) in CELL_OUTPUTS.iter().zip(out.cell.iter()) {
         check_len(m.name, o.len(), ncol)?;
     }
-    if let Some(cat) = category.as_deref() {
+    if let Some(cat) = out.category.as_deref() {
         check_len("category outputs", cat.len(), CATEGORY_OUTPUTS.len())?;
         for (m, o) in CATEGORY_OUTPUTS.iter().zip(cat.iter()) {
             check_shape(m.name, o.shape(), &[ncat, ncol])?;
         }
     }
     let nspecies = species_counts(layout);
-    if let Some(sp) = species.as_deref() {
+    if let Some(sp) = out.species.as_deref() {
         check_len("species outputs", sp.len(), SPECIES_OUTPUTS.len())?;
         for ((m, o), n) in SPECIES_OUTPUTS.iter().zip(sp.iter()).zip(nspecies) {
             check_shape(m.name, o.shape(), &[n, ncol])?;
@@ -302,13 +312,7 @@ pub fn ridge_step_batch(
     let mut t = vec![0.0; ncat * nt];
     for c in 0..ncol {
         if valid.as_ref().is_some_and(|m| !m[c]) {
-            fill_outputs(
-                c,
-                fill,
-                cell,
-                category.as_deref_mut(),
-                species.as_deref_mut(),
-            );
+            out.fill_column(c);
             continue;
         }
         for n in 0..ncat {
@@ -357,35 +361,43 @@ pub fn ridge_step_batch(
         }
         aice0[c] = a0;
         aice[c] = ai;
-        write_outputs(
-            c,
-            &fl,
-            &d,
-            &ws,
-            cell,
-            category.as_deref_mut(),
-            species.as_deref_mut(),
-        );
+        out.write_column(c, &fl, &d, &ws);
     }
     Ok(())
 }
 
-/// Fills column `c` of every output with `fill` (a column the mask leaves out).
-fn fill_outputs(
-    c: usize,
-    fill: f64,
-    cell: &mut [ArrayViewMut1<'_, f64>],
-    category: Option<&mut [ArrayViewMut2<'_, f64>]>,
-    species: Option<&mut [ArrayViewMut2<'_, f64>]>,
-) {
-    for o in cell.iter_mut() {
-        o[c] = fill;
+impl StepBatchOutputs<'_, '_> {
+    /// Fills column `c` of every output with [`Self::fill`] (a column the mask leaves out).
+    fn fill_column(&mut self, c: usize) {
+        let fill = self.fill;
+        for o in self.cell.iter_mut() {
+            o[c] = fill;
+        }
+        for o in self.category.iter_mut().flat_map(|x| x.iter_mut()) {
+            o.column_mut(c).fill(fill);
+        }
+        for o in self.species.iter_mut().flat_map(|x| x.iter_mut()) {
+            o.column_mut(c).fill(fill);
+        }
     }
-    for o in category.into_iter().flat_map(|x| x.iter_mut()) {
-        o.column_mut(c).fill(fill);
-    }
-    for o in species.into_iter().flat_map(|x| x.iter_mut()) {
-        o.column_mut(c).fill(fill);
+
+    /// Writes column `c`'s diagnostics (see [`write_outputs`]).
+    fn write_column(
+        &mut self,
+        c: usize,
+        fl: &OceanFluxes,
+        d: &StepDiagnostics,
+        ws: &StepWorkspace,
+    ) {
+        write_outputs(
+            c,
+            fl,
+            d,
+            ws,
+            self.cell,
+            self.category.as_deref_mut(),
+            self.species.as_deref_mut(),
+        );
     }
 }
 
@@ -451,149 +463,4 @@ fn write_outputs(
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::CiceTracerFlags;
-    use ndarray::{Array1, Array2, Array3};
-
-    /// The batch equals the column routine bit for bit, in any column order and stride.
-    #[test]
-    fn batch_equals_column_calls() {
-        let flags = CiceTracerFlags {
-            snow: true,
-            isotopes: 1,
-            aerosols: 2,
-            ..CiceTracerFlags::ALL
-        };
-        let layout = TracerLayout::cice(2, 1, flags).unwrap();
-        let nt = layout.ntrcr();
-        let (ncat, ncol) = (3, 4);
-        let hin = [0.0, 0.6, 1.4, 2.4];
-        let mut aicen = Array2::from_shape_fn((ncat, ncol), |(n, c)| 0.1 + 0.05 * (n + c) as f64);
-        let mut vicen = Array2::from_shape_fn((ncat, ncol), |(n, c)| {
-            aicen[[n, c]] * (0.4 + 0.8 * n as f64)
-        });
-        let mut vsnon = Array2::from_shape_fn((ncat, ncol), |(n, _)| 0.02 * (n + 1) as f64);
-        let mut trcrn = Array3::from_shape_fn((ncat, nt, ncol), |(n, it, c)| {
-            let (f, _) = layout.field_of(it).unwrap();
-            match f.name.as_str() {
-                "Tsfc" => -5.0,
-                "qice" => -3.0e8,
-                "qsno" => -1.1e8,
-                "sice" => 4.0,
-                "iage" => 1e6 * (c + 1) as f64,
-                _ => 0.1 * (n + 1) as f64,
-            }
-        });
-        let mut aice0 = Array1::from_shape_fn(ncol, |c| 1.0 - aicen.column(c).sum());
-        let mut aice = Array1::from_shape_fn(ncol, |c| aicen.column(c).sum());
-        let conv = Array1::from_elem(ncol, 2e-6);
-        let shear = Array1::from_shape_fn(ncol, |c| 1e-6 * c as f64);
-        let tf = Array1::from_elem(ncol, -1.8);
-        let opts = RidgeStepOptions::default();
-        // Expected: column calls on copies.
-        let mut want = Vec::new();
-        for c in 0..ncol {
-            let mut a = aicen.column(c).to_vec();
-            let mut v = vicen.column(c).to_vec();
-            let mut s = vsnon.column(c).to_vec();
-            let mut t: Vec<f64> = (0..ncat)
-                .flat_map(|n| (0..nt).map(move |it| (n, it)))
-                .map(|(n, it)| trcrn[[n, it, c]])
-                .collect();
-            let (mut a0, mut ai) = (aice0[c], aice[c]);
-            let mut fl = OceanFluxes::default();
-            let mut ws = StepWorkspace::new(ncat, nt);
-            let d = ridge_step_column(
-                &mut ColumnMut {
-                    aicen: &mut a,
-                    vicen: &mut v,
-                    vsnon: &mut s,
-                    trcrn: &mut t,
-                    aice0: &mut a0,
-                    aice: &mut ai,
-                },
-                &hin,
-                StepForcing {
-                    closing: Closing::Deformation {
-                        convergence: conv[c],
-                        shear: shear[c],
-                    },
-                    dt: 3600.0,
-                    ndtd: 1,
-                    tf: -1.8,
-                },
-                &opts,
-                &layout,
-                &mut fl,
-                &mut ws,
-            )
-            .unwrap();
-            want.push((a, v, s, t, a0, ai, fl, d, ws.krdgn.clone()));
-        }
-        let mut cells: Vec<Array1<f64>> = (0..CELL_OUTPUTS.len())
-            .map(|_| Array1::zeros(ncol))
-            .collect();
-        let mut cats: Vec<Array2<f64>> = (0..CATEGORY_OUTPUTS.len())
-            .map(|_| Array2::zeros((ncat, ncol)))
-            .collect();
-        let mut sp = [
-            Array2::zeros((2, ncol)),
-            Array2::zeros((1, ncol)),
-            Array2::zeros((0, ncol)),
-        ];
-        let mut cell_views: Vec<_> = cells.iter_mut().map(|x| x.view_mut()).collect();
-        let mut cat_views: Vec<_> = cats.iter_mut().map(|x| x.view_mut()).collect();
-        let mut sp_views: Vec<_> = sp.iter_mut().map(|x| x.view_mut()).collect();
-        ridge_step_batch(
-            StepBatchMut {
-                aicen: aicen.view_mut(),
-                vicen: vicen.view_mut(),
-                vsnon: vsnon.view_mut(),
-                trcrn: trcrn.view_mut(),
-                aice0: aice0.view_mut(),
-                aice: aice.view_mut(),
-            },
-            &hin,
-            BatchForcing {
-                closing: BatchClosing::Deformation {
-                    convergence: conv.view(),
-                    shear: shear.view(),
-                },
-                tf: tf.view(),
-                dt: 3600.0,
-                ndtd: 1,
-            },
-            None,
-            f64::NAN,
-            &opts,
-            &layout,
-            &mut cell_views,
-            Some(&mut cat_views),
-            Some(&mut sp_views),
-        )
-        .unwrap();
-        for (c, (a, v, s, t, a0, ai, fl, d, krdgn)) in want.iter().enumerate() {
-            assert_eq!(aicen.column(c).to_vec(), *a);
-            assert_eq!(vicen.column(c).to_vec(), *v);
-            assert_eq!(vsnon.column(c).to_vec(), *s);
-            for n in 0..ncat {
-                for it in 0..nt {
-                    assert_eq!(trcrn[[n, it, c]].to_bits(), t[n * nt + it].to_bits());
-                }
-            }
-            assert_eq!(aice0[c], *a0);
-            assert_eq!(aice[c], *ai);
-            assert_eq!(cells[0][c], fl.fresh);
-            assert_eq!(cells[2][c], fl.fhocn);
-            assert_eq!(cells[7][c], d.dardg1dt);
-            assert_eq!(cats[4].column(c).to_vec(), *krdgn);
-            assert_eq!(sp[0].column(c).to_vec(), fl.faero_ocn[..2]);
-            assert_eq!(sp[1][[0, c]], fl.fiso_ocn[0]);
-            assert!(
-                fl.faero_ocn[1] > 0.0 && fl.fiso_ocn[0] > 0.0,
-                "snow went to the ocean"
-            );
-        }
-    }
-}
+mod tests;

@@ -1,4 +1,4 @@
-//! The area-volume step of `ridge-step` (`itd::ridge_batch_masked`): an input without snow
+//! The area-volume step of `ridge-step` (`itd::ridge_batch`): an input without snow
 //! or tracers, closing and opening from the deformation (CICE); its output file with the
 //! ridging rates.
 
@@ -6,7 +6,7 @@ use ndarray::Array1;
 use pressridge::io::itd_netcdf::{
     FieldMeta, ItdGrid, NC_FILL_DOUBLE, Output, history_line, write_output,
 };
-use pressridge::itd::{RidgeOptions, RidgeRatesMut, ridge_batch_masked};
+use pressridge::itd::{RidgeBatchForcing, RidgeOptions, RidgeRatesMut, ridge_batch};
 
 use super::Args;
 use super::settings::{AllParams, global_attrs};
@@ -51,16 +51,17 @@ pub(super) fn run(
     let mut rates: [Array1<f64>; 5] = std::array::from_fn(|_| Array1::zeros(ncol));
     {
         let [c, op, d1, d2, dv] = &mut rates;
-        ridge_batch_masked(
+        ridge_batch(
             grid.aicen.view_mut(),
             grid.vicen.view_mut(),
             aice0.view_mut(),
             &hin_max,
-            conv.view(),
-            shear.view(),
-            grid.valid.as_ref().map(|v| v.view()),
-            fill,
-            args.dt,
+            RidgeBatchForcing {
+                convergence: conv.view(),
+                shear: shear.view(),
+                dt: args.dt,
+                valid: grid.valid.as_ref().map(|v| v.view()),
+            },
             &o,
             RidgeRatesMut {
                 closing: c.view_mut(),
@@ -68,6 +69,7 @@ pub(super) fn run(
                 dardg1dt: d1.view_mut(),
                 dardg2dt: d2.view_mut(),
                 dvirdgdt: dv.view_mut(),
+                fill,
             },
         )
         .map_err(|e| grid.locate(&args.input, e))?;
