@@ -327,6 +327,17 @@ impl World {
         Ok(())
     }
 
+    /// Runs `f` on this world inside its thread pool (on the calling thread without one), so
+    /// that the steps `f` takes hand their force phases to the pool's threads without
+    /// blocking the caller at each phase: the pool's own threads take the phases' work as it
+    /// comes (rayon's work stealing), and the caller waits once, for all of `f`.
+    pub fn in_pool<R: Send>(&mut self, f: impl FnOnce(&mut World) -> R + Send) -> R {
+        match self.pool.clone() {
+            Some(pool) => pool.install(|| f(self)),
+            None => f(self),
+        }
+    }
+
     /// The number of threads a step runs on ([`World::set_threads`]).
     pub fn threads(&self) -> usize {
         self.pool.as_ref().map_or(1, |p| p.current_num_threads())
