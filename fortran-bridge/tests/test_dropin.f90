@@ -7,6 +7,7 @@
 !> bench/icepack/reference/check-dropin.sh.)
 program test_dropin
   use, intrinsic :: iso_c_binding, only: c_double
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
   use pressridge
   use pressridge_icepack, only: icepack_step_ridge => pressridge_icepack_step_ridge, &
        icepack_ice_strength => pressridge_icepack_ice_strength, pressridge_icepack_refresh
@@ -190,10 +191,27 @@ program test_dropin
   stub_sizes(6) = 0
   call pressridge_icepack_refresh()
   stub_aborted = .false.
+  k = dep(24)
   dep(24) = -1
   call refused_call(.false.)
   call check('host tables with a trcr_depend of no base and no tracer: an abort naming the tracer', &
        stub_aborted .and. index(stub_message, 'tracer 24') > 0)
+  dep(24) = k
+
+  ! Bad states as a host's loop over its cells meets them (CICE's step_dyn_ridge calls every
+  ! cell and asks icepack_warnings_aborted once, after the loop): a good cell, the bad one,
+  ! the good cell again. The bad cell is refused through Icepack's warnings naming the
+  ! variable and category and left as it was; the good cells after it get the answer of a
+  ! cell stepped alone, bit for bit.
+  call bad_cell('NaN area', 2, ieee_value(0.0_c_double, ieee_quiet_nan), 0.0_c_double, &
+       'aicen[category 1] is not finite')
+  call bad_cell('negative area', 2, -0.1_c_double, 0.0_c_double, &
+       'aicen[category 1] is negative')
+  call bad_cell('NaN volume', 3, 0.18_c_double, ieee_value(0.0_c_double, ieee_quiet_nan), &
+       'vicen[category 2] is not finite')
+  ! A volume without area is a state Icepack's clean-up repairs (zap_small_areas): the
+  ! category is emptied into the ocean, no abort, and its neighbours are untouched.
+  call bad_cell('volume without area', 4, 0.0_c_double, 0.5_c_double, '')
   if (failures > 0) then
      print '(i0, a)', failures, ' drop-in checks failed'
      error stop 1
@@ -243,6 +261,87 @@ contains
          dvirdgndt=x0, araftn=x0, vraftn=x0, aice=ai2, fsalt=fs(2), first_ice=first2, &
          flux_bio=fb, Tf=-1.8_c_double, docleanup=cleanup)
   end subroutine refused_call
+
+  !> The host's loop over three cells, the second with category k's area set to ak and, where
+  !> vk is not 0, its volume to vk (the cell's open water keeps the area at 1); `refusal` is
+  !> what the warning must say ('' for a state the step accepts).
+  subroutine bad_cell(what, k, ak, vk, refusal)
+    character(len=*), intent(in) :: what, refusal
+    integer, intent(in) :: k
+    real(c_double), intent(in) :: ak, vk
+    real(c_double) :: a(nc, 3), v(nc, 3), s(nc, 3), t(nt, nc, 3), a0(3), ai(3), fr3(3), bad(nc)
+    real(c_double) :: ref_a(nc), ref_v(nc), ref_s(nc), ref_t(nt, nc), ref_a0, ref_ai, ref_fr
+    integer :: c
+    logical :: untouched
+    do c = 1, 3
+       a(:, c) = a1
+       v(:, c) = v1
+       s(:, c) = s1
+       t(:, :, c) = t1(1:nt, :)
+    end do
+    a(k, 2) = ak
+    if (vk /= 0) v(k, 2) = vk
+    bad = a(:, 2)
+    a0 = 1 - sum(a1)
+    a0(2) = max(1 - sum(a(:, 2)), 0.0_c_double)
+    if (ieee_is_nan(ak)) a0(2) = 1 - sum(a1)
+    ai = sum(a1)
+    ! The good cell stepped alone.
+    ref_a = a1
+    ref_v = v1
+    ref_t = t1(1:nt, :)
+    ref_s = s1
+    ref_a0 = 1 - sum(a1)
+    ref_ai = sum(a1)
+    call cell_step(ref_a, ref_v, ref_s, ref_t, ref_a0, ref_ai, ref_fr)
+    stub_aborted = .false.
+    stub_message = ''
+    do c = 1, 3
+       call cell_step(a(:, c), v(:, c), s(:, c), t(:, :, c), a0(c), ai(c), fr3(c))
+    end do
+    if (refusal == '') then
+       call check('host loop, '//what//': no abort, the category emptied as Icepack''s &
+            &clean-up does (the reference columns'' volume-without-area cases), the volume kept &
+            &in the cell, the cells beside it as if stepped alone', &
+            .not. stub_aborted .and. v(k, 2) == 0 .and. a(k, 2) == 0 .and. &
+            abs(sum(v(:, 2)) - sum(v1) - vk + v1(k)) < 1e-12_c_double * sum(v1) &
+            .and. all(a(:, 3) == ref_a) .and. all(v(:, 3) == ref_v) .and. a0(3) == ref_a0 &
+            .and. all(t(:, :, 3) == ref_t) .and. fr3(3) == ref_fr)
+    else
+       untouched = all(a(:, 2) == bad .or. (ieee_is_nan(a(:, 2)) .and. ieee_is_nan(bad)))
+       call check('host loop, '//what//': an abort through Icepack''s warnings naming it ('// &
+            refusal//'), the bad cell left as it was, the next cell as if stepped alone', &
+            stub_aborted .and. index(stub_message, refusal) > 0 .and. untouched .and. &
+            all(a(:, 1) == ref_a) .and. all(a(:, 3) == ref_a) .and. all(v(:, 3) == ref_v) &
+            .and. a0(3) == ref_a0 .and. all(t(:, :, 3) == ref_t) .and. fr3(3) == ref_fr)
+    end if
+    stub_aborted = .false.
+  end subroutine bad_cell
+
+  !> One cell through the drop-in with Icepack's arguments (the 37-tracer layout), fluxes from
+  !> zero; fresh its fresh-water flux.
+  subroutine cell_step(a, v, s, t, a0, ai, fresh)
+    real(c_double), intent(inout) :: a(nc), v(nc), s(nc), t(nt, nc), a0, ai
+    real(c_double), intent(out) :: fresh
+    real(c_double) :: h(0:nc), dd(3), o, fpd, fh3, fs3, fa(2), fi(1), fb3(1)
+    logical :: fi_(nc)
+    h = hb
+    fresh = 0
+    fpd = 0
+    fh3 = 0
+    fs3 = 0
+    fa = 0
+    fi = 0
+    fi_ = .false.
+    call icepack_step_ridge(dt=3600.0_c_double, ndtd=1, hin_max=h, rdg_conv=conv, &
+         rdg_shear=shear, aicen=a, trcrn=t, vicen=v, vsnon=s, aice0=a0, &
+         trcr_depend=dep(1:nt), trcr_base=base(1:nt, :), n_trcr_strata=nst(1:nt), &
+         nt_strata=str(1:nt, :), dardg1dt=dd(1), dardg2dt=dd(2), dvirdgdt=dd(3), &
+         opening=o, fpond=fpd, fresh=fresh, fhocn=fh3, faero_ocn=fa, fiso_ocn=fi, &
+         aparticn=x0, krdgn=x0, aredistn=x0, vredistn=x0, dardg1ndt=x0, dardg2ndt=x0, &
+         dvirdgndt=x0, araftn=x0, vraftn=x0, aice=ai, fsalt=fs3, first_ice=fi_, &
+         flux_bio=fb3, Tf=-1.8_c_double)
+  end subroutine cell_step
 
   subroutine check(what, ok)
     character(len=*), intent(in) :: what
