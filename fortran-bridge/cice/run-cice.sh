@@ -22,7 +22,9 @@
 # Rust (scripts/setup.sh --cice installs the first three).
 # Cases (default): the gbox128 case, base_suite's box cases that need no external data (with
 # ridging on and one day), each of kstrength, krdg_partic and krdg_redist at 0, EVP, EAP and
-# VP dynamics, and a restart test (two days against one day and a restart).
+# VP dynamics, and a restart test (two days against one day and a restart). Not by default:
+# debug (CICE's debug build) and badstates (bad states injected into a restart; each
+# build's outcome printed).
 set -euo pipefail
 if [ $# -lt 1 ] || [ ! -f "$1/cice.setup" ] || [ ! -d "$1/icepack/columnphysics" ]; then
   echo "usage: $0 CICE_SOURCE_DIR [CASE ...]  (a CICE checkout with its icepack submodule)" >&2
@@ -54,6 +56,7 @@ case_options() {
     vp) echo "gbox128 short,prhist,prvp" ;;
     restart) echo "gbox128 short,prhist,prtwodays" ;;
     debug) echo "gbox128 short,prhist,debug" ;;
+    badstates) echo "gbox128 short,prhist" ;;
     *) echo "unknown case $1" >&2; return 1 ;;
   esac
 }
@@ -63,6 +66,9 @@ LIB=$ROOT/target/release
 (cd "$ROOT" && cargo build --release --lib --no-default-features)
 export PRESSRIDGE_LIBS="-L$LIB -lpressridge -Wl,-rpath,$LIB"
 export ICE_PRESSRIDGE_WKDIR=$WORK/runs
+# The badstates case edits restart files with netCDF4-python (the test environment's).
+PY=$ROOT/.venv/bin/python
+[ -x "$PY" ] || PY=python3
 
 # The two sandboxes: copies of the checkout (its sources, scripts and Icepack), then the
 # machine and the option files of this script.
@@ -131,6 +137,70 @@ build_exe() {
   EXE[$kind-$flavour]=$ICE_PRESSRIDGE_WKDIR/$kind-build-$flavour/cice
 }
 
+# The newest run log of run folder $1.
+last_log() { ls "$1"/cice.runlog.* | sort | tail -n 1; }
+
+# CICE's own timers of run folder $1's first run (s): the ridging step's (Ridging, around
+# icepack_step_ridge), the dynamics' (Dynamics, whose EVP/EAP/VP solvers call
+# icepack_ice_strength) and the whole run's.
+timers() {
+  awk '/^Timer +[0-9]+: +(Total|Dynamics|Ridging) /{printf "%s %s s, ", $3, $4}' \
+    "$(ls "$1"/cice.runlog.* | sort | head -n 1)" | sed 's/, $//'
+}
+
+# Continues case dir $2 (run folder $3) for one day from restart file $1: runtype continue
+# in the case's ice_in (cice.run copies it into the run folder), the pointer file at $1.
+continue_from() {
+  echo "$1" > "$3/ice.restart_file"
+  sed -i -e "s/^ *runtype *=.*/    runtype = 'continue'/" -e "s/^ *npt *=.*/    npt = 24/" "$2/ice_in"
+  (cd "$2" && ./cice.run) > /dev/null 2>&1 || true
+}
+
+# The bad states of the badstates case: one cell, (i, j) = (64, 64) in Fortran's indices, of
+# the one-day run's final restart. $1 the restart file (changed in place), $2 the state.
+BAD_STATES=(nan negative roundoff noarea)
+bad_state_words() {
+  case $1 in
+    nan) echo "aicen(64,64,3) = NaN" ;;
+    negative) echo "aicen(64,64,3) = -0.1" ;;
+    roundoff) echo "aicen(64,64,3) = -1e-14 (advection round-off)" ;;
+    noarea) echo "aicen(64,64,4) = 0 with vicen 0.3 m (volume without area)" ;;
+  esac
+}
+bad_state_edit() {
+  "$PY" - "$1" "$2" << 'PYEOF'
+import sys
+import netCDF4
+f = netCDF4.Dataset(sys.argv[1], "r+")
+a, v = f["aicen"], f["vicen"]  # (ncat, nj, ni)
+j = i = 63
+state = sys.argv[2]
+if state == "nan":
+    a[2, j, i] = float("nan")
+elif state == "negative":
+    a[2, j, i] = -0.1
+elif state == "roundoff":
+    a[2, j, i] = -1e-14
+elif state == "noarea":
+    a[3, j, i] = 0.0
+    v[3, j, i] = 0.3
+f.close()
+PYEOF
+}
+
+# What a run folder's newest run did: completed, or aborted with CICE's and Icepack's
+# messages (the warnings Icepack flushes and abort_ice's error line).
+run_outcome() {
+  local log
+  log=$(last_log "$1")
+  if grep -q "CICE COMPLETED SUCCESSFULLY" "$log"; then
+    echo "completed"
+  else
+    echo "aborted: $(grep -e 'pressridge' -e 'error =' -e 'Zap\|zap\|ridge_ice\|shift_ice' "$log" \
+      | sed 's/^ *//' | sort -u | head -n 4 | tr '\n' ' ' | head -c 400)"
+  fi
+}
+
 # Compares two run folders' history and restart files: prints the differing files.
 compare_runs() {
   local a=$1 b=$2 f
@@ -160,6 +230,7 @@ for name in "${CASES[@]}"; do
   a=$ICE_PRESSRIDGE_WKDIR/stock-$name
   b=$ICE_PRESSRIDGE_WKDIR/swapped-$name
   times="stock $(printf %.1f "$(cat "$WORK/cases/stock-$name.seconds")") s, swapped $(printf %.1f "$(cat "$WORK/cases/swapped-$name.seconds")") s"
+  timing="  $name timers: stock $(timers "$a"); swapped $(timers "$b")"
   if ! grep -q "CICE COMPLETED SUCCESSFULLY" "$a"/cice.runlog.* 2>/dev/null; then
     echo "$name ($grid $opts): the stock build did not complete ($(tail -n 2 "$a"/cice.runlog.* | tr '\n' ' '))"
     continue
@@ -180,10 +251,11 @@ for name in "${CASES[@]}"; do
       first=$(cd "$r/restart" && ls iced.*.nc | sort | head -n 1)
       last=$(cd "$r/restart" && ls iced.*.nc | sort | tail -n 1)
       mkdir -p "$r/twoday" && cp "$r/restart/$last" "$r/twoday/"
-      echo "$r/restart/$first" > "$r/ice.restart_file"
-      sed -i -e "s/^ *runtype *=.*/    runtype = 'continue'/" -e "s/^ *npt *=.*/    npt = 24/" "$r/ice_in"
-      (cd "$dir" && ./cice.run > run2.log 2>&1) || true
-      if cmp -s <(ncdump "$r/twoday/$last" | grep -v -e ':date' -e ':history' -e '^netcdf ') \
+      continue_from "$r/restart/$first" "$dir" "$r" > "$dir/run2.log"
+      if ! grep -q "runtype *= *continue" "$(last_log "$r")"; then
+        extra="$extra, $kind restart NOT RUN"
+        diffs="$diffs restart($kind)"
+      elif cmp -s <(ncdump "$r/twoday/$last" | grep -v -e ':date' -e ':history' -e '^netcdf ') \
                 <(ncdump "$r/restart/$last" | grep -v -e ':date' -e ':history' -e '^netcdf '); then
         extra="$extra, $kind restart exact"
       else
@@ -192,12 +264,41 @@ for name in "${CASES[@]}"; do
       fi
     done
   fi
+  if [ "$name" = badstates ]; then
+    # Each bad state: the one-day run's final restart with one cell changed, and a day
+    # more from it in each build; both outcomes, and the files of two completed runs
+    # compared.
+    for st in "${BAD_STATES[@]}"; do
+      line="  $st ($(bad_state_words "$st")):"
+      for kind in stock swapped; do
+        r=$ICE_PRESSRIDGE_WKDIR/$kind-$name
+        dir=$WORK/cases/$kind-$name
+        last=$(cd "$r/restart" && ls iced.*.nc | sort | head -n 1)
+        mkdir -p "$r/bad" && cp "$r/restart/$last" "$r/bad/$st.nc"
+        bad_state_edit "$r/bad/$st.nc" "$st"
+        rm -rf "$r/bad-$st" && mkdir -p "$r/bad-$st"
+        continue_from "$r/bad/$st.nc" "$dir" "$r"
+        line="$line $kind $(run_outcome "$r");"
+        (cd "$r" && find history restart -name '*.nc' -newer "$r/bad/$st.nc" \
+          -exec cp --parents {} "$r/bad-$st/" \;)
+      done
+      sa=$ICE_PRESSRIDGE_WKDIR/stock-$name/bad-$st
+      sb=$ICE_PRESSRIDGE_WKDIR/swapped-$name/bad-$st
+      if [ -n "$(ls -A "$sa")" ] && [ -n "$(ls -A "$sb")" ]; then
+        d=$(compare_runs "$sa" "$sb")
+        if [ -z "$d" ]; then line="$line files bit-identical"; else line="$line files DIFFER: $d"; fi
+      fi
+      extra="$extra
+$line"
+    done
+  fi
   if [ -z "$diffs" ]; then
     same=$((same + 1))
     echo "$name ($grid $opts): bit-identical ($nfiles history and restart files; $times$extra)"
   else
     echo "$name ($grid $opts): DIFFERS in $(echo $diffs | wc -w) of $nfiles files: $(echo $diffs | head -c 300) ($times$extra)"
   fi
+  echo "$timing"
 done
 echo "cice: $same of $total cases bit-identical (CICE $(git -C "$SRC" rev-parse --short HEAD 2>/dev/null || echo '?'), Icepack $(git -C "$SRC/icepack" rev-parse --short HEAD 2>/dev/null || echo '?'))"
 [ "$same" -eq "$total" ]

@@ -209,8 +209,10 @@ program test_dropin
        'aicen[category 1] is negative')
   call bad_cell('NaN volume', 3, 0.18_c_double, ieee_value(0.0_c_double, ieee_quiet_nan), &
        'vicen[category 2] is not finite')
-  ! A volume without area is a state Icepack's clean-up repairs (zap_small_areas): the
-  ! category is emptied into the ocean, no abort, and its neighbours are untouched.
+  ! A volume without area is a state Icepack's step repairs, not refuses: here the ridged ice
+  ! gives the category a little area, so that its thickness is far above its bounds and the
+  ! clean-up's rebin moves it whole into the thickest category (without ridging,
+  ! zap_small_areas would put it into the ocean). No abort; its neighbours are untouched.
   call bad_cell('volume without area', 4, 0.0_c_double, 0.5_c_double, '')
   if (failures > 0) then
      print '(i0, a)', failures, ' drop-in checks failed'
@@ -300,9 +302,9 @@ contains
        call cell_step(a(:, c), v(:, c), s(:, c), t(:, :, c), a0(c), ai(c), fr3(c))
     end do
     if (refusal == '') then
-       call check('host loop, '//what//': no abort, the category emptied as Icepack''s &
-            &clean-up does (the reference columns'' volume-without-area cases), the volume kept &
-            &in the cell, the cells beside it as if stepped alone', &
+       call check('host loop, '//what//': no abort, the category moved whole by the &
+            &clean-up''s rebin (the ridged ice gave it area), the volume kept in the cell, the &
+            &cells beside it as if stepped alone', &
             .not. stub_aborted .and. v(k, 2) == 0 .and. a(k, 2) == 0 .and. &
             abs(sum(v(:, 2)) - sum(v1) - vk + v1(k)) < 1e-12_c_double * sum(v1) &
             .and. all(a(:, 3) == ref_a) .and. all(v(:, 3) == ref_v) .and. a0(3) == ref_a0 &
