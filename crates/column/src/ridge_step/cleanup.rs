@@ -42,13 +42,7 @@ pub(crate) fn cleanup_itd(
     fluxes: &mut OceanFluxes,
     ws: &mut StepWorkspace,
 ) -> Result<(f64, f64), ColumnError> {
-    let StepContext {
-        hin_max,
-        dt,
-        tf,
-        opts,
-        layout,
-    } = *ctx;
+    let (opts, layout) = (ctx.opts, ctx.layout);
     let (puny, c) = (opts.params.puny, &opts.step);
     let mut z = Zapped::default();
     // aggregate_area
@@ -67,10 +61,10 @@ pub(crate) fn cleanup_itd(
         });
     }
     if opts.rebin && aice > puny {
-        rebin(col, hin_max, tf, puny, layout, ws)?;
+        rebin(col, ctx.hin_max, ctx.tf, puny, layout, ws)?;
     }
     zap_small_areas(col, ctx, &mut z, ws)?;
-    zap_snow_temperature(col, dt, puny, c, layout, &mut z);
+    zap_snow_temperature(col, ctx.dt, puny, c, layout, &mut z);
     fluxes.fpond += z.fpond;
     fluxes.fresh += z.fresh;
     fluxes.fsalt += z.fsalt;
