@@ -204,7 +204,8 @@ run_outcome() {
 # Compares two run folders' history and restart files: prints the differing files.
 compare_runs() {
   local a=$1 b=$2 f
-  for f in $(cd "$a" && find history restart -name '*.nc' | sort); do
+  # (An aborted run may leave only the history of its initial state.)
+  for f in $(cd "$a" && find history restart -name '*.nc' 2> /dev/null | sort); do
     if [ ! -f "$b/$f" ]; then echo "$f (missing)"; continue; fi
     diff -q <(ncdump "$a/$f" | grep -v -e ':date' -e ':history' -e '^netcdf ' -e ':time_stamp') \
       <(ncdump "$b/$f" | grep -v -e ':date' -e ':history' -e '^netcdf ' -e ':time_stamp') \

@@ -126,7 +126,7 @@ contains
            faero_ocn=fa(1:s%n_aero), fiso_ocn=fi(1:s%n_iso), &
            flux_bio=flux_bio(1:s%nbtrcr), ierr=e)
       if (e /= PRESSRIDGE_OK) then
-         call abort_with(subname//' '//trim(pressridge_last_error_message()))
+         call abort_with(subname//' '//cell_message(pressridge_last_error_message()))
          return
       end if
       faero_ocn(1:s%n_aero) = fa(1:s%n_aero)
@@ -166,7 +166,7 @@ contains
     call pressridge_ice_strength(aice, vice, aice0, aicen, vicen, strength, e, &
          strength_options)
     if (e /= PRESSRIDGE_OK) call abort_with('(pressridge_icepack_ice_strength) '// &
-         trim(pressridge_last_error_message()))
+         cell_message(pressridge_last_error_message()))
   end subroutine pressridge_icepack_ice_strength
 
   !> The set-up for Icepack's present sizes, flags and parameters (made on first use), its
@@ -352,6 +352,20 @@ contains
     real(c_double), intent(in) :: x
     bits = transfer(x, 0_int64)
   end function bits
+
+  !> The library's message about the one cell of a per-cell call, without the column index it
+  !> gives that call's one-column grid ("column 0: ..., column index 0 counts from 0: Fortran
+  !> column 1"), which is not the host's cell: like Icepack's own, the message names the
+  !> variable, the category and the value, and the host's abort names the routine.
+  function cell_message(msg) result(m)
+    character(len=*), intent(in) :: msg
+    character(len=:), allocatable :: m
+    integer :: k
+    m = trim(msg)
+    if (index(m, 'column 0: ') == 1) m = m(11:)
+    k = index(m, ' (column index 0 counts from 0')
+    if (k > 0) m = m(:k - 1)
+  end function cell_message
 
   !> Reports an error as Icepack reports its own.
   subroutine abort_with(msg)
