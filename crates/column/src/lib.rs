@@ -15,6 +15,45 @@
 //! `ndarray` and `thiserror` only, so a host model that wants the strength or the ridging step
 //! links nothing else. The ridge simulator, its tables and NetCDF I/O are the `pressridge`
 //! crate, which re-exports this one as `pressridge::itd`.
+//!
+//! ## Where to start
+//!
+//! - Ice strength P (N/m) of a column: [`strength_column`] (CICE's `icepack_ice_strength`);
+//!   of many: [`strength_batch`].
+//! - The ridging of areas and volumes: [`ridge_column`] / [`ridge_batch`]; the complete step
+//!   with snow, tracers and ocean fluxes (Icepack's `icepack_step_ridge`):
+//!   [`ridge_step_column`] / [`ridge_step_batch()`] / [`ridge_step_cells`].
+//! - Category bounds: [`category_bounds`]; options: [`StrengthOptions`], [`RidgeOptions`],
+//!   [`RidgeStepOptions`] (their defaults are CICE's).
+//!
+//! ```
+//! use pressridge_column::{
+//!     CategoryBounds, RidgeForcing, RidgeOptions, StrengthOptions, Workspace, category_bounds,
+//!     ridge_column, strength_column,
+//! };
+//!
+//! // Five categories with CICE's round-number bounds (m) and 90 % ice cover.
+//! let hin_max = category_bounds(&CategoryBounds::RoundNumbers, 5)?;
+//! let mut aicen = [0.30, 0.25, 0.20, 0.10, 0.05]; // area fractions (1)
+//! let mut vicen = [0.15, 0.25, 0.40, 0.30, 0.25]; // volumes per unit area (m)
+//! let mut aice0 = 0.10; // open water (1)
+//! let mut ws = Workspace::new(5);
+//!
+//! // Rothrock's strength with CICE's defaults (C_f = 17, mu_rdg = 3 m^0.5).
+//! let p = strength_column(&aicen, &vicen, Some(aice0), &StrengthOptions::default(), &mut ws)?;
+//! assert!(p.strength > 0.0); // N/m
+//!
+//! // One hour of convergence: area ridges into thicker categories, volume is kept.
+//! let v0: f64 = vicen.iter().sum();
+//! let forcing = RidgeForcing { convergence: 1e-6, shear: 0.0, dt: 3600.0 }; // 1/s, 1/s, s
+//! let d = ridge_column(
+//!     &mut aicen, &mut vicen, &mut aice0, &hin_max, forcing, &RidgeOptions::default(), &mut ws,
+//! )?;
+//! assert!(d.dardg1dt > 0.0); // area lost by ridging ice (1/s)
+//! assert!((vicen.iter().sum::<f64>() - v0).abs() < 1e-12 * v0);
+//! assert!((aice0 + aicen.iter().sum::<f64>() - 1.0).abs() < 1e-12);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 
 #![warn(missing_docs)]
 
