@@ -14,7 +14,7 @@ use pressridge::itd::strength_batch_masked;
 use pressridge::plot::strength_map::{Panel, default_width, draw_strength_maps};
 
 use crate::BoxError;
-use crate::strength::{FormulaArg, PartArg, RedistArg, options, redistribution};
+use crate::strength::{FormulaArg, RidgingArgs, options, redistribution};
 
 /// Arguments of `pressridge plot-strength`.
 #[derive(clap::Args, Debug)]
@@ -37,16 +37,9 @@ pub struct Args {
     /// (a `--cf-table` of `pressridge strength`, e.g. from `pressridge tabulate`; repeatable).
     #[arg(long)]
     pub cf_table: Vec<PathBuf>,
-    /// Participation function (with --cf).
-    #[arg(long, value_enum, default_value = "exponential")]
-    pub participation: PartArg,
-    /// Ridged-ice redistribution (with --cf).
-    #[arg(long, value_enum, default_value = "exponential")]
-    pub redistribution: RedistArg,
-    /// With --redistribution table: the ridging table whose `mu_rdg` (m^0.5, at friction
-    /// 1.0,0.6) sets each category's e-folding scale.
-    #[arg(long, value_name = "FILE")]
-    pub mu_rdg_table: Option<PathBuf>,
+    /// The ridging options of the strengths of --cf and --cf-table.
+    #[command(flatten)]
+    pub ridging: RidgingArgs,
 }
 
 fn summary(label: &str, v: &[f64], ice: &[bool]) -> String {
@@ -76,10 +69,14 @@ fn summary(label: &str, v: &[f64], ice: &[bool]) -> String {
 pub fn run(args: Args) -> Result<(), BoxError> {
     let mut inputs = vec![("--input", args.input.as_path())];
     inputs.extend(args.cf_table.iter().map(|t| ("--cf-table", t.as_path())));
-    if let Some(t) = &args.mu_rdg_table {
+    if let Some(t) = &args.ridging.mu_rdg_table {
         inputs.push(("--mu-rdg-table", t.as_path()));
     }
-    let redist = redistribution(args.redistribution, args.mu_rdg_table.as_deref(), None)?;
+    let redist = redistribution(
+        args.ridging.redistribution,
+        args.ridging.mu_rdg_table.as_deref(),
+        None,
+    )?;
     refuse_output_over_input(&args.output, "--output", &inputs)?;
     let mut titles = Vec::new();
     let mut fields = Vec::new();
@@ -141,7 +138,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
         });
         for (title, cf, table) in constants.chain(tables) {
             let o = options(
-                args.participation,
+                args.ridging.participation,
                 redist,
                 FormulaArg::Rothrock,
                 cf,

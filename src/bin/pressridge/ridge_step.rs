@@ -30,7 +30,7 @@ use pressridge::itd::{
 };
 
 use crate::BoxError;
-use crate::strength::{PartArg, RedistArg};
+use crate::strength::RidgingArgs;
 use forcing::{deformation, host_rates};
 use pressridge::io::itd_netcdf::FileClosing;
 use settings::parse_all_params;
@@ -97,16 +97,8 @@ pub struct Args {
     /// required), on the column dimensions. Default `opening`.
     #[arg(long, value_name = "NAME")]
     pub opening_var: Option<String>,
-    /// Participation function.
-    #[arg(long, value_enum, default_value = "exponential")]
-    pub participation: PartArg,
-    /// Ridged-ice redistribution.
-    #[arg(long, value_enum, default_value = "exponential")]
-    pub redistribution: RedistArg,
-    /// With --redistribution table: the ridging table (`pressridge tabulate`) whose `mu_rdg`
-    /// (m^0.5) against thickness sets each category's e-folding scale.
-    #[arg(long, value_name = "FILE")]
-    pub mu_rdg_table: Option<PathBuf>,
+    #[command(flatten)]
+    pub ridging: RidgingArgs,
     /// Friction pair MU,MU_W (dimensionless) of the set of --mu-rdg-table to use [default:
     /// 1.0,0.6].
     #[arg(long, value_name = "MU,MU_W", requires = "mu_rdg_table", value_parser = crate::strength::parse_friction)]
@@ -161,7 +153,7 @@ pub struct Args {
 /// Runs `pressridge ridge-step`.
 pub fn run(args: Args) -> Result<(), BoxError> {
     let mut inputs = vec![("--input", args.input.as_path())];
-    if let Some(t) = &args.mu_rdg_table {
+    if let Some(t) = &args.ridging.mu_rdg_table {
         inputs.push(("--mu-rdg-table", t.as_path()));
     }
     refuse_output_over_input(&args.output, "--output", &inputs)?;
@@ -240,10 +232,10 @@ pub fn run(args: Args) -> Result<(), BoxError> {
     };
     let all = parse_all_params(&args)?;
     let o = RidgeOptions {
-        participation: args.participation.into(),
+        participation: args.ridging.participation.into(),
         redistribution: crate::strength::redistribution(
-            args.redistribution,
-            args.mu_rdg_table.as_deref(),
+            args.ridging.redistribution,
+            args.ridging.mu_rdg_table.as_deref(),
             args.friction,
         )?,
         params: all.itd,

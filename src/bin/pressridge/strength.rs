@@ -38,6 +38,23 @@ pub enum RedistArg {
     Table,
 }
 
+/// The ridging options every thickness-distribution command takes (`ridge-step`, `strength`,
+/// `plot-strength`): participation, redistribution and its μ_rdg table.
+#[derive(clap::Args, Debug)]
+pub struct RidgingArgs {
+    /// Participation function.
+    #[arg(long, value_enum, default_value = "exponential")]
+    pub participation: PartArg,
+    /// Ridged-ice redistribution.
+    #[arg(long, value_enum, default_value = "exponential")]
+    pub redistribution: RedistArg,
+    /// With --redistribution table: the ridging table (`pressridge tabulate`) whose `mu_rdg`
+    /// (m^0.5) against thickness sets each category's e-folding scale, at the command's
+    /// friction pair (--friction where it has one; else 1.0,0.6).
+    #[arg(long, value_name = "FILE")]
+    pub mu_rdg_table: Option<PathBuf>,
+}
+
 /// Strength formula.
 #[derive(Clone, Copy, Debug, ValueEnum)]
 pub enum FormulaArg {
@@ -108,17 +125,8 @@ pub struct Args {
     /// Name of the category dimension of aicen/vicen, when it is none of nc, ncat, ct.
     #[arg(long, value_name = "NAME")]
     pub category_dim: Option<String>,
-    /// Participation function.
-    #[arg(long, value_enum, default_value = "exponential")]
-    pub participation: PartArg,
-    /// Ridged-ice redistribution.
-    #[arg(long, value_enum, default_value = "exponential")]
-    pub redistribution: RedistArg,
-    /// With --redistribution table: the ridging table (`pressridge tabulate`) whose `mu_rdg`
-    /// (m^0.5) against thickness sets each category's e-folding scale, at the `--friction`
-    /// pair.
-    #[arg(long, value_name = "FILE")]
-    pub mu_rdg_table: Option<PathBuf>,
+    #[command(flatten)]
+    pub ridging: RidgingArgs,
     /// Strength formula.
     #[arg(long, value_enum, default_value = "rothrock")]
     pub strength: FormulaArg,
@@ -269,16 +277,16 @@ pub fn check_finite(
 
 /// Runs `pressridge strength`.
 pub fn run(args: Args) -> Result<(), BoxError> {
-    if args.friction.is_some() && args.cf_table.is_none() && args.mu_rdg_table.is_none() {
+    if args.friction.is_some() && args.cf_table.is_none() && args.ridging.mu_rdg_table.is_none() {
         return Err(
             "--friction chooses the set of a --cf-table or --mu-rdg-table: give one".into(),
         );
     }
     let mut o = options(
-        args.participation,
+        args.ridging.participation,
         redistribution(
-            args.redistribution,
-            args.mu_rdg_table.as_deref(),
+            args.ridging.redistribution,
+            args.ridging.mu_rdg_table.as_deref(),
             args.friction,
         )?,
         args.strength,
@@ -292,7 +300,7 @@ pub fn run(args: Args) -> Result<(), BoxError> {
     if let Some(t) = &args.cf_table {
         inputs.push(("--cf-table", t.as_path()));
     }
-    if let Some(t) = &args.mu_rdg_table {
+    if let Some(t) = &args.ridging.mu_rdg_table {
         inputs.push(("--mu-rdg-table", t.as_path()));
     }
     refuse_output_over_input(&args.output, "--output", &inputs)?;
