@@ -44,7 +44,14 @@ fn the_decided_models_table_is_the_page_or_the_page_says_it_is_not_run() {
 #[test]
 fn the_statement_table_is_made_from_the_committed_records() {
     check_table(
-        &["--set", "floe.nose_slope=1", "--register", "data/choices40"],
+        &[
+            "--records",
+            "data/paper3",
+            "--set",
+            "floe.nose_slope=1",
+            "--register",
+            "data/choices40",
+        ],
         "docs/notes/findings-revision1.md",
     );
 }
@@ -254,8 +261,15 @@ fn the_revision_2_register_is_made_from_its_committed_records() {
 #[test]
 fn the_disagreements_carry_the_registers_evidence() {
     // The register's model: revision 1 with the 45° nose, as its records and data/paper3's.
-    let nose45 = ["--set", "floe.nose_slope=1"];
-    let o = findings(&[nose45[0], nose45[1], "--register", "data/choices40"]);
+    let nose45 = ["--records", "data/paper3", "--set", "floe.nose_slope=1"];
+    let o = findings(&[
+        nose45[0],
+        nose45[1],
+        nose45[2],
+        nose45[3],
+        "--register",
+        "data/choices40",
+    ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let text = String::from_utf8_lossy(&o.stdout);
     let (_, evidence) = text
@@ -272,10 +286,24 @@ fn the_disagreements_carry_the_registers_evidence() {
         "{text}"
     );
     assert!(!evidence.contains("floe.pin=false`:"), "{evidence}");
-    let o = findings(&[nose45[0], nose45[1], "--register", "data/choices"]);
+    let o = findings(&[
+        nose45[0],
+        nose45[1],
+        nose45[2],
+        nose45[3],
+        "--register",
+        "data/choices",
+    ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(!String::from_utf8_lossy(&o.stdout).contains("closest any open choice"));
-    let o = findings(&[nose45[0], nose45[1], "--register", "data/no-such-dir"]);
+    let o = findings(&[
+        nose45[0],
+        nose45[1],
+        nose45[2],
+        nose45[3],
+        "--register",
+        "data/no-such-dir",
+    ]);
     assert!(!o.status.success());
     assert!(String::from_utf8_lossy(&o.stderr).contains("--register"));
 }

@@ -13,7 +13,7 @@ pub struct Args {
     /// A campaign directory, or a directory of campaign directories (each holding a
     /// `campaign.json`); repeatable. Runs are chosen by their scenes, so any campaigns of the
     /// paper's scenes will do; a run two directories share is counted once.
-    #[arg(long, default_value = "data/paper3")]
+    #[arg(long, default_value = "data/paper4")]
     records: Vec<PathBuf>,
     /// A key of the Figure 5 scene moved for the model whose findings are tested, e.g.
     /// `--set floe.length=20` for the records of the former 20-m floe (repeatable; the
