@@ -262,14 +262,8 @@ fn the_revision_2_register_is_made_from_its_committed_records() {
 fn the_disagreements_carry_the_registers_evidence() {
     // The register's model: revision 1 with the 45° nose, as its records and data/paper3's.
     let nose45 = ["--records", "data/paper3", "--set", "floe.nose_slope=1"];
-    let o = findings(&[
-        nose45[0],
-        nose45[1],
-        nose45[2],
-        nose45[3],
-        "--register",
-        "data/choices40",
-    ]);
+    let with_register = |dir: &str| findings(&[&nose45[..], &["--register", dir]].concat());
+    let o = with_register("data/choices40");
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let text = String::from_utf8_lossy(&o.stdout);
     let (_, evidence) = text
@@ -286,24 +280,10 @@ fn the_disagreements_carry_the_registers_evidence() {
         "{text}"
     );
     assert!(!evidence.contains("floe.pin=false`:"), "{evidence}");
-    let o = findings(&[
-        nose45[0],
-        nose45[1],
-        nose45[2],
-        nose45[3],
-        "--register",
-        "data/choices",
-    ]);
+    let o = with_register("data/choices");
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(!String::from_utf8_lossy(&o.stdout).contains("closest any open choice"));
-    let o = findings(&[
-        nose45[0],
-        nose45[1],
-        nose45[2],
-        nose45[3],
-        "--register",
-        "data/no-such-dir",
-    ]);
+    let o = with_register("data/no-such-dir");
     assert!(!o.status.success());
     assert!(String::from_utf8_lossy(&o.stderr).contains("--register"));
 }
