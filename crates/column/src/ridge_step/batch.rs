@@ -381,7 +381,8 @@ impl StepBatchOutputs<'_, '_> {
         }
     }
 
-    /// Writes column `c`'s diagnostics (see [`write_outputs`]).
+    /// Writes column `c`'s diagnostics: the cell outputs from its fluxes `fl` and step `d`,
+    /// and, where given, the category outputs from the workspace `ws` and the species outputs.
     fn write_column(
         &mut self,
         c: usize,
@@ -389,74 +390,52 @@ impl StepBatchOutputs<'_, '_> {
         d: &StepDiagnostics,
         ws: &StepWorkspace,
     ) {
-        write_outputs(
-            c,
-            fl,
-            d,
-            ws,
-            self.cell,
-            self.category.as_deref_mut(),
-            self.species.as_deref_mut(),
-        );
-    }
-}
-
-/// Writes column `c`'s diagnostics: the cell outputs from its fluxes `fl` and step `d`,
-/// and, where given, the category outputs from the workspace `ws` and the species outputs.
-fn write_outputs(
-    c: usize,
-    fl: &OceanFluxes,
-    d: &StepDiagnostics,
-    ws: &StepWorkspace,
-    cell: &mut [ArrayViewMut1<'_, f64>],
-    category: Option<&mut [ArrayViewMut2<'_, f64>]>,
-    species: Option<&mut [ArrayViewMut2<'_, f64>]>,
-) {
-    let values = [
-        fl.fresh,
-        fl.fsalt,
-        fl.fhocn,
-        fl.fpond,
-        fl.dpnd_ridge,
-        d.closing,
-        d.opening,
-        d.dardg1dt,
-        d.dardg2dt,
-        d.dvirdgdt,
-        d.ice_to_ocean,
-        d.snow_to_ocean,
-        d.niter as f64,
-    ];
-    for (o, x) in cell.iter_mut().zip(values) {
-        o[c] = x;
-    }
-    if let Some(cat) = category {
-        let per = [
-            &ws.dardg1ndt,
-            &ws.dardg2ndt,
-            &ws.dvirdgndt,
-            &ws.aparticn,
-            &ws.krdgn,
-            &ws.araftn,
-            &ws.vraftn,
-            &ws.aredistn,
-            &ws.vredistn,
+        let values = [
+            fl.fresh,
+            fl.fsalt,
+            fl.fhocn,
+            fl.fpond,
+            fl.dpnd_ridge,
+            d.closing,
+            d.opening,
+            d.dardg1dt,
+            d.dardg2dt,
+            d.dvirdgdt,
+            d.ice_to_ocean,
+            d.snow_to_ocean,
+            d.niter as f64,
         ];
-        for (o, xs) in cat.iter_mut().zip(per) {
-            for (n, x) in xs.iter().enumerate() {
-                o[[n, c]] = *x;
+        for (o, x) in self.cell.iter_mut().zip(values) {
+            o[c] = x;
+        }
+        if let Some(cat) = self.category.as_deref_mut() {
+            let per = [
+                &ws.dardg1ndt,
+                &ws.dardg2ndt,
+                &ws.dvirdgndt,
+                &ws.aparticn,
+                &ws.krdgn,
+                &ws.araftn,
+                &ws.vraftn,
+                &ws.aredistn,
+                &ws.vredistn,
+            ];
+            for (o, xs) in cat.iter_mut().zip(per) {
+                for (n, x) in xs.iter().enumerate() {
+                    o[[n, c]] = *x;
+                }
+            }
+            let first_ice = cat.last_mut().expect("ten category outputs");
+            for (n, z) in ws.zapped.iter().enumerate() {
+                first_ice[[n, c]] = if *z { 1.0 } else { 0.0 };
             }
         }
-        let first_ice = cat.last_mut().expect("ten category outputs");
-        for (n, z) in ws.zapped.iter().enumerate() {
-            first_ice[[n, c]] = if *z { 1.0 } else { 0.0 };
-        }
-    }
-    if let Some(sp) = species {
-        let rows = [&fl.faero_ocn[..], &fl.fiso_ocn[..], &fl.flux_bio[..]];
-        for (o, xs) in sp.iter_mut().zip(rows) {
-            for k in 0..o.nrows() {
-                o[[k, c]] = xs[k];
+        if let Some(sp) = self.species.as_deref_mut() {
+            let rows = [&fl.faero_ocn[..], &fl.fiso_ocn[..], &fl.flux_bio[..]];
+            for (o, xs) in sp.iter_mut().zip(rows) {
+                for k in 0..o.nrows() {
+                    o[[k, c]] = xs[k];
+                }
             }
         }
     }
