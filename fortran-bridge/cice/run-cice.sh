@@ -149,11 +149,12 @@ timers() {
 }
 
 # Continues case dir $2 (run folder $3) for one day from restart file $1: runtype continue
-# in the case's ice_in (cice.run copies it into the run folder), the pointer file at $1.
+# in the case's ice_in (cice.run copies it into the run folder), the pointer file at $1;
+# cice.run's output in the case dir's continue.log.
 continue_from() {
   echo "$1" > "$3/ice.restart_file"
   sed -i -e "s/^ *runtype *=.*/    runtype = 'continue'/" -e "s/^ *npt *=.*/    npt = 24/" "$2/ice_in"
-  (cd "$2" && ./cice.run) > /dev/null 2>&1 || true
+  (cd "$2" && ./cice.run) > "$2/continue.log" 2>&1 || true
 }
 
 # The bad states of the badstates case: one cell, (i, j) = (64, 64) in Fortran's indices, of
@@ -252,7 +253,7 @@ for name in "${CASES[@]}"; do
       first=$(cd "$r/restart" && ls iced.*.nc | sort | head -n 1)
       last=$(cd "$r/restart" && ls iced.*.nc | sort | tail -n 1)
       mkdir -p "$r/twoday" && cp "$r/restart/$last" "$r/twoday/"
-      continue_from "$r/restart/$first" "$dir" "$r" > "$dir/run2.log"
+      continue_from "$r/restart/$first" "$dir" "$r"
       if ! grep -q "runtype *= *continue" "$(last_log "$r")"; then
         extra="$extra, $kind restart NOT RUN"
         diffs="$diffs restart($kind)"
