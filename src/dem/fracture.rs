@@ -155,9 +155,9 @@ impl JointSet {
         bodies: &mut Bodies,
         rho_i: f64,
         dashpot: Dashpot,
-        pool: Option<&rayon::ThreadPool>,
+        team: Option<&super::team::Team>,
     ) {
-        super::joint::apply_all(&mut self.joints, bodies, rho_i, dashpot, pool);
+        super::joint::apply_all(&mut self.joints, bodies, rho_i, dashpot, team);
     }
 
     /// Applies every intact joint's viscous force at the mid-step velocities, once every

@@ -102,7 +102,7 @@ pub struct World {
     /// Bodies shielded from form drag this step (`dem::water::shielded_bodies`).
     shielded: Vec<bool>,
     /// Threads the force phases of a step run on ([`World::set_threads`]); none: one.
-    pool: Option<std::sync::Arc<rayon::ThreadPool>>,
+    team: Option<std::sync::Arc<super::team::Team>>,
 }
 
 impl World {
@@ -133,7 +133,7 @@ impl World {
             vbar: Vec::new(),
             wbar: Vec::new(),
             shielded: Vec::new(),
-            pool: None,
+            team: None,
         })
     }
 
@@ -314,33 +314,19 @@ impl World {
     /// same bits on any number of threads; a count is a speed, not a parameter (it is in no
     /// scene or saved state). An error when the threads cannot be started.
     pub fn set_threads(&mut self, threads: usize) -> Result<(), WorldError> {
-        self.pool = if threads <= 1 {
+        self.team = if threads <= 1 {
             None
         } else {
-            let pool = rayon::ThreadPoolBuilder::new()
-                .num_threads(threads)
-                .thread_name(|k| format!("pressridge-step-{k}"))
-                .build()
+            let team = super::team::Team::new(threads)
                 .map_err(|e| WorldError::State(format!("{threads} threads: {e}")))?;
-            Some(std::sync::Arc::new(pool))
+            Some(std::sync::Arc::new(team))
         };
         Ok(())
     }
 
-    /// Runs `f` on this world inside its thread pool (on the calling thread without one), so
-    /// that the steps `f` takes hand their force phases to the pool's threads without
-    /// blocking the caller at each phase: the pool's own threads take the phases' work as it
-    /// comes (rayon's work stealing), and the caller waits once, for all of `f`.
-    pub fn in_pool<R: Send>(&mut self, f: impl FnOnce(&mut World) -> R + Send) -> R {
-        match self.pool.clone() {
-            Some(pool) => pool.install(|| f(self)),
-            None => f(self),
-        }
-    }
-
     /// The number of threads a step runs on ([`World::set_threads`]).
     pub fn threads(&self) -> usize {
-        self.pool.as_ref().map_or(1, |p| p.current_num_threads())
+        self.team.as_ref().map_or(1, |t| t.threads())
     }
 
     /// The parameters.
@@ -401,9 +387,9 @@ impl World {
         let dt = num.dt;
         let n = self.bodies.len();
         let g = self.params.gravity;
-        let pool = self.pool.as_deref();
+        let team = self.team.as_deref();
         let b = &mut self.bodies;
-        b.update_all(pool);
+        b.update_all(team);
         for i in 0..n {
             b.force[i] = V2::default();
             b.torque[i] = 0.0;
@@ -416,11 +402,11 @@ impl World {
         }
         if let Some(w) = &self.params.water {
             shielded_bodies(self.contacts.contacts(), n, w, &mut self.shielded);
-            self.water.apply(b, w, g, &self.shielded, pool);
+            self.water.apply(b, w, g, &self.shielded, team);
         }
         // Joints (eq 1) and boundary conditions (eqs 7–8, floe supports).
         self.joints
-            .apply(b, self.params.ice_density, num.joint_dashpot, pool);
+            .apply(b, self.params.ice_density, num.joint_dashpot, team);
         self.boundary.apply(b);
         for &(id, f) in &self.loads {
             b.force[id as usize] = b.force[id as usize] + f;
@@ -445,7 +431,7 @@ impl World {
             water_level: self.params.water.as_ref().map(|w| w.level),
         };
         self.contacts
-            .update(b, pairs, &law, num, &mut self.acc.contact, pool);
+            .update(b, pairs, &law, num, &mut self.acc.contact, team);
         if num.joint_dashpot == Dashpot::Implicit {
             self.joints.apply_viscous(b, dt);
         }
