@@ -267,22 +267,24 @@ pub fn run_world(
     let mut overrun = world.sheet_overrun();
     let end = scene.duration - 0.5 * world.dt();
     while keep_going && world.time() < end {
-        // The steps to the next sample.
-        while world.time() < end {
-            world.step();
-            if world.fault().is_some() {
-                break;
+        // The steps to the next sample, in the world's thread pool (one hand-over for all).
+        world.in_pool(|world| {
+            while world.time() < end {
+                world.step();
+                if world.fault().is_some() {
+                    return;
+                }
+                if let (Some(o), Some(x)) = (overrun.as_mut(), world.sheet_overrun()) {
+                    *o = o.max(x);
+                }
+                if speed > 0.0 {
+                    work_eq9 += speed * world.dt() * world.ridging_force();
+                }
+                if world.time() >= next - 0.5 * world.dt() {
+                    return;
+                }
             }
-            if let (Some(o), Some(x)) = (overrun.as_mut(), world.sheet_overrun()) {
-                *o = o.max(x);
-            }
-            if speed > 0.0 {
-                work_eq9 += speed * world.dt() * world.ridging_force();
-            }
-            if world.time() >= next - 0.5 * world.dt() {
-                break;
-            }
-        }
+        });
         if let Some(e) = world.fault() {
             return Err(SceneError::World(e.clone()));
         }

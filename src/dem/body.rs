@@ -5,7 +5,6 @@
 //! position is its centroid; its outline is stored relative to the centroid.
 
 use super::geometry::{Aabb, Outline, V2};
-use super::team::{Chunks, Team, parts_for};
 use serde::{Deserialize, Serialize};
 
 mod shape;
@@ -199,30 +198,29 @@ impl Bodies {
     }
 
     /// Recomputes every body's world outline and bounding box from its pose
-    /// ([`Bodies::update_world`]), on the threads of `team` when given (each body is its own:
+    /// ([`Bodies::update_world`]), on the threads of `pool` when given (each body is its own:
     /// the same bits on any number of threads).
-    pub(crate) fn update_all(&mut self, team: Option<&Team>) {
-        let Some(team) = team else {
+    pub(crate) fn update_all(&mut self, pool: Option<&rayon::ThreadPool>) {
+        let Some(pool) = pool else {
             for i in 0..self.len() {
                 self.update_world(i);
             }
             return;
         };
+        use rayon::prelude::*;
         let (shape, theta, pos) = (&self.shape, &self.theta, &self.pos);
-        let parts = parts_for(self.axis.len(), team.threads());
-        let axes = Chunks::new(&mut self.axis, parts);
-        let worlds = Chunks::new(&mut self.world, parts);
-        let boxes = Chunks::new(&mut self.aabb, parts);
-        team.run(parts, &|k| {
-            let start = axes.start(k);
-            let (axis, world, aabb) = (axes.get(k), worlds.get(k), boxes.get(k));
-            for (n, ((axis, world), aabb)) in axis.iter_mut().zip(world).zip(aabb).enumerate() {
-                let i = start + n;
-                let (s, c) = theta[i].sin_cos();
-                *axis = V2::new(c, s);
-                world.set_transformed(shape[i].outline(), c, s, pos[i]);
-                *aabb = Aabb::of(world.verts());
-            }
+        pool.install(|| {
+            self.axis
+                .par_iter_mut()
+                .zip(self.world.par_iter_mut())
+                .zip(self.aabb.par_iter_mut())
+                .enumerate()
+                .for_each(|(i, ((axis, world), aabb))| {
+                    let (s, c) = theta[i].sin_cos();
+                    *axis = V2::new(c, s);
+                    world.set_transformed(shape[i].outline(), c, s, pos[i]);
+                    *aabb = Aabb::of(world.verts());
+                });
         });
     }
 

@@ -27,7 +27,6 @@ use super::body::Bodies;
 use super::broadphase::{pair_key, unpack};
 use super::geometry::{Overlap, OverlapScratch, V2, overlap_with};
 use super::numerics::{ContactOnset, Dashpot, StepNumerics};
-use super::team::{Chunks, Team, parts_for};
 
 mod params;
 mod tally;
@@ -154,7 +153,7 @@ pub(crate) struct ContactSet {
     pending: Vec<Pending>,
     /// Working space of the overlap geometry.
     scratch: OverlapScratch,
-    /// The candidate pairs' overlaps, computed on the threads of a team
+    /// The candidate pairs' overlaps, computed on the threads of a pool
     /// ([`ContactSet::update`]).
     overlaps: Vec<Option<Overlap>>,
     /// Restitution and damping-ratio histograms.
@@ -353,27 +352,25 @@ impl ContactSet {
         law: &ContactLaw<'_>,
         num: &StepNumerics,
         work: &mut ContactWork,
-        team: Option<&Team>,
+        pool: Option<&rayon::ThreadPool>,
     ) {
         let (dt, dashpot, sweeps) = (num.dt, num.contact_dashpot, num.contact_dashpot_sweeps);
         let law = PairLaw::new(law, num);
-        // The overlap geometry, the bulk of the work, pair by pair on the team's threads;
+        // The overlap geometry, the bulk of the work, pair by pair on the pool's threads;
         // everything that sums follows in pair order below, so the bits do not depend on
         // the number of threads.
-        if let Some(team) = team {
+        if let Some(pool) = pool {
+            use rayon::prelude::*;
             let b: &Bodies = bodies;
-            self.overlaps.clear();
-            self.overlaps.resize(pairs.len(), None);
-            let parts = parts_for(pairs.len(), team.threads());
-            let out = Chunks::new(&mut self.overlaps, parts);
-            team.run(parts, &|k| {
-                let mut scratch = OverlapScratch::default();
-                let start = out.start(k);
-                for (m, o) in out.get(k).iter_mut().enumerate() {
-                    let (a, c) = unpack(pairs[start + m]);
-                    let (a, c) = (a as usize, c as usize);
-                    *o = overlap_with(&b.world[a], &b.world[c], b.pos[a], b.pos[c], &mut scratch);
-                }
+            pool.install(|| {
+                pairs
+                    .par_iter()
+                    .map_init(OverlapScratch::default, |scratch, &key| {
+                        let (a, c) = unpack(key);
+                        let (a, c) = (a as usize, c as usize);
+                        overlap_with(&b.world[a], &b.world[c], b.pos[a], b.pos[c], scratch)
+                    })
+                    .collect_into_vec(&mut self.overlaps);
             });
         }
         std::mem::swap(&mut self.cur, &mut self.prev);
@@ -395,7 +392,7 @@ impl ContactSet {
             };
             let (a, b) = unpack(key);
             let (a, b) = (a as usize, b as usize);
-            let overlap = match team {
+            let overlap = match pool {
                 Some(_) => self.overlaps[k],
                 None => overlap_with(
                     &bodies.world[a],

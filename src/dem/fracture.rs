@@ -155,9 +155,9 @@ impl JointSet {
         bodies: &mut Bodies,
         rho_i: f64,
         dashpot: Dashpot,
-        team: Option<&super::team::Team>,
+        pool: Option<&rayon::ThreadPool>,
     ) {
-        super::joint::apply_all(&mut self.joints, bodies, rho_i, dashpot, team);
+        super::joint::apply_all(&mut self.joints, bodies, rho_i, dashpot, pool);
     }
 
     /// Applies every intact joint's viscous force at the mid-step velocities, once every

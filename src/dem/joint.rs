@@ -23,7 +23,6 @@ use super::body::{Bodies, BodyId};
 use super::geometry::V2;
 use super::lanes::{Real, Vec2};
 use super::numerics::Dashpot;
-use super::team::{Chunks, Team, parts_for};
 use lanes::JointLanes;
 use serde::{Deserialize, Serialize};
 
@@ -466,7 +465,7 @@ impl Joint {
 /// Applies every intact joint of `joints` to the bodies, in order: the stresses and forces
 /// of eq (1), kept in each joint for the fracture test and the ledger. The joint law is
 /// evaluated [`lanes::L`] joints at a time (each lane on its own, so a joint's result does
-/// not depend on its neighbours in the lanes), on the threads of `team` when given, in
+/// not depend on its neighbours in the lanes), on the threads of `pool` when given, in
 /// chunks; the forces are then added to the bodies joint by joint in the order of `joints`,
 /// so that the sums are those of one joint after another on any number of threads.
 pub(crate) fn apply_all(
@@ -474,21 +473,25 @@ pub(crate) fn apply_all(
     bodies: &mut Bodies,
     rho_i: f64,
     dashpot: Dashpot,
-    team: Option<&Team>,
+    pool: Option<&rayon::ThreadPool>,
 ) {
     let b: &Bodies = bodies;
-    match team {
-        Some(team) => {
-            let parts = parts_for(joints.len().div_ceil(lanes::L), team.threads());
-            let chunks = Chunks::new(joints, parts);
-            team.run(parts, &|k| evaluate(chunks.get(k), b, rho_i, dashpot));
-        }
+    match pool {
+        Some(pool) => pool.install(|| {
+            use rayon::prelude::*;
+            joints
+                .par_chunks_mut(JOINT_CHUNK)
+                .for_each(|chunk| evaluate(chunk, b, rho_i, dashpot));
+        }),
         None => evaluate(joints, b, rho_i, dashpot),
     }
     for j in joints.iter().filter(|j| j.is_intact()) {
         j.add_forces(bodies);
     }
 }
+
+/// Joints per chunk of a parallel evaluation ([`apply_all`]): a multiple of [`lanes::L`].
+const JOINT_CHUNK: usize = 16 * lanes::L;
 
 /// Evaluates the joint law of every intact joint of `joints`, [`lanes::L`] at a time, and
 /// keeps the results in each joint ([`Joint::finish`]); the bodies are only read.

@@ -25,7 +25,6 @@ mod joint;
 pub(crate) mod lanes;
 pub(crate) mod ledger;
 mod numerics;
-pub(crate) mod team;
 mod water;
 mod world;
 

@@ -30,7 +30,7 @@ use super::body::{Bodies, Role};
 use super::broadphase::unpack;
 use super::contact::Contact;
 use super::geometry::{ClipPoly, V2, area_centroid, clip_below_into};
-use super::team::{Chunks, Team, parts_for};
+use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 /// The water: level, density and drag law.
@@ -114,7 +114,7 @@ impl WaterForces {
     /// Computes buoyancy and drag on every body from its current outline and half-step
     /// velocities, and adds them to the body forces. `g` is gravity (m/s²). `shielded[i]`
     /// (when not empty) exempts body `i` from form drag ([`WaterParams::shielding_contacts`]).
-    /// With a thread `team` the bodies are computed in parallel; each body's forces are its
+    /// With a thread `pool` the bodies are computed in parallel; each body's forces are its
     /// own, so the result is the same to the bit on any number of threads.
     pub fn apply(
         &mut self,
@@ -122,7 +122,7 @@ impl WaterForces {
         w: &WaterParams,
         g: f64,
         shielded: &[bool],
-        team: Option<&Team>,
+        pool: Option<&rayon::ThreadPool>,
     ) {
         let n = bodies.len();
         self.buoyancy.resize(n, (0.0, V2::default()));
@@ -130,21 +130,17 @@ impl WaterForces {
         self.applied.resize(n, Applied::None);
         let b: &Bodies = bodies;
         let one = |i: usize, scratch: &mut ClipPoly| body_water(b, i, w, g, shielded, scratch);
-        match team {
-            Some(team) => {
-                let parts = parts_for(n, team.threads());
-                let bu = Chunks::new(&mut self.buoyancy, parts);
-                let dr = Chunks::new(&mut self.drag, parts);
-                let ap = Chunks::new(&mut self.applied, parts);
-                team.run(parts, &|k| {
-                    let mut scratch = ClipPoly::default();
-                    let start = bu.start(k);
-                    let (bu, dr, ap) = (bu.get(k), dr.get(k), ap.get(k));
-                    for (m, ((bu, dr), ap)) in bu.iter_mut().zip(dr).zip(ap).enumerate() {
-                        (*bu, *dr, *ap) = one(start + m, &mut scratch);
-                    }
-                });
-            }
+        match pool {
+            Some(pool) => pool.install(|| {
+                self.buoyancy
+                    .par_iter_mut()
+                    .zip(self.drag.par_iter_mut())
+                    .zip(self.applied.par_iter_mut())
+                    .enumerate()
+                    .for_each_init(ClipPoly::default, |scratch, (i, ((bu, dr), ap))| {
+                        (*bu, *dr, *ap) = one(i, scratch);
+                    })
+            }),
             None => {
                 for i in 0..n {
                     (self.buoyancy[i], self.drag[i], self.applied[i]) = one(i, &mut self.scratch);

@@ -102,7 +102,7 @@ pub struct World {
     /// Bodies shielded from form drag this step (`dem::water::shielded_bodies`).
     shielded: Vec<bool>,
     /// Threads the force phases of a step run on ([`World::set_threads`]); none: one.
-    team: Option<std::sync::Arc<super::team::Team>>,
+    pool: Option<std::sync::Arc<rayon::ThreadPool>>,
 }
 
 impl World {
@@ -133,7 +133,7 @@ impl World {
             vbar: Vec::new(),
             wbar: Vec::new(),
             shielded: Vec::new(),
-            team: None,
+            pool: None,
         })
     }
 
@@ -314,19 +314,33 @@ impl World {
     /// same bits on any number of threads; a count is a speed, not a parameter (it is in no
     /// scene or saved state). An error when the threads cannot be started.
     pub fn set_threads(&mut self, threads: usize) -> Result<(), WorldError> {
-        self.team = if threads <= 1 {
+        self.pool = if threads <= 1 {
             None
         } else {
-            let team = super::team::Team::new(threads)
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .thread_name(|k| format!("pressridge-step-{k}"))
+                .build()
                 .map_err(|e| WorldError::State(format!("{threads} threads: {e}")))?;
-            Some(std::sync::Arc::new(team))
+            Some(std::sync::Arc::new(pool))
         };
         Ok(())
     }
 
+    /// Runs `f` on this world inside its thread pool (on the calling thread without one), so
+    /// that the steps `f` takes hand their force phases to the pool's threads without
+    /// blocking the caller at each phase: the pool's own threads take the phases' work as it
+    /// comes (rayon's work stealing), and the caller waits once, for all of `f`.
+    pub fn in_pool<R: Send>(&mut self, f: impl FnOnce(&mut World) -> R + Send) -> R {
+        match self.pool.clone() {
+            Some(pool) => pool.install(|| f(self)),
+            None => f(self),
+        }
+    }
+
     /// The number of threads a step runs on ([`World::set_threads`]).
     pub fn threads(&self) -> usize {
-        self.team.as_ref().map_or(1, |t| t.threads())
+        self.pool.as_ref().map_or(1, |p| p.current_num_threads())
     }
 
     /// The parameters.
@@ -387,9 +401,9 @@ impl World {
         let dt = num.dt;
         let n = self.bodies.len();
         let g = self.params.gravity;
-        let team = self.team.as_deref();
+        let pool = self.pool.as_deref();
         let b = &mut self.bodies;
-        b.update_all(team);
+        b.update_all(pool);
         for i in 0..n {
             b.force[i] = V2::default();
             b.torque[i] = 0.0;
@@ -402,11 +416,11 @@ impl World {
         }
         if let Some(w) = &self.params.water {
             shielded_bodies(self.contacts.contacts(), n, w, &mut self.shielded);
-            self.water.apply(b, w, g, &self.shielded, team);
+            self.water.apply(b, w, g, &self.shielded, pool);
         }
         // Joints (eq 1) and boundary conditions (eqs 7–8, floe supports).
         self.joints
-            .apply(b, self.params.ice_density, num.joint_dashpot, team);
+            .apply(b, self.params.ice_density, num.joint_dashpot, pool);
         self.boundary.apply(b);
         for &(id, f) in &self.loads {
             b.force[id as usize] = b.force[id as usize] + f;
@@ -431,7 +445,7 @@ impl World {
             water_level: self.params.water.as_ref().map(|w| w.level),
         };
         self.contacts
-            .update(b, pairs, &law, num, &mut self.acc.contact, team);
+            .update(b, pairs, &law, num, &mut self.acc.contact, pool);
         if num.joint_dashpot == Dashpot::Implicit {
             self.joints.apply_viscous(b, dt);
         }
