@@ -4,7 +4,7 @@
 #   scripts/check-ub.sh [miri]   Miri runs the unit and C-ABI tests that reach unsafe code
 #   scripts/check-ub.sh asan     the C and Fortran tests built with -fsanitize=address,undefined
 #                                against the static library built with Rust's AddressSanitizer
-#   scripts/check-ub.sh tsan     the thread tests of tests/ffi.rs and the C test's 8 threads
+#   scripts/check-ub.sh tsan     the thread tests of crates/capi/tests/abi.rs and the C test's 8 threads
 #                                under ThreadSanitizer (installs clang-16 for the C test)
 #   scripts/check-ub.sh fuzz     each libFuzzer target of fuzz/ for FUZZ_SECONDS (default 30),
 #                                FUZZ_JOBS (default 2) at a time, FUZZ_TARGETS (default all);
@@ -37,21 +37,22 @@ case "$stage" in
     # random on each call, and the tests compare paths bit for bit.
     export MIRIFLAGS="-Zmiri-deterministic-floats ${MIRIFLAGS:-}"
     echo "== miri: unit tests of the modules with unsafe code ($SECONDS s)"
-    # ffi (the options cache, the C layouts, the error protocol), the strength routines and
+    # the C ABI (the options cache, the C layouts, the error protocol), the strength routines and
     # the joint lanes (their portable twins under Miri); the strength routines are the column
     # crate's (crates/column). Its vexp is left out: its only unsafe code is the AVX2+FMA
     # path, which Miri cannot run, and its portable path is f64::exp. The batched strength's
-    # lanes and unchecked gather run in tests/ffi.rs below.
-    cargo +nightly miri test -p pressridge --lib -- ffi:: dem::joint::lanes
+    # lanes and unchecked gather run in crates/capi/tests/abi.rs below.
+    cargo +nightly miri test -p pressridge-capi --lib
+    cargo +nightly miri test -p pressridge --lib -- dem::joint::lanes
     cargo +nightly miri test -p pressridge-column --lib -- strength
     echo "== miri: the C ABI called from Rust on in-memory data ($SECONDS s)"
-    # Every test of tests/ffi.rs (their sample grid is synthetic under Miri) but the two that
+    # Every test of crates/capi/tests/abi.rs (their sample grid is synthetic under Miri) but the two that
     # read and write NetCDF files, 4 threads and a tiny scene run included.
-    cargo +nightly miri test --test ffi -- \
+    cargo +nightly miri test -p pressridge-capi --test abi -- \
       --skip cf_tables_load_query_free --skip ridge_tables_load_query_and_give_cf_tables
-    cargo +nightly miri test --test ffi_ridge_step
+    cargo +nightly miri test -p pressridge-capi --test ridge_step
     # The μ_rdg table handle (issue 34): built from memory, looked up, freed, refused.
-    cargo +nightly miri test --test ffi_mu_rdg_table -- \
+    cargo +nightly miri test -p pressridge-capi --test mu_rdg_table -- \
       --skip tables_from_files_open_look_up_and_name_what_is_missing
     echo "== miri: clean in $SECONDS s"
     ;;
@@ -62,7 +63,7 @@ case "$stage" in
     # needs std built with it too); its own target folder, so no other build is disturbed.
     echo "== asan: the static library with AddressSanitizer ($SECONDS s)"
     RUSTFLAGS="-Zsanitizer=address" cargo +nightly build -Zbuild-std --target $target \
-      --lib --profile ci --target-dir target/asan
+      -p pressridge-clib --profile ci --target-dir target/asan
     lib=$PWD/target/asan/$target/ci
     # The command line computes the Fortran tests' reference files (not instrumented).
     cargo build --profile ci --bin pressridge
@@ -92,12 +93,12 @@ case "$stage" in
   tsan)
     ensure_nightly rust-src
     target=x86_64-unknown-linux-gnu
-    echo "== tsan: the thread tests of tests/ffi.rs with ThreadSanitizer ($SECONDS s)"
+    echo "== tsan: the thread tests of crates/capi/tests/abi.rs with ThreadSanitizer ($SECONDS s)"
     # 16 threads on the per-cell entry points with changing options, and 4 threads on the
     # batched ones with their own errors, each checked against one thread's results.
     RUSTFLAGS="-Zsanitizer=thread" TSAN_OPTIONS=halt_on_error=1 \
       cargo +nightly test -Zbuild-std --target $target --profile ci --target-dir target/tsan \
-      --test ffi -- per_cell_calls_from_16_threads calls_from_many_threads
+      -p pressridge-capi --test abi -- per_cell_calls_from_16_threads calls_from_many_threads
     echo "== tsan: the C test, 8 threads sharing a C_f table, on the instrumented library ($SECONDS s)"
     # clang 16's runtime: gcc 12's libtsan lacks __tsan_memcpy, which Rust's instrumented
     # code calls (docs/failure.md).
@@ -105,7 +106,7 @@ case "$stage" in
       sudo=""; [ "$(id -u)" = 0 ] || sudo=sudo
       $sudo apt-get install -y -q clang-16 libclang-rt-16-dev > /dev/null
     }
-    RUSTFLAGS="-Zsanitizer=thread" cargo +nightly build -Zbuild-std --target $target --lib \
+    RUSTFLAGS="-Zsanitizer=thread" cargo +nightly build -Zbuild-std --target $target -p pressridge-clib \
       --profile ci --target-dir target/tsan
     rm -rf fortran-bridge/build/tsan
     make -C fortran-bridge BUILD=build/tsan PROFILE=ci CARGO_BUILD=true CC=clang-16 \

@@ -22,7 +22,6 @@
 //!   `pressridge-column`, which a host model can depend on alone);
 //! - [`io`] — files (JSON states and summaries, CSV time series, NetCDF distributions);
 //! - `plot` — figures (feature `plot`, on by default with `cli`);
-//! - [`ffi`] — the C ABI (`include/pressridge.h`) for C and Fortran host models;
 //! - [`table`] — regressions of ridging ensembles (work and potential energy against ridged
 //!   volume, eqs 13–16) for tabulation.
 //!
@@ -44,7 +43,8 @@
 //!   of areas and volumes [`itd::ridge_column`] / [`itd::ridge_batch`], and the complete step
 //!   with tracers, snow and ocean fluxes [`itd::ridge_step_column`] /
 //!   [`itd::ridge_step_batch()`].
-//! - C and Fortran hosts: [`ffi`].
+//! - C and Fortran hosts: the crate `pressridge-capi` (`crates/capi`, the C ABI and its
+//!   header `include/pressridge.h`), built as `libpressridge.{so,a}` by `crates/clib`.
 //!
 //! ## Example: a small ridging run
 //!
@@ -127,7 +127,6 @@ pub mod campaign;
 pub mod dem;
 pub mod energy;
 pub mod eta;
-pub mod ffi;
 pub mod io;
 /// The column physics (thickness distribution, strength, ridging step): the crate
 /// `pressridge-column`, which a host can link alone.

@@ -2,7 +2,7 @@
 //! opening rates read from the file) on every Icepack reference case that passes `closing`:
 //! each case is written as a one-column NetCDF file (with its tracers, `Tf`, `hin_max`,
 //! options), run through the command line, and the output equals the library's
-//! `ridge_step_column` (which the C ABI equals, `tests/ffi_ridge_step.rs`) bit for bit; where
+//! `ridge_step_column` (which the C ABI equals, `crates/capi/tests/ridge_step.rs`) bit for bit; where
 //! the library refuses the column, the command line fails with the same message (or, for
 //! out-of-order category bounds, already when reading `hin_max`). Also the
 //! errors of the option: rates in %/day or without units, a missing variable, options of the

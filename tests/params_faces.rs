@@ -124,7 +124,7 @@ fn c_struct_has_the_rust_fields_in_order() {
             .map(|(n, t)| (n.as_str(), t.as_str()))
             .collect::<Vec<_>>(),
         want,
-        "PressridgeParams in include/pressridge.h (src/ffi/itd.rs) against ItdParams::FIELDS \
+        "PressridgeParams in include/pressridge.h (crates/capi/src/itd.rs) against ItdParams::FIELDS \
          (with {MOVED_TO_END:?} last)"
     );
 }

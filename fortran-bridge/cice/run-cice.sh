@@ -63,7 +63,7 @@ case_options() {
 
 mkdir -p "$WORK"
 LIB=$ROOT/target/release
-(cd "$ROOT" && cargo build --release --lib --no-default-features)
+(cd "$ROOT" && cargo build --release -p pressridge-clib)
 export PRESSRIDGE_LIBS="-L$LIB -lpressridge -Wl,-rpath,$LIB"
 export ICE_PRESSRIDGE_WKDIR=$WORK/runs
 # The badstates case edits restart files with netCDF4-python (the test environment's).

@@ -12,9 +12,9 @@ mod bytes;
 
 use bytes::Bytes;
 use libfuzzer_sys::fuzz_target;
-use pressridge::ffi::PRESSRIDGE_OK;
-use pressridge::ffi::itd::PressridgeOptions;
-use pressridge::ffi::ridge_step::{
+use pressridge_capi::PRESSRIDGE_OK;
+use pressridge_capi::itd::PressridgeOptions;
+use pressridge_capi::ridge_step::{
     PressridgeCategoryDiagnostics, PressridgeOceanFluxes, PressridgeRidger,
     PressridgeStepDiagnostics, PressridgeTracers, pressridge_ridge_cell, pressridge_ridger_free,
     pressridge_ridger_new, pressridge_ridger_tracers,

@@ -4,8 +4,8 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use pressridge::ffi::PRESSRIDGE_OK;
-use pressridge::ffi::itd::{PressridgeOptions, pressridge_strength_cell};
+use pressridge_capi::PRESSRIDGE_OK;
+use pressridge_capi::itd::{PressridgeOptions, pressridge_strength_cell};
 
 /// The next f64 of the input (its 8 bytes as they come), or 0 when it runs out.
 fn next(data: &mut &[u8]) -> f64 {

@@ -8,8 +8,8 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use pressridge::ffi::itd::{PressridgeOptions, pressridge_strength, pressridge_strength_cell};
-use pressridge::ffi::{PRESSRIDGE_OK, PressridgeGrid};
+use pressridge_capi::itd::{PressridgeOptions, pressridge_strength, pressridge_strength_cell};
+use pressridge_capi::{PRESSRIDGE_OK, PressridgeGrid};
 
 #[path = "bytes.rs"]
 mod bytes;

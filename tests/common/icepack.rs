@@ -7,37 +7,22 @@ use pressridge::itd::{
 };
 use serde_json::Value;
 
-/// The reference file (the 23-tracer CICE layout).
-pub const FILE: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/tests/data/icepack/ridge_step_cases.jsonl"
-);
+/// The reference file (the 23-tracer CICE layout), relative to the repository's root.
+pub const FILE: &str = "tests/data/icepack/ridge_step_cases.jsonl";
 
 /// The same cases with snow, isotope and aerosol tracers (41 tracers).
-pub const TRACERS_FILE: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/tests/data/icepack/ridge_step_tracers.jsonl"
-);
+pub const TRACERS_FILE: &str = "tests/data/icepack/ridge_step_tracers.jsonl";
 
 /// Topography ponds, the snow tracers with Icepack's refills, floe size and brine (37 tracers).
-pub const TOPO_FILE: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/tests/data/icepack/ridge_step_tracers_topo.jsonl"
-);
+pub const TOPO_FILE: &str = "tests/data/icepack/ridge_step_tracers_topo.jsonl";
 
 /// The topography-pond layout with two vertically resolved bio tracers (`z_tracers`,
 /// `nblyr = 2`; 47 tracers) and Icepack's tracer tables.
-pub const BGC_FILE: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/tests/data/icepack/ridge_step_tracers_bgc.jsonl"
-);
+pub const BGC_FILE: &str = "tests/data/icepack/ridge_step_tracers_bgc.jsonl";
 
 /// The topography-pond layout with two skeletal bio tracers (`skl_bgc`; 39 tracers) and
 /// Icepack's tracer tables.
-pub const SKL_FILE: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/tests/data/icepack/ridge_step_tracers_skl.jsonl"
-);
+pub const SKL_FILE: &str = "tests/data/icepack/ridge_step_tracers_skl.jsonl";
 
 /// The first reference file's first line (the parameters) and its cases.
 #[allow(dead_code)]
@@ -45,9 +30,10 @@ pub fn read() -> (Value, Vec<Value>) {
     read_file(FILE)
 }
 
-/// A reference file's first line (the parameters) and its cases, one JSON value a line.
+/// A reference file's first line (the parameters) and its cases, one JSON value a line;
+/// `file` is relative to the repository's root.
 pub fn read_file(file: &str) -> (Value, Vec<Value>) {
-    let text = std::fs::read_to_string(file).expect("reference file");
+    let text = std::fs::read_to_string(super::repo().join(file)).expect("reference file");
     let mut lines = text.lines().filter(|l| !l.trim().is_empty());
     let params: Value = serde_json::from_str(lines.next().unwrap()).unwrap();
     let cases = lines.map(|l| serde_json::from_str(l).unwrap()).collect();

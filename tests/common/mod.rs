@@ -11,9 +11,21 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 /// The `pressridge` binary (HDF5 file locking is off for everything cargo runs: see
-/// `.cargo/config.toml`).
+/// `.cargo/config.toml`); only the root package's tests have it.
 pub fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_pressridge"))
+    match option_env!("CARGO_BIN_EXE_pressridge") {
+        Some(path) => Command::new(path),
+        None => panic!("the `pressridge` binary is the root package's: call bin() from its tests"),
+    }
+}
+
+/// The repository's root (the folder of `Cargo.lock`): these helpers serve the tests of the
+/// root package and of the crates under `crates/`.
+pub fn repo() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .ancestors()
+        .find(|d| d.join("Cargo.lock").is_file())
+        .expect("Cargo.lock above the package")
 }
 
 /// A fresh, empty scratch directory for test `name`, removed when the test passes and kept

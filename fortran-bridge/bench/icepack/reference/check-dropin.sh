@@ -38,7 +38,7 @@ cd "$BUILD"
 cp icepack/icepack_*.o icepack/*.mod .
 LIB=$ROOT/target/release
 # The library as a host builds it (a no-op when it is current).
-(cd "$ROOT" && cargo build --release --lib --no-default-features)
+(cd "$ROOT" && cargo build --release -p pressridge-clib)
 make -s -C "$ROOT/fortran-bridge" module BUILD="$BUILD" FC="$FC" FFLAGS="-O2"
 $FC $FFLAGS -c "$ROOT/fortran-bridge/icepack/pressridge_icepack.F90" -o dropin_module.o
 # The swap: one line of the driver.

@@ -5,16 +5,17 @@
 //! (which `tests/itd_icepack_reference.rs` holds to Icepack's), `flux_bio` equal to
 //! Icepack's, and bad set-ups refused by name.
 
+#[path = "../../../tests/common/mod.rs"]
 mod common;
 
 use std::ptr::{null, null_mut};
 
 use common::column::{Column, step};
 use common::icepack::{self, num, nums};
-use pressridge::ffi::itd::PressridgeOptions;
-use pressridge::ffi::ridge_step::*;
-use pressridge::ffi::*;
 use pressridge::itd::{Closing, StepForcing, TracerLayout};
+use pressridge_capi::itd::PressridgeOptions;
+use pressridge_capi::ridge_step::*;
+use pressridge_capi::*;
 use serde_json::Value;
 
 /// The C set-up of a reference file's parameters (Icepack's flags, bio tracers and tables)

@@ -3,13 +3,14 @@
 //! μ_rdg in the per-cell strength (whose options cache must not keep a handle), and the
 //! handles' errors are codes with messages.
 
+#[path = "../../../tests/common/mod.rs"]
 mod common;
 
 use std::ptr::null_mut;
 
-use pressridge::ffi::itd::*;
-use pressridge::ffi::mu_rdg_table::*;
-use pressridge::ffi::*;
+use pressridge_capi::itd::*;
+use pressridge_capi::mu_rdg_table::*;
+use pressridge_capi::*;
 
 fn last_error() -> String {
     let mut need = 0i64;
@@ -109,7 +110,7 @@ fn tables_from_files_open_look_up_and_name_what_is_missing() {
     assert_ne!(rc, PRESSRIDGE_OK);
     assert!(last_error().contains("ridge columns"), "{}", last_error());
     // The shipped table holds the simulated μ_rdg at the Figure 5 friction.
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/data/ridging_table.nc");
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/ridging_table.nc");
     // SAFETY: as above.
     let rc = unsafe {
         pressridge_mu_rdg_table_open(path.as_ptr().cast(), path.len() as i64, 1.0, 0.6, &mut t)

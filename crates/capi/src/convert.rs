@@ -5,10 +5,10 @@ use super::{
     PRESSRIDGE_ERR_NOT_FINITE, PRESSRIDGE_ERR_NOT_FOUND, PRESSRIDGE_ERR_NUMERICAL,
     PRESSRIDGE_ERR_PARSE,
 };
-use crate::io::itd_netcdf::NetcdfError;
-use crate::itd::{ColumnError, ItdError};
-use crate::scene::SceneError;
-use crate::table::lookup::LookupError;
+use pressridge::io::itd_netcdf::NetcdfError;
+use pressridge::itd::{ColumnError, ItdError};
+use pressridge::scene::SceneError;
+use pressridge::table::lookup::LookupError;
 
 fn column_code(e: &ColumnError) -> i32 {
     match e {

@@ -7,12 +7,12 @@
 
 use std::ptr::{null, null_mut};
 
-use pressridge::ffi::ridge_step::*;
-use pressridge::ffi::*;
 use pressridge::itd::{
     CiceTracerFlags, Closing, ColumnMut, OceanFluxes, RidgeStepOptions, StepForcing, StepWorkspace,
     TracerLayout, ridge_step_column,
 };
+use pressridge_capi::ridge_step::*;
+use pressridge_capi::*;
 
 const NCAT: usize = 5;
 

@@ -8,8 +8,8 @@ use super::{
     FfiError, FfiResult, PRESSRIDGE_ERR_BAD_VALUE, PRESSRIDGE_ERR_NOT_FOUND, guard, put,
     read_string, write_string,
 };
-use crate::scene::Scene;
-use crate::simulation::{Summary, run as run_scene};
+use pressridge::scene::Scene;
+use pressridge::simulation::{Summary, run as run_scene};
 
 /// The result of a simulator run (its summary). Opaque; create with
 /// [`pressridge_scene_run`], release with [`pressridge_run_free`].

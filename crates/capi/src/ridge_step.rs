@@ -1,4 +1,4 @@
-//! The complete ridging step (snow, tracers, ocean fluxes; `crate::itd::ridge_step`) through
+//! The complete ridging step (snow, tracers, ocean fluxes; `pressridge::itd::ridge_step`) through
 //! the C ABI: a [`PressridgeRidger`] handle holds the tracer layout and the options, made once
 //! at initialisation; then one call per cell (`pressridge_ridge_cell`, the argument list of
 //! Icepack's `icepack_step_ridge`) or one call per block of cells (`pressridge_ridge_cells`).
@@ -10,7 +10,7 @@ use std::cell::RefCell;
 
 use super::layout::{Region, check_disjoint, check_ptr};
 use super::{FfiError, FfiResult, PRESSRIDGE_ERR_BAD_SIZE, guard, put};
-use crate::itd::{
+use pressridge::itd::{
     CellForcing, CellOutputs, CellState, Closing, ColumnMut, ItdError, MAX_AERO, MAX_ISO,
     MAX_NBTRCR, OceanFluxes, StepDiagnostics, StepForcing, StepWorkspace, ridge_step_cells,
     ridge_step_column, species_counts,

@@ -1,6 +1,7 @@
-//! The C ABI (`pressridge::ffi`) called as C would call it: values equal to the Rust API's to
+//! The C ABI (`pressridge_capi`) called as C would call it: values equal to the Rust API's to
 //! the bit in every layout, errors as codes and messages, never a crash, thread safety.
 
+#[path = "../../../tests/common/mod.rs"]
 mod common;
 
 use std::ffi::c_char;
@@ -9,15 +10,15 @@ use std::ptr::{null, null_mut};
 use std::sync::Arc;
 
 use ndarray::{Array1, Array2};
-use pressridge::ffi::itd::*;
-use pressridge::ffi::scene::*;
-use pressridge::ffi::tables::*;
-use pressridge::ffi::*;
 use pressridge::io::itd_netcdf::{read_itd, write_cf_table};
 use pressridge::itd::{
     CategoryBounds, Cf, CfTable, Participation, Redistribution, RidgeBatchForcing, RidgeOptions,
     RidgeRatesMut, StrengthFormula, StrengthOptions, category_bounds, ridge_batch, strength_batch,
 };
+use pressridge_capi::itd::*;
+use pressridge_capi::scene::*;
+use pressridge_capi::tables::*;
+use pressridge_capi::*;
 
 /// The fields of the sample grid the tests use.
 struct Sample {
@@ -34,8 +35,7 @@ struct Sample {
 /// columns, category thicknesses near CICE's.
 fn sample_grid() -> Sample {
     if !cfg!(miri) {
-        let g =
-            read_itd(&Path::new(env!("CARGO_MANIFEST_DIR")).join("data/sample_itd.nc")).unwrap();
+        let g = read_itd(&common::repo().join("data/sample_itd.nc")).unwrap();
         return Sample {
             aicen: g.aicen,
             vicen: g.vicen,
@@ -1050,7 +1050,7 @@ fn cf_tables_load_query_free() {
     );
     assert!(last_error().contains("nope.nc"), "{}", last_error());
     assert!(h.is_null());
-    let sample = concat!(env!("CARGO_MANIFEST_DIR"), "/data/sample_itd.nc");
+    let sample = concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/sample_itd.nc");
     assert_eq!(
         // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
         // the entry point checks nulls, sizes and handles itself (the C ABI's contract).

@@ -10,9 +10,9 @@ use super::{
     FfiError, FfiResult, PRESSRIDGE_ERR_BAD_SIZE, PRESSRIDGE_ERR_BAD_VALUE, guard, put, read_path,
     read_string, write_string,
 };
-use crate::io::itd_netcdf::read_cf_table_at_friction;
-use crate::itd::{CfProvider, CfTable};
-use crate::table::lookup::RidgeLookup;
+use pressridge::io::itd_netcdf::read_cf_table_at_friction;
+use pressridge::itd::{CfProvider, CfTable};
+use pressridge::table::lookup::RidgeLookup;
 
 /// A C_f table: C_f (dimensionless) against the ridging ice's thickness (m), linear between
 /// nodes, clamped (and flagged) outside. Opaque; create with [`pressridge_cf_table_open`] or

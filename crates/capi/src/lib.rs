@@ -2,7 +2,7 @@
 //! `libpressridge.a`, header `include/pressridge.h`, Fortran module in `fortran-bridge/`).
 //!
 //! This layer only converts and calls the library: raw pointers, strides and integer codes
-//! in, [`crate::itd`], [`crate::io`], [`crate::table`] and [`crate::simulation`] calls, error
+//! in, [`pressridge::itd`], [`pressridge::io`], [`pressridge::table`] and [`pressridge::simulation`] calls, error
 //! codes out. There is no physics here. Units are SI throughout, as in the library.
 //!
 //! Conventions (see `docs/c-api.md`):

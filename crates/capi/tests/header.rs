@@ -1,11 +1,12 @@
 //! The committed C header `include/pressridge.h` must be what cbindgen generates from
-//! `src/ffi/` now (build.rs writes it to `$OUT_DIR`). Regenerate with
-//! `make -C fortran-bridge header` (or `PRESSRIDGE_WRITE_HEADER=1 cargo build --lib`).
+//! this crate's `src/` now (build.rs writes it to `$OUT_DIR`). Regenerate with
+//! `make -C fortran-bridge header` (or `PRESSRIDGE_WRITE_HEADER=1 cargo build -p pressridge-capi`).
 
 #[test]
 fn committed_header_is_up_to_date() {
     let generated = std::path::Path::new(env!("OUT_DIR")).join("pressridge.h");
-    let committed = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("include/pressridge.h");
+    let committed =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../include/pressridge.h");
     let generated = std::fs::read_to_string(&generated).unwrap_or_else(|e| {
         panic!(
             "{}: {e}: cbindgen did not generate the header (see the build script's warnings)",
@@ -24,7 +25,7 @@ fn committed_header_is_up_to_date() {
                 |i| i + 1,
             );
         panic!(
-            "include/pressridge.h is out of date with src/ffi/ (first difference at line \
+            "include/pressridge.h is out of date with crates/capi/src/ (first difference at line \
              {line}); regenerate it with `make -C fortran-bridge header` and commit it"
         );
     }
@@ -34,7 +35,7 @@ fn committed_header_is_up_to_date() {
 /// repeats the whole API: legal C, but a header no one should ship).
 #[test]
 fn committed_header_declares_each_item_once() {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("include/pressridge.h");
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../include/pressridge.h");
     let text = std::fs::read_to_string(&path).unwrap();
     let mut seen = std::collections::HashSet::new();
     let mut count = 0;

@@ -10,7 +10,7 @@ use super::super::layout::check_ptr;
 use super::super::{
     FfiError, FfiResult, PRESSRIDGE_ERR_BAD_SIZE, PRESSRIDGE_ERR_BAD_VALUE, guard, put,
 };
-use crate::itd::{
+use pressridge::itd::{
     BgcKind, BgcTracers, CiceTracerFlags, MAX_NBTRCR, RidgeStepOptions, RidgeStepParams, SaltFlux,
     TracerLayout,
 };
