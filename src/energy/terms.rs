@@ -46,8 +46,6 @@ pub struct LedgerTerm {
     /// Name: the CSV column, the summary and sample key, the Python series name; with
     /// `_mean` and `_std` the NetCDF variables of a tabulated term.
     pub name: &'static str,
-    /// An older name that files still carry and that is read as this one.
-    pub alias: Option<&'static str>,
     /// Unit, as the CSV header writes it.
     pub unit: &'static str,
     /// Unit as a UDUNITS string, as NetCDF attributes write it.
@@ -89,7 +87,6 @@ impl LedgerTerm {
 /// What every term shares unless its row says otherwise.
 const BASE: LedgerTerm = LedgerTerm {
     name: "",
-    alias: None,
     unit: "J/m",
     udunits: "J m-1",
     sign: Sign::Any,
@@ -136,7 +133,6 @@ pub const LEDGER_TERMS: [LedgerTerm; 18] = [
     },
     LedgerTerm {
         name: "kinetic_energy_change",
-        alias: Some("kinetic_energy"),
         label: "kinetic energy change",
         description: "kinetic energy change since the start (blocks that enter later count \
                       from their entry)",
@@ -356,11 +352,11 @@ impl<S: TermSet> Terms<S> {
         EnergyBudget::from_values(time, values)
     }
 
-    /// The table index of the term `S` keeps under `key` (its name or its alias).
+    /// The table index of the term `S` keeps under `key`.
     fn index(key: &str) -> Option<usize> {
         LEDGER_TERMS
             .iter()
-            .position(|t| S::keep(t) != Keep::No && (t.name == key || t.alias == Some(key)))
+            .position(|t| S::keep(t) != Keep::No && t.name == key)
     }
 }
 
@@ -480,16 +476,11 @@ pub(crate) mod check {
         assert_eq!(serde_json::from_str::<T>(&text).unwrap(), x);
         for &(k, t) in &kept {
             let mut less = full.clone();
-            let v = less.as_object_mut().unwrap().remove(t.name).unwrap();
-            match (serde_json::from_value::<T>(less.clone()), keep(t)) {
+            less.as_object_mut().unwrap().remove(t.name).unwrap();
+            match (serde_json::from_value::<T>(less), keep(t)) {
                 (Err(e), Keep::Required) => assert!(e.to_string().contains(t.name), "{e}"),
                 (Ok(x), Keep::Added) => assert_eq!(energy(&x).values()[k], 0.0),
                 (r, keep) => panic!("{}: {keep:?} but {r:?}", t.name),
-            }
-            if let Some(old) = t.alias {
-                less[old] = v;
-                let x: T = serde_json::from_value(less).unwrap();
-                assert_eq!(energy(&x).values()[k], k as f64 + 1.0, "{old}");
             }
         }
         text
@@ -521,7 +512,7 @@ mod tests {
     }
 
     /// Every dissipation is kept by the samples, so the tables' gate sees it at every sample;
-    /// the table's names and old names are unique, and every row is complete.
+    /// the table's names are unique, and every row is complete.
     #[test]
     fn the_table_is_complete() {
         for t in &LEDGER_TERMS {
@@ -533,10 +524,7 @@ mod tests {
             );
             assert_eq!(term(t.name), *t);
         }
-        let mut names: Vec<&str> = LEDGER_TERMS
-            .iter()
-            .flat_map(|t| std::iter::once(t.name).chain(t.alias))
-            .collect();
+        let mut names: Vec<&str> = LEDGER_TERMS.iter().map(|t| t.name).collect();
         let n = names.len();
         names.sort_unstable();
         names.dedup();
