@@ -1,8 +1,8 @@
 //! Generates the C header of the C ABI (this crate's `src/`) with cbindgen.
 //!
 //! The header is written to `$OUT_DIR/pressridge.h` on every build that changes `src/`.
-//! The committed copy `include/pressridge.h` (at the top of the repository) is only rewritten when the environment variable
-//! `PRESSRIDGE_WRITE_HEADER=1` is set (`make -C fortran-bridge header`), so that CI never
+//! The committed copy `include/pressridge.h` (at the top of the repository) is only rewritten
+//! when the environment variable `PRESSRIDGE_WRITE_HEADER=1` is set (`make -C fortran-bridge header`), so that CI never
 //! overwrites it silently: `tests/header.rs` compares the two and fails when the committed
 //! header is out of date.
 

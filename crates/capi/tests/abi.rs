@@ -3,6 +3,9 @@
 
 #[path = "../../../tests/common/mod.rs"]
 mod common;
+mod support;
+
+use support::last_error;
 
 use std::ffi::c_char;
 use std::path::Path;
@@ -79,20 +82,6 @@ fn sample_grid() -> Sample {
 fn sample() -> (Array2<f64>, Array2<f64>, Array1<f64>) {
     let g = sample_grid();
     (g.aicen, g.vicen, g.aice0.unwrap())
-}
-
-fn last_error() -> String {
-    let mut need = 0i64;
-    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
-    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
-    unsafe { pressridge_last_error(null_mut(), 0, &mut need) };
-    let mut buf = vec![0u8; need as usize];
-    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
-    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
-    let rc = unsafe { pressridge_last_error(buf.as_mut_ptr().cast(), need, null_mut()) };
-    assert_eq!(rc, PRESSRIDGE_OK);
-    buf.pop();
-    String::from_utf8(buf).unwrap()
 }
 
 fn last_column() -> i64 {
@@ -1050,7 +1039,8 @@ fn cf_tables_load_query_free() {
     );
     assert!(last_error().contains("nope.nc"), "{}", last_error());
     assert!(h.is_null());
-    let sample = concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/sample_itd.nc");
+    let sample = common::repo().join("data/sample_itd.nc");
+    let sample = sample.to_str().unwrap();
     assert_eq!(
         // SAFETY: every non-null pointer is a live local or buffer of at least the length passed;
         // the entry point checks nulls, sizes and handles itself (the C ABI's contract).

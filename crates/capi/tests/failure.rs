@@ -5,21 +5,10 @@
 #[path = "../../../tests/common/mod.rs"]
 mod common;
 
-use common::scratch;
+mod support;
 
-fn ffi_last_error() -> String {
-    use pressridge_capi::pressridge_last_error;
-    let mut need = 0i64;
-    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
-    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
-    unsafe { pressridge_last_error(std::ptr::null_mut(), 0, &mut need) };
-    let mut buf = vec![0u8; need as usize];
-    // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
-    // entry point checks nulls, sizes and handles itself (the C ABI's contract).
-    unsafe { pressridge_last_error(buf.as_mut_ptr().cast(), need, std::ptr::null_mut()) };
-    buf.pop();
-    String::from_utf8(buf).unwrap()
-}
+use common::scratch;
+use support::last_error;
 
 #[test]
 fn c_abi_refuses_paths_with_nul_and_runs_of_no_step() {
@@ -37,7 +26,7 @@ fn c_abi_refuses_paths_with_nul_and_runs_of_no_step() {
     // entry point checks nulls, sizes and handles itself (the C ABI's contract).
     let rc = unsafe { pressridge_cf_table_open(p.as_ptr().cast(), p.len() as i64, &mut h) };
     assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE);
-    assert!(ffi_last_error().contains("NUL"), "{}", ffi_last_error());
+    assert!(last_error().contains("NUL"), "{}", last_error());
     assert!(h.is_null());
     let p = path.to_str().unwrap();
     // SAFETY: every non-null pointer is a live local or buffer of at least the length passed; the
@@ -60,7 +49,7 @@ fn c_abi_refuses_paths_with_nul_and_runs_of_no_step() {
         // the entry point checks nulls, sizes and handles itself (the C ABI's contract).
         let rc = unsafe { pressridge_scene_run(text.as_ptr().cast(), text.len() as i64, &mut run) };
         assert_eq!(rc, PRESSRIDGE_ERR_BAD_VALUE, "{text}");
-        let e = ffi_last_error();
+        let e = last_error();
         assert!(
             e.contains(key) && (e.contains("no step") || e.contains("stable step")),
             "{e}"

@@ -5,23 +5,15 @@
 
 #[path = "../../../tests/common/mod.rs"]
 mod common;
+mod support;
+
+use support::last_error;
 
 use std::ptr::null_mut;
 
 use pressridge_capi::itd::*;
 use pressridge_capi::mu_rdg_table::*;
 use pressridge_capi::*;
-
-fn last_error() -> String {
-    let mut need = 0i64;
-    // SAFETY: a null buffer of length 0 asks for the size; `need` is a live local.
-    unsafe { pressridge_last_error(null_mut(), 0, &mut need) };
-    let mut buf = vec![0u8; need as usize];
-    // SAFETY: `buf` holds `need` bytes.
-    unsafe { pressridge_last_error(buf.as_mut_ptr().cast(), need, null_mut()) };
-    buf.pop();
-    String::from_utf8(buf).unwrap()
-}
 
 fn options() -> PressridgeOptions {
     let mut o = std::mem::MaybeUninit::uninit();
@@ -110,7 +102,8 @@ fn tables_from_files_open_look_up_and_name_what_is_missing() {
     assert_ne!(rc, PRESSRIDGE_OK);
     assert!(last_error().contains("ridge columns"), "{}", last_error());
     // The shipped table holds the simulated μ_rdg at the Figure 5 friction.
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/ridging_table.nc");
+    let path = common::repo().join("data/ridging_table.nc");
+    let path = path.to_str().unwrap();
     // SAFETY: as above.
     let rc = unsafe {
         pressridge_mu_rdg_table_open(path.as_ptr().cast(), path.len() as i64, 1.0, 0.6, &mut t)
