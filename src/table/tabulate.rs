@@ -15,9 +15,11 @@
 //! a set. Within a set:
 //!
 //! - every run's samples (W, ΔPE, mean force against ridged volume V = U·h·t) are
-//!   interpolated linearly onto a common volume grid, within the volumes the run reached; the
-//!   ensemble mean and standard deviation over the runs of each thickness are tabulated, with
-//!   the number of runs behind each value (cells no run reached hold NaN, the CF fill value);
+//!   interpolated linearly onto a common volume grid, within the volumes the run reached (a
+//!   run's end is its nominal volume U·h·T, to half a step's volume U·h·Δt/2, so that each
+//!   setting's final volume holds every run of it); the ensemble mean and standard deviation
+//!   over the runs of each thickness are tabulated, with the number of runs behind each value
+//!   (cells no run reached hold NaN, the CF fill value);
 //! - eqs (13)–(14) are fitted by least squares through the origin ([`super::fit`]) per
 //!   thickness and pooled over all thicknesses of the set (the paper's Figure 12), with
 //!   standard errors and 95 % confidence and prediction bands of the pooled work curve; the
@@ -228,19 +230,76 @@ fn nominal_volume(r: &RunRecord) -> f64 {
     }
 }
 
-/// The ridged volumes of a run's samples (m³/m), its last at the run's nominal volume
-/// U·h·T when the run reached its duration: a run stops within half a step of T, so its
-/// last sample lies up to U·h·Δt/2 short of (or past) U·h·T, and read as it is the run's end
-/// would fall off a grid point placed there (the shipped table's final volumes held 0–3 of
-/// their 7–12 runs until 2026-12-01).
-fn sample_volumes(r: &RunRecord) -> Vec<f64> {
-    let mut xs: Vec<f64> = r.samples.iter().map(|s| s.volume).collect();
-    if let (Some(last), Some(x)) = (r.samples.last(), xs.last_mut())
-        && (last.time - r.scene.duration).abs() <= r.summary.dt
-    {
-        *x = nominal_volume(r);
+/// A run's samples on the table's volume axis: their ridged volumes (m³/m), the last at the
+/// run's nominal volume U·h·T when the run reached its duration, and the work, potential
+/// energy (J/m) and mean force (N/m) there.
+///
+/// A run stops within half a step of T, so its last sample lies up to U·h·Δt/2 short of (or
+/// past) U·h·T; read as it is, the run's end would fall off a grid point placed at U·h·T
+/// (the shipped table's final volumes held 0–3 of their 7–12 runs until 2026-12-01). And the
+/// end U·h·T and that grid point k·V_max/(n − 1) are one volume computed two ways, which
+/// roundoff can part by an ulp: for h = 1.15 m at 0.25 m/s for 400 s, U·h·T is
+/// 114.99999999999999 m³/m against the grid point 115 of the 0–600 m³/m axis in 241 points.
+/// So a grid point at most [`RunOnAxis::tol`] past the run's end counts at the end, with
+/// its last sample's values: the record's own resolution there, half the volume one time
+/// step ridges, U·h·Δt/2 (about 1e-5 m³/m for a 0.30 m sheet at 0.25 m/s and
+/// Δt = 2.6e-4 s, against 2.5 m³/m between the shipped table's volumes), and never less than
+/// four ulps of the end's volume. A grid point farther out is a volume the run did not reach
+/// (NaN).
+struct RunOnAxis {
+    /// The samples' ridged volumes (m³/m), ascending.
+    volume: Vec<f64>,
+    /// How far past the last volume a grid point still counts at the run's end (m³/m).
+    tol: f64,
+    /// Work at each sample (J/m).
+    work: Vec<f64>,
+    /// Potential energy at each sample (J/m).
+    pe: Vec<f64>,
+    /// Mean ridging force over the interval ending at each sample (N/m).
+    force: Vec<f64>,
+}
+
+impl RunOnAxis {
+    fn of(r: &RunRecord) -> RunOnAxis {
+        let mut volume: Vec<f64> = r.samples.iter().map(|s| s.volume).collect();
+        if let (Some(last), Some(x)) = (r.samples.last(), volume.last_mut())
+            && (last.time - r.scene.duration).abs() <= r.summary.dt
+        {
+            *x = nominal_volume(r);
+        }
+        let end = volume.last().copied().unwrap_or(0.0);
+        let step = r
+            .scene
+            .sheet
+            .as_ref()
+            .map_or(0.0, |s| 0.5 * s.speed * s.thickness * r.summary.dt);
+        let roundoff = 4.0 * f64::EPSILON * end.abs();
+        let tol = if step.is_finite() {
+            step.max(roundoff)
+        } else {
+            roundoff
+        };
+        RunOnAxis {
+            volume,
+            tol,
+            work: r.samples.iter().map(|s| s.energy().work).collect(),
+            pe: r
+                .samples
+                .iter()
+                .map(|s| s.energy().potential_energy)
+                .collect(),
+            force: r.samples.iter().map(|s| s.mean_force).collect(),
+        }
     }
-    xs
+
+    /// `ys` (one value per sample) at grid volume `v` (m³/m): linear between the samples,
+    /// the last value within [`RunOnAxis::tol`] past the end, NaN outside.
+    fn at(&self, ys: &[f64], v: f64) -> f64 {
+        match (self.volume.last(), ys.last()) {
+            (Some(&end), Some(&y)) if v > end && v - end <= self.tol => y,
+            _ => crate::itd::interp::resample(&self.volume, ys, v),
+        }
+    }
 }
 
 /// Tabulates campaign records on a volume grid of `points` points from 0 to the largest
@@ -408,25 +467,18 @@ fn fill_setting(
         let s = Stat::of(xs);
         (s.mean, s.std)
     };
+    let on_axis: Vec<RunOnAxis> = group.iter().map(|r| RunOnAxis::of(r)).collect();
     for (vi, &v) in volume.iter().enumerate() {
         let (mut w, mut p, mut q, mut f) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-        for r in group {
-            let xs = sample_volumes(r);
-            let get = |g: fn(&crate::record::RunSample) -> f64| {
-                let ys: Vec<f64> = r.samples.iter().map(g).collect();
-                crate::itd::interp::resample(&xs, &ys, v)
-            };
-            let (wv, pv_) = (
-                get(|s| s.energy().work),
-                get(|s| s.energy().potential_energy),
-            );
+        for r in &on_axis {
+            let (wv, pv_) = (r.at(&r.work, v), r.at(&r.pe, v));
             if wv.is_finite() && pv_.is_finite() {
                 w.push(wv);
                 p.push(pv_);
                 if pv_ > 0.0 {
                     q.push(wv / pv_);
                 }
-                let fv = get(|s| s.mean_force);
+                let fv = r.at(&r.force, v);
                 if fv.is_finite() && v > 0.0 {
                     f.push(fv);
                 }
@@ -483,4 +535,129 @@ fn fill_setting(
         });
     }
     (fv, fw, fp)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::energy::EnergyBudget;
+    use crate::record::RunSample;
+
+    /// The time step of the synthetic runs (s), about the shipped runs' 2.6e-4 s.
+    const DT: f64 = 2.5e-4;
+
+    /// A run of seed `seed` pushing a sheet `h` m thick at 0.25 m/s for 400 s, sampled every
+    /// 100 s, its last sample `late` s after 400 s (the run stops within half a step of T):
+    /// V = U·h·t, W = V(10·V + 2000), ΔPE = V(V + 100) (J/m).
+    fn run(h: f64, seed: u64, late: f64) -> RunRecord {
+        let mut scene = crate::scene::Scene {
+            duration: 400.0,
+            ..Default::default()
+        };
+        let sheet = scene.sheet.as_mut().expect("a sheet");
+        (sheet.thickness, sheet.speed) = (h, 0.25);
+        let mut json = crate::simulation::summary_without_ledger();
+        for t in crate::energy::LEDGER_TERMS {
+            json[t.name] = 0.0.into();
+        }
+        json["dt"] = DT.into();
+        let samples = [0.0, 100.0, 200.0, 300.0, 400.0 + late]
+            .iter()
+            .map(|&t| {
+                let v = 0.25 * h * t;
+                let mut s = RunSample {
+                    time: t,
+                    volume: v,
+                    mean_force: 1.0e3 * h,
+                    ..Default::default()
+                };
+                s.set_energy(&EnergyBudget {
+                    work: v * (10.0 * v + 2000.0),
+                    potential_energy: v * (v + 100.0),
+                    ..Default::default()
+                });
+                s
+            })
+            .collect();
+        RunRecord {
+            id: format!("h{h}-s{seed}"),
+            settings: vec![],
+            seed,
+            scene,
+            summary: serde_json::from_value(json).unwrap(),
+            samples,
+            profile: Default::default(),
+            metrics: Default::default(),
+            digest: None,
+        }
+    }
+
+    /// Every setting's final volume U·h·T holds every run of that setting, whether its last
+    /// sample lies short of T or past it (by under half a step) and even where U·h·T misses
+    /// its grid point by roundoff (114.99999999999999 m³/m at 1.15 m against the point 115
+    /// of the 0–600 m³/m axis in 241 points); the point after it, which no run reached,
+    /// holds none. On a grid to the largest sample's volume (the table until 2026-12-01) the
+    /// runs that stop short of T missed every final volume, and on the grid to U·h·T without
+    /// the tolerance the 1.15 m runs missed theirs.
+    #[test]
+    fn every_run_counts_at_its_final_volume() {
+        let hs = [0.3, 1.15, 6.0];
+        assert!(
+            nominal_volume(&run(1.15, 1, 0.0)) < 115.0,
+            "the roundoff this test is about"
+        );
+        let mut records = Vec::new();
+        for &h in &hs {
+            for (seed, late) in [(1, -0.4 * DT), (2, 0.4 * DT), (3, 0.0)] {
+                records.push(run(h, seed, late));
+            }
+        }
+        let t = tabulate(&records, 241).unwrap();
+        assert!(
+            t.volume
+                .iter()
+                .enumerate()
+                .all(|(k, &v)| v == 2.5 * k as f64)
+        );
+        for (hi, &h) in t.thickness.iter().enumerate() {
+            let k = (100.0 * h / 2.5f64).round() as usize;
+            let c = [0, hi, k];
+            assert_eq!(t.runs[c], 3, "h = {h} m at {} m³/m", t.volume[k]);
+            let v = t.volume[k];
+            let w = v * (10.0 * v + 2000.0);
+            // The runs that stopped short of T (by 0.4 of a step) give their last sample there.
+            assert!(
+                (t.work_mean[c] - w).abs() <= 1e-6 * w,
+                "{} {w}",
+                t.work_mean[c]
+            );
+            assert!(t.force_mean[c] == 1.0e3 * h);
+            if k + 1 < t.volume.len() {
+                assert_eq!(t.runs[[0, hi, k + 1]], 0);
+                assert!(t.work_mean[[0, hi, k + 1]].is_nan());
+            }
+        }
+    }
+
+    /// A grid point counts at a run's end within half the volume one step ridges past it,
+    /// and not beyond: the record says nothing about volumes it did not reach.
+    #[test]
+    fn the_end_tolerance_is_half_a_step() {
+        let r = RunOnAxis::of(&run(0.3, 1, -0.4 * DT));
+        assert_eq!(*r.volume.last().unwrap(), 0.25 * 0.3 * 400.0);
+        assert_eq!(r.tol, 0.5 * 0.25 * 0.3 * DT);
+        let end = 30.0;
+        let last = *r.work.last().unwrap();
+        assert_eq!(r.at(&r.work, end), last);
+        assert_eq!(r.at(&r.work, end + 0.9 * r.tol), last);
+        assert!(r.at(&r.work, end + 1.1 * r.tol).is_nan());
+        assert!(r.at(&r.work, -1e-12).is_nan());
+        // A run that stopped well short of T keeps its last sample's volume.
+        let short = RunOnAxis::of(&run(0.3, 1, -2.0 * DT));
+        assert_eq!(
+            *short.volume.last().unwrap(),
+            0.25 * 0.3 * (400.0 - 2.0 * DT)
+        );
+        assert!(short.at(&short.work, end).is_nan());
+    }
 }
