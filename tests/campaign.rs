@@ -1290,6 +1290,35 @@ fn every_run_counts_at_its_final_volume() {
     }
 }
 
+/// The shipped table (`data/ridging_table.nc`) as a host reads it: at each of its 40
+/// settings (friction pair and thickness) the final ridged volume 100·h m³/m (400 s at
+/// 0.25 m/s) is a point of the volume axis and holds every run of that setting, as many as
+/// the volume 0 and C_f have, and the work there is a number. Until 2026-12-01 the axis ran
+/// to the largest sample's volume, 600.0001 m³/m, and its points held 0–3 of the 7–12 runs.
+#[test]
+fn the_shipped_table_holds_every_run_at_each_final_volume() {
+    let path = common::repo().join("data/ridging_table.nc");
+    let lut = pressridge::table::lookup::RidgeLookup::open(&path).unwrap();
+    let at = |name: &str, si: usize, h: f64, v: f64| lut.value(name, si, h, v).unwrap().value;
+    let mut settings = 0;
+    for si in 0..lut.sets().len() {
+        for &h in lut.thickness() {
+            let n = at("cf_runs", si, h, 0.0);
+            if n == 0.0 {
+                continue;
+            }
+            let end = 100.0 * h;
+            assert!(lut.volume().contains(&end), "{end} m³/m");
+            let what = format!("{} at {h} m", lut.sets()[si]);
+            assert_eq!(at("runs", si, h, 0.0), n, "{what}");
+            assert_eq!(at("runs", si, h, end), n, "{what} at {end} m³/m");
+            assert!(at("work_mean", si, h, end).is_finite(), "{what}");
+            settings += 1;
+        }
+    }
+    assert_eq!(settings, 40);
+}
+
 /// A run is its scene and seed: resuming from an archive takes a run planned under another
 /// id (a probe's axis setting a key to the value the spec now has anyway) and gives it this
 /// campaign's id and settings; nothing is run again, and the records read as this campaign.
