@@ -48,16 +48,17 @@
 //! - C and Fortran hosts: the crate `pressridge-capi` (`crates/capi`, the C ABI and its
 //!   header `include/pressridge.h`), built as `libpressridge.{so,a}` by `crates/clib`.
 //!
-//! ## Example: a small ridging run
+//! ## Example: a run and its files
 //!
-//! The simulator's own front (`pressridge-sim`, `crates/sim/src/lib.rs`) runs one; through
-//! this crate the same code reads `use pressridge::{observe, scene::Scene, simulation};`.
-//! Its files here ([`io::series`], [`io::state`]):
+//! The simulator's own front (`pressridge-sim`, `crates/sim/src/lib.rs`) runs one and reads
+//! its summary, series and ridge; through this crate the same code reads
+//! `use pressridge::{observe, scene::Scene, simulation};`. The files are this crate's
+//! ([`io::series`], [`io::state`]):
 //!
 //! ```
 //! use pressridge::{io, scene::Scene, simulation};
 //!
-//! // 0.4 s of a 2 m sheet (m) against a 3 m floe: two samples of the series.
+//! // 0.4 s of a 2 m sheet pushed against a 3 m floe (lengths in m).
 //! let scene = Scene::from_toml("duration = 0.4\n[sheet]\nlength = 2.0\n[floe]\nlength = 3.0")?;
 //! let out = simulation::run(&scene, &mut |_world| true)?;
 //! let dir = std::env::temp_dir().join(format!("pressridge-doc-{}", std::process::id()));
