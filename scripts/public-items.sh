@@ -1,25 +1,31 @@
 #!/usr/bin/env bash
-# Counts the public items of a module of the library (default `dem`), as rustdoc sees them:
+# Counts the public items of a module of the libraries (default `dem`), as rustdoc sees them:
 # named items (modules, structs, enums, traits, functions, constants, type aliases), the
 # variants of its enums, and the public inherent methods of its types. Issue 33 asks for at
-# most 120 in src/dem; docs/architecture.md quotes the last count. Also lists every public
-# name of the crate that has a second public path (a re-export of an item whose own module
-# is public); issue 33 asks for none.
+# most 120 in crates/sim/src/dem; docs/architecture.md quotes the last count. Also lists every
+# public name of the module's crate (`pressridge-sim` for the simulator's modules, else
+# `pressridge`) that has a second public path (a re-export of an item whose own module is
+# public); issue 33 asks for none.
 #   scripts/public-items.sh [MODULE]
 # Needs the nightly toolchain (rustdoc's JSON output is unstable); writes target/rdjson.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 module=${1:-dem}
-cargo +nightly rustdoc --quiet -p pressridge --lib --no-default-features --target-dir target/rdjson \
+case $module in
+  limits | eta | energy | dem | scene | observe | simulation | record)
+    krate=pressridge_sim src=crates/sim/src ;;
+  *) krate=pressridge src=src ;;
+esac
+cargo +nightly rustdoc --quiet -p "${krate//_/-}" --lib --no-default-features --target-dir target/rdjson \
   -- -Z unstable-options --output-format json
-python3 - "$module" <<'PY'
+python3 - "$module" "$krate" "$src" <<'PY'
 import json, sys
-module = sys.argv[1]
-d = json.load(open("target/rdjson/doc/pressridge.json"))
+module, krate, src = sys.argv[1:4]
+d = json.load(open(f"target/rdjson/doc/{krate}.json"))
 idx, paths = d["index"], d["paths"]
 named, variants, methods = 0, 0, 0
 for k, p in paths.items():
-    if p["path"][:2] != ["pressridge", module] or k not in idx or p.get("crate_id", 0) != 0:
+    if p["path"][:2] != [krate, module] or k not in idx or p.get("crate_id", 0) != 0:
         continue
     if p["kind"] == "variant":
         variants += 1
@@ -32,7 +38,7 @@ for k, p in paths.items():
                 im = idx[str(i)]["inner"]["impl"]
                 if im["trait"] is None and not im.get("is_synthetic") and not im.get("blanket_impl"):
                     methods += sum(idx[str(m)]["visibility"] == "public" for m in im["items"])
-print(f"src/{module}: {named} named items + {methods} methods = {named + methods}; "
+print(f"{src}/{module}: {named} named items + {methods} methods = {named + methods}; "
       f"with {variants} enum variants {named + methods + variants}")
 
 public_modules, reexports = set(), []
@@ -49,7 +55,7 @@ def walk(mid, prefix):
             p = paths.get(str(u["id"]))
             if p and p.get("crate_id", 0) == 0:
                 reexports.append(("::".join(prefix + [u["name"]]), p["path"]))
-walk(d["root"], ["pressridge"])
+walk(d["root"], [krate])
 second = [(h, "::".join(c)) for h, c in reexports
           if tuple(c[:-1]) in public_modules and "::".join(c) != h]
 for h, c in second:

@@ -10,9 +10,9 @@ cargo fmt --all -- --check
 echo "== cargo clippy --all-targets -- -D warnings ($SECONDS s)"
 cargo clippy --all-targets -- -D warnings
 echo "== cargo doc of the Rust API, warnings denied (broken links) ($SECONDS s)"
-# The two Rust libraries; the C ABI's crates are no Rust API (and the C library's lib name,
+# The three Rust libraries; the C ABI's crates are no Rust API (and the C library's lib name,
 # `pressridge`, would overwrite the library's pages).
-RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --lib -p pressridge -p pressridge-column
+RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --lib -p pressridge -p pressridge-sim -p pressridge-column
 echo "== docs/validation.md: its tables are the committed reports' numbers ($SECONDS s)"
 python3 scripts/validation-tables.py --check docs/validation.md
 # One build for everything below: the `ci` profile (Cargo.toml) serves the Rust tests, the

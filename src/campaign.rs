@@ -87,46 +87,45 @@ pub fn scene_digest(id: &str, seed: u64, scene: &Scene) -> String {
     crate::io::digest::sha256_hex(format!("{id}\n{seed}\n{}", scene.to_toml()).as_bytes())
 }
 
-impl RunRecord {
-    /// Checks this record, read from the run directory of planned run `id`, against that
-    /// id, its own scene and seed, and the files its digest lists; `Err` says what does not
-    /// match. A record without a digest (older versions) is checked for its id and its
-    /// `state.json` only. In a records-only archive ([`RECORDS_ONLY`] in `out`) the files
-    /// are not there: the id and the scene digest are checked.
-    pub(crate) fn verify(&self, out: &Path, id: &str) -> Result<(), String> {
-        let files = !is_records_only(out);
-        if self.id != id {
-            return Err(format!(
-                "its record names run `{}` (copied from another run directory?)",
-                self.id
-            ));
-        }
-        let record = record_path(out, id);
-        let dir = record.parent().unwrap_or(out);
-        let Some(d) = &self.digest else {
-            return if !files || dir.join("state.json").is_file() {
-                Ok(())
-            } else {
-                Err("its state.json is missing".into())
-            };
-        };
-        if d.scene != scene_digest(&self.id, self.seed, &self.scene) {
-            return Err("its record's scene or seed does not match its digest (edited?)".into());
-        }
-        for (name, want) in d.files.iter().filter(|_| files) {
-            let path = dir.join(name);
-            if !path.is_file() {
-                return Err(format!("its {name} is missing"));
-            }
-            match crate::io::digest::sha256_file(&path) {
-                Ok(got) if got == *want => {}
-                Ok(_) => return Err(format!("its {name} does not match the record's digest")),
-                Err(e) => return Err(e.to_string()),
-            }
-        }
-        Ok(())
+/// Checks the record `r`, read from the run directory of planned run `id`, against that
+/// id, its own scene and seed, and the files its digest lists; `Err` says what does not
+/// match. A record without a digest (older versions) is checked for its id and its
+/// `state.json` only. In a records-only archive ([`RECORDS_ONLY`] in `out`) the files
+/// are not there: the id and the scene digest are checked.
+pub(crate) fn verify_record(r: &RunRecord, out: &Path, id: &str) -> Result<(), String> {
+    let files = !is_records_only(out);
+    if r.id != id {
+        return Err(format!(
+            "its record names run `{}` (copied from another run directory?)",
+            r.id
+        ));
     }
+    let record = record_path(out, id);
+    let dir = record.parent().unwrap_or(out);
+    let Some(d) = &r.digest else {
+        return if !files || dir.join("state.json").is_file() {
+            Ok(())
+        } else {
+            Err("its state.json is missing".into())
+        };
+    };
+    if d.scene != scene_digest(&r.id, r.seed, &r.scene) {
+        return Err("its record's scene or seed does not match its digest (edited?)".into());
+    }
+    for (name, want) in d.files.iter().filter(|_| files) {
+        let path = dir.join(name);
+        if !path.is_file() {
+            return Err(format!("its {name} is missing"));
+        }
+        match crate::io::digest::sha256_file(&path) {
+            Ok(got) if got == *want => {}
+            Ok(_) => return Err(format!("its {name} does not match the record's digest")),
+            Err(e) => return Err(e.to_string()),
+        }
+    }
+    Ok(())
 }
+
 /// Progress of a campaign, reported as runs finish.
 #[derive(Clone, Copy, Debug)]
 pub struct Progress {
@@ -310,13 +309,13 @@ fn check_same_grid(spec: &CampaignSpec, out: &Path) -> Result<(), CampaignError>
 }
 
 /// The record of planned run `id` in `out` when it is a finished run: readable, and
-/// consistent with its id, scene and files ([`RunRecord::verify`]).
+/// consistent with its id, scene and files ([`verify_record`]).
 fn finished_record(out: &Path, id: &str) -> Option<RunRecord> {
     let path = record_path(out, id);
     path.is_file()
         .then(|| read_json::<RunRecord>(&path).ok())
         .flatten()
-        .filter(|r| r.verify(out, id).is_ok())
+        .filter(|r| verify_record(r, out, id).is_ok())
 }
 
 /// Takes the finished runs of this campaign from `archive` (e.g. a records-only archive of an
@@ -353,7 +352,7 @@ pub fn adopt_records(
         let from = record_path(archive, &p.id);
         let (from, mut r) = if from.is_file() {
             let r: RunRecord = read_json(&from)?;
-            if let Err(why) = r.verify(archive, &p.id) {
+            if let Err(why) = verify_record(&r, archive, &p.id) {
                 return Err(CampaignError::Mismatch(format!(
                     "{}: {why}",
                     from.display()
@@ -401,7 +400,7 @@ fn archive_records(archive: &Path) -> Result<Vec<(PathBuf, RunRecord)>, Campaign
     for id in ids {
         let path = record_path(archive, &id);
         if let Ok(r) = read_json::<RunRecord>(&path)
-            && r.verify(archive, &id).is_ok()
+            && verify_record(&r, archive, &id).is_ok()
         {
             all.push((path, r));
         }

@@ -10,20 +10,22 @@
 //! and its energies are J/m.
 //!
 //! Layout (data flows one way, no module reaches back up):
-//! - [`dem`] — the simulator core — geometry, bodies, contacts, water, the energy ledger and
-//!   the time step;
-//! - [`scene`] — every parameter of a run, from TOML, with defaults and validation;
-//! - [`limits`] — the valid range of every bounded parameter, with its reason;
-//! - [`simulation`] — running a scene and summarising it;
-//! - [`observe`] — ridge profiles and metrics from a state;
-//! - [`campaign`] — seeded ensembles over parameter grids, resumable;
+//! - the simulator, the crate `pressridge-sim` re-exported under the same names
+//!   (`pressridge::dem::World` is `pressridge_sim::dem::World`): [`dem`] (geometry, bodies,
+//!   contacts, water, the energy ledger and the time step), [`scene`] (every parameter of a
+//!   run, from TOML, with defaults and validation), [`limits`] (the valid range of every
+//!   bounded parameter, with its reason), [`energy`] (the budget of eqs 9–12 as data),
+//!   [`simulation`] (running a scene and summarising it), [`observe`] (ridge profiles and
+//!   metrics from a state), [`record`] (a finished run's record) and [`eta`] (progress
+//!   estimates);
 //! - [`itd`] — thickness-distribution physics: category bounds, participation, ridged-ice
 //!   redistribution, ice strength, the ridging step, on plain per-column slices (the crate
 //!   `pressridge-column`, which a host model can depend on alone);
-//! - [`io`] — files (JSON states and summaries, CSV time series, NetCDF distributions);
-//! - `plot` — figures (feature `plot`, on by default with `cli`);
 //! - [`table`] — regressions of ridging ensembles (work and potential energy against ridged
-//!   volume, eqs 13–16) for tabulation.
+//!   volume, eqs 13–16) for tabulation;
+//! - [`io`] — files (JSON states and summaries, CSV time series, NetCDF distributions);
+//! - [`campaign`] — seeded ensembles over parameter grids, resumable;
+//! - `plot` — figures (feature `plot`, on by default with `cli`).
 //!
 //! ## Where to start
 //!
@@ -46,48 +48,25 @@
 //! - C and Fortran hosts: the crate `pressridge-capi` (`crates/capi`, the C ABI and its
 //!   header `include/pressridge.h`), built as `libpressridge.{so,a}` by `crates/clib`.
 //!
-//! ## Example: a small ridging run
+//! ## Example: a run and its files
+//!
+//! The simulator's own front (`pressridge-sim`, `crates/sim/src/lib.rs`) runs one and reads
+//! its summary, series and ridge; through this crate the same code reads
+//! `use pressridge::{observe, scene::Scene, simulation};`. The files are this crate's
+//! ([`io::series`], [`io::state`]):
 //!
 //! ```
-//! use pressridge::{observe, scene::Scene, simulation};
+//! use pressridge::{io, scene::Scene, simulation};
 //!
-//! // A small version of the paper's Figure 5 experiment: a lead-ice sheet 3 m long and
-//! // 0.30 m thick pushed at 0.25 m/s for 3 s against a 4 m floe. Keys left out take their
-//! // defaults (Hopkins 1994, Table 1; `pressridge simulate --print-scene` lists them all).
-//! let scene = Scene::from_toml(
-//!     r#"
-//!     name = "small"
-//!     duration = 3.0  # s
-//!     [sheet]
-//!     length = 3.0    # m
-//!     [floe]
-//!     length = 4.0    # m
-//!     "#,
-//! )?;
-//! // The observer sees the world at every sample; returning false stops the run there.
+//! // 0.4 s of a 2 m sheet pushed against a 3 m floe (lengths in m).
+//! let scene = Scene::from_toml("duration = 0.4\n[sheet]\nlength = 2.0\n[floe]\nlength = 3.0")?;
 //! let out = simulation::run(&scene, &mut |_world| true)?;
-//!
-//! // The summary. Energies are J per metre of ridge, changes since the start of the run.
-//! let s = &out.summary;
-//! let e = s.energy();
-//! assert!(e.work > 0.0 && e.potential_energy > 0.0);
-//! assert!(e.residual.abs() < 1e-6 * e.work); // the energy budget closes
-//! println!(
-//!     "t = {:.1} s: V = {:.3} m³/m, work/ΔPE = {:.1}, {} joints broken",
-//!     s.time, s.ridged_volume, s.ratio_work_to_pe, s.blocks_broken
-//! );
-//!
-//! // The time series, one sample every `numerics.sample_interval` (0.2 s by default); a
-//! // sample's row has the columns (name, unit) of `series_columns()`, as series.csv.
-//! let last = out.series.last().unwrap();
-//! assert_eq!(last.row().len(), simulation::series_columns().len());
-//! println!("ridging force at the end: {:.0} N/m", last.ridging_force);
-//!
-//! // The ridge at the end: profile in 32 strips of 1 m from x = -20 m (10 sample lines a
-//! // strip), then its metrics (heights m, cross-sections m²/m, flank slopes degrees).
-//! let p = observe::profile(&out.final_state, -20.0, 1.0, 32, 10);
-//! let m = observe::metrics(&p, None);
-//! assert!(m.max_keel_depth > 0.0 && m.keel_area > 0.0); // the rubble's keel
+//! let dir = std::env::temp_dir().join(format!("pressridge-doc-{}", std::process::id()));
+//! std::fs::create_dir_all(&dir)?;
+//! io::series::write_series_csv(&dir.join("series.csv"), &out.series)?; // `name (unit)` columns
+//! io::state::save_state(&dir.join("final.json"), &out.final_state)?; // the world, restartable
+//! let _state = io::state::load_state(&dir.join("final.json"))?;
+//! std::fs::remove_dir_all(&dir)?;
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 //!
@@ -124,18 +103,13 @@
 #![warn(missing_docs)]
 
 pub mod campaign;
-pub mod dem;
-pub mod energy;
-pub mod eta;
 pub mod io;
 /// The column physics (thickness distribution, strength, ridging step): the crate
 /// `pressridge-column`, which a host can link alone.
 pub use pressridge_column as itd;
-pub mod limits;
-pub mod observe;
 #[cfg(feature = "plot")]
 pub mod plot;
-pub mod record;
-pub mod scene;
-pub mod simulation;
 pub mod table;
+// The simulator: the crate `pressridge-sim`, its modules under their old paths (each module
+// documented there).
+pub use pressridge_sim::{dem, energy, eta, limits, observe, record, scene, simulation};

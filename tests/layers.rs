@@ -1,13 +1,16 @@
-//! The library's layers (`docs/architecture.md`): every `crate::` path in a top-level module
+//! The workspace's layers (`docs/architecture.md`): every `crate::` path in a top-level module
 //! names a module of a lower layer, so that no import points up and no two modules import
-//! each other. The column physics is a crate of its own (`crates/column`, re-exported as
-//! `crate::itd`), below every module, and the C ABI is one above it all (`crates/capi`): the
-//! manifests keep the first from importing anything of `pressridge` and the second from being
-//! imported by it. Read from the sources as text (comments left out), so a new upward import
-//! fails here, naming the file.
+//! each other. The layers run across the crates: the column physics (`crates/column`,
+//! re-exported as `crate::itd`) at the bottom, then the simulator's modules (`crates/sim`,
+//! `pressridge-sim`, re-exported by `pressridge` under their own names), then the root
+//! crate's (`src/`: tables, files, figures, campaigns), and the C ABI above it all
+//! (`crates/capi`). Within a crate the layers are checked from the sources as text (comments
+//! left out), so a new upward import fails here, naming the file; between crates the
+//! manifests hold them: the column crate names no crate of the workspace, the simulator's
+//! only the column crate (checked here too), so neither can import anything above it.
 
 use std::collections::BTreeSet;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 /// Bottom to top; a module may use only modules of the layers before its own.
 const LAYERS: &[&[&str]] = &[
@@ -20,6 +23,19 @@ const LAYERS: &[&[&str]] = &[
     &["table"],
     &["io"],
     &["plot", "campaign"],
+];
+
+/// The modules of `LAYERS` that are the simulator's crate (`crates/sim/src`); the rest but
+/// `itd` are the root crate's (`src/`).
+const SIM: &[&str] = &[
+    "limits",
+    "eta",
+    "energy",
+    "dem",
+    "scene",
+    "observe",
+    "simulation",
+    "record",
 ];
 
 fn layer_of(module: &str) -> Option<usize> {
@@ -38,34 +54,43 @@ fn sources(dir: &Path, out: &mut Vec<std::path::PathBuf>) {
     }
 }
 
-/// `src/` and every `.rs` file under it.
-fn src_files() -> (std::path::PathBuf, Vec<std::path::PathBuf>) {
-    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+/// The root of the repository (this file's package).
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// `dir` and every `.rs` file under it.
+fn files_of(dir: PathBuf) -> (PathBuf, Vec<PathBuf>) {
     let mut files = Vec::new();
-    sources(&src, &mut files);
-    (src, files)
+    sources(&dir, &mut files);
+    (dir, files)
+}
+
+/// `src/` and every `.rs` file under it.
+fn src_files() -> (PathBuf, Vec<PathBuf>) {
+    files_of(root().join("src"))
 }
 
 /// The workspace's crates apart from the root one: `crates/<name>/src` and its files.
-fn crate_files() -> Vec<(std::path::PathBuf, Vec<std::path::PathBuf>)> {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("crates");
+fn crate_files() -> Vec<(PathBuf, Vec<PathBuf>)> {
     let mut out = Vec::new();
-    for e in std::fs::read_dir(&root).unwrap() {
-        let src = e.unwrap().path().join("src");
-        let mut files = Vec::new();
-        sources(&src, &mut files);
-        out.push((src, files));
+    for e in std::fs::read_dir(root().join("crates")).unwrap() {
+        out.push(files_of(e.unwrap().path().join("src")));
     }
     out
 }
 
-#[test]
-fn no_import_points_up() {
-    let (src, files) = src_files();
-    let mut bad = BTreeSet::new();
-    let mut seen = BTreeSet::new();
-    for f in &files {
-        let rel = f.strip_prefix(&src).unwrap();
+/// The `crate::` paths of `files` (under `src`, shown as `shown/...`) that name no module of a
+/// lower layer; the top-level modules seen, each checked to live in the crate `in_sim` says.
+fn upward_imports(
+    shown: &str,
+    (src, files): &(PathBuf, Vec<PathBuf>),
+    in_sim: bool,
+    bad: &mut BTreeSet<String>,
+    seen: &mut BTreeSet<String>,
+) {
+    for f in files {
+        let rel = f.strip_prefix(src).unwrap();
         let first = rel
             .components()
             .next()
@@ -76,10 +101,18 @@ fn no_import_points_up() {
         if top == "lib" || top == "bin" {
             continue;
         }
-        assert!(top != "itd", "src/itd: the column physics is crates/column");
+        assert!(
+            top != "itd",
+            "{shown}/itd: the column physics is crates/column"
+        );
         let own = layer_of(&top).unwrap_or_else(|| {
-            panic!("src/{top}: not in a layer of tests/layers.rs (and docs/architecture.md)")
+            panic!("{shown}/{top}: not in a layer of tests/layers.rs (and docs/architecture.md)")
         });
+        assert_eq!(
+            SIM.contains(&top.as_str()),
+            in_sim,
+            "{shown}/{top}: in the wrong crate (tests/layers.rs's SIM lists the simulator's)"
+        );
         seen.insert(top.clone());
         let text = std::fs::read_to_string(f).unwrap();
         for line in text.lines().filter(|l| !l.trim_start().starts_with("//")) {
@@ -95,12 +128,21 @@ fn no_import_points_up() {
                 match layer_of(&name) {
                     Some(l) if l < own => {}
                     _ => {
-                        bad.insert(format!("src/{}: uses crate::{name}", rel.display()));
+                        bad.insert(format!("{shown}/{}: uses crate::{name}", rel.display()));
                     }
                 }
             }
         }
     }
+}
+
+#[test]
+fn no_import_points_up() {
+    let mut bad = BTreeSet::new();
+    let mut seen = BTreeSet::new();
+    let sim = files_of(root().join("crates/sim/src"));
+    upward_imports("crates/sim/src", &sim, true, &mut bad, &mut seen);
+    upward_imports("src", &src_files(), false, &mut bad, &mut seen);
     assert!(
         bad.is_empty(),
         "imports that point up or sideways:\n{bad:#?}"
@@ -110,16 +152,59 @@ fn no_import_points_up() {
     for m in LAYERS.iter().flat_map(|l| l.iter()) {
         assert!(
             seen.contains(*m),
-            "{m} is listed but is not a module of src/"
+            "{m} is listed but is not a module of src/ or crates/sim/src/"
         );
     }
+}
+
+/// The `[dependencies]` of the manifest `crates/<name>/Cargo.toml`, by name.
+fn dependencies(name: &str) -> Vec<String> {
+    let text =
+        std::fs::read_to_string(root().join("crates").join(name).join("Cargo.toml")).unwrap();
+    let mut out = Vec::new();
+    let mut within = false;
+    for line in text.lines().map(str::trim) {
+        if line.starts_with('[') {
+            within = line == "[dependencies]";
+        } else if within && !line.is_empty() && !line.starts_with('#') {
+            out.push(line.split(['=', ' ', '.']).next().unwrap().to_string());
+        }
+    }
+    out
+}
+
+/// The manifests hold the layers between crates: the column crate names no crate of the
+/// workspace, the simulator only the column crate, and neither the file formats (NetCDF),
+/// arrays (ndarray, which the column crate's batched views alone use), figures or the
+/// command line that belong to the crates above.
+#[test]
+fn the_lower_crates_cannot_import_upwards() {
+    let column = dependencies("column");
+    assert!(
+        column.iter().all(|d| !d.starts_with("pressridge")),
+        "crates/column depends on {column:?}"
+    );
+    let sim = dependencies("sim");
+    let above = [
+        "pressridge",
+        "pressridge-capi",
+        "netcdf",
+        "ndarray",
+        "plotters",
+        "clap",
+    ];
+    assert!(
+        sim.iter().any(|d| d == "pressridge-column")
+            && sim.iter().all(|d| !above.contains(&d.as_str())),
+        "crates/sim depends on {sim:?}"
+    );
 }
 
 /// A module per concern, none long: no source file under `src/` or `crates/*/src/` is over
 /// 600 lines.
 #[test]
 fn no_source_file_is_over_600_lines() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = root();
     let mut all = crate_files();
     all.push(src_files());
     let long: Vec<String> = all
@@ -133,11 +218,12 @@ fn no_source_file_is_over_600_lines() {
     assert!(long.is_empty(), "split these: {long:?}");
 }
 
-/// One public path per name: the simulator's modules are private behind their `pub use` front
-/// (`src/dem/mod.rs`), the column crate's behind its `lib.rs` (only its `limits` and `interp`
+/// One public path per name within a crate: the simulator's modules are private behind their
+/// `pub use` front (`crates/sim/src/dem/mod.rs`), the column crate's behind its `lib.rs` (only its `limits` and `interp`
 /// are modules of their own), the C ABI's functions each in the one module of its topic (C
 /// sees them flat), and no module re-exports another top-level module's public items
-/// (`pub use crate::…`), which would give them a second path.
+/// (`pub use crate::…`), which would give them a second path. (The root crate's re-exports of
+/// the simulator's and the column crate's modules are the one path of each there.)
 /// `scripts/public-items.sh` lists any second path rustdoc sees.
 #[test]
 fn one_public_path_per_name() {
@@ -147,8 +233,7 @@ fn one_public_path_per_name() {
         let rel = f.strip_prefix(&src).unwrap().display().to_string();
         let text = std::fs::read_to_string(f).unwrap();
         for line in text.lines().map(str::trim_start) {
-            let front = rel.starts_with("dem/");
-            if line.starts_with("pub use crate::") || (front && line.starts_with("pub mod ")) {
+            if line.starts_with("pub use crate::") {
                 bad.push(format!("src/{rel}: {line}"));
             }
         }
@@ -160,6 +245,7 @@ fn one_public_path_per_name() {
             for line in text.lines().map(str::trim_start) {
                 let modules: &[&str] = match src.parent().and_then(|c| c.file_name()) {
                     Some(c) if c == "column" => &["interp", "limits"],
+                    Some(c) if c == "sim" => SIM,
                     Some(c) if c == "capi" => {
                         &["itd", "mu_rdg_table", "ridge_step", "scene", "tables"]
                     }
@@ -169,7 +255,8 @@ fn one_public_path_per_name() {
                     && modules
                         .iter()
                         .any(|m| line.starts_with(&format!("pub mod {m};")));
-                if line.starts_with("pub mod ") && !allowed {
+                if (line.starts_with("pub mod ") && !allowed) || line.starts_with("pub use crate::")
+                {
                     bad.push(format!("{}: {line}", f.display()));
                 }
             }

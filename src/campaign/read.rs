@@ -96,7 +96,7 @@ pub fn read_campaign(out: &Path, allow_partial: bool) -> Result<CampaignRecords,
                 continue;
             }
         };
-        if let Err(why) = r.verify(out, &id) {
+        if let Err(why) = super::verify_record(&r, out, &id) {
             c.inconsistent.push((id, why));
             continue;
         }

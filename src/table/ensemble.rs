@@ -297,7 +297,7 @@ mod tests {
     /// description, with the run summary's value; no key is there twice.
     #[test]
     fn the_ledger_quantities_come_from_the_table() {
-        let mut json = crate::simulation::summary_without_ledger();
+        let mut json = crate::table::summary_without_ledger();
         for (k, t) in LEDGER_TERMS.iter().enumerate() {
             json[t.name] = (k as f64 + 1.0).into();
         }

@@ -175,7 +175,7 @@ mod tests {
     /// the floe by `overrun` m.
     fn record(floe_length: Option<f64>, thickness: f64, overrun: f64) -> RunRecord {
         let floe_thickness = (thickness * 20.0 / 3.0).max(2.0);
-        let mut json = crate::simulation::summary_without_ledger();
+        let mut json = crate::table::summary_without_ledger();
         for t in crate::energy::LEDGER_TERMS {
             json[t.name] = 0.0.into();
         }

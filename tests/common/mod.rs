@@ -5,7 +5,6 @@
 
 pub mod column;
 pub mod icepack;
-pub mod pair;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};

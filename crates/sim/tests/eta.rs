@@ -1,12 +1,12 @@
-//! The progress ETA (`pressridge::eta`, drawn by `simulate` and `campaign`) is right within
-//! 20 % once 10 % of the work is done, on synthetic workloads fed with synthetic times (no
-//! wall clock): a ridge run whose cost per simulated second triples as the rubble grows, a
-//! campaign of such runs on two threads, resumed, and a steady workload; with per-step
-//! jitter and a slow load swing such as a shared machine gives.
+//! The progress ETA (`pressridge_sim::eta`, drawn by `pressridge simulate` and `campaign`) is
+//! right within 20 % once 10 % of the work is done, on synthetic workloads fed with synthetic
+//! times (no wall clock): a ridge run whose cost per simulated second triples as the rubble
+//! grows, a campaign of such runs on two threads, resumed, and a steady workload; with
+//! per-step jitter and a slow load swing such as a shared machine gives.
 
-mod common;
-use common::Rng;
-use pressridge::eta::{Eta, Model};
+mod support;
+use pressridge_sim::eta::{Eta, Model};
+use support::Rng;
 
 /// Feeds `eta` a workload of `total` units done in `steps` equal steps, step `k` costing
 /// `cost(x)` seconds per unit at work `x`, times jitter (±20 %) and a slow swing (±`swing`

@@ -1,9 +1,11 @@
 //! Verification of the contact law, eqs (2)–(4), against rigid-body mechanics.
 
-use pressridge::dem::{ContactOnset, ContactParams, Dashpot, Drive, Shape, V2, World, WorldParams};
+use pressridge_sim::dem::{
+    ContactOnset, ContactParams, Dashpot, Drive, Shape, V2, World, WorldParams,
+};
 
-mod common;
-use common::pair::dry;
+mod support;
+use support::pair::dry;
 
 /// A 0.5 m × 0.3 m block resting on a fixed 20 m plank tilted by `alpha` (rad).
 /// Returns the world and the unit vector down the slope.
@@ -101,7 +103,7 @@ fn sliding_block_dissipates_mu_n_distance() {
 /// m), closing at 0.5 m/s each, in a world without gravity or water and with μ = μ_w = 0.5;
 /// the rest of the parameters from `params`.
 fn face_on_pair(params: WorldParams, shift: f64) -> World {
-    common::pair::face_on_pair(
+    support::pair::face_on_pair(
         WorldParams {
             contact: ContactParams {
                 mu: 0.5,

@@ -1,7 +1,7 @@
 //! The contact law tests' worlds: a dry world with one friction coefficient, and two blocks
 //! meeting face to face.
 
-use pressridge::dem::{ContactParams, Drive, Shape, V2, World, WorldParams};
+use pressridge_sim::dem::{ContactParams, Drive, Shape, V2, World, WorldParams};
 
 /// An empty world without water, with friction `mu` above and below the water line and
 /// gravity `gravity` (m/s²); everything else at its default.

@@ -1,8 +1,8 @@
 //! A pile of 200 blocks dropped into water between two walls: the whole contact, buoyancy
 //! and ledger machinery at once.
 
-use pressridge::dem::World;
-use pressridge::scene::Scene;
+use pressridge_sim::dem::World;
+use pressridge_sim::scene::Scene;
 
 /// Largest overlap between any two blocks as a fraction of the smaller block's area, and
 /// whether any block's centroid lies inside another block.

@@ -383,7 +383,7 @@ impl FloeSection {
 
     /// The nose ramp's run along the floe top (m): `nose_bevel / nose_slope`, exactly
     /// `nose_bevel` at 45°.
-    pub(crate) fn nose_run(&self) -> f64 {
+    pub fn nose_run(&self) -> f64 {
         if self.nose_slope == 1.0 {
             self.nose_bevel
         } else {

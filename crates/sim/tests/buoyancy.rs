@@ -1,6 +1,6 @@
 //! Verification of buoyancy and the leapfrog integrator against floating-body theory.
 
-use pressridge::dem::{Drive, Shape, V2, WaterParams, World, WorldParams};
+use pressridge_sim::dem::{Drive, Shape, V2, WaterParams, World, WorldParams};
 
 const RHO_I: f64 = 920.0;
 const RHO_W: f64 = 1010.0;
@@ -112,7 +112,7 @@ fn booked_potential_energy_matches_state_function() {
 /// k = ½·ρ_w·C_d·d and m = ρ_i·h per metre, and the drag dissipates ½·m·(v₀² − v(t)²).
 #[test]
 fn drag_acts_on_rubble_not_on_sheet_blocks() {
-    use pressridge::dem::{Block, DragBodies, Role};
+    use pressridge_sim::dem::{Block, DragBodies, Role};
     let mut dissipated = Vec::new();
     let (h, v0, t_end) = (0.3, 0.5, 1.0);
     let runs = [

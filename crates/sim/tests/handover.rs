@@ -1,12 +1,12 @@
-//! Contacts born overlapping (`pressridge::dem::contact`, "Contacts born from a severed
+//! Contacts born overlapping (`pressridge_sim::dem::contact`, "Contacts born from a severed
 //! joint"): blocks whose joint severs while their corners interpenetrate, and a sheet block
 //! grown where rubble already lies, must not be pushed apart by a pre-loaded contact. The
 //! signature of a pre-loaded contact is energy from nowhere: a contact born with area A
 //! pushes with k_ne·A and k_nv·A/dt at once, so the viscous contact "dissipation" turns
 //! negative and the blocks fly apart. With the overlap forgiven they stay put.
 
-use pressridge::dem::{Block, BodyId, Drive, JointMaterial, Role, V2, World, WorldParams};
-use pressridge::scene::Scene;
+use pressridge_sim::dem::{Block, BodyId, Drive, JointMaterial, Role, V2, World, WorldParams};
+use pressridge_sim::scene::Scene;
 
 const H: f64 = 0.30;
 const W: f64 = 0.25;

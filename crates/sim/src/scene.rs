@@ -19,8 +19,8 @@ use rand_xoshiro::Xoshiro256PlusPlus;
 use rand_xoshiro::rand_core::{Rng, SeedableRng};
 use serde::{Deserialize, Serialize};
 
-use crate::itd::limits::Range;
 use crate::limits;
+use pressridge_column::limits::Range;
 
 mod build;
 mod sections;
@@ -50,8 +50,8 @@ pub enum SceneError {
 /// An error loading a scene file with overrides ([`Scene::load`]).
 #[derive(Debug, thiserror::Error)]
 pub enum SceneLoadError {
-    /// The file could not be read (the same message as [`crate::io::IoError::Os`]; the
-    /// scene layer sits below `io`, so it keeps the path and the cause itself).
+    /// The file could not be read (the same message as `pressridge::io::IoError::Os`;
+    /// the scene layer sits below `io`, so it keeps the path and the cause itself).
     #[error("{}: {source}", path.display())]
     Read {
         /// The file.
@@ -171,7 +171,7 @@ impl Scene {
     /// `pressridge simulate --print-scene` prints every key with its default).
     ///
     /// ```
-    /// use pressridge::scene::Scene;
+    /// use pressridge_sim::scene::Scene;
     ///
     /// // A 2 m sheet, 0.30 m thick, pushed against a fixed wall for 1 s.
     /// let scene = Scene::from_toml(
@@ -191,7 +191,7 @@ impl Scene {
     /// assert!(Scene::from_toml("[sheet]\nthikness = 0.3").is_err()); // unknown key
     /// let world = scene.build()?; // the world at time zero, its time step derived
     /// assert!(world.dt() > 0.0); // s
-    /// # Ok::<(), pressridge::scene::SceneError>(())
+    /// # Ok::<(), pressridge_sim::scene::SceneError>(())
     /// ```
     pub fn from_toml(text: &str) -> Result<Scene, SceneError> {
         let s: Scene = toml::from_str(text).map_err(|e| {
@@ -206,14 +206,14 @@ impl Scene {
     /// The one loader of the command line, Python and campaigns.
     ///
     /// ```no_run
-    /// use pressridge::scene::Scene;
+    /// use pressridge_sim::scene::Scene;
     /// use std::path::Path;
     ///
     /// // As `pressridge simulate --scene ridge.toml --set duration=20 --set contact.mu=0.4`.
     /// let scene = Scene::load(Some(Path::new("ridge.toml")), &["duration=20", "contact.mu=0.4"])?;
     /// // The built-in default, the paper's Figure 5 experiment, run for 20 s.
     /// let figure5 = Scene::load(None, &["duration=20"])?;
-    /// # Ok::<(), pressridge::scene::SceneLoadError>(())
+    /// # Ok::<(), pressridge_sim::scene::SceneLoadError>(())
     /// ```
     pub fn load<S: AsRef<str>>(
         path: Option<&std::path::Path>,
@@ -245,7 +245,7 @@ impl Scene {
 
     /// The value of the dotted key `key` (e.g. `floe.thickness`), as TOML text; `None` when
     /// the scene has no such key (e.g. no floe).
-    pub(crate) fn value_at(&self, key: &str) -> Option<String> {
+    pub fn value_at(&self, key: &str) -> Option<String> {
         let doc: toml::Table = toml::from_str(&self.to_toml()).expect("a scene's own TOML");
         let mut parts = key.split('.');
         let mut v = doc.get(parts.next()?)?;
@@ -257,7 +257,7 @@ impl Scene {
 
     /// The scene as TOML without the dotted keys `keys` (those it lacks are ignored): what
     /// two scenes must share when they may differ in these keys.
-    pub(crate) fn toml_without(&self, keys: &[String]) -> String {
+    pub fn toml_without(&self, keys: &[String]) -> String {
         fn remove(doc: &mut toml::Table, key: &str) {
             match key.split_once('.') {
                 None => {

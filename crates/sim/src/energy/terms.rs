@@ -2,8 +2,8 @@
 //! description and the files that keep each term. Every face of the ledger is derived from
 //! it: the time series' columns ([`crate::simulation::series_columns`]), the run summary
 //! (`summary.json`) and a campaign's samples (`run.json`) through [`Terms`], the ensemble
-//! statistics ([`crate::table::ensemble::QUANTITIES`]), the NetCDF variables of the ledger
-//! terms a ridging table tabulates ([`crate::table::tabulate::RidgeTable::variables`]), the
+//! statistics (`pressridge::table::ensemble::QUANTITIES`), the NetCDF variables of the ledger
+//! terms a ridging table tabulates (`pressridge::table::tabulate::RidgeTable::variables`), the
 //! dissipation gate and the residual scale.
 
 use super::EnergyBudget;
@@ -496,7 +496,8 @@ mod tests {
     #[test]
     fn the_model_documents_every_term_in_order() {
         let doc =
-            std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/model.md")).unwrap();
+            std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/model.md"))
+                .unwrap();
         let section = doc
             .split("\n## Energy ledger")
             .nth(1)

@@ -1,8 +1,8 @@
 //! The intact lead-ice ridging experiment in short runs: the budget closes, the sheet breaks,
 //! hard cases stay finite, and runs are reproducible.
 
-use pressridge::scene::Scene;
-use pressridge::simulation::{self, RunOutput};
+use pressridge_sim::scene::Scene;
+use pressridge_sim::simulation::{self, RunOutput};
 
 fn run(sets: &[&str]) -> RunOutput {
     let scene = Scene::default().with_overrides(sets).unwrap();
@@ -126,7 +126,7 @@ fn ridging_is_reproducible_and_seed_dependent() {
 /// weighs 0.6·2.4·920·9.81 ≈ 13 kN per metre of floe.
 #[test]
 fn broken_floe_piece_subsides_at_most_half_a_metre() {
-    use pressridge::dem::{Role, V2};
+    use pressridge_sim::dem::{Role, V2};
     let scene = Scene::default()
         .with_overrides(&[
             "floe.length=1.0",

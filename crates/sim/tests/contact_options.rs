@@ -3,17 +3,17 @@
 //! (`contact.damping_law = "contact"`), and a block pushed up a ramp, whose locking angle is
 //! what the floe nose's slope (`floe.nose_slope`) decides.
 
-use pressridge::dem::{ContactParams, DampingLaw, Drive, Shape, V2, World, WorldParams};
+use pressridge_sim::dem::{ContactParams, DampingLaw, Drive, Shape, V2, World, WorldParams};
 
 const RHO_I: f64 = 920.0;
 const K_NE: f64 = 1e8;
 
-mod common;
+mod support;
 
 /// Two 1 m × 0.3 m blocks 2 cm apart face to face, closing at 0.5 m/s each, without gravity,
 /// water or friction, with the contact parameters `contact`.
 fn face_on_pair(contact: ContactParams) -> World {
-    common::pair::face_on_pair(
+    support::pair::face_on_pair(
         WorldParams {
             contact: ContactParams {
                 mu: 0.0,
@@ -214,7 +214,7 @@ fn a_corner_impact_has_the_restitution_of_its_own_damping() {
 /// dry with friction `mu`, pushed horizontally towards the uphill side by `p` (N/m) from
 /// t = 0.05 s. Returns how far it moved up the slope between 0.25 s and 0.75 s (m).
 fn pushed_up_ramp(mu: f64, alpha: f64, p: f64) -> f64 {
-    let mut w = common::pair::dry(mu, WorldParams::default().gravity);
+    let mut w = support::pair::dry(mu, WorldParams::default().gravity);
     let up = V2::new(alpha.cos(), alpha.sin());
     let n = up.perp();
     w.add_block(

@@ -35,7 +35,7 @@ impl Drive {
         omega: Some(0.0),
     };
     /// True when every degree of freedom is prescribed.
-    pub(crate) fn is_kinematic(&self) -> bool {
+    pub fn is_kinematic(&self) -> bool {
         self.u.is_some() && self.v.is_some() && self.omega.is_some()
     }
 }

@@ -2,7 +2,7 @@
 //! scene, the run summary, the ledger sampled at the campaign's interval, the final profile
 //! and ridge metrics. `campaign` writes and checks it, `table` reads it: it sits below both,
 //! so that no import runs upward (docs/architecture.md). How a record is found on disk and
-//! verified against its files stays in [`crate::campaign`].
+//! verified against its files stays in `pressridge::campaign`, in the crate above this one.
 
 use crate::energy::{EnergyBudget, Keep, LedgerTerm, TermSet, Terms};
 use crate::observe::{Profile, RidgeMetrics, RidgeSummary, ridged_strips};
@@ -100,7 +100,7 @@ pub struct RunRecord {
     /// Final ridge metrics.
     pub metrics: RidgeMetrics,
     /// Digests of what the run is and what it wrote, checked by
-    /// [`crate::campaign::read_campaign`] and [`crate::campaign::prepare_campaign`]. Absent
+    /// `pressridge::campaign::read_campaign` and `pressridge::campaign::prepare_campaign`. Absent
     /// in records written before digests were introduced.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub digest: Option<RunDigest>,
@@ -112,7 +112,7 @@ pub struct RunRecord {
 #[serde(deny_unknown_fields)]
 pub struct RunDigest {
     /// Digest of the run id, the seed and the resolved scene
-    /// ([`crate::campaign::scene_digest`]).
+    /// (`pressridge::campaign::scene_digest`).
     pub scene: String,
     /// The files the run wrote beside its record (file name, digest of its content).
     pub files: Vec<(String, String)>,

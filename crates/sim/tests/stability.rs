@@ -4,9 +4,9 @@
 //! finite, closes its budget within 1 % and keeps every dissipation non-negative at every
 //! sample.
 
-use pressridge::dem::{Dashpot, V2, WorldError};
-use pressridge::scene::{Scene, SceneError};
-use pressridge::simulation::{self, RunOutput};
+use pressridge_sim::dem::{Dashpot, V2, WorldError};
+use pressridge_sim::scene::{Scene, SceneError};
+use pressridge_sim::simulation::{self, RunOutput};
 
 /// A dissipation may be negative by this fraction of the work (round-off), no more.
 const SIGN_TOLERANCE: f64 = 1e-6;
@@ -244,7 +244,7 @@ fn the_joint_limit_is_within_10_percent_of_the_chain_s_true_limit() {
 /// (peak speed at most `bound`, m/s, from 1 mm/s), growing 10 % above it. Returns the
 /// limit (s).
 fn chain_limit_holds(dashpot: Dashpot, bound: f64) -> f64 {
-    use pressridge::dem::{Block, Drive, JointMaterial, Role, World, WorldParams};
+    use pressridge_sim::dem::{Block, Drive, JointMaterial, Role, World, WorldParams};
     let chain = |time_step: Option<f64>| {
         let mut p = WorldParams {
             gravity: 0.0,

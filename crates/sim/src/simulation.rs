@@ -1,6 +1,6 @@
 //! Running a scene: step the world to the scene's duration, sample the energy budget and the
-//! ridging force at the scene's interval, and summarise. No file formats here (see
-//! [`crate::io`]).
+//! ridging force at the scene's interval, and summarise. No file formats here (they are
+//! `pressridge::io`, in the crate above this one).
 
 use crate::dem::{Role, Snapshot, World};
 use crate::energy::{EnergyBudget, Keep, LEDGER_TERMS, LedgerTerm, N_TERMS, Sign, TermSet, Terms};
@@ -61,7 +61,7 @@ pub struct Summary {
     pub max_handover_overlap: f64,
     /// Largest distance by which the leading edge of the intact lead sheet passed the
     /// floe's nose, over every step (m; negative if it never reached it): the rafting
-    /// diagnostic ([`crate::table::rafting`]). Absent without a sheet and a floe, and in runs
+    /// diagnostic (`pressridge::table::rafting`). Absent without a sheet and a floe, and in runs
     /// made before it was recorded (2026-11-23).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub sheet_overrun_max: Option<f64>,

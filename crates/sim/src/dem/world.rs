@@ -45,7 +45,7 @@ pub use snapshot::{BodyState, Snapshot};
 /// forces in N/m and energies in J/m (per metre of depth).
 ///
 /// ```
-/// use pressridge::dem::{Block, Drive, JointMaterial, Role, V2, World, WorldParams};
+/// use pressridge_sim::dem::{Block, Drive, JointMaterial, Role, V2, World, WorldParams};
 ///
 /// // Two 0.25 m × 0.30 m blocks centred on the water line (y = 0 m), joined face to face:
 /// // the left one held, the right one free to sag under gravity and buoyancy.
@@ -68,7 +68,7 @@ pub use snapshot::{BodyState, Snapshot};
 /// let e = w.energy(); // J/m
 /// assert!(e.residual.abs() <= 1e-9 * e.largest_term()); // the ledger closes
 /// assert!(w.joints()[0].is_intact() && w.blocks_broken() == 0);
-/// # Ok::<(), pressridge::dem::WorldError>(())
+/// # Ok::<(), pressridge_sim::dem::WorldError>(())
 /// ```
 #[derive(Clone, Debug)]
 pub struct World {
@@ -218,7 +218,7 @@ impl World {
     /// [`World::set_velocity`], [`World::step`]), so that the energy ledger stays closed.
     ///
     /// ```
-    /// use pressridge::dem::{Block, Drive, Role, V2, World, WorldParams};
+    /// use pressridge_sim::dem::{Block, Drive, Role, V2, World, WorldParams};
     ///
     /// let mut w = World::new(WorldParams::default())?;
     /// let block = Block::new(0.25, 0.30, [0.0; 4]); // m: width, thickness, bevel legs
@@ -231,7 +231,7 @@ impl World {
     /// assert_eq!(b.len(), 1);
     /// assert!((b.mass[id as usize] - 920.0 * 0.25 * 0.30).abs() < 1e-9); // kg/m
     /// assert!(y.is_finite() && v.is_finite());
-    /// # Ok::<(), pressridge::dem::WorldError>(())
+    /// # Ok::<(), pressridge_sim::dem::WorldError>(())
     /// ```
     pub fn bodies(&self) -> &Bodies {
         &self.bodies

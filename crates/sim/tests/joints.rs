@@ -1,7 +1,7 @@
 //! Verification of the viscous-elastic joints (eq 1) and of flexural fracture against beam
 //! theory.
 
-use pressridge::dem::{
+use pressridge_sim::dem::{
     Block, BodyId, Drive, JointMaterial, Role, V2, WaterParams, World, WorldParams,
 };
 

@@ -345,7 +345,7 @@ pub(crate) fn flank_slopes(values: &[f64], x0: f64, dx: f64) -> (Option<f64>, Op
 /// summary's `rubble_block_lengths`) and the sheet thickness (m).
 ///
 /// ```
-/// use pressridge::{observe, scene::Scene, simulation};
+/// use pressridge_sim::{observe, scene::Scene, simulation};
 ///
 /// // A 3 m sheet (0.30 m thick) pushed against a 4 m floe for 3 s.
 /// let scene = Scene::from_toml("duration = 3.0\n[sheet]\nlength = 3.0\n[floe]\nlength = 4.0")?;

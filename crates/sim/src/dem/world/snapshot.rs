@@ -124,7 +124,7 @@ impl BodyState {
     }
 }
 
-/// The complete state of a [`World`], serialisable (JSON via [`crate::io`]).
+/// The complete state of a [`World`], serialisable (JSON files: `pressridge::io::state`).
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Snapshot {

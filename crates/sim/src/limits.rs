@@ -5,9 +5,9 @@
 //! ([`crate::scene::Scene::validate`]) and the campaign spec check against these, and their
 //! messages quote them. The time step itself is bounded by the simulator's stability limit
 //! ([`crate::dem`]), not here. The column physics' ranges (C_f, a category's thickness,
-//! μ_rdg) and the [`Range`] type are [`crate::itd::limits`].
+//! μ_rdg) and the [`Range`] type are [`pressridge_column::limits`].
 
-use crate::itd::limits::Range;
+use pressridge_column::limits::Range;
 
 /// Ice density ρ_i: sea ice is 720–940 kg/m³ (brine pockets and air make it lighter than
 /// pure ice, 917 kg/m³). It must also be below the water's density, or the ice sinks
