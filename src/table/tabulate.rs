@@ -556,7 +556,7 @@ mod tests {
         };
         let sheet = scene.sheet.as_mut().expect("a sheet");
         (sheet.thickness, sheet.speed) = (h, 0.25);
-        let mut json = crate::simulation::summary_without_ledger();
+        let mut json = crate::table::summary_without_ledger();
         for t in crate::energy::LEDGER_TERMS {
             json[t.name] = 0.0.into();
         }
