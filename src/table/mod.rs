@@ -32,14 +32,10 @@ pub mod redistribution;
 pub(crate) mod student_t;
 pub mod tabulate;
 
-/// A `summary.json` of a run at t = 1 s without its ledger terms, for the tests of the
-/// readers here (a copy of `pressridge_sim::simulation`'s, which is private to its tests).
+// The simulator's fixture of a `summary.json` without its ledger terms, for the tests of the
+// readers here (one file, included by path: test code cannot cross crates).
 #[cfg(test)]
-pub(crate) fn summary_without_ledger() -> serde_json::Value {
-    serde_json::json!({
-        "scene": "x", "seed": 1, "version": "v", "time": 1.0, "steps": 1, "dt": 1.0,
-        "wall_seconds": 0.0, "bodies": 0, "work_eq9": 0.5, "max_relative_residual": 0.0,
-        "ratio_work_to_pe": 0.0, "ridged_volume": 0.0, "blocks_broken": 0,
-        "rubble_block_lengths": []
-    })
-}
+#[path = "../../crates/sim/src/simulation/summary_fixture.rs"]
+mod summary_fixture;
+#[cfg(test)]
+pub(crate) use summary_fixture::summary_without_ledger;

@@ -281,22 +281,12 @@ pub fn names_in(dir: &Path) -> Vec<String> {
     v
 }
 
-/// A small deterministic pseudo-random generator (SplitMix64) for fuzzing and kill delays.
-pub struct Rng(pub u64);
-
-impl Rng {
-    pub fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    /// Uniform in 0..n.
-    pub fn below(&mut self, n: usize) -> usize {
-        (self.next() % n as u64) as usize
-    }
-}
+// A small deterministic pseudo-random generator (SplitMix64) for fuzzing and kill delays:
+// the simulator's tests' one, included by path.
+#[path = "../../crates/sim/tests/support/rng.rs"]
+mod rng;
+#[allow(unused_imports)] // not every test binary that includes this module draws noise
+pub use rng::Rng;
 
 /// A ridging table as `pressridge tabulate` lays out its friction grid, holding only
 /// `mu_rdg(thickness, mu, mu_w)` (m^0.5): two friction pairs, (μ, μ_w) = (0.4, 0.6) with

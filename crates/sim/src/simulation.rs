@@ -384,16 +384,10 @@ fn relative_residual(e: &EnergyBudget) -> f64 {
     }
 }
 
-/// A `summary.json` of a run at t = 1 s without its ledger terms, for tests.
 #[cfg(test)]
-pub(crate) fn summary_without_ledger() -> serde_json::Value {
-    serde_json::json!({
-        "scene": "x", "seed": 1, "version": "v", "time": 1.0, "steps": 1, "dt": 1.0,
-        "wall_seconds": 0.0, "bodies": 0, "work_eq9": 0.5, "max_relative_residual": 0.0,
-        "ratio_work_to_pe": 0.0, "ridged_volume": 0.0, "blocks_broken": 0,
-        "rubble_block_lengths": []
-    })
-}
+mod summary_fixture;
+#[cfg(test)]
+pub(crate) use summary_fixture::summary_without_ledger;
 
 #[cfg(test)]
 mod tests {
