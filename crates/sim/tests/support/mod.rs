@@ -7,4 +7,5 @@
 pub mod pair;
 
 mod rng;
+#[allow(unused_imports)] // not every test binary that includes this module draws noise
 pub use rng::Rng;
