@@ -16,6 +16,12 @@
 //! is taken as exact), and the worst closure residual |W − sinks| / largest term over all
 //! samples of all runs.
 //!
+//! A second table per thickness counts the rubble pieces at the end of a run by their length
+//! in blocks (1, 2, 3, 4, 5–6, 7 or more): per run, the reference's mean ± σ and each other
+//! configuration's difference from it with its 95 % Welch interval. It says which breaks a
+//! configuration adds: a joint severed in the sheet or in a long piece moves several classes,
+//! one that chips a single block off a piece's end adds to the first.
+//!
 //! ```sh
 //! cargo run --release --example speed_vs_error -- \
 //!     reference=runs/sve-reference implicit-0.8=runs/sve-implicit-0.8 > table.md
@@ -58,6 +64,65 @@ const QUANTITIES: [(&str, &str, bool); 10] = [
 ];
 
 type Groups = BTreeMap<String, Vec<RunRecord>>;
+
+/// The classes of the pieces table: length in blocks, from and to (inclusive).
+const PIECE_CLASSES: [(u32, u32, &str); 6] = [
+    (1, 1, "1 block"),
+    (2, 2, "2"),
+    (3, 3, "3"),
+    (4, 4, "4"),
+    (5, 6, "5–6"),
+    (7, u32::MAX, "≥ 7"),
+];
+
+/// Per class of [`PIECE_CLASSES`], then all: the run's rubble pieces at the end, counted by
+/// their length in blocks of the sheet's width.
+fn piece_counts(r: &RunRecord) -> Option<[f64; PIECE_CLASSES.len() + 1]> {
+    let w = r.scene.sheet.as_ref()?.block_width;
+    let mut n = [0.0; PIECE_CLASSES.len() + 1];
+    for &len in &r.summary.rubble_block_lengths {
+        let blocks = (len / w).round().max(1.0) as u32;
+        if let Some(k) = PIECE_CLASSES
+            .iter()
+            .position(|&(lo, hi, _)| (lo..=hi).contains(&blocks))
+        {
+            n[k] += 1.0;
+        }
+        n[PIECE_CLASSES.len()] += 1.0;
+    }
+    Some(n)
+}
+
+/// The pieces table of one point: see the module's doc.
+fn print_pieces(point: &str, configs: &[(String, Groups)], ref_runs: &[RunRecord]) {
+    let column = |runs: &[RunRecord], k: usize| {
+        let xs: Vec<f64> = runs.iter().filter_map(piece_counts).map(|n| n[k]).collect();
+        Stat::of(&xs)
+    };
+    println!("\nRubble pieces per run by length in blocks, {point}:\n");
+    print!("| configuration | runs |");
+    for (_, _, label) in PIECE_CLASSES {
+        print!(" {label} |");
+    }
+    println!(" all |");
+    println!("|{}", "---|".repeat(3 + PIECE_CLASSES.len()));
+    for (name, g) in configs {
+        let Some(runs) = g.get(point) else { continue };
+        print!("| {name} | {} |", runs.len());
+        for k in 0..=PIECE_CLASSES.len() {
+            let (a, b) = (column(ref_runs, k), column(runs, k));
+            if std::ptr::eq(runs.as_slice(), ref_runs) {
+                print!(" {:.1} ± {:.1} |", a.mean, a.std);
+            } else if a.n < 2 || b.n < 2 {
+                print!(" — |");
+            } else {
+                let (d, h) = a.welch_difference(&b);
+                print!(" {d:+.1} [{:+.1}, {:+.1}] |", d - h.abs(), d + h.abs());
+            }
+        }
+        println!();
+    }
+}
 
 /// The runs of campaign `dir` by point; with `only`, just the runs whose settings hold it,
 /// keyed without it.
@@ -213,6 +278,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             }
             println!(" {worst:.1e} |");
         }
+        print_pieces(point, &configs, ref_runs);
     }
     println!(
         "\nReference row: mean ± standard deviation σ over seeds (W, ΔPE in J/m; E_f/break, \
@@ -220,7 +286,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
          m). Other rows: difference of the mean from the reference mean in % of the \
          reference mean and in units of the reference's σ, each with its 95 % Welch \
          interval; for the quantities of issue 30's criterion, ✓: the interval lies within \
-         ±0.5 σ, ✗: wholly beyond it, ?: neither yet."
+         ±0.5 σ, ✗: wholly beyond it, ?: neither yet. Pieces tables: the reference's \
+         mean ± σ of the pieces per run, the others' difference in pieces per run with its \
+         95 % Welch interval."
     );
     Ok(())
 }

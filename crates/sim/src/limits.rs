@@ -93,7 +93,6 @@ pub const DURATION: Range = Range {
     unit: "s",
     why: "a run must take at least one step; a day is already ~1e8 steps",
 };
-/// Smallest non-zero bevel leg (m): a shorter one makes a degenerate corner edge that the
 /// Slope of a bevel, tan of its angle from the horizontal (dimensionless): about 6° to 84°.
 /// Flatter, a ramp of any drop runs over several blocks; steeper, it is a vertical face.
 pub const BEVEL_SLOPE: Range = Range {
@@ -103,7 +102,7 @@ pub const BEVEL_SLOPE: Range = Range {
     unit: "",
     why: "tan of the bevel's angle from the horizontal, about 6° to 84°",
 };
-
+/// Smallest non-zero bevel leg (m): a shorter one makes a degenerate corner edge that the
 /// polygon geometry cannot represent. A bevel is 0 (none) or at least this.
 pub const MIN_BEVEL: f64 = 1.0e-3;
 /// Most blocks a scene may start with (sheet, floe and pile together): memory and
