@@ -15,8 +15,8 @@ export PYO3_PYTHON="$VIRTUAL_ENV/bin/python"
 echo "== cargo clippy -p pressridge-python -- -D warnings"
 cargo clippy -p pressridge-python --all-targets -- -D warnings
 profile=${PRESSRIDGE_PROFILE:-release}
-echo "== cargo build --profile $profile -p pressridge -p pressridge-clib --bin pressridge --lib (the CLI and the C library the tests compare against)"
-cargo build --profile "$profile" -p pressridge -p pressridge-clib --bin pressridge --lib
+echo "== cargo build --profile $profile -p pressridge-cli -p pressridge-clib --bin pressridge --lib (the CLI and the C library the tests compare against)"
+cargo build --profile "$profile" -p pressridge-cli -p pressridge-clib --bin pressridge --lib
 echo "== maturin develop --profile $profile (python/ into .venv)"
 (cd python && maturin develop --profile "$profile" --quiet)
 

@@ -25,7 +25,12 @@
 //!   volume, eqs 13–16) for tabulation;
 //! - [`io`] — files (JSON states and summaries, CSV time series, NetCDF distributions);
 //! - [`campaign`] — seeded ensembles over parameter grids, resumable;
-//! - `plot` — figures (feature `plot`, on by default with `cli`).
+//! - `plot` — figures (feature `plot`, off by default; the command line turns it on).
+//!
+//! Above this crate: the command line `pressridge`, the crate `pressridge-cli` (`crates/cli`,
+//! one module per command, no physics), and the C ABI (`crates/capi`). This crate's default
+//! features are none: a host or a library user builds no argument parser, progress bars or
+//! plotting stack.
 //!
 //! ## Where to start
 //!
@@ -47,6 +52,8 @@
 //!   [`itd::ridge_step_batch()`].
 //! - C and Fortran hosts: the crate `pressridge-capi` (`crates/capi`, the C ABI and its
 //!   header `include/pressridge.h`), built as `libpressridge.{so,a}` by `crates/clib`.
+//! - The command line: the crate `pressridge-cli` (`crates/cli/src/main.rs`, one file per
+//!   command; `cargo build --release --bin pressridge`; `docs/cli.md`).
 //!
 //! ## Example: a run and its files
 //!

@@ -3,11 +3,13 @@
 //! each other. The layers run across the crates: the column physics (`crates/column`,
 //! re-exported as `crate::itd`) at the bottom, then the simulator's modules (`crates/sim`,
 //! `pressridge-sim`, re-exported by `pressridge` under their own names), then the root
-//! crate's (`src/`: tables, files, figures, campaigns), and the C ABI above it all
-//! (`crates/capi`). Within a crate the layers are checked from the sources as text (comments
+//! crate's (`src/`: tables, files, figures, campaigns), and the faces above it all: the C ABI
+//! (`crates/capi`) and the command line (`crates/cli`, `pressridge-cli`, the binary
+//! `pressridge`). Within a crate the layers are checked from the sources as text (comments
 //! left out), so a new upward import fails here, naming the file; between crates the
 //! manifests hold them: the column crate names no crate of the workspace, the simulator's
-//! only the column crate (checked here too), so neither can import anything above it.
+//! only the column crate (checked here too), so neither can import anything above it; the
+//! command line names only the library's crates, and no manifest names it.
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -98,7 +100,7 @@ fn upward_imports(
             .as_os_str()
             .to_string_lossy();
         let top = first.trim_end_matches(".rs").to_string();
-        if top == "lib" || top == "bin" {
+        if top == "lib" {
             continue;
         }
         assert!(
@@ -157,20 +159,25 @@ fn no_import_points_up() {
     }
 }
 
-/// The `[dependencies]` of the manifest `crates/<name>/Cargo.toml`, by name.
-fn dependencies(name: &str) -> Vec<String> {
-    let text =
-        std::fs::read_to_string(root().join("crates").join(name).join("Cargo.toml")).unwrap();
+/// The dependencies by name in the sections `sections` (e.g. `[dependencies]`) of the
+/// manifest `path` (relative to the repository's root).
+fn manifest_dependencies(path: &str, sections: &[&str]) -> Vec<String> {
+    let text = std::fs::read_to_string(root().join(path)).unwrap();
     let mut out = Vec::new();
     let mut within = false;
     for line in text.lines().map(str::trim) {
         if line.starts_with('[') {
-            within = line == "[dependencies]";
+            within = sections.contains(&line);
         } else if within && !line.is_empty() && !line.starts_with('#') {
             out.push(line.split(['=', ' ', '.']).next().unwrap().to_string());
         }
     }
     out
+}
+
+/// The `[dependencies]` of the manifest `crates/<name>/Cargo.toml`, by name.
+fn dependencies(name: &str) -> Vec<String> {
+    manifest_dependencies(&format!("crates/{name}/Cargo.toml"), &["[dependencies]"])
 }
 
 /// The manifests hold the layers between crates: the column crate names no crate of the
@@ -192,6 +199,8 @@ fn the_lower_crates_cannot_import_upwards() {
         "ndarray",
         "plotters",
         "clap",
+        "indicatif",
+        "pressridge-cli",
     ];
     assert!(
         sim.iter().any(|d| d == "pressridge-column")
@@ -200,8 +209,49 @@ fn the_lower_crates_cannot_import_upwards() {
     );
 }
 
-/// A module per concern, none long: no source file under `src/` or `crates/*/src/` is over
-/// 600 lines.
+/// The command line (`crates/cli`) is the top of the workspace: its manifest names, of the
+/// workspace's crates, only the library `pressridge`, the simulator and the column crate, and
+/// no manifest names it (as a dependency of any kind). The argument parser and the progress
+/// bars are its own: the library's manifest does not name them, so no crate that depends on
+/// the library builds them.
+#[test]
+fn the_command_line_is_the_top_and_its_dependencies_are_its_own() {
+    let all = [
+        "[dependencies]",
+        "[dev-dependencies]",
+        "[build-dependencies]",
+    ];
+    let cli = manifest_dependencies("crates/cli/Cargo.toml", &all);
+    let library = ["pressridge", "pressridge-sim", "pressridge-column"];
+    assert!(
+        cli.iter()
+            .filter(|d| d.starts_with("pressridge"))
+            .all(|d| library.contains(&d.as_str())),
+        "crates/cli depends on {cli:?}"
+    );
+    let mut manifests = vec!["Cargo.toml".to_string(), "python/Cargo.toml".to_string()];
+    for e in std::fs::read_dir(root().join("crates")).unwrap() {
+        let name = e.unwrap().file_name().to_string_lossy().into_owned();
+        manifests.push(format!("crates/{name}/Cargo.toml"));
+    }
+    for m in &manifests {
+        let deps = manifest_dependencies(m, &all);
+        assert!(
+            !deps.iter().any(|d| d == "pressridge-cli"),
+            "{m} depends on the command line"
+        );
+    }
+    let root_deps = manifest_dependencies("Cargo.toml", &["[dependencies]"]);
+    assert!(
+        root_deps
+            .iter()
+            .all(|d| !["clap", "indicatif"].contains(&d.as_str())),
+        "the library depends on the command line's {root_deps:?}"
+    );
+}
+
+/// A module per concern, none long: no source file under `src/` or `crates/*/src/` (the
+/// command line's `crates/cli/src/` too) is over 600 lines.
 #[test]
 fn no_source_file_is_over_600_lines() {
     let root = root();

@@ -1,20 +1,28 @@
-//! Helpers of the integration tests that run the command-line tool: the binary,
-//! scratch directories and small NetCDF inputs written value by value; the library's step
-//! of one column ([`column`]) and Icepack's reference cases ([`icepack`]).
+//! Helpers of the integration tests: the command-line binary (for the tests of crates/cli,
+//! which include this module by path, as those of crates/capi do), scratch directories and
+//! small NetCDF inputs written value by value; the library's step of one column ([`column`]),
+//! Icepack's reference cases ([`icepack`]) and a small gridded distribution ([`grid`]).
 #![allow(dead_code)]
 
 pub mod column;
+pub mod grid;
 pub mod icepack;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-/// The `pressridge` binary (HDF5 file locking is off for everything cargo runs: see
-/// `.cargo/config.toml`); only the root package's tests have it.
+/// The `pressridge` binary, run from the repository's root (relative paths such as
+/// `data/sample_itd.nc` name the repository's files). HDF5 file locking is off for
+/// everything cargo runs: see `.cargo/config.toml`. Only the tests of the crate that builds
+/// the binary, crates/cli, have it.
 pub fn bin() -> Command {
     match option_env!("CARGO_BIN_EXE_pressridge") {
-        Some(path) => Command::new(path),
-        None => panic!("the `pressridge` binary is the root package's: call bin() from its tests"),
+        Some(path) => {
+            let mut c = Command::new(path);
+            c.current_dir(repo());
+            c
+        }
+        None => panic!("the `pressridge` binary is crates/cli's: call bin() from its tests"),
     }
 }
 
@@ -257,6 +265,19 @@ pub fn good_itd() -> Vec<Var> {
         Var::f64("shear", &sp, vec![0.0; 6]).with_units("s-1"),
     ]
 }
+
+/// A tiny campaign spec: two thicknesses × two seeds of a 3-s run of an 8-m sheet, sampled
+/// every second (the campaign tests of the library and of the command line).
+pub const TINY_CAMPAIGN: &str = r#"
+name = "tiny"
+seeds = 2
+sample_interval = 1.0
+set = ["duration=3.0", "sheet.length=8.0", "floe.nose_slope=1.0"]
+
+[[axis]]
+keys = ["sheet.thickness", "sheet.block_width"]
+values = [[0.25, 0.25], [0.35, 0.25]]
+"#;
 
 /// Runs `pressridge simulate` with `args` into a fresh scratch directory for test `name`,
 /// asserts success and returns the directory.

@@ -1,6 +1,7 @@
 //! Failure behaviour of the C ABI (docs/failure.md): a path with a NUL inside and a scene
-//! that would run no step are refused with the parameter named; the command line's and the
-//! library's failure tests are the root package's `tests/failure.rs`.
+//! that would run no step are refused with the parameter named; the command line's failure
+//! tests are `crates/cli/tests/failure.rs`, the library's the root package's
+//! `tests/failure.rs`.
 
 #[path = "../../../tests/common/mod.rs"]
 mod common;

@@ -1,7 +1,7 @@
 //! Helpers of the simulator's integration tests: the contact law tests' worlds ([`pair`]) and
-//! a small seeded generator. The root package's helpers (the command-line binary, NetCDF
-//! inputs, the column step) are `tests/common/` of the repository: these tests need none of
-//! them, nor anything of the crates above this one.
+//! a small seeded generator. The repository's shared helpers (the command-line binary for
+//! crates/cli's tests, NetCDF inputs, the column step) are `tests/common/`: these tests need
+//! none of them, nor anything of the crates above this one.
 #![allow(dead_code)]
 
 pub mod pair;

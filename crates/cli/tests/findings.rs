@@ -2,18 +2,11 @@
 //! committed records: it runs in seconds, names every item, and fails when the runs an item
 //! needs are missing.
 
+#[path = "../../../tests/common/mod.rs"]
 mod common;
 
-use std::path::Path;
-
 fn findings(args: &[&str]) -> std::process::Output {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    common::bin()
-        .current_dir(root)
-        .arg("findings")
-        .args(args)
-        .output()
-        .unwrap()
+    common::bin().arg("findings").args(args).output().unwrap()
 }
 
 /// The decided model's table: `pressridge findings` on the built-in Figure 5 scene. Until
@@ -30,9 +23,7 @@ fn the_decided_models_table_is_the_page_or_the_page_says_it_is_not_run() {
             e.contains("the Figure 5 scene at") && e.contains("runs,"),
             "{e}"
         );
-        let page =
-            std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/findings.md"))
-                .unwrap();
+        let page = std::fs::read_to_string(common::repo().join("docs/findings.md")).unwrap();
         assert!(page.contains("does not exist yet"), "docs/findings.md");
     }
 }
@@ -118,8 +109,7 @@ fn check_table(args: &[&str], page: &str) {
         text.contains(" agree, ") && text.contains(" unresolved."),
         "{text}"
     );
-    let committed =
-        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(page)).unwrap();
+    let committed = std::fs::read_to_string(common::repo().join(page)).unwrap();
     assert!(
         committed.contains(text.trim()),
         "{page} is not the output of `pressridge findings {}`: regenerate it",
@@ -212,10 +202,8 @@ fn committed_register(dir: &str) -> String {
     let o = findings(&["--choices", dir]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let text = String::from_utf8_lossy(&o.stdout).into_owned();
-    let committed = std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("{dir}/register.md")),
-    )
-    .unwrap();
+    let committed =
+        std::fs::read_to_string(common::repo().join(format!("{dir}/register.md"))).unwrap();
     assert!(
         committed.contains(text.trim()),
         "{dir}/register.md is not the command's output: regenerate it with \

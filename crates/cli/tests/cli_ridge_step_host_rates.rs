@@ -15,6 +15,7 @@
     clippy::field_reassign_with_default
 )]
 
+#[path = "../../../tests/common/mod.rs"]
 mod common;
 
 use std::path::Path;

@@ -10,6 +10,7 @@
     clippy::field_reassign_with_default
 )]
 
+#[path = "../../../tests/common/mod.rs"]
 mod common;
 
 use std::path::Path;
@@ -416,7 +417,7 @@ fn incomplete_tracer_groups_and_misplaced_options_are_named() {
     // Options of the complete step on an area-volume file.
     let r = bin()
         .args(["ridge-step", "--input"])
-        .arg(concat!(env!("CARGO_MANIFEST_DIR"), "/data/sample_itd.nc"))
+        .arg(common::repo().join("data/sample_itd.nc"))
         .arg("--output")
         .arg(&out)
         .args(["--dt", "3600", "--ndtd", "2"])
@@ -602,8 +603,7 @@ fn thermodynamic_constants_from_options_and_file() {
     }
     assert!(global(&out, "parameter_overrides").contains("fsnowrdg=0.3"));
     // The docs' table and the command line's help list every constant with its units.
-    let docs =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/strength.md")).unwrap();
+    let docs = std::fs::read_to_string(common::repo().join("docs/strength.md")).unwrap();
     let help = bin().args(["ridge-step", "--help"]).output().unwrap();
     let help = String::from_utf8_lossy(&help.stdout);
     for f in pressridge::itd::RidgeStepParams::FIELDS {
@@ -640,7 +640,7 @@ fn thermodynamic_constants_from_options_and_file() {
     // Constants of the complete step on an area-volume file.
     let r = bin()
         .args(["ridge-step", "--input"])
-        .arg(concat!(env!("CARGO_MANIFEST_DIR"), "/data/sample_itd.nc"))
+        .arg(common::repo().join("data/sample_itd.nc"))
         .arg("--output")
         .arg(dir.join("bad.nc"))
         .args(["--dt", "3600", "--param", "rhos=300"])

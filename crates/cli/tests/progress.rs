@@ -1,6 +1,7 @@
 //! Progress on stderr when it is not a terminal (here: a pipe): lines with the elapsed
 //! time, the rate and an ETA every --progress-interval seconds; none with --quiet.
 
+#[path = "../../../tests/common/mod.rs"]
 mod common;
 use common::{bin, scratch};
 

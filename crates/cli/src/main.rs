@@ -1,8 +1,12 @@
-//! `pressridge`: the command-line face of the library. No physics lives here: each
-//! subcommand parses its arguments, calls the library and writes files.
+//! `pressridge`: the command-line face of the library, the crate `pressridge-cli`
+//! (`crates/cli`), whose binary keeps the name `pressridge`. No physics lives here: each
+//! subcommand parses its arguments, calls the library (`pressridge`, with its `plot` feature
+//! for the figures) and writes files. The commands are documented in `docs/cli.md`.
 //!
 //! Pattern: one file per subcommand (`simulate.rs`, `render.rs`, ...), each with an
 //! `Args` struct (clap `Args`) and `pub fn run(args: Args) -> Result<(), BoxError>`.
+
+#![warn(missing_docs)]
 
 use clap::{Parser, Subcommand};
 

@@ -2,6 +2,7 @@
 //! written by `simulate` itself as ridge.gif); a run directory without snapshots is refused
 //! with its name.
 
+#[path = "../../../tests/common/mod.rs"]
 mod common;
 use common::bin;
 

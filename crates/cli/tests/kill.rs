@@ -3,6 +3,7 @@
 //! the old file (or none) or a complete new one, never a partial one; a campaign resumed
 //! after kills completes with results identical to an uninterrupted one.
 
+#[path = "../../../tests/common/mod.rs"]
 mod common;
 
 use common::*;
@@ -155,7 +156,7 @@ fn killed_simulate_leaves_only_complete_files() {
     let cmd = || {
         let mut c = bin();
         c.args(["simulate", "--overwrite", "--scene"])
-            .arg(Path::new(env!("CARGO_MANIFEST_DIR")).join("data/scenes/rubble-pile.toml"))
+            .arg(common::repo().join("data/scenes/rubble-pile.toml"))
             .args(["--set", "pile.blocks=20", "--set", "pile.columns=5"])
             .args([
                 "--set",

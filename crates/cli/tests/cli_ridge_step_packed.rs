@@ -8,6 +8,7 @@
 // Per-category tables are indexed by number, as in Icepack.
 #![allow(clippy::needless_range_loop)]
 
+#[path = "../../../tests/common/mod.rs"]
 mod common;
 
 use std::path::Path;

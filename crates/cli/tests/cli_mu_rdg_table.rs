@@ -3,6 +3,7 @@
 //! the `--friction` pair. A table of one value equals `--param mu_rdg=` bit for bit; the
 //! table's nodes and the clamped columns are recorded; bad uses are refused by name.
 
+#[path = "../../../tests/common/mod.rs"]
 mod common;
 
 use std::path::Path;
