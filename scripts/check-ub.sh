@@ -43,7 +43,7 @@ case "$stage" in
     # path, which Miri cannot run, and its portable path is f64::exp. The batched strength's
     # lanes and unchecked gather run in crates/capi/tests/abi.rs below.
     cargo +nightly miri test -p pressridge-capi --lib
-    cargo +nightly miri test -p pressridge --lib -- dem::joint::lanes
+    cargo +nightly miri test -p pressridge-sim --lib -- dem::joint::lanes
     cargo +nightly miri test -p pressridge-column --lib -- strength
     echo "== miri: the C ABI called from Rust on in-memory data ($SECONDS s)"
     # Every test of crates/capi/tests/abi.rs (their sample grid is synthetic under Miri) but the two that
