@@ -32,9 +32,6 @@ pub(crate) struct JointSet {
     overflow: Vec<u64>,
     /// Joints severed in the last step (indices into `joints`).
     severed: Vec<usize>,
-    /// The joints that start a crack in this step, scratch of [`JointSet::advance`]:
-    /// index, top, bottom, the larger stress over strength.
-    starting: Vec<(usize, bool, bool, f64)>,
 }
 
 /// An empty slot of [`JointSet::partners`].
@@ -92,7 +89,6 @@ impl JointSet {
         }
         self.joints = joints;
         self.severed.clear();
-        self.starting.clear();
     }
     /// Records the intact pair (a, b).
     fn link(&mut self, a: u32, b: u32) {
@@ -193,9 +189,7 @@ impl JointSet {
     /// `step_mean` they are the mean of the last two poses' stresses, (σⁿ⁻¹ + σⁿ)/2 (the
     /// first step of a joint: σⁿ): for every mode of the leapfrog scheme that mean swings
     /// as far as the exact motion of the same energy, where σⁿ overshoots by 1/cos(θ/2)
-    /// (θ the mode's phase per step; docs/speed-vs-error.md). With `fracture_stagger`, of
-    /// two neighbouring joints (sharing a block) that would start in the same step only the
-    /// one with the larger stress over strength starts.
+    /// (θ the mode's phase per step; docs/speed-vs-error.md).
     pub(crate) fn advance(
         &mut self,
         crack_speed: f64,
@@ -205,7 +199,6 @@ impl JointSet {
     ) {
         let (incubation, step_mean, dt) = (num.incubation_time, num.fracture_step_mean, num.dt);
         self.severed.clear();
-        self.starting.clear();
         let gain = incubation.map(|tau| -(-dt / tau).exp_m1());
         for (k, j) in self.joints.iter_mut().enumerate() {
             if !j.is_intact() {
@@ -227,40 +220,16 @@ impl JointSet {
                     *f
                 }
             };
-            let top = !j.crack_top && s.top > j.mat.strength_top;
-            let bottom = !j.crack_bottom && s.bottom > j.mat.strength_bottom;
-            if top || bottom {
-                let ratio = (s.top / j.mat.strength_top).max(s.bottom / j.mat.strength_bottom);
-                self.starting.push((k, top, bottom, ratio));
+            if !j.crack_top && s.top > j.mat.strength_top {
+                j.crack_top = true;
             }
-        }
-        if num.fracture_stagger && self.starting.len() > 1 {
-            // Of two neighbours (sharing a block) starting in this step, the less loaded
-            // waits for the next test (ties: the lower index starts).
-            let joints = &self.joints;
-            let shares = |x: usize, y: usize| {
-                let (a, b) = (&joints[x], &joints[y]);
-                a.a == b.a || a.a == b.b || a.b == b.a || a.b == b.b
-            };
-            let all = self.starting.clone();
-            self.starting.retain(|&(k, _, _, r)| {
-                !all.iter()
-                    .any(|&(m, _, _, q)| m != k && shares(k, m) && (q > r || (q == r && m < k)))
-            });
-        }
-        for &(k, top, bottom, _) in &self.starting {
-            let j = &mut self.joints[k];
-            j.crack_top |= top;
-            j.crack_bottom |= bottom;
-            if j.crack_started < 0.0 {
+            if !j.crack_bottom && s.bottom > j.mat.strength_bottom {
+                j.crack_bottom = true;
+            }
+            if (j.crack_top || j.crack_bottom) && j.crack_started < 0.0 {
                 j.crack_started = time;
             }
-        }
-        let step = crack_speed * dt;
-        for (k, j) in self.joints.iter_mut().enumerate() {
-            if !j.is_intact() {
-                continue;
-            }
+            let step = crack_speed * dt;
             if j.crack_top {
                 j.s_hi -= step;
             }
@@ -329,7 +298,6 @@ mod tests {
             joint_dashpot: Dashpot::Explicit,
             incubation_time: incubation,
             fracture_step_mean: step_mean,
-            fracture_stagger: false,
         };
         for n in 1..=20_000 {
             set.joints[k].stress = SurfaceStress {
@@ -409,62 +377,6 @@ mod tests {
         let s_eq = 0.8 * strength / 2.0;
         assert!(first_crack_of(|n| s_eq * ys[n - 1], None, false, dt).is_some());
         assert!(first_crack_of(|n| s_eq * ys[n - 1], None, true, dt).is_none());
-    }
-
-    /// Two neighbouring joints (sharing block 1) over their strength in the same step:
-    /// without the stagger both start to crack; with it only the more loaded starts, and
-    /// the other starts at the next step if it is still over its strength. A joint with no
-    /// neighbour starting is not held back.
-    #[test]
-    fn the_stagger_starts_one_of_two_neighbouring_cracks_per_step() {
-        let mat = JointMaterial {
-            e_top: 1e8,
-            e_bottom: 1e8,
-            poisson: 0.3,
-            damping_fraction: 0.1,
-            strength_top: 5e5,
-            strength_bottom: 5e5,
-        };
-        let geometry = crate::dem::joint::JointGeometry {
-            pa: V2::new(0.125, 0.0),
-            pb: V2::new(-0.125, 0.0),
-            h: 0.3,
-            skeletal: 0.06,
-            gauge: 0.25,
-        };
-        let run = |stagger: bool| {
-            let mut set = JointSet::default();
-            for (a, b) in [(0, 1), (1, 2), (3, 4)] {
-                set.push(Joint::new(a, b, geometry, mat));
-            }
-            let num = StepNumerics {
-                dt: 1e-4,
-                contact_dashpot: Dashpot::Implicit,
-                contact_onset: crate::dem::ContactOnset::Area,
-                contact_dashpot_sweeps: 0,
-                joint_dashpot: Dashpot::Explicit,
-                incubation_time: None,
-                fracture_step_mean: false,
-                fracture_stagger: stagger,
-            };
-            let mut w = JointWork::default();
-            let mut started = vec![];
-            for (n, tops) in [[6e5, 5.5e5, 5.2e5], [6e5, 5.5e5, 5.2e5]]
-                .iter()
-                .enumerate()
-            {
-                for (j, &top) in set.joints.iter_mut().zip(tops) {
-                    j.stress = SurfaceStress { top, bottom: 0.0 };
-                }
-                set.advance(50.0, n as f64 * 1e-4, &num, &mut w);
-                started.push(set.joints.iter().map(|j| j.crack_top).collect::<Vec<_>>());
-            }
-            started
-        };
-        assert_eq!(run(false)[0], [true, true, true]);
-        let staggered = run(true);
-        assert_eq!(staggered[0], [true, false, true]);
-        assert_eq!(staggered[1], [true, true, true]);
     }
 
     /// The two-pose mean and the incubation time both filter the tested stress: a world

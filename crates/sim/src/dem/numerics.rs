@@ -85,6 +85,4 @@ pub(crate) struct StepNumerics {
     pub incubation_time: Option<f64>,
     /// Fracture tested on the mean stress of the last two poses (experimental).
     pub fracture_step_mean: bool,
-    /// Cracks at neighbouring joints started one per step (experimental).
-    pub fracture_stagger: bool,
 }

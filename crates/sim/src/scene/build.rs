@@ -20,7 +20,6 @@ impl Scene {
             crack_speed: self.joint.crack_speed,
             incubation_time: self.experimental.incubation_time,
             fracture_step_mean: self.experimental.fracture_step_mean,
-            fracture_stagger: self.experimental.fracture_stagger,
             water: self.water.enabled.then_some(WaterParams {
                 level: self.water.level,
                 density: self.water.density,

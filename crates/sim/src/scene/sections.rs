@@ -510,14 +510,6 @@ pub struct ExperimentalSection {
     /// Not with `incubation_time`.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub fracture_step_mean: bool,
-    /// Stagger the start of cracks at neighbouring joints: of two joints that share a block
-    /// and would both start to crack in the same step, only the one whose stress is the
-    /// larger fraction of its strength starts; the other is tested again at the next step,
-    /// once the load the first sheds has moved the blocks. Default false: every joint over
-    /// its strength starts. A probe of the step's fracture bias (docs/speed-vs-error.md,
-    /// "Where the single blocks come from").
-    #[serde(skip_serializing_if = "std::ops::Not::not")]
-    pub fracture_stagger: bool,
 }
 
 impl Default for ExperimentalSection {
@@ -530,7 +522,6 @@ impl Default for ExperimentalSection {
             contact_dashpot_sweeps: w.contact_dashpot_sweeps,
             incubation_time: w.incubation_time,
             fracture_step_mean: w.fracture_step_mean,
-            fracture_stagger: w.fracture_stagger,
         }
     }
 }

@@ -313,12 +313,3 @@ fn a_shallow_nose_ramp_widens_the_nose_block() {
             .all(|b| b.bevel_run.is_none())
     );
 }
-
-/// The staggered crack starts are off unless set, and then absent from the scene's TOML;
-/// `true` reaches the world, and a value that is not a boolean is refused by name.
-#[test]
-fn fracture_stagger_is_off_unless_set() {
-    assert!(!Scene::default().experimental.fracture_stagger);
-    let s = option_absent_unless_set("experimental.fracture_stagger", "true", &["2", "yes"]);
-    assert!(s.world_params().fracture_stagger);
-}

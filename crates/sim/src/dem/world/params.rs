@@ -65,10 +65,6 @@ pub struct WorldParams {
     /// the last one; see [`crate::scene::ExperimentalSection::fracture_step_mean`].
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub fracture_step_mean: bool,
-    /// Stagger the start of cracks at neighbouring joints; see
-    /// [`crate::scene::ExperimentalSection::fracture_stagger`].
-    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
-    pub fracture_stagger: bool,
     /// Mass-proportional numerical damping γ (1/s): F = −γ·m·v, M = −γ·I·ω. Default 0;
     /// used only to relax verification scenes to their static state.
     pub global_damping: f64,
@@ -90,7 +86,6 @@ impl Default for WorldParams {
             crack_speed: 50.0,
             incubation_time: None,
             fracture_step_mean: false,
-            fracture_stagger: false,
             global_damping: 0.0,
         }
     }
@@ -170,7 +165,6 @@ impl WorldParams {
             joint_dashpot: self.joint_dashpot,
             incubation_time: self.incubation_time,
             fracture_step_mean: self.fracture_step_mean,
-            fracture_stagger: self.fracture_stagger,
         }
     }
 
