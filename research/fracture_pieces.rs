@@ -3,8 +3,8 @@
 //! limit all in single-block rubble pieces. This program runs the Figure 5 scene at several
 //! steps and logs every severed joint: where (in the sheet, the floe or a rubble piece,
 //! by the role of its blocks just before), the sizes in blocks of the two pieces it leaves
-//! (the sheet counts as one long piece), the elastic surface stresses that started its
-//! crack, the height of the joint above the water line and its distance from the floe's
+//! (the sheet counts as one long piece), when and under which elastic surface stresses
+//! its crack started, the height of the joint above the water line and its distance from the floe's
 //! nose, and the contacts on the smaller side's blocks at that moment.
 //!
 //! Prints per step the breaks per seed by where and by the smaller side's size (1, 2, 3,
@@ -26,6 +26,8 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 /// One severed joint.
 struct Break {
     time: f64,
+    /// When its crack started (s).
+    started: f64,
     /// "sheet", "floe" or "rubble".
     place: &'static str,
     /// Sizes in blocks of the pieces on the joint's two sides after the break (the smaller
@@ -134,6 +136,7 @@ fn run(path: &std::path::Path, sets: &[String], duration: f64) -> Result<Vec<Bre
                     .rotate(bd.theta[j.a as usize].cos(), bd.theta[j.a as usize].sin());
             out.push(Break {
                 time: w.time(),
+                started: j.crack_started,
                 place,
                 sides: (na.min(nb), na.max(nb)),
                 stress: started[k],
@@ -197,7 +200,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     });
     let results = results.into_inner()?;
     let mut text = String::from(
-        "safety,seed,time_s,place,small_side,large_side,stress_top_pa,stress_bottom_pa,y_m,x_from_nose_m,contacts\n",
+        "safety,seed,time_s,crack_started_s,place,small_side,large_side,stress_top_pa,stress_bottom_pa,y_m,x_from_nose_m,contacts\n",
     );
     // Per safety: breaks per seed by place and by the smaller side's size.
     let mut table: BTreeMap<(u64, &str), f64> = BTreeMap::new();
@@ -212,8 +215,16 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             };
             writeln!(
                 text,
-                "{safety},{seed},{:.4},{},{},{large},{:.0},{:.0},{:.3},{:.3},{}",
-                b.time, b.place, b.sides.0, b.stress.0, b.stress.1, b.y, b.x_nose, b.contacts
+                "{safety},{seed},{:.4},{:.5},{},{},{large},{:.0},{:.0},{:.3},{:.3},{}",
+                b.time,
+                b.started,
+                b.place,
+                b.sides.0,
+                b.stress.0,
+                b.stress.1,
+                b.y,
+                b.x_nose,
+                b.contacts
             )?;
             let size = match b.sides.0 {
                 1 => "1",
