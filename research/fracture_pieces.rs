@@ -150,6 +150,35 @@ fn run(path: &std::path::Path, sets: &[String], duration: f64) -> Result<Vec<Bre
     Ok(out)
 }
 
+/// The CSV's header line.
+const HEADER: &str = "safety,seed,time_s,crack_started_s,place,small_side,large_side,stress_top_pa,stress_bottom_pa,y_m,x_from_nose_m,contacts\n";
+
+/// The CSV rows of one run's breaks.
+fn rows(safety: f64, seed: u64, breaks: &[Break]) -> String {
+    let mut text = String::new();
+    for b in breaks {
+        let large = if b.sides.1 == u32::MAX {
+            "sheet".to_string()
+        } else {
+            b.sides.1.to_string()
+        };
+        let _ = writeln!(
+            text,
+            "{safety},{seed},{:.4},{:.5},{},{},{large},{:.0},{:.0},{:.3},{:.3},{}",
+            b.time,
+            b.started,
+            b.place,
+            b.sides.0,
+            b.stress.0,
+            b.stress.1,
+            b.y,
+            b.x_nose,
+            b.contacts
+        );
+    }
+    text
+}
+
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let usage = "usage: fracture_pieces DURATION_S SEEDS SAFETY[,SAFETY...] THREADS OUT.csv [KEY=VALUE ...]";
@@ -166,10 +195,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let csv = std::path::PathBuf::from(&args[4]);
     let extra = &args[5..];
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data/scenes/figure5.toml");
-    let jobs: Vec<(f64, u64)> = safeties
-        .iter()
-        .flat_map(|&s| (1..=seeds).map(move |seed| (s, seed)))
+    // Seed by seed over the steps, each run's rows appended to OUT.csv.partial as it ends,
+    // so that a stopped study keeps its finished runs.
+    let jobs: Vec<(f64, u64)> = (1..=seeds)
+        .flat_map(|seed| safeties.iter().map(move |&s| (s, seed)))
         .collect();
+    let partial = csv.with_extension("csv.partial");
+    std::fs::write(&partial, HEADER)?;
+    let partial_lock = Mutex::new(());
     let results: Mutex<BTreeMap<usize, Result<Vec<Break>, String>>> = Mutex::default();
     let next = AtomicUsize::new(0);
     std::thread::scope(|sc| {
@@ -193,39 +226,32 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                             Err(e) => e.clone(),
                         }
                     );
+                    if let Ok(b) = &r {
+                        let _guard = partial_lock.lock().expect("no worker panics");
+                        let append = std::fs::OpenOptions::new()
+                            .append(true)
+                            .open(&partial)
+                            .and_then(|mut f| {
+                                std::io::Write::write_all(&mut f, rows(safety, seed, b).as_bytes())
+                            });
+                        if let Err(e) = append {
+                            eprintln!("{}: {e}", partial.display());
+                        }
+                    }
                     results.lock().expect("no worker panics").insert(k, r);
                 }
             });
         }
     });
     let results = results.into_inner()?;
-    let mut text = String::from(
-        "safety,seed,time_s,crack_started_s,place,small_side,large_side,stress_top_pa,stress_bottom_pa,y_m,x_from_nose_m,contacts\n",
-    );
+    let mut text = String::from(HEADER);
     // Per safety: breaks per seed by place and by the smaller side's size.
     let mut table: BTreeMap<(u64, &str), f64> = BTreeMap::new();
     for (k, r) in results {
         let (safety, seed) = jobs[k];
         let breaks = r?;
+        text.push_str(&rows(safety, seed, &breaks));
         for b in &breaks {
-            let large = if b.sides.1 == u32::MAX {
-                "sheet".to_string()
-            } else {
-                b.sides.1.to_string()
-            };
-            writeln!(
-                text,
-                "{safety},{seed},{:.4},{:.5},{},{},{large},{:.0},{:.0},{:.3},{:.3},{}",
-                b.time,
-                b.started,
-                b.place,
-                b.sides.0,
-                b.stress.0,
-                b.stress.1,
-                b.y,
-                b.x_nose,
-                b.contacts
-            )?;
             let size = match b.sides.0 {
                 1 => "1",
                 2 => "2",
