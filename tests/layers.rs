@@ -9,7 +9,9 @@
 //! left out), so a new upward import fails here, naming the file; between crates the
 //! manifests hold them: the column crate names no crate of the workspace, the simulator's
 //! only the column crate (checked here too), so neither can import anything above it; the
-//! command line names only the library's crates, and no manifest names it.
+//! command line names only the library's crates and the lab, no manifest names it, and the
+//! lab (`crates/lab`, `pressridge-lab`: findings, the choices register, the investigation
+//! programs) is named by the command line alone.
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -210,7 +212,8 @@ fn the_lower_crates_cannot_import_upwards() {
 }
 
 /// The command line (`crates/cli`) is the top of the workspace: its manifest names, of the
-/// workspace's crates, only the library `pressridge`, the simulator and the column crate, and
+/// workspace's crates, only the library `pressridge`, the simulator, the column crate and the
+/// lab (for `pressridge findings`), and
 /// no manifest names it (as a dependency of any kind). The argument parser and the progress
 /// bars are its own: the library's manifest does not name them, so no crate that depends on
 /// the library builds them.
@@ -222,7 +225,12 @@ fn the_command_line_is_the_top_and_its_dependencies_are_its_own() {
         "[build-dependencies]",
     ];
     let cli = manifest_dependencies("crates/cli/Cargo.toml", &all);
-    let library = ["pressridge", "pressridge-sim", "pressridge-column"];
+    let library = [
+        "pressridge",
+        "pressridge-sim",
+        "pressridge-column",
+        "pressridge-lab",
+    ];
     assert!(
         cli.iter()
             .filter(|d| d.starts_with("pressridge"))
@@ -240,6 +248,13 @@ fn the_command_line_is_the_top_and_its_dependencies_are_its_own() {
             !deps.iter().any(|d| d == "pressridge-cli"),
             "{m} depends on the command line"
         );
+        // The lab reads the products; of the products only the command line reads it.
+        if m != "crates/cli/Cargo.toml" {
+            assert!(
+                !deps.iter().any(|d| d == "pressridge-lab"),
+                "{m} depends on the lab"
+            );
+        }
     }
     let root_deps = manifest_dependencies("Cargo.toml", &["[dependencies]"]);
     assert!(
@@ -270,7 +285,7 @@ fn no_source_file_is_over_600_lines() {
 
 /// One public path per name within a crate: the simulator's modules are private behind their
 /// `pub use` front (`crates/sim/src/dem/mod.rs`), the column crate's behind its `lib.rs` (only its `limits` and `interp`
-/// are modules of their own), the C ABI's functions each in the one module of its topic (C
+/// are modules of their own), the lab's two modules (`findings`, `choices`), the C ABI's functions each in the one module of its topic (C
 /// sees them flat), and no module re-exports another top-level module's public items
 /// (`pub use crate::…`), which would give them a second path. (The root crate's re-exports of
 /// the simulator's and the column crate's modules are the one path of each there.)
@@ -299,6 +314,7 @@ fn one_public_path_per_name() {
                     Some(c) if c == "capi" => {
                         &["itd", "mu_rdg_table", "ridge_step", "scene", "tables"]
                     }
+                    Some(c) if c == "lab" => &["choices", "findings"],
                     _ => &[],
                 };
                 let allowed = rel == "lib.rs"

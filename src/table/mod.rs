@@ -9,10 +9,6 @@
 //! - [`crate::campaign::tabulation`] — campaign directories to a table: the pipeline of
 //!   `pressridge tabulate` and Python's `tabulate` (reading, pooling, rafting exclusion,
 //!   provenance);
-//! - [`choices`] — the measured effect of each open modelling choice (probe campaigns
-//!   against a baseline);
-//! - [`findings`] — the paper's stated findings tested on ensembles (the statement table of
-//!   `pressridge findings`);
 //! - [`rafting`] — which runs rafted over the floe instead of ridging against it;
 //! - [`redistribution`] — the thickness distribution of the simulated ridged ice, with
 //!   Lipscomb's exponential (μ_rdg) and Hibler's uniform (H*) fitted to it;
@@ -21,10 +17,8 @@
 //! - [`lookup`] — interpolation in a tabulated campaign (clamped and flagged outside its
 //!   range, NaN where no run reached), read back from NetCDF by `RidgeLookup::open`.
 
-pub mod choices;
 pub mod ensemble;
 pub mod fields;
-pub mod findings;
 pub mod fit;
 pub mod lookup;
 pub mod rafting;

@@ -1,11 +1,11 @@
 //! `pressridge findings`: the paper's stated findings tested on the runs of campaign
-//! directories (issue 30's statement table, `pressridge::table::findings`).
+//! directories (issue 30's statement table, `pressridge_lab::findings`).
 
 use crate::BoxError;
 use pressridge::campaign::{read_campaign, read_pooled};
 use pressridge::record::RunRecord;
-use pressridge::table::choices::effects;
-use pressridge::table::findings::{Register, evidence, findings, markdown, records_step};
+use pressridge_lab::choices::effects;
+use pressridge_lab::findings::{Register, evidence, findings, markdown, records_step};
 use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]

@@ -5,9 +5,9 @@
 //! A probe's runs are matched to the baseline's by their friction pair (μ, μ_w); the probe's
 //! own axis setting (e.g. `floe.nose_bevel=0.25`) names its row.
 
-use crate::record::RunRecord;
-use crate::table::ensemble::Stat;
-use crate::table::rafting::{Outcome, RAFTING_REACH, outcome};
+use pressridge::record::RunRecord;
+use pressridge::table::ensemble::Stat;
+use pressridge::table::rafting::{Outcome, RAFTING_REACH, outcome};
 use std::fmt::Write as _;
 
 /// One quantity of a run the register reports: (column label, value of a run, scale for
@@ -87,7 +87,7 @@ pub const QUANTITIES: [Quantity; 10] = [
 ];
 
 /// A share of the work (dimensionless): `part` over W.
-fn share(r: &RunRecord, part: fn(&crate::energy::EnergyBudget) -> f64) -> Option<f64> {
+fn share(r: &RunRecord, part: fn(&pressridge::energy::EnergyBudget) -> f64) -> Option<f64> {
     let e = r.summary.energy();
     (e.work != 0.0).then(|| part(&e) / e.work)
 }

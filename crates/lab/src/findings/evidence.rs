@@ -7,11 +7,11 @@
 use super::{
     FIGURE5, Finding, OTHER_SINKS_BOUND, Point, Verdict, interval, records_step, select, stat,
 };
-use crate::record::RunRecord;
-use crate::scene::Scene;
-use crate::table::choices::{at, by_setting, other_sinks_fraction, rafted_count};
-use crate::table::ensemble::Stat;
-use crate::table::rafting::{Outcome, RAFTING_REACH, outcome};
+use crate::choices::{at, by_setting, other_sinks_fraction, rafted_count};
+use pressridge::record::RunRecord;
+use pressridge::scene::Scene;
+use pressridge::table::ensemble::Stat;
+use pressridge::table::rafting::{Outcome, RAFTING_REACH, outcome};
 use std::fmt::Write as _;
 
 /// The probes of the register that take the experiment apart instead of reading a choice the

@@ -5,7 +5,7 @@
 //!
 //! For each time-step safety factor (0.125 … 1.0 of the stable limit) the Figure 5 scene is
 //! run with unbreakable joints (strengths 10 MPa) up to the release time, where the loading has
-//! converged in the step (`research/impact_stress.rs`). There the joint nearest to failure
+//! converged in the step (`crates/lab/research/impact_stress.rs`). There the joint nearest to failure
 //! (largest elastic stress over the scene's strength, top or bottom) is given a strength of
 //! 1 Pa, so that its crack starts at once and runs across it at the crack speed, while every
 //! other joint stays unbreakable. Printed: the joints' largest high-frequency stress over the

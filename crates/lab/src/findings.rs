@@ -16,13 +16,13 @@
 //! Intervals: Student's t for one ensemble's mean, Welch's t for a difference of two
 //! ensembles' means, the ordinary least-squares slope's t interval for a trend.
 
-use crate::energy::EnergyBudget;
-use crate::record::RunRecord;
-use crate::scene::Scene;
-use crate::table::choices::{other_sinks_fraction, phi_i};
-use crate::table::ensemble::Stat;
-use crate::table::fit::student_t_quantile;
-use crate::table::rafting::{Outcome, RAFTING_REACH, outcome};
+use crate::choices::{other_sinks_fraction, phi_i};
+use pressridge::energy::EnergyBudget;
+use pressridge::record::RunRecord;
+use pressridge::scene::Scene;
+use pressridge::table::ensemble::Stat;
+use pressridge::table::fit::student_t_quantile;
+use pressridge::table::rafting::{Outcome, RAFTING_REACH, outcome};
 use std::fmt::Write as _;
 
 mod energy;
