@@ -22,7 +22,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let duration: f64 = args.first().map_or(Ok(400.0), |s| s.parse())?;
     let window: f64 = args.get(1).map_or(Ok(1.0), |s| s.parse())?;
     let sets = args.get(2..).unwrap_or_default().to_vec();
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data/scenes/figure5.toml");
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/scenes/figure5.toml");
     let scene = Scene::load(Some(&path), &sets)?;
     let sh = scene.sheet.clone().ok_or("the scene has no sheet")?;
     let visc = sh.boundary_viscosity(&scene.contact, scene.ice.density);

@@ -194,7 +194,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let threads: usize = args[3].parse()?;
     let csv = std::path::PathBuf::from(&args[4]);
     let extra = &args[5..];
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data/scenes/figure5.toml");
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/scenes/figure5.toml");
     // Seed by seed over the steps, each run's rows appended to OUT.csv.partial as it ends,
     // so that a stopped study keeps its finished runs.
     let jobs: Vec<(f64, u64)> = (1..=seeds)

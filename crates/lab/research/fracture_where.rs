@@ -21,7 +21,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let duration: f64 = args.first().map_or(Ok(40.0), |s| s.parse())?;
     let seeds: u64 = args.get(1).map_or(Ok(6), |s| s.parse())?;
     let extra = args.get(2..).unwrap_or_default();
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data/scenes/figure5.toml");
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/scenes/figure5.toml");
     println!(
         "| Δt / limit | seeds | in the sheet | in the floe | in rubble | contacts born overlapping | per seed (sheet/floe/rubble) |"
     );

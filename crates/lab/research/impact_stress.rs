@@ -25,7 +25,8 @@ fn world(
     extra: &[String],
     unbreakable: bool,
 ) -> Result<World, Box<dyn std::error::Error>> {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data/scenes/figure5.toml");
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/scenes/figure5.toml");
     let mut sets = vec![format!("numerics.time_step_safety={safety}")];
     if unbreakable {
         sets.push("sheet.strength_top=1e7".into());

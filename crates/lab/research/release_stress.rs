@@ -48,7 +48,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let release: f64 = args.first().map_or(Ok(2.5), |s| s.parse())?;
     let window: f64 = args.get(1).map_or(Ok(0.2), |s| s.parse())?;
     let extra = args.get(2..).unwrap_or_default();
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data/scenes/figure5.toml");
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/scenes/figure5.toml");
     println!(
         "| Δt / limit | Δt (s) | high-frequency stress before (kPa) | joint released | others before (σ/S) | others after, largest (σ/S) | at (s) | released joint severed at (s) |"
     );
