@@ -278,7 +278,7 @@ pub fn run_world(
                     *o = o.max(x);
                 }
                 if speed > 0.0 {
-                    work_eq9 += speed * world.dt() * world.ridging_force();
+                    work_eq9 += speed * world.last_step() * world.ridging_force();
                 }
                 if world.time() >= next - 0.5 * world.dt() {
                     return;

@@ -195,6 +195,8 @@ struct PairLaw<'a> {
     p: &'a ContactParams,
     k_nv: f64,
     water_level: Option<f64>,
+    /// The time since the last pose (s, [`StepNumerics::dt_prev`]): eq (3)'s rate and eq
+    /// (4)'s increment are over it.
     dt: f64,
     onset: ContactOnset,
     k_ne: f64,
@@ -209,7 +211,7 @@ impl<'a> PairLaw<'a> {
             p,
             k_nv: law.k_nv,
             water_level: law.water_level,
-            dt: num.dt,
+            dt: num.dt_prev,
             onset: num.contact_onset,
             k_ne: p.normal_stiffness,
             k_te_per_chord: p.tangential_stiffness_per_chord(),
@@ -354,7 +356,12 @@ impl ContactSet {
         work: &mut ContactWork,
         pool: Option<&rayon::ThreadPool>,
     ) {
-        let (dt, dashpot, sweeps) = (num.dt, num.contact_dashpot, num.contact_dashpot_sweeps);
+        let (dt, kick, dashpot, sweeps) = (
+            num.dt,
+            num.kick,
+            num.contact_dashpot,
+            num.contact_dashpot_sweeps,
+        );
         let law = PairLaw::new(law, num);
         // The overlap geometry, the bulk of the work, pair by pair on the pool's threads;
         // everything that sums follows in pair order below, so the bits do not depend on
@@ -431,14 +438,14 @@ impl ContactSet {
             j += 1;
         }
         if dashpot == Dashpot::Implicit && sweeps > 0 {
-            self.sweep_dashpots(bodies, dt, sweeps, work);
+            self.sweep_dashpots(bodies, kick, sweeps, work);
         } else if dashpot == Dashpot::Implicit {
             // Pass 2: every force but the contacts' viscous and friction forces is in
             // `bodies.force`. The pair's mid-step approach speed is
             // ū = u⁻ − ½·Δt·(aₙ + κ·F_v), aₙ the relative acceleration along n of the
             // contact points from those forces; F_v = c·ū, solved for F_v.
             for (c, q) in self.cur.iter_mut().zip(&self.pending) {
-                let fv = centred_viscous(bodies, c, q, dt);
+                let fv = centred_viscous(bodies, c, q, kick);
                 c.close(fv, q.mu, q.slip, q.k_te, work);
             }
             // Pass 3: apply them.

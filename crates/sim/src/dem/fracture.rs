@@ -143,6 +143,12 @@ impl JointSet {
     pub fn severed(&self) -> &[usize] {
         &self.severed
     }
+    /// True when a crack runs in some joint that is not yet severed.
+    pub fn any_cracking(&self) -> bool {
+        self.joints
+            .iter()
+            .any(|j| j.is_intact() && (j.crack_top || j.crack_bottom))
+    }
     /// True when there is no joint.
     pub fn is_empty(&self) -> bool {
         self.joints.is_empty()
@@ -292,6 +298,8 @@ mod tests {
         let mut w = JointWork::default();
         let num = StepNumerics {
             dt,
+            dt_prev: dt,
+            kick: dt,
             contact_dashpot: Dashpot::Implicit,
             contact_onset: crate::dem::ContactOnset::Area,
             contact_dashpot_sweeps: 0,

@@ -71,8 +71,16 @@ impl Dashpot {
 /// that needs them (contacts, joints, fracture), so that none takes them one by one.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct StepNumerics {
-    /// The time step Δt (s).
+    /// The time step Δt (s): this step's drift of the poses, xⁿ⁺¹ = xⁿ + Δt·vⁿ⁺½.
     pub dt: f64,
+    /// The previous step's Δt (s): the time between the last pose and this one, over which
+    /// the rates of eq (3) and the tangential increment of eq (4) are read. Equal to `dt`
+    /// unless the step changes ([`crate::dem::WorldParams::refine_window`]).
+    pub dt_prev: f64,
+    /// The kick of the velocities (s), ½·(Δtⁿ⁻¹ + Δtⁿ), the time between the two half-step
+    /// velocities: vⁿ⁺½ = vⁿ⁻½ + kick·F/m keeps the leapfrog second order where the step
+    /// changes. The ledger books each force's work over it. Equal to `dt` at a constant step.
+    pub kick: f64,
     /// How eq (3)'s contact dashpot is advanced.
     pub contact_dashpot: Dashpot,
     /// How a new contact reads its first overlap rate.

@@ -87,6 +87,12 @@ pub struct World {
     blocks_broken: u64,
     handovers: Handovers,
     dt: f64,
+    /// The last step's Δt (s), 0 before the first: what the next step's rates are read
+    /// over and its kick averages with ([`crate::dem::numerics::StepNumerics`]).
+    last_dt: f64,
+    /// With [`WorldParams::refine_window`]: the time (s) until which steps are refined,
+    /// from the last severed joint.
+    refine_until: f64,
     time: f64,
     steps: u64,
     /// Set when a step produced a non-finite state; the world then no longer steps.
@@ -124,6 +130,8 @@ impl World {
             blocks_broken: 0,
             handovers: Handovers::default(),
             dt: 0.0,
+            last_dt: 0.0,
+            refine_until: f64::NEG_INFINITY,
             time: 0.0,
             steps: 0,
             fault: None,
@@ -380,25 +388,51 @@ impl World {
     /// mid-step velocities (eqs 9–12, `book_ledger`), the positions (eq 6) and fracture
     /// (`advance_positions`).
     pub fn step(&mut self) {
-        let dt = self.dt;
-        if dt.is_nan() || dt <= 0.0 || dt.is_infinite() || self.fault.is_some() {
+        if self.dt.is_nan() || self.dt <= 0.0 || self.dt.is_infinite() || self.fault.is_some() {
             return;
         }
-        let num = self.params.step_numerics(dt);
+        let dt = self.step_length();
+        let dt_prev = if self.last_dt > 0.0 { self.last_dt } else { dt };
+        let num = self.params.step_numerics(dt, dt_prev);
         self.gather_forces(&num);
-        let driver = self.integrate(dt);
+        let driver = self.integrate(num.kick);
         if self.fault.is_some() {
             return;
         }
-        self.book_ledger(dt, driver);
+        self.book_ledger(num.kick, driver);
         self.advance_positions(&num);
+        self.last_dt = dt;
+    }
+
+    /// This step's Δt (s): [`World::dt`], or its [`WorldParams::refine_fraction`] while a
+    /// joint is cracking or within [`WorldParams::refine_window`] of the last severed joint.
+    fn step_length(&self) -> f64 {
+        match self.params.refine_window {
+            Some(_) if self.time < self.refine_until || self.joints.any_cracking() => {
+                self.dt
+                    * self
+                        .params
+                        .refine_fraction
+                        .unwrap_or(params::DEFAULT_REFINE_FRACTION)
+            }
+            _ => self.dt,
+        }
+    }
+
+    /// The length of the last step taken (s); [`World::dt`] before the first and whenever
+    /// the step is not refined ([`WorldParams::refine_window`]).
+    pub fn last_step(&self) -> f64 {
+        if self.last_dt > 0.0 {
+            self.last_dt
+        } else {
+            self.dt
+        }
     }
 
     /// Outlines at the present poses, then every force of the step into `bodies.force` and
     /// `bodies.torque`: gravity, buoyancy and drag, joints (eq 1), boundary conditions
     /// (eqs 7–8, floe supports), external loads, numerical damping, contacts (eqs 2–4).
     fn gather_forces(&mut self, num: &StepNumerics) {
-        let dt = num.dt;
         let n = self.bodies.len();
         let g = self.params.gravity;
         let pool = self.pool.as_deref();
@@ -447,11 +481,11 @@ impl World {
         self.contacts
             .update(b, pairs, &law, num, &mut self.acc.contact, pool);
         if num.joint_dashpot == Dashpot::Implicit {
-            self.joints.apply_viscous(b, dt);
+            self.joints.apply_viscous(b, num.kick);
         }
     }
 
-    /// Leapfrog velocities, eq (5); prescribed degrees of freedom take their value and the
+    /// Leapfrog velocities, eq (5), over the kick `dt` (s; [`StepNumerics::kick`]); prescribed degrees of freedom take their value and the
     /// driver supplies whatever force that takes. Keeps the velocities before the step and
     /// the mid-step velocities for the ledger; returns the driver's work (J/m). A
     /// non-finite velocity records the fault.
@@ -562,6 +596,9 @@ impl World {
                 &mut self.acc.joints,
             );
             if !self.joints.severed().is_empty() {
+                if let Some(w) = self.params.refine_window {
+                    self.refine_until = self.time + w;
+                }
                 self.after_fracture();
             }
         }

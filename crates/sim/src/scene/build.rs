@@ -20,6 +20,8 @@ impl Scene {
             crack_speed: self.joint.crack_speed,
             incubation_time: self.experimental.incubation_time,
             fracture_step_mean: self.experimental.fracture_step_mean,
+            refine_window: self.experimental.refine_window,
+            refine_fraction: self.experimental.refine_fraction,
             water: self.water.enabled.then_some(WaterParams {
                 level: self.water.level,
                 density: self.water.density,

@@ -108,6 +108,25 @@ impl Scene {
                 "filters the tested stress as experimental.incubation_time does: set one of them",
             );
         }
+        if let Some(w) = self.experimental.refine_window
+            && !(w >= 0.0 && w.is_finite())
+        {
+            return bad(
+                "experimental.refine_window",
+                "must be non-negative (s) when given",
+            );
+        }
+        if let Some(f) = self.experimental.refine_fraction {
+            if !(f > 0.0 && f <= 1.0) {
+                return bad("experimental.refine_fraction", "must be in (0, 1]");
+            }
+            if self.experimental.refine_window.is_none() {
+                return bad(
+                    "experimental.refine_fraction",
+                    "refines the step only with experimental.refine_window: set both",
+                );
+            }
+        }
         if self.output.snapshot_interval.is_nan() || self.output.snapshot_interval < 0.0 {
             return bad("output.snapshot_interval", "must be non-negative (s)");
         }

@@ -65,6 +65,16 @@ pub struct WorldParams {
     /// the last one; see [`crate::scene::ExperimentalSection::fracture_step_mean`].
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub fracture_step_mean: bool,
+    /// A refined step around fracture: while a joint is cracking, and for this long (s)
+    /// after a joint severs, the world steps by [`WorldParams::refine_fraction`] of its
+    /// step; `None` (default) steps by the one step throughout. See
+    /// [`crate::scene::ExperimentalSection::refine_window`].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub refine_window: Option<f64>,
+    /// The refined step as a fraction of the step (dimensionless, in (0, 1]), with
+    /// [`WorldParams::refine_window`]; `None`: [`DEFAULT_REFINE_FRACTION`].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub refine_fraction: Option<f64>,
     /// Mass-proportional numerical damping γ (1/s): F = −γ·m·v, M = −γ·I·ω. Default 0;
     /// used only to relax verification scenes to their static state.
     pub global_damping: f64,
@@ -86,10 +96,16 @@ impl Default for WorldParams {
             crack_speed: 50.0,
             incubation_time: None,
             fracture_step_mean: false,
+            refine_window: None,
+            refine_fraction: None,
             global_damping: 0.0,
         }
     }
 }
+
+/// Default refined step around fracture as a fraction of the step (dimensionless):
+/// a quarter, the step study's reference at the full limit ([`WorldParams::refine_fraction`]).
+pub const DEFAULT_REFINE_FRACTION: f64 = 0.25;
 
 /// Largest number of Gauss–Seidel sweeps of the contact dashpot a scene may ask for
 /// ([`WorldParams::contact_dashpot_sweeps`]): more is a mistake, not accuracy.
@@ -156,9 +172,16 @@ pub enum WorldError {
 
 impl WorldParams {
     /// The numerics of a step of `dt` (s) that the force stages read.
-    pub(crate) fn step_numerics(&self, dt: f64) -> super::super::numerics::StepNumerics {
+    pub(crate) fn step_numerics(
+        &self,
+        dt: f64,
+        dt_prev: f64,
+    ) -> super::super::numerics::StepNumerics {
         super::super::numerics::StepNumerics {
             dt,
+            dt_prev,
+            // (dt + dt)/2 is dt to the bit: a constant step is the scheme it always was.
+            kick: 0.5 * (dt_prev + dt),
             contact_dashpot: self.contact_dashpot,
             contact_onset: self.contact_onset,
             contact_dashpot_sweeps: self.contact_dashpot_sweeps,
@@ -215,6 +238,19 @@ impl WorldParams {
             }
         }
         pos("time_step_safety", self.time_step_safety)?;
+        if let Some(w) = self.refine_window {
+            nonneg("refine_window", w)?;
+        }
+        if let Some(f) = self.refine_fraction {
+            pos("refine_fraction", f)?;
+            if f > 1.0 {
+                return Err(WorldError::Param {
+                    name: "refine_fraction",
+                    value: f,
+                    why: "must be at most 1 (a refined step is not longer than the step)",
+                });
+            }
+        }
         if self.time_step_safety > 1.0 {
             return Err(WorldError::Param {
                 name: "time_step_safety",

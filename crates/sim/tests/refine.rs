@@ -1,0 +1,92 @@
+//! The step refined around fracture (`experimental.refine_window`, docs/speed-vs-error.md):
+//! off, nothing changes; at a fraction of 1 it is the one step to the bit (the kick
+//! ½·(Δt + Δt) is Δt exactly); on, the run takes more steps where the sheet breaks, its
+//! ledger still closes to round-off, and its distance pushed is the time run times U.
+
+use pressridge_sim::scene::Scene;
+use pressridge_sim::simulation::{self, RunOutput};
+
+/// 8 s of the Figure 5 scene at the full limit: its first breaks come after about 5.6 s.
+fn run(sets: &[&str]) -> RunOutput {
+    let mut all = vec!["duration=8", "numerics.time_step_safety=1.0"];
+    all.extend_from_slice(sets);
+    let scene = Scene::default().with_overrides(&all).unwrap();
+    simulation::run(&scene, &mut |_| true).unwrap()
+}
+
+#[test]
+fn a_refined_step_of_the_whole_step_changes_no_bit() {
+    let plain = run(&[]);
+    let same = run(&[
+        "experimental.refine_window=0.02",
+        "experimental.refine_fraction=1",
+    ]);
+    assert!(plain.summary.blocks_broken > 0, "no break to refine around");
+    assert_eq!(plain.summary.steps, same.summary.steps);
+    assert_eq!(
+        serde_json::to_string(&plain.final_state.bodies).unwrap(),
+        serde_json::to_string(&same.final_state.bodies).unwrap()
+    );
+    assert_eq!(
+        plain.summary.energy().work.to_bits(),
+        same.summary.energy().work.to_bits()
+    );
+}
+
+#[test]
+fn a_refined_step_takes_more_steps_and_its_ledger_closes() {
+    let plain = run(&[]);
+    let refined = run(&["experimental.refine_window=0.02"]);
+    let (p, r) = (&plain.summary, &refined.summary);
+    assert!(r.blocks_broken > 0);
+    // Each break refines at least the 20 ms after it to a quarter of the step: 3 extra
+    // steps per plain step there.
+    let per_window = 0.02 / p.dt * 3.0;
+    assert!(
+        r.steps as f64 >= p.steps as f64 + per_window,
+        "{} steps refined against {} plain",
+        r.steps,
+        p.steps
+    );
+    // The refined windows are a small part of the run.
+    assert!(r.steps < 2 * p.steps, "{} against {}", r.steps, p.steps);
+    assert!(
+        r.max_relative_residual < 1e-9,
+        "the ledger does not close across step changes: {}",
+        r.max_relative_residual
+    );
+    // Eq (9)'s work sums U·Δt·F over the steps taken: the pushed distance is U times the
+    // time run, whatever the steps.
+    assert!((r.ridged_volume - 0.25 * 0.30 * r.time).abs() < 1e-9);
+    assert!((r.time - 8.0).abs() < p.dt);
+}
+
+#[test]
+fn a_refined_step_is_checked() {
+    for (set, key) in [
+        (
+            "experimental.refine_window=-1",
+            "experimental.refine_window",
+        ),
+        (
+            "experimental.refine_fraction=0.5",
+            "experimental.refine_fraction",
+        ),
+    ] {
+        let e = Scene::default()
+            .with_overrides(&[set])
+            .and_then(|s| s.validate().map(|_| s))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains(key), "{set}: {e}");
+    }
+    let e = Scene::default()
+        .with_overrides(&[
+            "experimental.refine_window=0.02",
+            "experimental.refine_fraction=1.5",
+        ])
+        .and_then(|s| s.validate().map(|_| s))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("experimental.refine_fraction"), "{e}");
+}
