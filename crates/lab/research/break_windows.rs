@@ -11,6 +11,15 @@
 //! ```sh
 //! cargo run --release --example break_windows -- data/speed-vs-error/pieces-r2/breaks.csv [WINDOW_S] [LEAD_S] [REF]
 //! cargo run --release --example break_windows -- data/speed-vs-error/pieces-r2/breaks.csv 0.010 0.006 0.25
+//! cargo run --release --example break_windows -- LOG[+NAME=LOG ...] [WINDOW_S] [LEAD_S] [REF]
+//! ```
+//!
+//! Several logs joined by `+` are read each by its own header; a log given as `NAME=LOG` has
+//! its runs labelled NAME instead of by their safety factor (the refined step's logs at the
+//! full limit beside the plain full limit's):
+//!
+//! ```sh
+//! cargo run --release --example break_windows -- data/speed-vs-error/pieces-r2/breaks.csv+refine-10ms=data/speed-vs-error/pieces-r2/breaks-refine10.csv+refine-50ms=data/speed-vs-error/pieces-r2/breaks-refine50.csv 0.010 0.006 0.25
 //! ```
 
 use pressridge::table::fit::student_t_quantile;
@@ -81,20 +90,22 @@ fn welch(a: &[f64], b: &[f64]) -> String {
     format!("{d:+.1} [{:+.1}, {:+.1}]", d - t * se, d + t * se)
 }
 
-fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let usage = "usage: break_windows BREAKS.csv [WINDOW_S] [LEAD_S] [REF]";
-    let path = args.first().ok_or(usage)?;
-    let window: f64 = args.get(1).map_or(Ok(0.010), |s| s.parse())?;
-    let lead: f64 = args.get(2).map_or(Ok(0.006), |s| s.parse())?;
+/// Reads one break log (its own header names the columns) into `runs`, each row under its
+/// safety factor as written or under `name`.
+fn read_log(
+    path: &str,
+    name: Option<&str>,
+    runs: &mut BTreeMap<(String, u32), Vec<Break>>,
+    order: &mut Vec<String>,
+) -> Result<(), Box<dyn std::error::Error>> {
     let text = std::fs::read_to_string(path)?;
     let mut lines = text.lines();
     let header: Vec<&str> = lines.next().ok_or("empty file")?.split(',').collect();
-    let col = |name: &str| {
+    let col = |c: &str| {
         header
             .iter()
-            .position(|h| *h == name)
-            .ok_or(format!("{path}: no column {name}"))
+            .position(|h| *h == c)
+            .ok_or(format!("{path}: no column {c}"))
     };
     let (c_safety, c_seed, c_time, c_small) = (
         col("safety")?,
@@ -102,25 +113,42 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         col("time_s")?,
         col("small_side")?,
     );
-    // Runs by (safety as written, seed); safety factors in order of first appearance.
-    let mut runs: BTreeMap<(String, u32), Vec<Break>> = BTreeMap::new();
-    let mut order: Vec<String> = Vec::new();
     for line in lines.filter(|l| !l.trim().is_empty()) {
         let f: Vec<&str> = line.split(',').collect();
-        let safety = f[c_safety].to_string();
-        if !order.contains(&safety) {
-            order.push(safety.clone());
+        let label = name.map_or_else(|| f[c_safety].to_string(), str::to_string);
+        if !order.contains(&label) {
+            order.push(label.clone());
         }
-        runs.entry((safety, f[c_seed].parse()?))
+        runs.entry((label, f[c_seed].parse()?))
             .or_default()
             .push(Break {
                 time: f[c_time].parse()?,
                 single: f[c_small] == "1",
             });
     }
+    Ok(())
+}
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let usage = "usage: break_windows LOG[+NAME=LOG ...] [WINDOW_S] [LEAD_S] [REF]";
+    let path = args.first().ok_or(usage)?;
+    let window: f64 = args.get(1).map_or(Ok(0.010), |s| s.parse())?;
+    let lead: f64 = args.get(2).map_or(Ok(0.006), |s| s.parse())?;
+    // Runs by (label, seed): the label is the safety factor as written, or NAME for a log
+    // given as NAME=PATH; labels in order of first appearance.
+    let mut runs: BTreeMap<(String, u32), Vec<Break>> = BTreeMap::new();
+    let mut order: Vec<String> = Vec::new();
+    for part in path.split('+') {
+        let (name, file) = match part.split_once('=') {
+            Some((n, f)) => (Some(n), f),
+            None => (None, part),
+        };
+        read_log(file, name, &mut runs, &mut order)?;
+    }
     let reference = args.get(3).cloned().unwrap_or_else(|| order[0].clone());
     if !order.contains(&reference) {
-        return Err(format!("{path}: no runs at safety {reference}").into());
+        return Err(format!("{path}: no runs labelled {reference}").into());
     }
     // The runs' duration: the scene's 400 s unless a break comes later.
     let last = runs.values().flatten().map(|b| b.time).fold(0.0, f64::max);
