@@ -515,8 +515,8 @@ pub struct ExperimentalSection {
     /// `refine_fraction` of its step, the leapfrog's kick the mean of the two steps where
     /// the step changes. A probe of the step study's finding that the breaks a larger step
     /// adds come within 10 ms after another break (docs/speed-vs-error.md, "When the added
-    /// breaks happen"). A run restarted from a saved state mid-window does not repeat the
-    /// bits of an unbroken run.
+    /// breaks happen"). A saved state carries the window's clock, so a run restarted
+    /// inside a window repeats the bits of an unbroken run.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub refine_window: Option<f64>,
     /// The refined step as a fraction of the step (dimensionless, in (0, 1]), with

@@ -34,6 +34,10 @@ impl World {
             handovers: self.handovers,
             ledger: self.acc,
             contact_tally: self.contacts.tally.clone(),
+            refine: self.params.refine_window.map(|_| RefineClock {
+                last_dt: self.last_dt,
+                until: self.refine_until.is_finite().then_some(self.refine_until),
+            }),
         }
     }
 
@@ -79,6 +83,16 @@ impl World {
         w.time = s.time;
         w.steps = s.steps;
         w.dt = s.dt;
+        if let Some(r) = s.refine {
+            if !(r.last_dt.is_finite() && r.last_dt >= 0.0) {
+                return Err(WorldError::State(format!(
+                    "the refined step's last step {} s is not a step",
+                    r.last_dt
+                )));
+            }
+            w.last_dt = r.last_dt;
+            w.refine_until = r.until.unwrap_or(f64::NEG_INFINITY);
+        }
         Ok(w)
     }
 }
@@ -159,4 +173,20 @@ pub struct Snapshot {
     /// The contacts' restitution and damping-ratio histograms (absent in older snapshots).
     #[serde(default)]
     pub(crate) contact_tally: ContactTally,
+    /// The clock of the step refined around fracture ([`WorldParams::refine_window`]), so
+    /// that a restart inside a refined window repeats the bits of the unbroken run; absent
+    /// for a world without it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(crate) refine: Option<RefineClock>,
+}
+
+/// Where a step refined around fracture stands ([`WorldParams::refine_window`]).
+#[derive(Clone, Copy, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RefineClock {
+    /// The last step's Δt (s), 0 before the first step.
+    last_dt: f64,
+    /// The time (s) until which steps are refined after the last severed joint; none before
+    /// the first.
+    until: Option<f64>,
 }
