@@ -16,6 +16,13 @@
 //! is taken as exact), and the worst closure residual |W − sinks| / largest term over all
 //! samples of all runs.
 //!
+//! The quantities the step's equivalence test judges (W, ΔPE, W/ΔPE, Φ_i/W, L/h, joints
+//! broken, energy per break and the share of runs that rafted) are marked ✓ where the 95 %
+//! interval spans zero and its centre lies within ±0.3 σ of the reference's seed-to-seed
+//! spread, ✗ where not; below each thickness's table a line says whether each configuration
+//! passes the test (every judged quantity ✓, at least 41 seeds in each arm), the test that
+//! half the stable limit passed and any larger default step must pass.
+//!
 //! A second table per thickness counts the rubble pieces at the end of a run by their length
 //! in blocks (1, 2, 3, 4, 5–6, 7 or more): per run, the reference's mean ± σ and each other
 //! configuration's difference from it with its 95 % Welch interval. It says which breaks a
@@ -42,15 +49,18 @@
 use pressridge::campaign::read_campaign;
 use pressridge::record::RunRecord;
 use pressridge::table::ensemble::{Stat, quantity};
+use pressridge::table::rafting;
 use std::collections::BTreeMap;
 use std::path::Path;
 
 /// The quantities compared: key of [`quantity`] (or `normal_contact_fraction`, Φ_i/W, eq
 /// (12)'s net normal contact work over W; `fracture_per_break`, the elastic energy released
-/// by cracks over the joints broken, J/m per joint), label, and whether the owner's
-/// equivalence criterion judges it (issue 30, item 3: W, ΔPE, W/ΔPE, Φ_i/W, joints broken,
-/// L/h).
-const QUANTITIES: [(&str, &str, bool); 10] = [
+/// by cracks over the joints broken, J/m per joint; `rafted`, 1 for a run whose intact sheet
+/// rode over the floe by more than the rafting reach, 0 for one that broke at it, so that its
+/// mean is the share of runs that rafted), label, and whether the step's equivalence test
+/// judges it (W, ΔPE, W/ΔPE, Φ_i/W, L/h, joints broken, energy per break and the ride-over
+/// count).
+const QUANTITIES: [(&str, &str, bool); 11] = [
     ("work", "W", true),
     ("potential_energy", "ΔPE", true),
     ("ratio_work_to_pe", "W/ΔPE", true),
@@ -58,10 +68,19 @@ const QUANTITIES: [(&str, &str, bool); 10] = [
     ("friction_fraction", "Φ_f/W", false),
     ("length_to_thickness", "L/h", true),
     ("blocks_broken", "broken", true),
-    ("fracture_per_break", "E_f/break", false),
+    ("fracture_per_break", "E_f/break", true),
+    ("rafted", "rafted", true),
     ("max_sail_height", "sail", false),
     ("max_keel_depth", "keel", false),
 ];
+
+/// The step's equivalence test (docs/speed-vs-error.md, "The equivalence test"): at least
+/// this many seeds per arm, and for every judged quantity a 95 % interval across zero with its
+/// centre within [`EQUIVALENCE_CENTRE`] of the reference's seed-to-seed σ.
+const EQUIVALENCE_SEEDS: usize = 41;
+
+/// The largest centre of a judged shift the test allows, in units of the reference's σ.
+const EQUIVALENCE_CENTRE: f64 = 0.3;
 
 type Groups = BTreeMap<String, Vec<RunRecord>>;
 
@@ -166,6 +185,11 @@ fn stat(runs: &[RunRecord], key: &str) -> Stat {
             let n = quantity(r, "blocks_broken")?;
             (n > 0.0).then_some(quantity(r, "fracture_dissipation")? / n)
         }
+        "rafted" => match rafting::outcome(r, rafting::RAFTING_REACH) {
+            rafting::Outcome::Rafted(_) => Some(1.0),
+            rafting::Outcome::Ridged => Some(0.0),
+            rafting::Outcome::Unknown => None,
+        },
         _ => quantity(r, key),
     };
     let xs: Vec<f64> = runs.iter().filter_map(value).collect();
@@ -218,6 +242,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
         println!(" worst closure |");
         println!("|{}", "---|".repeat(6 + QUANTITIES.len()));
+        let mut verdicts = vec![];
         for (name, g) in &configs {
             let Some(runs) = g.get(point) else { continue };
             let dt = runs.first().map_or(f64::NAN, |r| r.summary.dt);
@@ -243,6 +268,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 steps.mean,
                 wall.mean
             );
+            let mut passes = name == ref_name
+                || (runs.len() >= EQUIVALENCE_SEEDS && ref_runs.len() >= EQUIVALENCE_SEEDS);
             for (key, _, judged) in QUANTITIES {
                 let a = stat(ref_runs, key);
                 let b = stat(runs, key);
@@ -251,22 +278,31 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     continue;
                 }
                 if a.n < 2 || b.n < 2 {
+                    passes &= !judged;
                     print!(" — |");
                     continue;
                 }
                 let (d, h) = a.welch_difference(&b);
                 let (pd, ph) = (100.0 * d / a.mean, 100.0 * (h / a.mean).abs());
-                // The shift in units of the reference's seed-to-seed σ, with its interval,
-                // judged against ±0.5 σ: inside (✓), wholly beyond (✗), or not yet decided.
-                let (sd, sh) = (d / a.std, (h / a.std).abs());
-                let flag = if !judged {
-                    String::new()
-                } else if (sd - sh) > -0.5 && (sd + sh) < 0.5 {
-                    " ✓".into()
-                } else if (sd - sh) > 0.5 || (sd + sh) < -0.5 {
-                    " ✗".into()
+                // The shift in units of the reference's seed-to-seed σ (of both arms pooled
+                // where the reference's runs all agree, as every run ridging does), with its
+                // interval, judged by the step's test.
+                let sigma = if a.std > 0.0 {
+                    a.std
                 } else {
-                    " ?".into()
+                    (0.5 * (a.std.powi(2) + b.std.powi(2))).sqrt()
+                };
+                let (sd, sh) = if sigma > 0.0 {
+                    (d / sigma, (h / sigma).abs())
+                } else {
+                    (0.0, 0.0)
+                };
+                let ok = (sd - sh) <= 0.0 && (sd + sh) >= 0.0 && sd.abs() <= EQUIVALENCE_CENTRE;
+                passes &= !judged || ok;
+                let flag = match (judged, ok) {
+                    (false, _) => "",
+                    (true, true) => " ✓",
+                    (true, false) => " ✗",
                 };
                 print!(
                     " {pd:+.1} % [{:+.1}, {:+.1}]; {sd:+.2} σ [{:+.2}, {:+.2}]{flag} |",
@@ -276,7 +312,22 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     sd + sh
                 );
             }
+            if name != ref_name {
+                verdicts.push(format!(
+                    "{name}: {}",
+                    if passes {
+                        "equivalent to the reference by the step's test"
+                    } else if runs.len() < EQUIVALENCE_SEEDS || ref_runs.len() < EQUIVALENCE_SEEDS {
+                        "not judged yet (fewer than 41 seeds in an arm)"
+                    } else {
+                        "not equivalent (a judged shift fails the test)"
+                    }
+                ));
+            }
             println!(" {worst:.1e} |");
+        }
+        for v in verdicts {
+            println!("\n{v}.");
         }
         print_pieces(point, &configs, ref_runs);
     }
@@ -285,8 +336,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
          the elastic energy released by cracks per joint broken, in J/m; sail and keel in \
          m). Other rows: difference of the mean from the reference mean in % of the \
          reference mean and in units of the reference's σ, each with its 95 % Welch \
-         interval; for the quantities of issue 30's criterion, ✓: the interval lies within \
-         ±0.5 σ, ✗: wholly beyond it, ?: neither yet. Pieces tables: the reference's \
+         interval (rafted: the share of runs whose intact sheet rode over the floe); for the \
+         quantities the step's equivalence test judges, ✓: the interval spans zero and its \
+         centre lies within ±0.3 σ, ✗: not; a configuration is equivalent when every judged \
+         quantity passes with at least 41 seeds in each arm. Pieces tables: the reference's \
          mean ± σ of the pieces per run, the others' difference in pieces per run with its \
          95 % Welch interval."
     );
