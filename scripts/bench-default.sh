@@ -23,8 +23,10 @@ echo "commit: $(git rev-parse --short HEAD)$(git diff --quiet || echo ' (modifie
 timed() {
   local b=$1; shift
   echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+  # The run's progress goes to a file, shown only if the run fails.
   /usr/bin/time -o "$out/time" -f "%e %U %S" \
-    taskset -c 0 "$b" simulate --no-figures --out "$out/run" --overwrite "$@" > /dev/null
+    taskset -c 0 "$b" simulate --no-figures --out "$out/run" --overwrite "$@" \
+    > /dev/null 2> "$out/stderr" || { cat "$out/stderr" >&2; return 1; }
   read -r wall user sys < "$out/time"
   steps=$(sed -n 's/.*"steps": *\([0-9]*\).*/\1/p' "$out/run/summary.json" | head -1)
   echo "wall $wall s, user $user s, sys $sys s, $steps steps ($b ${*:-default scene})"
