@@ -68,6 +68,8 @@ fn a_refined_step_is_checked() {
             "experimental.refine_window=-1",
             "experimental.refine_window",
         ),
+        ("experimental.refine_load=0", "experimental.refine_load"),
+        ("experimental.refine_load=1.5", "experimental.refine_load"),
         (
             "experimental.refine_fraction=0.5",
             "experimental.refine_fraction",
@@ -99,6 +101,7 @@ fn a_restart_inside_a_refined_window_repeats_the_bits() {
             "duration=8",
             "numerics.time_step_safety=1.0",
             "experimental.refine_window=0.02",
+            "experimental.refine_load=0.9",
         ])
         .unwrap();
     let mut w = scene.build().unwrap();
@@ -121,5 +124,39 @@ fn a_restart_inside_a_refined_window_repeats_the_bits() {
     assert_eq!(
         serde_json::to_string(&w.snapshot()).unwrap(),
         serde_json::to_string(&restored.snapshot()).unwrap()
+    );
+}
+
+#[test]
+fn a_step_refined_ahead_of_fracture_refines_where_a_joint_nears_its_strength() {
+    let window = run(&["experimental.refine_window=0.02"]);
+    let ahead = run(&[
+        "experimental.refine_window=0.02",
+        "experimental.refine_load=0.8",
+    ]);
+    let (w, a) = (&window.summary, &ahead.summary);
+    // The sheet is loaded towards its strength before its first break (about 5.6 s): the
+    // steps there are refined too.
+    assert!(
+        a.steps > w.steps,
+        "{} steps ahead against {}",
+        a.steps,
+        w.steps
+    );
+    assert!(
+        a.max_relative_residual < 1e-9,
+        "{}",
+        a.max_relative_residual
+    );
+    assert!((a.time - 8.0).abs() < w.dt);
+    // At a load of 1 nothing is refined before a crack starts: the window's run exactly.
+    let none = run(&[
+        "experimental.refine_window=0.02",
+        "experimental.refine_load=1",
+    ]);
+    assert_eq!(none.summary.steps, w.steps);
+    assert_eq!(
+        serde_json::to_string(&none.final_state.bodies).unwrap(),
+        serde_json::to_string(&window.final_state.bodies).unwrap()
     );
 }

@@ -32,6 +32,9 @@ pub(crate) struct JointSet {
     overflow: Vec<u64>,
     /// Joints severed in the last step (indices into `joints`).
     severed: Vec<usize>,
+    /// The largest tested stress over strength of the intact joints at the last
+    /// [`JointSet::advance`] (dimensionless), kept only with [`StepNumerics::track_load`].
+    max_load: f64,
 }
 
 /// An empty slot of [`JointSet::partners`].
@@ -149,6 +152,15 @@ impl JointSet {
             .iter()
             .any(|j| j.is_intact() && (j.crack_top || j.crack_bottom))
     }
+    /// The largest tested stress over strength of the intact joints at the last step
+    /// (dimensionless; 0 unless [`StepNumerics::track_load`]).
+    pub fn max_load(&self) -> f64 {
+        self.max_load
+    }
+    /// Sets [`JointSet::max_load`] (a restored world's).
+    pub fn set_max_load(&mut self, load: f64) {
+        self.max_load = load;
+    }
     /// True when there is no joint.
     pub fn is_empty(&self) -> bool {
         self.joints.is_empty()
@@ -206,6 +218,8 @@ impl JointSet {
         let (incubation, step_mean, dt) = (num.incubation_time, num.fracture_step_mean, num.dt);
         self.severed.clear();
         let gain = incubation.map(|tau| -(-dt / tau).exp_m1());
+        let track = num.track_load;
+        let mut max_load: f64 = 0.0;
         for (k, j) in self.joints.iter_mut().enumerate() {
             if !j.is_intact() {
                 continue;
@@ -226,6 +240,11 @@ impl JointSet {
                     *f
                 }
             };
+            if track {
+                max_load = max_load
+                    .max(s.top / j.mat.strength_top)
+                    .max(s.bottom / j.mat.strength_bottom);
+            }
             if !j.crack_top && s.top > j.mat.strength_top {
                 j.crack_top = true;
             }
@@ -248,6 +267,7 @@ impl JointSet {
                 self.severed.push(k);
             }
         }
+        self.max_load = max_load;
         for i in 0..self.severed.len() {
             let j = self.joints[self.severed[i]];
             self.unlink(j.a, j.b);

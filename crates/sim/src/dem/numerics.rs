@@ -93,4 +93,7 @@ pub(crate) struct StepNumerics {
     pub incubation_time: Option<f64>,
     /// Fracture tested on the mean stress of the last two poses (experimental).
     pub fracture_step_mean: bool,
+    /// Keep the largest tested stress over strength of the intact joints
+    /// ([`crate::dem::WorldParams::refine_load`]).
+    pub track_load: bool,
 }

@@ -405,17 +405,17 @@ impl World {
     }
 
     /// This step's Δt (s): [`World::dt`], or its [`WorldParams::refine_fraction`] while a
-    /// joint is cracking or within [`WorldParams::refine_window`] of the last severed joint.
+    /// joint is cracking or within [`WorldParams::refine_window`] of the last severed joint,
+    /// or while a joint is loaded beyond [`WorldParams::refine_load`] of its strength.
     fn step_length(&self) -> f64 {
-        match self.params.refine_window {
-            Some(_) if self.time < self.refine_until || self.joints.any_cracking() => {
-                self.dt
-                    * self
-                        .params
-                        .refine_fraction
-                        .unwrap_or(params::DEFAULT_REFINE_FRACTION)
-            }
-            _ => self.dt,
+        let p = &self.params;
+        let after_break = p.refine_window.is_some()
+            && (self.time < self.refine_until || self.joints.any_cracking());
+        let loaded = p.refine_load.is_some_and(|f| self.joints.max_load() > f);
+        if after_break || loaded {
+            self.dt * p.refine_fraction.unwrap_or(params::DEFAULT_REFINE_FRACTION)
+        } else {
+            self.dt
         }
     }
 

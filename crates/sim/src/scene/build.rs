@@ -21,6 +21,7 @@ impl Scene {
             incubation_time: self.experimental.incubation_time,
             fracture_step_mean: self.experimental.fracture_step_mean,
             refine_window: self.experimental.refine_window,
+            refine_load: self.experimental.refine_load,
             refine_fraction: self.experimental.refine_fraction,
             water: self.water.enabled.then_some(WaterParams {
                 level: self.water.level,

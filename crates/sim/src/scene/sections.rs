@@ -519,8 +519,14 @@ pub struct ExperimentalSection {
     /// inside a window repeats the bits of an unbroken run.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub refine_window: Option<f64>,
+    /// A step refined ahead of fracture (dimensionless, in (0, 1]), or none (default):
+    /// while some intact joint's tested stress exceeds this fraction of its strength, the
+    /// world steps by `refine_fraction` of its step. With `refine_window` it refines the
+    /// loading that leads to a crack as well as the cascade after it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub refine_load: Option<f64>,
     /// The refined step as a fraction of the step (dimensionless, in (0, 1]), with
-    /// `refine_window`; none: a quarter.
+    /// `refine_window` or `refine_load`; none: a quarter.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub refine_fraction: Option<f64>,
 }
@@ -536,6 +542,7 @@ impl Default for ExperimentalSection {
             incubation_time: w.incubation_time,
             fracture_step_mean: w.fracture_step_mean,
             refine_window: w.refine_window,
+            refine_load: w.refine_load,
             refine_fraction: w.refine_fraction,
         }
     }

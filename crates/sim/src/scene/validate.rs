@@ -116,14 +116,23 @@ impl Scene {
                 "must be non-negative (s) when given",
             );
         }
+        if let Some(f) = self.experimental.refine_load
+            && !(f > 0.0 && f <= 1.0)
+        {
+            return bad(
+                "experimental.refine_load",
+                "must be in (0, 1] (a fraction of the joints' strength) when given",
+            );
+        }
         if let Some(f) = self.experimental.refine_fraction {
             if !(f > 0.0 && f <= 1.0) {
                 return bad("experimental.refine_fraction", "must be in (0, 1]");
             }
-            if self.experimental.refine_window.is_none() {
+            if self.experimental.refine_window.is_none() && self.experimental.refine_load.is_none()
+            {
                 return bad(
                     "experimental.refine_fraction",
-                    "refines the step only with experimental.refine_window: set both",
+                    "refines the step only with experimental.refine_window or refine_load: set one",
                 );
             }
         }

@@ -71,8 +71,15 @@ pub struct WorldParams {
     /// [`crate::scene::ExperimentalSection::refine_window`].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub refine_window: Option<f64>,
+    /// A refined step ahead of fracture: while some intact joint's tested stress exceeds this
+    /// fraction of its strength (dimensionless, in (0, 1]) the world steps by
+    /// [`WorldParams::refine_fraction`] of its step; `None` (default): no such refinement.
+    /// See [`crate::scene::ExperimentalSection::refine_load`].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub refine_load: Option<f64>,
     /// The refined step as a fraction of the step (dimensionless, in (0, 1]), with
-    /// [`WorldParams::refine_window`]; `None`: [`DEFAULT_REFINE_FRACTION`].
+    /// [`WorldParams::refine_window`] or [`WorldParams::refine_load`]; `None`:
+    /// [`DEFAULT_REFINE_FRACTION`].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub refine_fraction: Option<f64>,
     /// Mass-proportional numerical damping γ (1/s): F = −γ·m·v, M = −γ·I·ω. Default 0;
@@ -97,6 +104,7 @@ impl Default for WorldParams {
             incubation_time: None,
             fracture_step_mean: false,
             refine_window: None,
+            refine_load: None,
             refine_fraction: None,
             global_damping: 0.0,
         }
@@ -188,6 +196,7 @@ impl WorldParams {
             joint_dashpot: self.joint_dashpot,
             incubation_time: self.incubation_time,
             fracture_step_mean: self.fracture_step_mean,
+            track_load: self.refine_load.is_some(),
         }
     }
 
@@ -240,6 +249,16 @@ impl WorldParams {
         pos("time_step_safety", self.time_step_safety)?;
         if let Some(w) = self.refine_window {
             nonneg("refine_window", w)?;
+        }
+        if let Some(f) = self.refine_load {
+            pos("refine_load", f)?;
+            if f > 1.0 {
+                return Err(WorldError::Param {
+                    name: "refine_load",
+                    value: f,
+                    why: "must be at most 1 (a fraction of the joints' strength)",
+                });
+            }
         }
         if let Some(f) = self.refine_fraction {
             pos("refine_fraction", f)?;

@@ -34,10 +34,12 @@ impl World {
             handovers: self.handovers,
             ledger: self.acc,
             contact_tally: self.contacts.tally.clone(),
-            refine: self.params.refine_window.map(|_| RefineClock {
-                last_dt: self.last_dt,
-                until: self.refine_until.is_finite().then_some(self.refine_until),
-            }),
+            refine: (self.params.refine_window.is_some() || self.params.refine_load.is_some())
+                .then(|| RefineClock {
+                    last_dt: self.last_dt,
+                    until: self.refine_until.is_finite().then_some(self.refine_until),
+                    load: self.joints.max_load(),
+                }),
         }
     }
 
@@ -92,6 +94,7 @@ impl World {
             }
             w.last_dt = r.last_dt;
             w.refine_until = r.until.unwrap_or(f64::NEG_INFINITY);
+            w.joints.set_max_load(r.load);
         }
         Ok(w)
     }
@@ -173,7 +176,8 @@ pub struct Snapshot {
     /// The contacts' restitution and damping-ratio histograms (absent in older snapshots).
     #[serde(default)]
     pub(crate) contact_tally: ContactTally,
-    /// The clock of the step refined around fracture ([`WorldParams::refine_window`]), so
+    /// The clock of the step refined around fracture ([`WorldParams::refine_window`],
+    /// [`WorldParams::refine_load`]), so
     /// that a restart inside a refined window repeats the bits of the unbroken run; absent
     /// for a world without it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -189,4 +193,8 @@ pub(crate) struct RefineClock {
     /// The time (s) until which steps are refined after the last severed joint; none before
     /// the first.
     until: Option<f64>,
+    /// The joints' largest stress over strength at the last step (dimensionless;
+    /// [`WorldParams::refine_load`]).
+    #[serde(default)]
+    load: f64,
 }
