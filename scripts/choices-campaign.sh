@@ -7,12 +7,12 @@
 # CHOICES="baseline tip-bevel" runs only those probes (in that order). CHOICES_DIR picks
 # the folder of specs: data/campaigns/choices (the first look, on the 20-m floe; the default),
 # data/campaigns/choices40 (eight seeds on model revision 1 with the 40-m floe, whose
-# baseline is taken from the friction set's records in data/paper2/friction) or
+# baseline is taken from the friction set's records in crates/lab/records/paper2/friction) or
 # data/campaigns/choices-r2 (model revision 2; the baseline's later seeds, baseline-more, run
 # after the probes so that a first look at every probe comes first). Then
 #   pressridge findings --choices runs/choices
 # compares each probe with the baseline (docs/choices.md); scripts/archive-records.sh keeps
-# the records for the repository (data/choices/).
+# the records for the repository (crates/lab/records/choices/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 threads=${1:-$(nproc)}
@@ -34,8 +34,8 @@ for p in $probes; do
   echo "== $p ($(date -u +%T))"
   resume=()
   # The revision-1 register's baseline is the friction set's two pairs: taken, not run again.
-  [ "$dir" = data/campaigns/choices40 ] && [ "$p" = baseline ] && [ -d data/paper2/friction ] &&
-    resume=(--resume-from data/paper2/friction)
+  [ "$dir" = data/campaigns/choices40 ] && [ "$p" = baseline ] && [ -d crates/lab/records/paper2/friction ] &&
+    resume=(--resume-from crates/lab/records/paper2/friction)
   # On model revision 2 (choices-r2*), the probe's committed records (a finished or
   # interrupted campaign archived under data/<folder of specs>/<probe>) are taken, not run
   # again; the older registers' archives are of revision 1, which a campaign refuses.

@@ -13,12 +13,12 @@
 #   tar xf records.tar -C DIR
 #   pressridge campaign --spec SPEC --out runs/X $(for d in DIR/records/NAME-*; do
 #       echo --resume-from $d; done) [--threads N]   # runs what is still missing
-# Made for issue 30's friction and modulus sets (data/README.md, paper2/).
+# Made for issue 30's friction and modulus sets (crates/lab/records/README.md, paper2/).
 # The device tool copies the tracked tree with the carried package, 64 MiB in all, and the
 # committed records and figures are more than that: untrack them for the call and restore them
 # after it (nothing on disk changes; only the index does):
-#   git rm -r -q --cached docs/figures data/paper data/paper2 data/speed-vs-error
-#   printf '%s\n' docs/figures/ data/paper/ data/paper2/ data/speed-vs-error/ >> .git/info/exclude
+#   git rm -r -q --cached docs/figures crates/lab/records/paper crates/lab/records/paper2 crates/lab/records/speed-vs-error
+#   printf '%s\n' docs/figures/ crates/lab/records/paper/ crates/lab/records/paper2/ crates/lab/records/speed-vs-error/ >> .git/info/exclude
 #   ... the device call, carry ["target/devpkg"] ...
 #   git reset -q && sed -i '/^docs\/figures\/$\|^data\/paper2\?\/$\|^data\/speed-vs-error\/$/d' .git/info/exclude
 set -euo pipefail

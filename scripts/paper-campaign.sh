@@ -8,8 +8,8 @@
 # friction pairs at 0.20 and 0.45 m (friction-thickness) — seven seeds each, one after
 # the other on all cores, into runs/paper2/<set>/. Resumable: finished runs are kept and
 # re-running continues where it stopped (a run cut off mid-way starts again), also on another
-# machine from the records committed under data/paper2/<set> (the decided model of issue 30:
-# k_te per contact, the 40-m floe; data/paper/ holds the former model's records, which no
+# machine from the records committed under crates/lab/records/paper2/<set> (the decided model of issue 30:
+# k_te per contact, the 40-m floe; crates/lab/records/paper/ holds the former model's records, which no
 # longer match the scenes and would be refused). Each set's
 # progress goes to runs/paper2/<set>.log. Most of a day on two cores with the binary of
 # 2026-11-23 (docs/tables.md); run it under nohup:
@@ -18,7 +18,7 @@
 # archives to take finished runs from (space-separated), e.g. a probe of the register whose
 # setting is now the default: a run of the same scene and seed is taken whatever its id.
 # Then tabulate a set with `pressridge tabulate --campaign runs/paper2/<set> ...`
-# (data/README.md gives the commands behind each committed table and report).
+# (crates/lab/records/README.md gives the commands behind each committed archive and report).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 threads=${1:-$(nproc)}

@@ -4,7 +4,7 @@
 #   scripts/speed-vs-error.sh            prints the step table of the model as it is now
 #                                        (issue 30, item 3: a quarter, half, 0.8 and the
 #                                        full stable limit) from the committed records
-#                                        (data/speed-vs-error/decided-*, records-only
+#                                        (crates/lab/records/speed-vs-error/decided-*, records-only
 #                                        archives): seconds
 #   scripts/speed-vs-error.sh --run [N]  first runs what those campaigns still lack (their
 #                                        specs hold more seeds than were run) into
@@ -15,7 +15,7 @@
 #   scripts/speed-vs-error.sh --former   prints the former model's table (k_te per
 #                                        thickness, the 20-m floe;
 #                                        docs/notes/speed-vs-error-former-model.md) from
-#                                        data/speed-vs-error/<config>[-more]
+#                                        crates/lab/records/speed-vs-error/<config>[-more]
 #
 # The former model's records were made by binaries and scenes the current code no longer
 # makes (its k_te reading is gone from the options), so they are read, never resumed.
@@ -42,18 +42,18 @@ case "${1:-}" in
     threads=${2:-$(nproc)}
     for c in decided-steps decided-half decided-default; do
       ./target/release/pressridge campaign --spec "data/campaigns/speed-vs-error/$c.toml" \
-        --out "runs/speed-vs-error/$c" --resume-from "data/speed-vs-error/$c" \
+        --out "runs/speed-vs-error/$c" --resume-from "crates/lab/records/speed-vs-error/$c" \
         --threads "$threads"
     done
     decided runs/speed-vs-error
     ;;
   --former)
-    "$table" reference="$(runs_of data/speed-vs-error reference)" \
-      default="$(runs_of data/speed-vs-error default)" \
-      step-1.0="$(runs_of data/speed-vs-error step-1.0)" \
-      step-0.25=data/speed-vs-error/step-0.25 \
-      implicit-2.32e-4=data/speed-vs-error/implicit-0.8
+    "$table" reference="$(runs_of crates/lab/records/speed-vs-error reference)" \
+      default="$(runs_of crates/lab/records/speed-vs-error default)" \
+      step-1.0="$(runs_of crates/lab/records/speed-vs-error step-1.0)" \
+      step-0.25=crates/lab/records/speed-vs-error/step-0.25 \
+      implicit-2.32e-4=crates/lab/records/speed-vs-error/implicit-0.8
     ;;
-  "") decided data/speed-vs-error ;;
+  "") decided crates/lab/records/speed-vs-error ;;
   *) echo "speed-vs-error: unknown option $1 (--run [N] or --former)" >&2; exit 2 ;;
 esac

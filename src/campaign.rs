@@ -72,7 +72,7 @@ pub enum CampaignError {
 /// The file that marks a campaign directory as a records-only archive: its run records
 /// (`run.json`, with the summary, samples, final profile and metrics tabulate needs)
 /// without the final states the runs wrote, e.g. a finished campaign committed under
-/// `data/paper/`. Its records are checked for their id and scene digest only (not for the
+/// `crates/lab/records/paper/`. Its records are checked for their id and scene digest only (not for the
 /// files their digest lists, which it does not hold); it is never resumed into (a campaign
 /// run there refuses the directory).
 pub const RECORDS_ONLY: &str = "RECORDS-ONLY";
@@ -319,7 +319,7 @@ fn finished_record(out: &Path, id: &str) -> Option<RunRecord> {
 }
 
 /// Takes the finished runs of this campaign from `archive` (e.g. a records-only archive of an
-/// interrupted campaign committed under `data/paper/`) into `out`, so that resuming the
+/// interrupted campaign committed under `crates/lab/records/paper/`) into `out`, so that resuming the
 /// campaign in `out` runs only what the archive lacks. A run is taken when the archive holds
 /// a record of the same planned run (same id) that passes the check of [`read_campaign`] there and
 /// has the planned scene and seed, or else a record of another id with the planned scene and

@@ -174,7 +174,7 @@ def campaign(
     directory ``out``, skipping runs already there.
 
     ``resume_from``: one or more earlier result directories or records-only archives of
-    the same campaign (e.g. ``data/paper/<set>``) whose finished runs are taken into
+    the same campaign (e.g. ``crates/lab/records/paper/<set>``) whose finished runs are taken into
     ``out`` (their records, without final states) instead of being run again, as the
     command line's ``--resume-from``.
 

@@ -20,7 +20,7 @@ pub struct Args {
     #[arg(long)]
     threads: Option<usize>,
     /// Take the finished runs of this campaign from an earlier result directory or a
-    /// records-only archive of it (e.g. `data/paper/<set>` committed from an interrupted
+    /// records-only archive of it (e.g. `crates/lab/records/paper/<set>` committed from an interrupted
     /// campaign) instead of running them again: their records are copied into `--out`
     /// (without final states). Repeatable.
     #[arg(long, value_name = "DIR")]

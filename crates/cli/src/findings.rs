@@ -13,7 +13,7 @@ pub struct Args {
     /// A campaign directory, or a directory of campaign directories (each holding a
     /// `campaign.json`); repeatable. Runs are chosen by their scenes, so any campaigns of the
     /// paper's scenes will do; a run two directories share is counted once.
-    #[arg(long, default_value = "data/paper4")]
+    #[arg(long, default_value = "crates/lab/records/paper4")]
     records: Vec<PathBuf>,
     /// A key of the Figure 5 scene moved for the model whose findings are tested, e.g.
     /// `--set floe.length=20` for the records of the former 20-m floe (repeatable; the
@@ -33,7 +33,7 @@ pub struct Args {
     choices: Option<PathBuf>,
     /// The register of open choices whose probes are the evidence under the table: for each
     /// statement the model disagrees with, the closest any choice comes (default
-    /// `data/choices40` where it exists; left out when the register is not of the model
+    /// `crates/lab/records/choices40` where it exists; left out when the register is not of the model
     /// tested, e.g. with `--set`).
     #[arg(long, value_name = "DIR", conflicts_with = "choices")]
     register: Option<PathBuf>,
@@ -153,7 +153,7 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         dirs.join(", ")
     );
     let dir = a.register.clone().or_else(|| {
-        let d = PathBuf::from("data/choices40");
+        let d = PathBuf::from("crates/lab/records/choices40");
         d.is_dir().then_some(d)
     });
     if let Some(dir) = dir {

@@ -146,7 +146,7 @@ fn tiny_campaign_is_resumable_and_complete() {
         );
     }
     // A records-only archive (the run records without the states, as committed under
-    // data/paper/) reads as the same campaign once marked; unmarked it is incomplete; a
+    // crates/lab/records/paper/) reads as the same campaign once marked; unmarked it is incomplete; a
     // campaign refuses to run into it.
     {
         use pressridge::campaign::RECORDS_ONLY;

@@ -28,7 +28,7 @@ fn the_decided_models_table_is_the_page_or_the_page_says_it_is_not_run() {
     }
 }
 
-/// The committed records of the paper campaign (`data/paper3`, model revision 1, all with
+/// The committed records of the paper campaign (`crates/lab/records/paper3`, model revision 1, all with
 /// the 45° nose) give a row for every item of the paper's statements (a–g), each with a
 /// verdict, and the count of verdicts; the table kept as a notes page is what the command
 /// prints for that model.
@@ -37,24 +37,24 @@ fn the_statement_table_is_made_from_the_committed_records() {
     check_table(
         &[
             "--records",
-            "data/paper3",
+            "crates/lab/records/paper3",
             "--set",
             "floe.nose_slope=1",
             "--register",
-            "data/choices40",
+            "crates/lab/records/choices40",
         ],
         "docs/notes/findings-revision1.md",
     );
 }
 
-/// The former model's table (k_te per thickness, the 20-m floe; data/paper) is kept as a
+/// The former model's table (k_te per thickness, the 20-m floe; crates/lab/records/paper) is kept as a
 /// notes page and stays the command's output.
 #[test]
 fn the_former_models_table_is_made_from_its_records() {
     check_table(
         &[
             "--records",
-            "data/paper",
+            "crates/lab/records/paper",
             "--set",
             "floe.length=20",
             "--set",
@@ -65,17 +65,17 @@ fn the_former_models_table_is_made_from_its_records() {
 }
 
 /// The table of the same model at the former default step, 0.8 of the stable limit
-/// (`data/paper2`), is kept as a notes page and stays the command's output.
+/// (`crates/lab/records/paper2`), is kept as a notes page and stays the command's output.
 #[test]
 fn the_table_at_the_former_step_is_made_from_its_records() {
     check_table(
         &[
             "--records",
-            "data/paper2",
+            "crates/lab/records/paper2",
             "--set",
             "floe.nose_slope=1",
             "--register",
-            "data/choices40",
+            "crates/lab/records/choices40",
         ],
         "docs/notes/findings-step08.md",
     );
@@ -121,7 +121,7 @@ fn check_table(args: &[&str], page: &str) {
 /// bad `--set` fails naming the key.
 #[test]
 fn missing_records_fail_naming_the_scene() {
-    let o = findings(&["--records", "data/paper/friction"]);
+    let o = findings(&["--records", "crates/lab/records/paper/friction"]);
     assert!(!o.status.success());
     let e = String::from_utf8_lossy(&o.stderr);
     assert!(
@@ -149,8 +149,8 @@ fn missing_records_fail_naming_the_scene() {
 #[test]
 fn records_of_two_steps_are_refused_naming_them() {
     let (half, default) = (
-        "data/speed-vs-error/decided-half",
-        "data/speed-vs-error/decided-default",
+        "crates/lab/records/speed-vs-error/decided-half",
+        "crates/lab/records/speed-vs-error/decided-default",
     );
     // The 45° nose of their records.
     let both = [
@@ -181,10 +181,10 @@ fn records_of_two_steps_are_refused_naming_them() {
 /// The register's effect table (`--choices`) from the committed probe records: the
 /// baseline's row and a row per probe setting at each friction pair, every probe difference
 /// with its interval, and the paper's friction statements per setting (a probe's later seeds
-/// pooled with its first), as `data/choices/register.md` holds it.
+/// pooled with its first), as `crates/lab/records/choices/register.md` holds it.
 #[test]
 fn the_register_is_made_from_the_committed_probe_records() {
-    let text = committed_register("data/choices");
+    let text = committed_register("crates/lab/records/choices");
     for f in ["**μ = 0.4, μ_w = 0.6**", "**μ = 1, μ_w = 0.6**"] {
         assert!(text.contains(f), "{f}:\n{text}");
     }
@@ -212,24 +212,24 @@ fn committed_register(dir: &str) -> String {
     text
 }
 
-/// The register's follow-up on the decided model (`data/choices40/`: eight seeds per probe
-/// on the 40-m floe, the baseline taken from the friction set of `data/paper2/`) is the
+/// The register's follow-up on the decided model (`crates/lab/records/choices40/`: eight seeds per probe
+/// on the 40-m floe, the baseline taken from the friction set of `crates/lab/records/paper2/`) is the
 /// command's output too.
 #[test]
 fn the_decided_models_register_is_made_from_its_committed_records() {
-    let text = committed_register("data/choices40");
+    let text = committed_register("crates/lab/records/choices40");
     assert_eq!(text.matches("| baseline (n = 12) |").count(), 4, "{text}");
     for probe in ["viscous_length=1.0 (n = 8)", "drag_coefficient=0.3 (n = 8)"] {
         assert!(text.contains(probe), "{probe}:\n{text}");
     }
 }
 
-/// The register of model revision 2 (`data/choices-r2/`: the drag moment on the body's own
+/// The register of model revision 2 (`crates/lab/records/choices-r2/`: the drag moment on the body's own
 /// outline; its baseline twelve seeds per friction pair) is the command's output, with a row
 /// for each of its open options.
 #[test]
 fn the_revision_2_register_is_made_from_its_committed_records() {
-    let text = committed_register("data/choices-r2");
+    let text = committed_register("crates/lab/records/choices-r2");
     assert_eq!(text.matches("| baseline (n = 12) |").count(), 4, "{text}");
     for probe in [
         "crushing_pressure=1000000.0",
@@ -243,15 +243,15 @@ fn the_revision_2_register_is_made_from_its_committed_records() {
 }
 
 /// Under the table, each statement the model disagrees with gets the register's evidence: the
-/// closest any open choice comes, from the committed probe records (`data/choices40`, read at
-/// the step they were made with). A register of another model (`data/choices`, the 20-m
+/// closest any open choice comes, from the committed probe records (`crates/lab/records/choices40`, read at
+/// the step they were made with). A register of another model (`crates/lab/records/choices`, the 20-m
 /// floe) gives no such section, and a missing one fails naming the option.
 #[test]
 fn the_disagreements_carry_the_registers_evidence() {
-    // The register's model: revision 1 with the 45° nose, as its records and data/paper3's.
-    let nose45 = ["--records", "data/paper3", "--set", "floe.nose_slope=1"];
+    // The register's model: revision 1 with the 45° nose, as its records and crates/lab/records/paper3's.
+    let nose45 = ["--records", "crates/lab/records/paper3", "--set", "floe.nose_slope=1"];
     let with_register = |dir: &str| findings(&[&nose45[..], &["--register", dir]].concat());
-    let o = with_register("data/choices40");
+    let o = with_register("crates/lab/records/choices40");
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let text = String::from_utf8_lossy(&o.stdout);
     let (_, evidence) = text
@@ -268,7 +268,7 @@ fn the_disagreements_carry_the_registers_evidence() {
         "{text}"
     );
     assert!(!evidence.contains("floe.pin=false`:"), "{evidence}");
-    let o = with_register("data/choices");
+    let o = with_register("crates/lab/records/choices");
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(!String::from_utf8_lossy(&o.stdout).contains("closest any open choice"));
     let o = with_register("data/no-such-dir");

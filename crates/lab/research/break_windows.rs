@@ -9,8 +9,8 @@
 //! each break to `WINDOW` after it cover (what a step refined only there would cost).
 //!
 //! ```sh
-//! cargo run --release --example break_windows -- data/speed-vs-error/pieces-r2/breaks.csv [WINDOW_S] [LEAD_S] [REF]
-//! cargo run --release --example break_windows -- data/speed-vs-error/pieces-r2/breaks.csv 0.010 0.006 0.25
+//! cargo run --release --example break_windows -- crates/lab/records/speed-vs-error/pieces-r2/breaks.csv [WINDOW_S] [LEAD_S] [REF]
+//! cargo run --release --example break_windows -- crates/lab/records/speed-vs-error/pieces-r2/breaks.csv 0.010 0.006 0.25
 //! cargo run --release --example break_windows -- LOG[+NAME=LOG ...] [WINDOW_S] [LEAD_S] [REF]
 //! ```
 //!
@@ -19,7 +19,7 @@
 //! full limit beside the plain full limit's):
 //!
 //! ```sh
-//! cargo run --release --example break_windows -- data/speed-vs-error/pieces-r2/breaks.csv+refine-10ms=data/speed-vs-error/pieces-r2/breaks-refine10.csv+refine-50ms=data/speed-vs-error/pieces-r2/breaks-refine50.csv 0.010 0.006 0.25
+//! cargo run --release --example break_windows -- crates/lab/records/speed-vs-error/pieces-r2/breaks.csv+refine-10ms=crates/lab/records/speed-vs-error/pieces-r2/breaks-refine10.csv+refine-50ms=crates/lab/records/speed-vs-error/pieces-r2/breaks-refine50.csv 0.010 0.006 0.25
 //! ```
 
 use pressridge::table::fit::student_t_quantile;

@@ -11,7 +11,7 @@
 //! mean, with its 95 % Welch interval.
 //!
 //! ```sh
-//! cargo run --release --example fracture_dt -- [DIR [BASE_DIR]]   # default data/speed-vs-error/fracture-dt
+//! cargo run --release --example fracture_dt -- [DIR [BASE_DIR]]   # default crates/lab/records/speed-vs-error/fracture-dt
 //! ```
 
 use pressridge::campaign::read_campaign;
@@ -103,7 +103,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let dir = args
         .first()
         .cloned()
-        .unwrap_or_else(|| "data/speed-vs-error/fracture-dt".into());
+        .unwrap_or_else(|| "crates/lab/records/speed-vs-error/fracture-dt".into());
     let points = rows(&dir)?;
     let (mut base, mut base_budget) = match args.get(1) {
         Some(b) => {

@@ -42,8 +42,8 @@
 //!
 //! ```sh
 //! cargo run --release --example speed_vs_error -- \
-//!     quarter=data/speed-vs-error/chord-steps@numerics.time_step_safety=0.25 \
-//!     full=data/speed-vs-error/chord-steps@numerics.time_step_safety=1.0
+//!     quarter=crates/lab/records/speed-vs-error/chord-steps@numerics.time_step_safety=0.25 \
+//!     full=crates/lab/records/speed-vs-error/chord-steps@numerics.time_step_safety=1.0
 //! ```
 
 use pressridge::campaign::read_campaign;

@@ -6,7 +6,7 @@
 //! point is every run whose scene is the built-in default (the Figure 5 scene) but for its
 //! name, seed and output; the friction set is the same scene at other (μ, μ_w); the modulus
 //! and speed sets move E and U alone (with the duration that pushes 100 m of sheet). So the same table reads the paper campaign's records
-//! (`data/paper/`) or any other set of campaigns of the same scenes.
+//! (`crates/lab/records/paper/`) or any other set of campaigns of the same scenes.
 //!
 //! Verdicts: **agree** when the 95 % interval lies on the paper's side of the statement's
 //! bound, **disagree** when it lies on the other side, **unresolved** when it straddles it

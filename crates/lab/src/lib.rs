@@ -10,7 +10,9 @@
 //!   its baseline, with Welch's 95 % interval (`pressridge findings --choices`,
 //!   `docs/choices.md`);
 //! - the investigation programs behind `docs/` (`crates/lab/research/`, examples of this
-//!   crate: `cargo run --release --example NAME`).
+//!   crate: `cargo run --release --example NAME`);
+//! - the committed run records all of these read (`crates/lab/records/`, records-only
+//!   campaign archives: the provenance of the shipped table and of the docs' numbers).
 //!
 //! Everything here reads the products' data types (`pressridge::record::RunRecord`,
 //! `pressridge::scene::Scene`, `pressridge::table`); no product crate depends on this one.
