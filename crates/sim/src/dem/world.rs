@@ -404,31 +404,6 @@ impl World {
         self.last_dt = dt;
     }
 
-    /// This step's Δt (s): [`World::dt`], or its [`WorldParams::refine_fraction`] while a
-    /// joint is cracking or within [`WorldParams::refine_window`] of the last severed joint,
-    /// or while a joint is loaded beyond [`WorldParams::refine_load`] of its strength.
-    fn step_length(&self) -> f64 {
-        let p = &self.params;
-        let after_break = p.refine_window.is_some()
-            && (self.time < self.refine_until || self.joints.any_cracking());
-        let loaded = p.refine_load.is_some_and(|f| self.joints.max_load() > f);
-        if after_break || loaded {
-            self.dt * p.refine_fraction.unwrap_or(params::DEFAULT_REFINE_FRACTION)
-        } else {
-            self.dt
-        }
-    }
-
-    /// The length of the last step taken (s); [`World::dt`] before the first and whenever
-    /// the step is not refined ([`WorldParams::refine_window`]).
-    pub fn last_step(&self) -> f64 {
-        if self.last_dt > 0.0 {
-            self.last_dt
-        } else {
-            self.dt
-        }
-    }
-
     /// Outlines at the present poses, then every force of the step into `bodies.force` and
     /// `bodies.torque`: gravity, buoyancy and drag, joints (eq 1), boundary conditions
     /// (eqs 7–8, floe supports), external loads, numerical damping, contacts (eqs 2–4).

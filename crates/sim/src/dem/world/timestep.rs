@@ -1,10 +1,35 @@
 //! The time step of a [`World`]: the stable limit of the leapfrog scheme from the joints
 //! and contacts present (docs/model.md, "Time step"), its safety factor, a fixed step
-//! checked against the limit.
+//! checked against the limit, and the step refined around fracture.
 
 use super::*;
 
 impl World {
+    /// This step's Δt (s): [`World::dt`], or its [`WorldParams::refine_fraction`] while a
+    /// joint is cracking or within [`WorldParams::refine_window`] of the last severed joint,
+    /// or while a joint is loaded beyond [`WorldParams::refine_load`] of its strength.
+    pub(super) fn step_length(&self) -> f64 {
+        let p = &self.params;
+        let after_break = p.refine_window.is_some()
+            && (self.time < self.refine_until || self.joints.any_cracking());
+        let loaded = p.refine_load.is_some_and(|f| self.joints.max_load() > f);
+        if after_break || loaded {
+            self.dt * p.refine_fraction.unwrap_or(params::DEFAULT_REFINE_FRACTION)
+        } else {
+            self.dt
+        }
+    }
+
+    /// The length of the last step taken (s); [`World::dt`] before the first and whenever
+    /// the step is not refined ([`WorldParams::refine_window`]).
+    pub fn last_step(&self) -> f64 {
+        if self.last_dt > 0.0 {
+            self.last_dt
+        } else {
+            self.dt
+        }
+    }
+
     /// Re-derives the time step from the bodies and joints present (unless fixed):
     /// `time_step_safety` × [`World::stable_time_step`].
     pub(crate) fn refresh_time_step(&mut self) {
