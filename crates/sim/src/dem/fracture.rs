@@ -326,6 +326,7 @@ mod tests {
             joint_dashpot: Dashpot::Explicit,
             incubation_time: incubation,
             fracture_step_mean: step_mean,
+            track_load: false,
         };
         for n in 1..=20_000 {
             set.joints[k].stress = SurfaceStress {

@@ -250,25 +250,31 @@ impl WorldParams {
         if let Some(w) = self.refine_window {
             nonneg("refine_window", w)?;
         }
-        if let Some(f) = self.refine_load {
-            pos("refine_load", f)?;
+        // Fractions in (0, 1]: of the joints' strength, and of the step.
+        let fraction = |name: &'static str, f: f64, why: &'static str| {
+            pos(name, f)?;
             if f > 1.0 {
                 return Err(WorldError::Param {
-                    name: "refine_load",
+                    name,
                     value: f,
-                    why: "must be at most 1 (a fraction of the joints' strength)",
+                    why,
                 });
             }
+            Ok(())
+        };
+        if let Some(f) = self.refine_load {
+            fraction(
+                "refine_load",
+                f,
+                "must be at most 1 (a fraction of the joints' strength)",
+            )?;
         }
         if let Some(f) = self.refine_fraction {
-            pos("refine_fraction", f)?;
-            if f > 1.0 {
-                return Err(WorldError::Param {
-                    name: "refine_fraction",
-                    value: f,
-                    why: "must be at most 1 (a refined step is not longer than the step)",
-                });
-            }
+            fraction(
+                "refine_fraction",
+                f,
+                "must be at most 1 (a refined step is not longer than the step)",
+            )?;
         }
         if self.time_step_safety > 1.0 {
             return Err(WorldError::Param {
