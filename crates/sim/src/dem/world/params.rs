@@ -78,8 +78,8 @@ pub struct WorldParams {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub refine_load: Option<f64>,
     /// The refined step as a fraction of the step (dimensionless, in (0, 1]), with
-    /// [`WorldParams::refine_window`] or [`WorldParams::refine_load`]; `None`:
-    /// [`DEFAULT_REFINE_FRACTION`].
+    /// [`WorldParams::refine_window`] or [`WorldParams::refine_load`]; `None`: a quarter
+    /// (0.25, the step study's reference at the full limit).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub refine_fraction: Option<f64>,
     /// Mass-proportional numerical damping γ (1/s): F = −γ·m·v, M = −γ·I·ω. Default 0;
