@@ -5,6 +5,7 @@
 # and commit made them. `pressridge tabulate`, `pressridge findings` and `--resume-from` read
 # such an archive as the campaign itself.
 #   scripts/archive-records.sh RUN_DIR ARCHIVE_DIR "what made them (command, commit, date)"
+# Into an existing archive it adds the runs it lacks and appends the line to RECORDS-ONLY.
 set -euo pipefail
 src=${1:?campaign result directory}; dst=${2:?archive directory}; what=${3:?provenance text}
 [ -f "$src/campaign.json" ] || { echo "archive-records: $src is not a campaign directory" >&2; exit 1; }
@@ -14,6 +15,11 @@ cp "$src/campaign.json" "$src/plan.json" "$dst/"
   mkdir -p "$dst/$(dirname "$f")"
   cp "$src/$f" "$dst/$f"
 done
-printf 'Run records (run.json) of campaign %s, without the final states the runs wrote.\n%s\n' \
-  "$(basename "$src")" "$what" > "$dst/RECORDS-ONLY"
+# An archive filled over several sessions keeps each one's line.
+if [ -f "$dst/RECORDS-ONLY" ]; then
+  printf '%s\n' "$what" >> "$dst/RECORDS-ONLY"
+else
+  printf 'Run records (run.json) of campaign %s, without the final states the runs wrote.\n%s\n' \
+    "$(basename "$src")" "$what" > "$dst/RECORDS-ONLY"
+fi
 echo "archived $(cd "$dst" && find runs -name run.json | wc -l) records into $dst"
