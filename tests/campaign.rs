@@ -289,7 +289,8 @@ fn a_campaign_runs_seed_by_seed_over_the_grid() {
 #[test]
 fn every_run_counts_at_its_final_volume() {
     use pressridge::table::tabulate::tabulate;
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("crates/lab/records/paper3/thickness");
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("crates/lab/records/paper3/thickness");
     let (_, records) = read_records(&dir).unwrap();
     let t = tabulate(&records, 19).unwrap();
     assert!(

@@ -249,7 +249,12 @@ fn the_revision_2_register_is_made_from_its_committed_records() {
 #[test]
 fn the_disagreements_carry_the_registers_evidence() {
     // The register's model: revision 1 with the 45° nose, as its records and crates/lab/records/paper3's.
-    let nose45 = ["--records", "crates/lab/records/paper3", "--set", "floe.nose_slope=1"];
+    let nose45 = [
+        "--records",
+        "crates/lab/records/paper3",
+        "--set",
+        "floe.nose_slope=1",
+    ];
     let with_register = |dir: &str| findings(&[&nose45[..], &["--register", dir]].concat());
     let o = with_register("crates/lab/records/choices40");
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
