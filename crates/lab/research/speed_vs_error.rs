@@ -283,7 +283,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     continue;
                 }
                 let (d, h) = a.welch_difference(&b);
-                let (pd, ph) = (100.0 * d / a.mean, 100.0 * (h / a.mean).abs());
+                // In % of the reference mean; the rafted share in percentage points (its
+                // reference mean may be zero).
+                let (pd, ph, unit) = if key == "rafted" {
+                    (100.0 * d, 100.0 * h.abs(), "pp")
+                } else {
+                    (100.0 * d / a.mean, 100.0 * (h / a.mean).abs(), "%")
+                };
                 // The shift in units of the reference's seed-to-seed σ (of both arms pooled
                 // where the reference's runs all agree, as every run ridging does), with its
                 // interval, judged by the step's test.
@@ -305,7 +311,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     (true, false) => " ✗",
                 };
                 print!(
-                    " {pd:+.1} % [{:+.1}, {:+.1}]; {sd:+.2} σ [{:+.2}, {:+.2}]{flag} |",
+                    " {pd:+.1} {unit} [{:+.1}, {:+.1}]; {sd:+.2} σ [{:+.2}, {:+.2}]{flag} |",
                     pd - ph,
                     pd + ph,
                     sd - sh,
@@ -336,7 +342,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
          the elastic energy released by cracks per joint broken, in J/m; sail and keel in \
          m). Other rows: difference of the mean from the reference mean in % of the \
          reference mean and in units of the reference's σ, each with its 95 % Welch \
-         interval (rafted: the share of runs whose intact sheet rode over the floe); for the \
+         interval (rafted: the share of runs whose intact sheet rode over the floe, its shift in \
+         percentage points); for the \
          quantities the step's equivalence test judges, ✓: the interval spans zero and its \
          centre lies within ±0.3 σ, ✗: not; a configuration is equivalent when every judged \
          quantity passes with at least 41 seeds in each arm. Pieces tables: the reference's \
