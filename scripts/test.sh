@@ -13,7 +13,9 @@ echo "== cargo doc of the Rust API, warnings denied (broken links) ($SECONDS s)"
 # The three Rust libraries and the lab, `pressridge` with its figures (feature `plot`, which its default
 # leaves out); the C ABI's crates and the command line (crates/cli) are no Rust API (and the C
 # library's lib name, `pressridge`, would overwrite the library's pages).
-RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --lib -p pressridge -p pressridge-sim -p pressridge-column -p pressridge-lab --features pressridge/plot
+# The builds' feature pins (crates/pins, no code) join so that the dependencies are checked with
+# the features every other build here resolves.
+RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --lib -p pressridge -p pressridge-sim -p pressridge-column -p pressridge-lab -p pressridge-pins --features pressridge/plot
 echo "== docs/validation.md: its tables are the committed reports' numbers ($SECONDS s)"
 python3 scripts/validation-tables.py --check docs/validation.md
 # One build for everything below: the `ci` profile (Cargo.toml) serves the Rust tests, the

@@ -212,8 +212,8 @@ fn the_lower_crates_cannot_import_upwards() {
 }
 
 /// The command line (`crates/cli`) is the top of the workspace: its manifest names, of the
-/// workspace's crates, only the library `pressridge`, the simulator, the column crate and the
-/// lab (for `pressridge findings`), and
+/// workspace's crates, only the library `pressridge`, the simulator, the column crate, the
+/// lab (for `pressridge findings`) and the builds' feature pins (`crates/pins`, no code), and
 /// no manifest names it (as a dependency of any kind). The argument parser and the progress
 /// bars are its own: the library's manifest does not name them, so no crate that depends on
 /// the library builds them.
@@ -230,6 +230,7 @@ fn the_command_line_is_the_top_and_its_dependencies_are_its_own() {
         "pressridge-sim",
         "pressridge-column",
         "pressridge-lab",
+        "pressridge-pins",
     ];
     assert!(
         cli.iter()
@@ -257,6 +258,18 @@ fn the_command_line_is_the_top_and_its_dependencies_are_its_own() {
         }
     }
     let root_deps = manifest_dependencies("Cargo.toml", &["[dependencies]"]);
+    // The libraries a host depends on carry none of the workspace builds' feature pins.
+    for m in [
+        "Cargo.toml",
+        "crates/sim/Cargo.toml",
+        "crates/column/Cargo.toml",
+    ] {
+        let deps = manifest_dependencies(m, &all);
+        assert!(
+            !deps.iter().any(|d| d == "pressridge-pins"),
+            "{m} names the build pins"
+        );
+    }
     assert!(
         root_deps
             .iter()
