@@ -7,7 +7,7 @@
 use super::fit::Band;
 use super::lookup::{Axes, Field, LookupError, RidgeLookup};
 use super::tabulate::{RidgeTable, SetFits};
-use crate::energy::{LedgerTerm, term};
+use crate::energy::{LedgerTerm, term, term_file};
 use ndarray::{Array, Array1, Array2, ArrayView1, CowArray, Dimension, IxDyn};
 
 /// The values of a [`TableVariable`]: a view of the table's own array where the variable is
@@ -415,7 +415,7 @@ impl RidgeTable {
                 .map(move |((name, long_name), x)| TableVariable {
                     name,
                     dims: S3,
-                    units: lt.udunits,
+                    units: term_file(lt.name).udunits,
                     long_name,
                     data: view(x),
                 })
@@ -482,7 +482,7 @@ mod tests {
         let names = |n: &str| {
             let t = term(n);
             let [(a, b), (c, d)] = ensemble_names(&t);
-            (t.udunits, [a, b, c, d])
+            (term_file(n).udunits, [a, b, c, d])
         };
         assert_eq!(
             names("work"),

@@ -8,8 +8,10 @@
 
 use serde::{Deserialize, Serialize};
 
+pub(crate) mod files;
 pub(crate) mod terms;
-pub use terms::{Keep, LEDGER_TERMS, LedgerTerm, N_TERMS, Sign, TermSet, Terms, term, term_index};
+pub use files::{Keep, LEDGER_FILES, TermFile, TermSet, Terms, term_file};
+pub use terms::{LEDGER_TERMS, LedgerTerm, N_TERMS, Sign, term, term_index};
 
 /// The energy budget at one instant, every term in J per metre of ridge.
 ///

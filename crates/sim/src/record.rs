@@ -4,7 +4,7 @@
 //! so that no import runs upward (docs/architecture.md). How a record is found on disk and
 //! verified against its files stays in `pressridge::campaign`, in the crate above this one.
 
-use crate::energy::{EnergyBudget, Keep, LedgerTerm, TermSet, Terms};
+use crate::energy::{EnergyBudget, Keep, LEDGER_FILES, TermSet, Terms};
 use crate::observe::{Profile, RidgeMetrics, RidgeSummary, ridged_strips};
 use crate::scene::Scene;
 use crate::simulation::{self, Summary};
@@ -17,7 +17,7 @@ pub struct RunSample {
     pub time: f64,
     /// Ridged-ice volume V = U·h·t (m³/m).
     pub volume: f64,
-    /// The ledger terms a sample keeps ([`LedgerTerm::sample`]: work and ΔPE, which the
+    /// The ledger terms a sample keeps ([`crate::energy::TermFile::sample`]: work and ΔPE, which the
     /// tables fit, and every dissipation, which their gate checks), each under its name
     /// (J/m).
     #[serde(flatten)]
@@ -36,13 +36,13 @@ pub struct RunSample {
     pub ridge_strips: Vec<[f64; 2]>,
 }
 
-/// The terms of [`RunSample::ledger`]: the column [`LedgerTerm::sample`] of the table.
+/// The terms of [`RunSample::ledger`]: the column [`crate::energy::TermFile::sample`] of the files' table.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Sampled;
 
 impl TermSet for Sampled {
-    fn keep(t: &LedgerTerm) -> Keep {
-        t.sample
+    fn keep(k: usize) -> Keep {
+        LEDGER_FILES[k].sample
     }
 }
 
@@ -122,16 +122,20 @@ pub struct RunDigest {
 mod tests {
     use super::*;
     use crate::energy::LEDGER_TERMS;
-    use crate::energy::terms::check;
+    use crate::energy::files::check;
 
     /// A campaign's sample keeps the terms of the table's `sample` column under their names,
     /// in the table's order, between the volume and the mean force.
     #[test]
     fn a_sample_keeps_its_ledger_terms_by_the_table() {
         let json = serde_json::json!({"time": 1.0, "volume": 2.0, "mean_force": 3.0});
-        let text = check::file(json, |t| t.sample, RunSample::energy);
+        let text = check::file(json, |k| LEDGER_FILES[k].sample, RunSample::energy);
         let at = |k: &str| check::key_at(&text, k);
-        for t in LEDGER_TERMS.iter().filter(|t| t.sample != Keep::No) {
+        for (t, _) in LEDGER_TERMS
+            .iter()
+            .zip(&LEDGER_FILES)
+            .filter(|(_, f)| f.sample != Keep::No)
+        {
             assert!(at("volume") < at(t.name) && at(t.name) < at("mean_force"));
         }
     }

@@ -3,7 +3,9 @@
 //! `pressridge::io`, in the crate above this one).
 
 use crate::dem::{Role, Snapshot, World};
-use crate::energy::{EnergyBudget, Keep, LEDGER_TERMS, LedgerTerm, N_TERMS, Sign, TermSet, Terms};
+use crate::energy::{
+    EnergyBudget, Keep, LEDGER_FILES, LEDGER_TERMS, N_TERMS, Sign, TermSet, Terms,
+};
 use crate::scene::{Scene, SceneError};
 use serde::{Deserialize, Serialize};
 
@@ -119,9 +121,9 @@ impl ContactSummary {
 pub struct SummaryInputs;
 
 impl TermSet for SummaryInputs {
-    fn keep(t: &LedgerTerm) -> Keep {
-        if t.sign == Sign::Input {
-            t.summary
+    fn keep(k: usize) -> Keep {
+        if LEDGER_TERMS[k].sign == Sign::Input {
+            LEDGER_FILES[k].summary
         } else {
             Keep::No
         }
@@ -133,11 +135,11 @@ impl TermSet for SummaryInputs {
 pub struct SummarySinks;
 
 impl TermSet for SummarySinks {
-    fn keep(t: &LedgerTerm) -> Keep {
-        if t.sign == Sign::Input {
+    fn keep(k: usize) -> Keep {
+        if LEDGER_TERMS[k].sign == Sign::Input {
             Keep::No
         } else {
-            t.summary
+            LEDGER_FILES[k].summary
         }
     }
 }
@@ -392,14 +394,19 @@ pub(crate) use summary_fixture::summary_without_ledger;
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::energy::terms::check;
+    use crate::energy::LedgerTerm;
+    use crate::energy::files::check;
 
     /// `summary.json` keeps every ledger term of the table under its name, in the table's
     /// order, with `work_eq9` right after the inputs, between the run's head and tail.
     #[test]
     fn the_summary_keeps_the_ledger_by_the_table() {
-        let text = check::file(summary_without_ledger(), |t| t.summary, Summary::energy);
-        assert!(LEDGER_TERMS.iter().all(|t| t.summary != Keep::No));
+        let text = check::file(
+            summary_without_ledger(),
+            |k| LEDGER_FILES[k].summary,
+            Summary::energy,
+        );
+        assert!(LEDGER_FILES.iter().all(|f| f.summary != Keep::No));
         let at = |k: &str| check::key_at(&text, k);
         let inputs: Vec<&LedgerTerm> = LEDGER_TERMS
             .iter()
