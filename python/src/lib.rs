@@ -24,6 +24,8 @@
 //!
 //! This file registers them in the module `pressridge._core`.
 
+#![warn(missing_docs)]
+
 use pyo3::prelude::*;
 
 mod arrays;

@@ -20,6 +20,8 @@
 //! - no panic crosses the boundary: each entry point runs under `catch_unwind` and turns a
 //!   panic into [`PRESSRIDGE_ERR_PANIC`].
 
+#![warn(missing_docs)]
+
 use std::cell::RefCell;
 use std::ffi::c_char;
 use std::panic::{AssertUnwindSafe, catch_unwind};
