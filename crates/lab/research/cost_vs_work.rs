@@ -110,7 +110,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         )?;
         t0 = r.time;
     }
-    std::fs::write(&out, csv)?;
+    // Written beside and renamed, so that a stopped program leaves no half-written file.
+    let tmp = out.with_extension("csv.partial");
+    std::fs::write(&tmp, csv)?;
+    std::fs::rename(&tmp, &out)?;
     let wall: f64 = rows.iter().map(|r| r.wall).sum();
     let steps: u64 = rows.iter().map(|r| r.steps).sum();
     let body_steps: f64 = rows.iter().map(|r| r.steps as f64 * r.bodies).sum();
