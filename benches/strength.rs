@@ -8,10 +8,13 @@ use std::time::Duration;
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use ndarray::{Array1, Array2, ShapeBuilder};
 use pressridge::itd::{
-    CategoryBounds, CiceTracerFlags, Closing, ColumnMut, OceanFluxes, Participation,
-    Redistribution, RidgeBatchForcing, RidgeOptions, RidgeRatesMut, RidgeStepOptions, StepForcing,
-    StepWorkspace, StrengthOptions, TracerLayout, category_bounds, ridge_batch, ridge_step_column,
-    strength_batch,
+    CategoryBounds, ColumnMut, RidgeOptions, RidgeStepOptions, StepForcing, StepWorkspace,
+    StrengthOptions, category_bounds,
+    details::{
+        CiceTracerFlags, Closing, OceanFluxes, Participation, Redistribution, RidgeBatchForcing,
+        RidgeRatesMut, TracerLayout,
+    },
+    ridge_batch, ridge_step_column, strength_batch,
 };
 
 const NCAT: usize = 5;

@@ -6,7 +6,9 @@
 #![cfg(all(target_os = "linux", target_env = "gnu", target_arch = "x86_64"))]
 
 use pressridge::itd::{
-    Cf, StrengthConsts, StrengthOptions, Workspace, strength_column, strength_column_constant_cf,
+    Cf, StrengthOptions, Workspace,
+    details::{StrengthConsts, strength_column_constant_cf},
+    strength_column,
 };
 
 unsafe extern "C" {
@@ -29,7 +31,7 @@ fn the_strength_raises_no_trapped_exception_on_empty_categories() {
             ..Default::default()
         };
         if !exponential {
-            opts.redistribution = pressridge::itd::Redistribution::Uniform;
+            opts.redistribution = pressridge::itd::details::Redistribution::Uniform;
         }
         let k = StrengthConsts::new(&opts).expect("Rothrock with a constant C_f");
         let mut ws = Workspace::new(5);

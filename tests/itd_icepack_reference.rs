@@ -21,7 +21,8 @@ mod common;
 use common::column::{Column, Stepped, step};
 use common::icepack::{num, nums, tracers};
 use pressridge::itd::{
-    Closing, OceanFluxes, RidgeStepOptions, StepForcing, TracerBase, TracerLayout,
+    RidgeStepOptions, StepForcing,
+    details::{Closing, OceanFluxes, TracerBase, TracerLayout},
 };
 use serde_json::Value;
 

@@ -6,10 +6,10 @@
 //! adversarial loop of `itd_ridge_step_conservation.rs`.
 
 use pressridge::itd::{
-    CategoryBounds, CiceTracerFlags, Closing, ColumnMut, ItdParams, MuRdgTable, OceanFluxes,
-    Redistribution, RidgeForcing, RidgeOptions, RidgeStepOptions, StepForcing, StepWorkspace,
-    StrengthOptions, TracerLayout, Workspace, category_bounds, ridge_column, ridge_step_column,
-    strength_batch, strength_column,
+    CategoryBounds, ColumnMut, ItdParams, RidgeForcing, RidgeOptions, RidgeStepOptions,
+    StepForcing, StepWorkspace, StrengthOptions, Workspace, category_bounds,
+    details::{CiceTracerFlags, Closing, MuRdgTable, OceanFluxes, Redistribution, TracerLayout},
+    ridge_column, ridge_step_column, strength_batch, strength_column,
 };
 
 /// μ_rdg = `mu` at every thickness from 1 mm to 1 km (no lookup clamps).

@@ -9,7 +9,7 @@ use ndarray::Array1;
 use pressridge::io::itd_netcdf::{
     FieldMeta, NetcdfError, Output, read_cf_table, read_itd, write_cf_table, write_output,
 };
-use pressridge::itd::{CfTable, ColumnError};
+use pressridge::itd::{ColumnError, details::CfTable};
 
 #[test]
 fn round_trip_keeps_values_and_dimensions() {
@@ -166,14 +166,14 @@ fn sample_file_is_valid_and_ridging_conserves_it() {
         vicen.view_mut(),
         aice0.view_mut(),
         g.hin_max.as_ref().unwrap(),
-        pressridge::itd::RidgeBatchForcing {
+        pressridge::itd::details::RidgeBatchForcing {
             convergence: conv.view(),
             shear: shear.view(),
             dt: 86_400.0,
             valid: None,
         },
         &Default::default(),
-        pressridge::itd::RidgeRatesMut {
+        pressridge::itd::details::RidgeRatesMut {
             closing: c.view_mut(),
             opening: o.view_mut(),
             dardg1dt: d1.view_mut(),
@@ -223,7 +223,7 @@ fn write_output_rejects_wrong_field_length() {
 /// term is formed as Icepack's ridging needs it; an unknown unit, or none, is refused by name.
 #[test]
 fn cice_history_rates_in_percent_per_day_are_converted_or_refused() {
-    use pressridge::itd::deformation_terms;
+    use pressridge::itd::details::deformation_terms;
     let dir = common::scratch("units");
     let write = |name: &str, units: &str| -> std::path::PathBuf {
         let p = dir.join(name);
@@ -268,7 +268,7 @@ fn cice_history_rates_in_percent_per_day_are_converted_or_refused() {
 
 #[test]
 fn deformation_terms_are_icepacks() {
-    use pressridge::itd::{deformation_terms, percent_per_day_to_per_second};
+    use pressridge::itd::details::{deformation_terms, percent_per_day_to_per_second};
     // Pure convergence: all of it closes, no shear term.
     assert_eq!(deformation_terms(-2e-6, 0.0), (2e-6, 0.0));
     // Pure shear: Delta = shear/2 (e = 2), shear term = Delta/2.

@@ -16,9 +16,13 @@
 )]
 
 use pressridge::itd::{
-    CategoryBounds, CiceTracerFlags, Closing, ColumnError, ColumnMut, MuRdgTable, OceanFluxes,
-    Participation, Redistribution, RidgeStepOptions, SaltFlux, StepForcing, StepWorkspace,
-    TracerLayout, category_bounds, ridge_step_column,
+    CategoryBounds, ColumnError, ColumnMut, RidgeStepOptions, StepForcing, StepWorkspace,
+    category_bounds,
+    details::{
+        CiceTracerFlags, Closing, MuRdgTable, OceanFluxes, Participation, Redistribution, SaltFlux,
+        TracerLayout,
+    },
+    ridge_step_column,
 };
 
 /// SplitMix64: small, seeded, reproducible.

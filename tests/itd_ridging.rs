@@ -4,9 +4,9 @@
 use approx::assert_relative_eq;
 use ndarray::{Array1, Array2};
 use pressridge::itd::{
-    CategoryBounds, ColumnError, ItdError, Participation, Redistribution, RidgeBatchForcing,
-    RidgeForcing, RidgeOptions, RidgeRatesMut, Workspace, category_bounds, ridge_batch,
-    ridge_column,
+    CategoryBounds, ColumnError, ItdError, RidgeForcing, RidgeOptions, Workspace, category_bounds,
+    details::{Participation, Redistribution, RidgeBatchForcing, RidgeRatesMut},
+    ridge_batch, ridge_column,
 };
 use proptest::prelude::*;
 
@@ -356,8 +356,9 @@ proptest! {
 #[test]
 fn area_only_step_is_bitwise_the_complete_step() {
     use pressridge::itd::{
-        CiceTracerFlags, Closing, ColumnMut, OceanFluxes, RidgeStepOptions, StepForcing,
-        StepWorkspace, TracerLayout, ridge_step_column,
+        ColumnMut, RidgeStepOptions, StepForcing, StepWorkspace,
+        details::{CiceTracerFlags, Closing, OceanFluxes, TracerLayout},
+        ridge_step_column,
     };
     let layout = TracerLayout::cice(1, 1, CiceTracerFlags::default()).unwrap();
     let hin = category_bounds(&CategoryBounds::RoundNumbers, 5).unwrap();

@@ -5,13 +5,14 @@ use std::sync::Arc;
 
 use approx::assert_relative_eq;
 use ndarray::{Array1, Array2};
-use pressridge::itd::participation;
+use pressridge::itd::details::participation;
+use pressridge::itd::details::{category_fractions, ridge_geometry};
 use pressridge::itd::{
-    CategoryBounds, Cf, CfPreset, CfProvider, CfTable, ColumnError, ItdError, ItdParams,
-    Participation, Redistribution, StrengthFormula, StrengthOptions, Workspace, category_bounds,
+    CategoryBounds, Cf, ColumnError, ItdError, ItdParams, StrengthOptions, Workspace,
+    category_bounds,
+    details::{CfPreset, CfProvider, CfTable, Participation, Redistribution, StrengthFormula},
     strength_batch, strength_column,
 };
-use pressridge::itd::{category_fractions, ridge_geometry};
 
 /// C_p = g ρ_i (ρ_w − ρ_i) / (2 ρ_w) = 0.5 · 9.80616 · 109 · 917 / 1026 = 477.6584359064328 N/m³.
 const CP: f64 = 477.658_435_906_432_8;
@@ -522,7 +523,7 @@ fn cf_table_interpolates_clamps_and_flags() {
     // Nothing clamped, nothing shared; and a batch counts a material clamp only at ≥ 1 %.
     let s = strength_column(&a, &v, Some(0.02), &flat, &mut ws).unwrap();
     assert!(!s.cf_clamped && s.cf_clamped_share == 0.0);
-    assert_eq!(pressridge::itd::CF_CLAMPED_MATERIAL_SHARE, 0.01);
+    assert_eq!(pressridge::itd::details::CF_CLAMPED_MATERIAL_SHARE, 0.01);
 }
 
 #[test]
@@ -595,7 +596,7 @@ fn masked_columns_get_the_fill_value_and_are_not_validated() {
     let vicen = Array2::from_elem((2, 3), 0.5);
     let valid = Array1::from(vec![true, false, true]);
     let mut out = Array1::zeros(3);
-    let s = pressridge::itd::strength_batch_masked(
+    let s = pressridge::itd::details::strength_batch_masked(
         aicen.view(),
         vicen.view(),
         None,
@@ -743,8 +744,8 @@ fn custom_cf_provider_out_of_range_is_refused() {
     #[derive(Debug)]
     struct Wild;
     impl CfProvider for Wild {
-        fn lookup(&self, h: f64) -> pressridge::itd::CfLookup {
-            pressridge::itd::CfLookup {
+        fn lookup(&self, h: f64) -> pressridge::itd::details::CfLookup {
+            pressridge::itd::details::CfLookup {
                 value: if h > 1.0 { f64::NAN } else { 12.0 },
                 clamped: false,
             }

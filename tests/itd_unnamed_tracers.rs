@@ -8,8 +8,8 @@ mod common;
 
 use common::column::{Column, step};
 use pressridge::itd::{
-    CategoryBounds, CiceTracerFlags, Closing, RidgeStepOptions, StepForcing, TracerLayout,
-    category_bounds,
+    CategoryBounds, RidgeStepOptions, StepForcing, category_bounds,
+    details::{CiceTracerFlags, Closing, TracerLayout},
 };
 
 #[test]

@@ -13,7 +13,7 @@ mod nc_input;
 use libfuzzer_sys::fuzz_target;
 use nc_input::{Bytes, scratch, write};
 use pressridge::io::itd_netcdf::{read_cf_table, read_cf_table_at_friction};
-use pressridge::itd::{CfProvider, CfTable};
+use pressridge::itd::details::{CfProvider, CfTable};
 
 const DIMS: &[&str] = &["thickness", "node", "set", "volume", "mu"];
 const VARS: &[&str] = &["thickness", "cf", "mu", "mu_w", "volume", "cf_fit", "W"];

@@ -16,7 +16,7 @@ use pressridge::io::itd_netcdf::{
     CellUnits, Output, ReadOptions, read_cell_field, read_itd_with, read_packed_tracers,
     read_snow_tracers, write_output,
 };
-use pressridge::itd::CiceLayoutSpec;
+use pressridge::itd::details::CiceLayoutSpec;
 
 const DIMS: &[&str] = &["nc", "ncat", "ct", "time", "nj", "ni", "ntrcr", "nc_bounds"];
 const VARS: &[&str] = &[

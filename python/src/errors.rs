@@ -15,7 +15,7 @@ use pyo3::prelude::*;
 use pressridge::campaign::CampaignError;
 use pressridge::io::IoError;
 use pressridge::io::itd_netcdf::NetcdfError;
-use pressridge::itd::ParamError;
+use pressridge::itd::details::ParamError;
 use pressridge::scene::{SceneError, SceneLoadError};
 
 /// An error on its way to Python; `Send`, so it can leave a GIL-free section.

@@ -74,7 +74,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("RAFTING_REACH", pressridge::table::rafting::RAFTING_REACH)?;
     m.add(
         "CF_CLAMPED_MATERIAL_SHARE",
-        pressridge::itd::CF_CLAMPED_MATERIAL_SHARE,
+        pressridge::itd::details::CF_CLAMPED_MATERIAL_SHARE,
     )?;
     m.add_function(wrap_pyfunction!(options::default_params, m)?)?;
     m.add_function(wrap_pyfunction!(options::param_meta, m)?)?;

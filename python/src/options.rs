@@ -15,8 +15,10 @@ use pyo3::types::PyDict;
 
 use pressridge::io::itd_netcdf::read_cf_table;
 use pressridge::itd::{
-    CategoryBounds, Cf, CfPreset, CfTable, ItdParams, MuRdgTable, NamedParams, Participation,
-    Redistribution, RidgeStepOptions, StrengthFormula, StrengthOptions, category_bounds,
+    CategoryBounds, Cf, ItdParams, RidgeStepOptions, StrengthOptions, category_bounds,
+    details::{
+        CfPreset, CfTable, MuRdgTable, NamedParams, Participation, Redistribution, StrengthFormula,
+    },
 };
 
 use crate::arrays::Pair;

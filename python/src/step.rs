@@ -14,9 +14,13 @@ use numpy::{
 use pyo3::prelude::*;
 
 use pressridge::itd::{
-    BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, CategoryBounds, CiceTracerFlags,
-    NamedParams, RidgeStepOptions, RidgeStepParams, SPECIES_OUTPUTS, SaltFlux, StepBatchMut,
-    StepBatchOutputs, TracerLayout, category_bounds, ridge_step_batch, species_counts,
+    CategoryBounds, RidgeStepOptions, category_bounds,
+    details::{
+        BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, CiceTracerFlags, NamedParams,
+        RidgeStepParams, SPECIES_OUTPUTS, SaltFlux, StepBatchMut, StepBatchOutputs, TracerLayout,
+        species_counts,
+    },
+    ridge_step_batch,
 };
 
 use crate::arrays::{
@@ -55,7 +59,7 @@ pub(crate) fn step_parameters() -> Vec<(&'static str, &'static str, &'static str
 }
 
 /// Names, units and long names of the per-cell, per-category and per-species outputs of the
-/// complete step (`pressridge::itd::CELL_OUTPUTS`, `CATEGORY_OUTPUTS`, `SPECIES_OUTPUTS`).
+/// complete step (`pressridge::itd::details::CELL_OUTPUTS`, `CATEGORY_OUTPUTS`, `SPECIES_OUTPUTS`).
 #[pyfunction]
 #[allow(clippy::type_complexity)]
 pub(crate) fn step_outputs() -> (
@@ -63,7 +67,7 @@ pub(crate) fn step_outputs() -> (
     Vec<(&'static str, &'static str, &'static str)>,
     Vec<(&'static str, &'static str, &'static str)>,
 ) {
-    let f = |m: &pressridge::itd::OutputMeta| (m.name, m.units, m.long_name);
+    let f = |m: &pressridge::itd::details::OutputMeta| (m.name, m.units, m.long_name);
     (
         CELL_OUTPUTS.iter().map(f).collect(),
         CATEGORY_OUTPUTS.iter().map(f).collect(),

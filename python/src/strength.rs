@@ -9,8 +9,9 @@ use numpy::{PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn, PyUntypedArrayMethod
 use pyo3::prelude::*;
 
 use pressridge::itd::{
-    CategoryBounds, RidgeBatchForcing, RidgeOptions, RidgeRatesMut, category_bounds, ridge_batch,
-    strength_batch_masked,
+    CategoryBounds, RidgeOptions, category_bounds,
+    details::{RidgeBatchForcing, RidgeRatesMut, strength_batch_masked},
+    ridge_batch,
 };
 
 use crate::arrays::{

@@ -8,7 +8,7 @@ use std::sync::Arc;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use pressridge::itd::{
+use pressridge::itd::details::{
     BgcKind, BgcTracers, CiceLayoutSpec, CiceTracerFlags, TracerBase, TracerField, TracerLayout,
     TracerRole,
 };
@@ -16,7 +16,7 @@ use pressridge::itd::{
 use crate::errors::{BindError, value_err};
 
 /// A tracer layout: which tracers each thickness category carries, in what order and on
-/// what base (the Rust ``pressridge::itd::TracerLayout``, not a copy of it).
+/// what base (the Rust ``pressridge::itd::details::TracerLayout``, not a copy of it).
 ///
 /// Make one with ``TracerLayout.cice(nilyr, nslyr, *, age=False, first_year=False,
 /// level_ice=False, ponds=False, snow=False, isotopes=0, aerosols=0, pond_topo=False,

@@ -28,7 +28,7 @@
 //! (also `1/s`, `s^-1`): `divu` is the divergence and `shear` the ridging shear term
 //! ½(Δ − |div u|), both 1/s. `%/day` (CICE history files): `divu` and `shear` are CICE's divergence and shear
 //! strain rate, converted to 1/s, and the shear term is formed as Icepack's ridging needs it
-//! (`crate::itd::deformation_terms`, which needs `divu`). Any other unit, or none, is refused
+//! (`crate::itd::details::deformation_terms`, which needs `divu`). Any other unit, or none, is refused
 //! with a message naming the variable, so that %/day is never taken for 1/s.
 //!
 //! Output: CF-1.8 attributes (`units`, `long_name`, `standard_name` where CF has one), the

@@ -2,8 +2,9 @@
 //! face (the command line, gridded files) with `ridge_step_column`.
 
 use pressridge::itd::{
-    ColumnError, ColumnMut, OceanFluxes, RidgeStepOptions, StepDiagnostics, StepForcing,
-    StepWorkspace, TracerLayout, ridge_step_column,
+    ColumnError, ColumnMut, RidgeStepOptions, StepDiagnostics, StepForcing, StepWorkspace,
+    details::{OceanFluxes, TracerLayout},
+    ridge_step_column,
 };
 
 /// The state of one column, owned, in `ridge_step_column`'s layout.

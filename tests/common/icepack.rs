@@ -2,8 +2,8 @@
 //! (`tests/data/icepack/ridge_step_cases.jsonl`, described in the README next to it).
 
 use pressridge::itd::{
-    BgcKind, BgcTracers, CiceTracerFlags, Participation, Redistribution, RidgeStepOptions,
-    TracerLayout,
+    RidgeStepOptions,
+    details::{BgcKind, BgcTracers, CiceTracerFlags, Participation, Redistribution, TracerLayout},
 };
 use serde_json::Value;
 

@@ -10,14 +10,17 @@ use super::layout::{Layout, Region, check_disjoint, check_ptr};
 use super::mu_rdg_table::PressridgeMuRdgTable;
 use super::tables::PressridgeCfTable;
 use super::{FfiError, FfiResult, PRESSRIDGE_ERR_BAD_VALUE, PressridgeGrid, guard, put};
-use pressridge::itd::validate_bounds;
+use pressridge::itd::details::validate_bounds;
+use pressridge::itd::details::{FAST_MAX_NCAT, StrengthConsts, strength_column_constant_cf};
 use pressridge::itd::{
-    CategoryBounds, Cf, CfPreset, ColumnStrength, ItdError, ItdParams, Participation,
-    Redistribution, RidgeBatchForcing, RidgeDiagnostics, RidgeForcing, RidgeOptions, RidgeRatesMut,
-    StrengthFormula, StrengthOptions, Workspace, category_bounds, ridge_batch, ridge_column,
-    strength_batch_masked, strength_column,
+    CategoryBounds, Cf, ColumnStrength, ItdError, ItdParams, RidgeDiagnostics, RidgeForcing,
+    RidgeOptions, StrengthOptions, Workspace, category_bounds,
+    details::{
+        CfPreset, Participation, Redistribution, RidgeBatchForcing, RidgeRatesMut, StrengthFormula,
+        strength_batch_masked,
+    },
+    ridge_batch, ridge_column, strength_column,
 };
-use pressridge::itd::{FAST_MAX_NCAT, StrengthConsts, strength_column_constant_cf};
 
 /// Scratch space of the single-column strength call (Icepack-style hosts call once per
 /// cell): one per thread, reused, so that such calls do not allocate.

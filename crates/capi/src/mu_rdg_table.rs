@@ -8,7 +8,7 @@ use super::layout::check_ptr;
 use super::tables::friction_arg;
 use super::{FfiError, PRESSRIDGE_ERR_BAD_SIZE, guard, put, read_path};
 use pressridge::io::itd_netcdf::read_mu_rdg_table_at_friction;
-use pressridge::itd::MuRdgTable;
+use pressridge::itd::details::MuRdgTable;
 
 /// A μ_rdg table: μ_rdg (m^½) against the ridging ice's thickness (m), linear between nodes,
 /// held at the end values outside them (and counted). Opaque; create with

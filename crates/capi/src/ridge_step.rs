@@ -11,9 +11,12 @@ use std::cell::RefCell;
 use super::layout::{Region, check_disjoint, check_ptr};
 use super::{FfiError, FfiResult, PRESSRIDGE_ERR_BAD_SIZE, guard, put};
 use pressridge::itd::{
-    CellForcing, CellOutputs, CellState, Closing, ColumnMut, ItdError, MAX_AERO, MAX_ISO,
-    MAX_NBTRCR, OceanFluxes, StepDiagnostics, StepForcing, StepWorkspace, ridge_step_cells,
-    ridge_step_column, species_counts,
+    ColumnMut, ItdError, StepDiagnostics, StepForcing, StepWorkspace,
+    details::{
+        CellForcing, CellOutputs, CellState, Closing, MAX_AERO, MAX_ISO, MAX_NBTRCR, OceanFluxes,
+        species_counts,
+    },
+    ridge_step_cells, ridge_step_column,
 };
 
 mod ridger;

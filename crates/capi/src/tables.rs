@@ -11,7 +11,7 @@ use super::{
     read_string, write_string,
 };
 use pressridge::io::itd_netcdf::read_cf_table_at_friction;
-use pressridge::itd::{CfProvider, CfTable};
+use pressridge::itd::details::{CfProvider, CfTable};
 use pressridge::table::lookup::RidgeLookup;
 
 /// A C_f table: C_f (dimensionless) against the ridging ice's thickness (m), linear between

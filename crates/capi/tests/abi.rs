@@ -15,8 +15,11 @@ use std::sync::Arc;
 use ndarray::{Array1, Array2};
 use pressridge::io::itd_netcdf::{read_itd, write_cf_table};
 use pressridge::itd::{
-    CategoryBounds, Cf, CfTable, Participation, Redistribution, RidgeBatchForcing, RidgeOptions,
-    RidgeRatesMut, StrengthFormula, StrengthOptions, category_bounds, ridge_batch, strength_batch,
+    CategoryBounds, Cf, RidgeOptions, StrengthOptions, category_bounds,
+    details::{
+        CfTable, Participation, Redistribution, RidgeBatchForcing, RidgeRatesMut, StrengthFormula,
+    },
+    ridge_batch, strength_batch,
 };
 use pressridge_capi::itd::*;
 use pressridge_capi::scene::*;
@@ -1570,7 +1573,7 @@ fn per_cell_calls_from_16_threads_with_changing_options_equal_a_serial_run() {
 
 #[test]
 fn preset_constants_match_the_library() {
-    use pressridge::itd::CfPreset;
+    use pressridge::itd::details::CfPreset;
     assert_eq!(PRESSRIDGE_CF_HIBLER1980, CfPreset::Hibler1980.value());
     assert_eq!(PRESSRIDGE_CF_FLATO1991, CfPreset::Flato1991.value());
     assert_eq!(PRESSRIDGE_CF_CICE, CfPreset::Cice.value());

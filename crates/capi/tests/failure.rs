@@ -18,7 +18,7 @@ fn c_abi_refuses_paths_with_nul_and_runs_of_no_step() {
     use pressridge_capi::{PRESSRIDGE_ERR_BAD_VALUE, PRESSRIDGE_OK};
     let d = scratch("ffi");
     let path = d.join("cf.nc");
-    let t = pressridge::itd::CfTable::new(vec![0.2, 1.0], vec![5.0, 14.0]).unwrap();
+    let t = pressridge::itd::details::CfTable::new(vec![0.2, 1.0], vec![5.0, 14.0]).unwrap();
     pressridge::io::itd_netcdf::write_cf_table(&path, &t).unwrap();
     // The file exists under the part before the NUL: the old code opened it.
     let p = format!("{}\0.other", path.display());

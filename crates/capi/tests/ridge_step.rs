@@ -8,8 +8,9 @@
 use std::ptr::{null, null_mut};
 
 use pressridge::itd::{
-    CiceTracerFlags, Closing, ColumnMut, OceanFluxes, RidgeStepOptions, StepForcing, StepWorkspace,
-    TracerLayout, ridge_step_column,
+    ColumnMut, RidgeStepOptions, StepForcing, StepWorkspace,
+    details::{CiceTracerFlags, Closing, OceanFluxes, TracerLayout},
+    ridge_step_column,
 };
 use pressridge_capi::ridge_step::*;
 use pressridge_capi::*;

@@ -12,7 +12,10 @@ use std::ptr::{null, null_mut};
 
 use common::column::{Column, step};
 use common::icepack::{self, num, nums};
-use pressridge::itd::{Closing, StepForcing, TracerLayout};
+use pressridge::itd::{
+    StepForcing,
+    details::{Closing, TracerLayout},
+};
 use pressridge_capi::itd::PressridgeOptions;
 use pressridge_capi::ridge_step::*;
 use pressridge_capi::*;

@@ -5,7 +5,7 @@
 
 use std::path::Path;
 
-use pressridge::itd::{NamedParams, ParamError};
+use pressridge::itd::details::{NamedParams, ParamError};
 
 use crate::BoxError;
 

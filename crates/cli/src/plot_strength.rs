@@ -10,7 +10,7 @@ use std::path::PathBuf;
 use ndarray::Array1;
 use pressridge::io::itd_netcdf::{ReadOptions, has_variable, read_field, read_fill, read_itd_with};
 use pressridge::io::refuse_output_over_input;
-use pressridge::itd::strength_batch_masked;
+use pressridge::itd::details::strength_batch_masked;
 use pressridge::plot::strength_map::{Panel, default_width, draw_strength_maps};
 
 use crate::BoxError;

@@ -26,7 +26,8 @@ use pressridge::io::itd_netcdf::{
 };
 use pressridge::io::refuse_output_over_input;
 use pressridge::itd::{
-    CategoryBounds, CiceLayoutSpec, CiceTracerFlags, RidgeOptions, TracerLayout, category_bounds,
+    CategoryBounds, RidgeOptions, category_bounds,
+    details::{CiceLayoutSpec, CiceTracerFlags, TracerLayout},
 };
 
 use crate::BoxError;

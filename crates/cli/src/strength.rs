@@ -11,8 +11,11 @@ use pressridge::io::itd_netcdf::{
 };
 use pressridge::io::refuse_output_over_input;
 use pressridge::itd::{
-    CF_CLAMPED_MATERIAL_SHARE, Cf, CfPreset, ItdParams, Participation, Redistribution,
-    StrengthFormula, StrengthOptions, strength_batch_masked,
+    Cf, ItdParams, StrengthOptions,
+    details::{
+        CF_CLAMPED_MATERIAL_SHARE, CfPreset, Participation, Redistribution, StrengthFormula,
+        strength_batch_masked,
+    },
 };
 
 use crate::BoxError;

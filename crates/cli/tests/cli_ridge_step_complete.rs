@@ -18,8 +18,8 @@ use std::path::Path;
 use common::column::{Column, Stepped, step};
 use common::{bin, fails_with, fill_value, global, read_values, scratch, succeeds};
 use pressridge::itd::{
-    CATEGORY_OUTPUTS, CELL_OUTPUTS, CiceTracerFlags, Closing, RidgeStepOptions, StepForcing,
-    TracerLayout,
+    RidgeStepOptions, StepForcing,
+    details::{CATEGORY_OUTPUTS, CELL_OUTPUTS, CiceTracerFlags, Closing, TracerLayout},
 };
 
 const NCAT: usize = 3;
@@ -575,7 +575,7 @@ fn thermodynamic_constants_from_options_and_file() {
     opts.step.rhos = 300.0; // --param wins over the file
     opts.step.fsnowrdg = 0.3;
     opts.step.ice_ref_salinity = 5.0;
-    opts.step.salt_flux = pressridge::itd::SaltFlux::Prognostic;
+    opts.step.salt_flux = pressridge::itd::details::SaltFlux::Prognostic;
     opts.params.rhoi = 900.0;
     let got_s = read(&out, "vsnon");
     let fresh = read(&out, "fresh");
@@ -598,7 +598,7 @@ fn thermodynamic_constants_from_options_and_file() {
     assert_eq!(global(&out, "rhoi"), "900 kg m-3");
     assert_eq!(global(&out, "lfresh"), "334000 J kg-1");
     assert_eq!(global(&out, "salt_flux"), "prognostic");
-    for f in pressridge::itd::RidgeStepParams::FIELDS {
+    for f in pressridge::itd::details::RidgeStepParams::FIELDS {
         assert!(global(&out, f.name).ends_with(f.units), "{}", f.name);
     }
     assert!(global(&out, "parameter_overrides").contains("fsnowrdg=0.3"));
@@ -606,7 +606,7 @@ fn thermodynamic_constants_from_options_and_file() {
     let docs = std::fs::read_to_string(common::repo().join("docs/strength.md")).unwrap();
     let help = bin().args(["ridge-step", "--help"]).output().unwrap();
     let help = String::from_utf8_lossy(&help.stdout);
-    for f in pressridge::itd::RidgeStepParams::FIELDS {
+    for f in pressridge::itd::details::RidgeStepParams::FIELDS {
         let row = format!("| `{}` | {} |", f.name, f.units);
         assert!(docs.contains(&row), "docs/strength.md lacks the row {row}");
         assert!(help.contains(f.name), "--help lacks {}", f.name);

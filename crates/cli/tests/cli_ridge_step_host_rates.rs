@@ -23,7 +23,10 @@ use std::path::Path;
 use common::column::{Column, step};
 use common::icepack::{num, nums};
 use common::{bin, fails_with, global, read_values as read, scratch, succeeds};
-use pressridge::itd::{CELL_OUTPUTS, Closing, RidgeStepOptions, StepForcing, TracerLayout};
+use pressridge::itd::{
+    RidgeStepOptions, StepForcing,
+    details::{CELL_OUTPUTS, Closing, TracerLayout},
+};
 
 /// One case's inputs, as the command line gets them.
 struct Case {

@@ -14,7 +14,7 @@ mod common;
 use std::path::Path;
 
 use common::{Data, Var, bin, fails_with, global, read_values, scratch, succeeds, write_nc};
-use pressridge::itd::{CiceLayoutSpec, TracerLayout};
+use pressridge::itd::details::{CiceLayoutSpec, TracerLayout};
 
 const NCAT: usize = 3;
 const NI: usize = 4;

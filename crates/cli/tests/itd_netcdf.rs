@@ -9,7 +9,7 @@ mod common;
 use approx::assert_relative_eq;
 use common::grid::{sample, small_grid, write_grid};
 use pressridge::io::itd_netcdf::{read_field, read_itd, write_cf_table};
-use pressridge::itd::CfTable;
+use pressridge::itd::details::CfTable;
 
 /// Without `aice0`, open water is 1 − Σ aicen clamped at 0, as in the strength routine: the
 /// sample file without its `aice0` ridges, although some fully covered columns sum to

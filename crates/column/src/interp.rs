@@ -1,6 +1,6 @@
 //! Piecewise-linear interpolation, every routine of pressridge: on a strictly increasing axis
 //! ([`bracket`], [`lerp`]), the one rule behind every table lookup: the C_f table of the
-//! strength routine ([`crate::CfTable`]) and the simulator's ridging lookup table
+//! strength routine ([`crate::details::CfTable`]) and the simulator's ridging lookup table
 //! (`pressridge::table::lookup::RidgeLookup`); and [`resample`], a run's samples onto the
 //! table's volume grid (`pressridge::table::tabulate`).
 //!

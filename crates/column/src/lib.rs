@@ -25,6 +25,9 @@
 //!   [`ridge_step_column`] / [`ridge_step_batch()`] / [`ridge_step_cells`].
 //! - Category bounds: [`category_bounds`]; options: [`StrengthOptions`], [`RidgeOptions`],
 //!   [`RidgeStepOptions`] (their defaults are CICE's).
+//! - Everything else a host may need — participation and redistribution on their own, the
+//!   complete step's batch and per-cell types, tracer layouts, C_f and μ_rdg tables, the
+//!   parameter registry — is one level down, in [`details`].
 //!
 //! ```
 //! use pressridge_column::{
@@ -74,40 +77,55 @@ mod strength;
 mod tracers;
 mod vexp;
 
-pub use bounds::{CategoryBounds, category_bounds, validate_bounds};
-pub use cf::{Cf, CfLookup, CfPreset, CfProvider, CfTable};
-pub use mu_rdg::{MU_RDG_MAX_NODES, MuRdgLookup, MuRdgTable};
-pub use named_params::{NamedParams, ParamError, ParamGroup, ParamMeta};
-pub use params::{ItdParams, Participation, Redistribution, StrengthFormula};
-pub use participation::participation;
-pub use redistribution::{
-    RidgeGeometry, category_fractions, category_fractions_all, mean_square_ridge_thickness,
-    net_to_gross, ridge_geometry,
-};
+pub use bounds::{CategoryBounds, category_bounds};
+pub use cf::Cf;
+pub use params::ItdParams;
 pub use ridge_step::area_volume::{
-    RidgeBatchForcing, RidgeDiagnostics, RidgeForcing, RidgeOptions, RidgeRatesMut, ridge_batch,
-    ridge_column,
+    RidgeDiagnostics, RidgeForcing, RidgeOptions, ridge_batch, ridge_column,
 };
-pub use ridge_step::batch::{
-    BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, OutputMeta, SPECIES_OUTPUTS,
-    StepBatchMut, StepBatchOutputs, ridge_step_batch, species_counts,
-};
-pub use ridge_step::cells::{CellForcing, CellOutputs, CellState, ridge_step_cells};
+pub use ridge_step::batch::ridge_step_batch;
+pub use ridge_step::cells::ridge_step_cells;
 pub use ridge_step::{
-    Closing, ColumnMut, OceanFluxes, RidgeStepOptions, RidgeStepParams, SECONDS_PER_DAY, SaltFlux,
-    StepDiagnostics, StepForcing, StepParamMeta, StepWorkspace, deformation_terms,
-    percent_per_day_to_per_second, ridge_step_column,
+    ColumnMut, RidgeStepOptions, StepDiagnostics, StepForcing, StepWorkspace, ridge_step_column,
 };
-pub use strength::{
-    BatchSummary, CF_CLAMPED_MATERIAL_SHARE, ColumnStrength, StrengthOptions, strength_batch,
-    strength_batch_masked, strength_column,
-};
-pub use strength::{FAST_MAX_NCAT, StrengthConsts, strength_column_constant_cf};
-pub use tracers::{
-    BgcKind, BgcTracers, CiceLayoutSpec, CiceTracerFlags, IcedrvBgc, LAYOUT_PRESETS,
-    LayoutDetectError, LayoutSpecError, MAX_AERO, MAX_ISO, MAX_NBTRCR, TracerBase, TracerField,
-    TracerLayout, TracerRole,
-};
+pub use strength::{ColumnStrength, StrengthOptions, strength_batch, strength_column};
+
+/// The second tier: what a host needs beyond the entry points above — the strength's
+/// variants and constants, participation and redistribution on their own, the complete
+/// step's batch and per-cell types, its outputs' metadata and thermodynamic constants, the
+/// tracer layouts, the C_f and μ_rdg tables, and the parameter registry (one path per name:
+/// these are nowhere else).
+pub mod details {
+    pub use crate::bounds::validate_bounds;
+    pub use crate::cf::{CfLookup, CfPreset, CfProvider, CfTable};
+    pub use crate::mu_rdg::{MU_RDG_MAX_NODES, MuRdgLookup, MuRdgTable};
+    pub use crate::named_params::{NamedParams, ParamError, ParamGroup, ParamMeta};
+    pub use crate::params::{Participation, Redistribution, StrengthFormula};
+    pub use crate::participation::participation;
+    pub use crate::redistribution::{
+        RidgeGeometry, category_fractions, category_fractions_all, mean_square_ridge_thickness,
+        net_to_gross, ridge_geometry,
+    };
+    pub use crate::ridge_step::area_volume::{RidgeBatchForcing, RidgeRatesMut};
+    pub use crate::ridge_step::batch::{
+        BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, OutputMeta, SPECIES_OUTPUTS,
+        StepBatchMut, StepBatchOutputs, species_counts,
+    };
+    pub use crate::ridge_step::cells::{CellForcing, CellOutputs, CellState};
+    pub use crate::ridge_step::{
+        Closing, OceanFluxes, RidgeStepParams, SECONDS_PER_DAY, SaltFlux, StepParamMeta,
+        deformation_terms, percent_per_day_to_per_second,
+    };
+    pub use crate::strength::{
+        BatchSummary, CF_CLAMPED_MATERIAL_SHARE, FAST_MAX_NCAT, StrengthConsts,
+        strength_batch_masked, strength_column_constant_cf,
+    };
+    pub use crate::tracers::{
+        BgcKind, BgcTracers, CiceLayoutSpec, CiceTracerFlags, IcedrvBgc, LAYOUT_PRESETS,
+        LayoutDetectError, LayoutSpecError, MAX_AERO, MAX_ISO, MAX_NBTRCR, TracerBase, TracerField,
+        TracerLayout, TracerRole,
+    };
+}
 
 /// What is wrong with one column (no column index: see [`ItdError::Column`]).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

@@ -3,7 +3,7 @@
 //! et al. (2007), λ = μ_rdg(h)·√h, with μ_rdg read per category thickness h instead of one
 //! constant (`ItdParams::mu_rdg`). Piecewise linear between the table's nodes and held at
 //! the end value outside them, with the lookup flagged as clamped, as C_f is
-//! ([`crate::CfTable`]).
+//! ([`crate::details::CfTable`]).
 //!
 //! The nodes are held inline (at most [`MU_RDG_MAX_NODES`]) so that the options that carry
 //! the table stay `Copy`, as a host's per-cell calls need them.

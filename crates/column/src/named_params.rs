@@ -6,7 +6,7 @@
 //! `(name, value)` pairs (Python's keywords) and words their errors ([`ParamError`]): the
 //! setting or parameter concerned, and for an unknown name the closest valid one and every
 //! valid name. The sets: [`ItdParams`](super::ItdParams) (ridging and strength),
-//! [`RidgeStepParams`](super::RidgeStepParams) (the complete step's thermodynamic
+//! [`RidgeStepParams`](crate::details::RidgeStepParams) (the complete step's thermodynamic
 //! constants) and [`RidgeStepOptions`](super::RidgeStepOptions) (every constant of the
 //! complete step: both).
 
@@ -216,7 +216,7 @@ fn edit_distance(a: &str, b: &str) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{ItdParams, RidgeStepOptions, RidgeStepParams};
+    use crate::{ItdParams, RidgeStepOptions, details::RidgeStepParams};
 
     /// The complete step's constants are the ridging parameters and the thermodynamic
     /// constants, once each, and each name reaches its own field.

@@ -411,7 +411,7 @@ impl StrengthFormula {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ParamError;
+    use crate::details::ParamError;
 
     /// The field list, `get` and `set` agree with each other and with the struct's own
     /// fields (read, names and values, from its `Debug` form).

@@ -209,7 +209,7 @@ pub struct OceanFluxes {
     /// Biogeochemical tracers into the ocean per bio tracer (the tracer's unit times m s⁻¹,
     /// e.g. mmol m⁻² s⁻¹, over `ndtd·dt`; Icepack `flux_bio`), as `faero_ocn`: with ridged
     /// snow (vertical bio tracers) and with zapped ice and snow
-    /// ([`TracerLayout::with_bgc`](crate::TracerLayout::with_bgc)).
+    /// ([`TracerLayout::with_bgc`](crate::details::TracerLayout::with_bgc)).
     pub flux_bio: [f64; MAX_NBTRCR],
 }
 
@@ -277,9 +277,10 @@ pub fn percent_per_day_to_per_second(x: f64) -> f64 {
 /// goes to the ocean).
 ///
 /// ```
+/// use pressridge_column::details::{Closing, OceanFluxes, TracerLayout};
+/// use pressridge_column::details::CiceTracerFlags;
 /// use pressridge_column::{
-///     CiceTracerFlags, Closing, ColumnMut, OceanFluxes, RidgeStepOptions, StepForcing,
-///     StepWorkspace, TracerLayout, ridge_step_column,
+///     ColumnMut, RidgeStepOptions, StepForcing, StepWorkspace, ridge_step_column,
 /// };
 /// let layout = TracerLayout::cice(1, 1, CiceTracerFlags::default()).unwrap();
 /// let (ncat, nt) = (5, layout.ntrcr());

@@ -253,7 +253,7 @@ impl TracerLayout {
     }
 
     /// Number of aerosol species (Icepack `n_aero`): the length of
-    /// [`OceanFluxes::faero_ocn`](super::OceanFluxes::faero_ocn) the step fills.
+    /// [`OceanFluxes::faero_ocn`](crate::details::OceanFluxes::faero_ocn) the step fills.
     pub fn n_aero(&self) -> usize {
         self.aero.len()
     }

@@ -21,7 +21,8 @@ use std::sync::{Arc, Mutex};
 
 use pressridge::io::itd_netcdf::read_itd;
 use pressridge::itd::{
-    Cf, CfLookup, CfProvider, Participation, Redistribution, StrengthOptions, Workspace,
+    Cf, StrengthOptions, Workspace,
+    details::{CfLookup, CfProvider, Participation, Redistribution},
     strength_column,
 };
 

@@ -3,7 +3,7 @@
 
 use super::vars::{dims_of, nc_err, read_f64, required};
 use super::*;
-use crate::itd::{CfTable, MuRdgTable};
+use crate::itd::details::{CfTable, MuRdgTable};
 
 /// Reads the C_f at a friction pair (μ, μ_w; dimensionless) from `path`: from a ridging
 /// table of `pressridge tabulate` (with friction coordinates `mu` and `mu_w`), the set at
@@ -92,7 +92,7 @@ pub fn read_cf_table(path: &Path) -> Result<CfTable, NetcdfError> {
 /// The μ_rdg (m^½) against thickness of a ridging table written by `pressridge tabulate`, at
 /// the friction pair `friction` (μ above, μ_w below the water line; default
 /// [`crate::table::tabulate::DEFAULT_FRICTION`]), for the exponential redistribution with a
-/// table ([`crate::itd::Redistribution::Table`]). Errors name the file and say what is
+/// table ([`crate::itd::details::Redistribution::Table`]). Errors name the file and say what is
 /// missing (a table without `mu_rdg`, a friction pair it does not hold).
 pub fn read_mu_rdg_table_at_friction(
     path: &Path,

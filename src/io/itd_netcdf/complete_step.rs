@@ -14,9 +14,12 @@ use super::{
     history_line, write_output,
 };
 use crate::itd::{
-    BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, OutputMeta, RidgeStepOptions,
-    RidgeStepParams, SPECIES_OUTPUTS, StepBatchMut, StepBatchOutputs, TracerLayout,
-    ridge_step_batch, species_counts,
+    RidgeStepOptions,
+    details::{
+        BatchClosing, BatchForcing, CATEGORY_OUTPUTS, CELL_OUTPUTS, OutputMeta, RidgeStepParams,
+        SPECIES_OUTPUTS, StepBatchMut, StepBatchOutputs, TracerLayout, species_counts,
+    },
+    ridge_step_batch,
 };
 
 /// Closing and opening of the step per column.

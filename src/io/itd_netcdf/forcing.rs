@@ -60,7 +60,7 @@ pub(super) fn read_deformation(
     file: &netcdf::File,
     spatial: &[(String, usize)],
 ) -> Result<(SpatialField, SpatialField), NetcdfError> {
-    use crate::itd::{deformation_terms, percent_per_day_to_per_second};
+    use crate::itd::details::{deformation_terms, percent_per_day_to_per_second};
     let units = |name: &str| -> Result<Option<RateUnits>, NetcdfError> {
         file.variable(name)
             .map(|v| rate_units(path, &v))

@@ -198,7 +198,7 @@ fn read_bounds(
     } else {
         "hin_max"
     };
-    crate::itd::validate_bounds(&vals).map_err(|e| NetcdfError::Value {
+    crate::itd::details::validate_bounds(&vals).map_err(|e| NetcdfError::Value {
         path: path.to_path_buf(),
         var: var.into(),
         msg: e.to_string(),

@@ -9,7 +9,7 @@ use ndarray::{Array1, Array2, Array3, ArrayD, Axis, IxDyn};
 
 use super::vars::{all_dims, fill_of, fmt_dims, is_fill, nc_err, read_f64};
 use super::{ItdGrid, NetcdfError};
-use crate::itd::{CiceLayoutSpec, TracerLayout};
+use crate::itd::details::{CiceLayoutSpec, TracerLayout};
 
 /// Snow and tracers of a gridded distribution, for the complete ridging step. Variable names
 /// are CICE restart names ([`TracerLayout::cice_restart_names`]): `vsnon` (m), `Tsfcn`,

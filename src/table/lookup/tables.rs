@@ -3,7 +3,7 @@
 //! ([`MuRdgTable`], issue 34), each over the table's thicknesses, NaN cells left out.
 
 use super::{Field, LookupError, RidgeLookup};
-use crate::itd::{CfLookup, CfTable, MuRdgTable};
+use crate::itd::details::{CfLookup, CfTable, MuRdgTable};
 use ndarray::Axis;
 
 impl RidgeLookup {
@@ -58,7 +58,7 @@ impl RidgeLookup {
     }
 
     /// The μ_rdg of set `set` as a [`MuRdgTable`] for the exponential redistribution
-    /// ([`crate::itd::Redistribution::Table`]): the thicknesses whose `mu_rdg` is not NaN,
+    /// ([`crate::itd::details::Redistribution::Table`]): the thicknesses whose `mu_rdg` is not NaN,
     /// by the one rule of [`MuRdgTable::from_nodes`]. A table made from records without
     /// ridge columns has no `mu_rdg`: the error says so.
     pub fn mu_rdg_table(&self, set: usize) -> Result<MuRdgTable, LookupError> {

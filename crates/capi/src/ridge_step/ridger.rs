@@ -11,8 +11,10 @@ use super::super::{
     FfiError, FfiResult, PRESSRIDGE_ERR_BAD_SIZE, PRESSRIDGE_ERR_BAD_VALUE, guard, put,
 };
 use pressridge::itd::{
-    BgcKind, BgcTracers, CiceTracerFlags, MAX_NBTRCR, RidgeStepOptions, RidgeStepParams, SaltFlux,
-    TracerLayout,
+    RidgeStepOptions,
+    details::{
+        BgcKind, BgcTracers, CiceTracerFlags, MAX_NBTRCR, RidgeStepParams, SaltFlux, TracerLayout,
+    },
 };
 
 /// Most tracers a host may carry after the flags' layout (`host_ntrcr` beyond its count):
@@ -131,7 +133,7 @@ impl Default for PressridgeTracers {
 }
 
 /// Thermodynamic constants and clean-up thresholds of the ridging step (the fields of
-/// `pressridge::itd::RidgeStepParams`; Icepack's defaults from
+/// `pressridge::itd::details::RidgeStepParams`; Icepack's defaults from
 /// [`pressridge_step_params_default`]).
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq)]

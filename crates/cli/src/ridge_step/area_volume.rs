@@ -6,7 +6,11 @@ use ndarray::Array1;
 use pressridge::io::itd_netcdf::{
     FieldMeta, ItdGrid, NC_FILL_DOUBLE, Output, history_line, write_output,
 };
-use pressridge::itd::{RidgeBatchForcing, RidgeOptions, RidgeRatesMut, ridge_batch};
+use pressridge::itd::{
+    RidgeOptions,
+    details::{RidgeBatchForcing, RidgeRatesMut},
+    ridge_batch,
+};
 
 use super::Args;
 use super::settings::{AllParams, global_attrs};

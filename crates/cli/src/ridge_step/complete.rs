@@ -7,7 +7,10 @@ use pressridge::io::itd_netcdf::{
     CellUnits, CompleteStep, FileClosing, FreezingTemperature, ItdGrid, SnowTracers, StepInput,
     read_cell_field, step_complete,
 };
-use pressridge::itd::{RidgeOptions, RidgeStepOptions, RidgeStepParams, SaltFlux};
+use pressridge::itd::{
+    RidgeOptions, RidgeStepOptions,
+    details::{RidgeStepParams, SaltFlux},
+};
 
 use super::settings::{AllParams, global_attrs};
 use super::{Args, SaltFluxArg, TF_DEFAULT};

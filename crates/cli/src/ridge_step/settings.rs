@@ -1,7 +1,7 @@
 //! What `ridge-step` was told, for the step and for the record: the parameter overrides of
 //! --param-file and --param, and the global attributes common to both steps.
 
-use pressridge::itd::{ItdParams, RidgeOptions, RidgeStepOptions, RidgeStepParams};
+use pressridge::itd::{ItdParams, RidgeOptions, RidgeStepOptions, details::RidgeStepParams};
 
 use super::Args;
 use crate::{BoxError, params};

@@ -9,7 +9,10 @@ use super::{
     Closing, ColumnMut, OceanFluxes, RidgeStepOptions, StepForcing, StepWorkspace,
     ridge_step_column,
 };
-use crate::{ItdError, TracerLayout, species_counts};
+use crate::{
+    ItdError,
+    details::{TracerLayout, species_counts},
+};
 
 /// The state of `ncol` cells, stepped in place: `ncat·ncol` values per category field and
 /// `ntrcr·ncat·ncol` tracers, cell by cell (column c at `c·ncat..`).

@@ -13,8 +13,8 @@ use crate::params::{ItdParams, Redistribution, StrengthFormula};
 use crate::participation::{ExpCache, participation_with};
 
 /// k_n and −h_n² + ⟨h_r²⟩_n/k_n of every category (k_n = 1 for a category with area ≤ puny,
-/// whose term is not used), with the operations of [`ridge_geometry`](crate::ridge_geometry) and
-/// [`mean_square_ridge_thickness`](crate::mean_square_ridge_thickness) (checked bit for bit by the tests), evaluated branch-free
+/// whose term is not used), with the operations of [`ridge_geometry`](crate::details::ridge_geometry) and
+/// [`mean_square_ridge_thickness`](crate::details::mean_square_ridge_thickness) (checked bit for bit by the tests), evaluated branch-free
 /// in groups of 4 categories.
 #[inline]
 fn category_terms(

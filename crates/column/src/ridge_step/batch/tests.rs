@@ -1,7 +1,7 @@
 //! The batched step against the column routine.
 
 use super::*;
-use crate::CiceTracerFlags;
+use crate::details::CiceTracerFlags;
 use ndarray::{Array1, Array2, Array3};
 
 /// The batch equals the column routine bit for bit, in any column order and stride.

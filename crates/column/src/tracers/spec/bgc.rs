@@ -306,7 +306,7 @@ impl IcedrvBgc {
 
 #[cfg(test)]
 mod tests {
-    use crate::CiceLayoutSpec;
+    use crate::details::CiceLayoutSpec;
 
     /// The layout of `text` and its tables: `trcr_depend`, base codes, strata (1-based).
     struct Tables {
