@@ -18,6 +18,19 @@
 !> isotopes, aerosols, brine. Errors, and biogeochemical tracers, which
 !> pressridge does not carry yet, are reported as Icepack reports its own:
 !> icepack_warnings_add and icepack_warnings_setabort.
+!>
+!> The simulator's tables instead of Icepack's constants, without a line more in the host: a
+!> file `pressridge_in` in the run directory, read once at the first call, whose namelist
+!>
+!>   &pressridge_nml
+!>     cf_table = 'data/ridging_table.nc'      ! C_f(h) of the strength, in place of Cf
+!>     mu_rdg_table = 'data/ridging_table.nc'  ! mu_rdg(h) of the redistribution (m^0.5)
+!>     friction = 1.0, friction_water = 0.6    ! the table's friction pair (1)
+!>   /
+!>
+!> names either table or both ('' or absent: Icepack's Cf and mu_rdg). A host may instead call
+!> pressridge_icepack_configure(path) before its first step. Without the file the drop-in is
+!> Icepack, bit for bit.
 module pressridge_icepack
   use, intrinsic :: iso_c_binding, only: c_double, c_int32_t
   use, intrinsic :: iso_fortran_env, only: int64
@@ -31,7 +44,7 @@ module pressridge_icepack
   private
 
   public :: pressridge_icepack_step_ridge, pressridge_icepack_ice_strength, &
-       pressridge_icepack_refresh
+       pressridge_icepack_refresh, pressridge_icepack_configure
 
   !> One set-up: the values it was made for and its handle.
   type :: setup
@@ -56,8 +69,101 @@ module pressridge_icepack
   !> The strength's options read from Icepack, and whether they are current.
   type(pressridge_options), save :: strength_options
   logical, save :: strength_current = .false.
+  !> Whether the namelist file has been read (or found absent).
+  logical, save :: configured = .false.
+  !> Whether the last reading of a namelist file succeeded (or there was none).
+  logical, save :: config_ok = .true.
+  !> The tables of the namelist, kept open for the run.
+  type(pressridge_cf_table), save :: nml_cf_table
+  type(pressridge_mu_rdg_table), save :: nml_mu_rdg_table
 
 contains
+
+  !> Reads the namelist group pressridge_nml of file `path` (above) and sets the drop-in's
+  !> tables from it: C_f(h) of the strength and mu_rdg(h) of the redistribution, at the
+  !> friction pair it names. Call it outside OpenMP regions, before the first step, or let
+  !> the first call read `pressridge_in` of the run directory. A file that cannot be read, an
+  !> unknown name in it or a table that cannot be opened is reported through Icepack's
+  !> warnings and aborts, naming the file.
+  subroutine pressridge_icepack_configure(path)
+    character(len=*), intent(in) :: path
+    character(len=1024) :: cf_table, mu_rdg_table
+    real(c_double) :: friction, friction_water
+    type(pressridge_options) :: o
+    integer :: u, ios, e
+    character(len=512) :: iom
+    character(len=:), allocatable :: msg
+    character(len=*), parameter :: subname = '(pressridge_icepack_configure)'
+    namelist /pressridge_nml/ cf_table, mu_rdg_table, friction, friction_water
+    configured = .true.
+    config_ok = .false.
+    current = .false.
+    strength_current = .false.
+    cf_table = ''
+    mu_rdg_table = ''
+    friction = 1.0_c_double
+    friction_water = 0.6_c_double
+    open (newunit=u, file=path, status='old', action='read', iostat=ios, iomsg=iom)
+    if (ios == 0) then
+       read (u, nml=pressridge_nml, iostat=ios, iomsg=iom)
+       close (u)
+    end if
+    if (ios /= 0) then
+       call abort_with(subname//' '//path//': '//trim(iom))
+       return
+    end if
+    ! The file says the whole choice: a table it does not name is Icepack's constant.
+    call pressridge_get_parameters(o)
+    o%cf_source = PRESSRIDGE_CF_SOURCE_CONSTANT
+    if (o%redistribution == PRESSRIDGE_REDISTRIBUTION_TABLE) &
+         o%redistribution = PRESSRIDGE_REDISTRIBUTION_EXPONENTIAL
+    if (len_trim(cf_table) > 0) then
+       call pressridge_cf_table_open_at_friction(trim(cf_table), friction, friction_water, &
+            nml_cf_table, e)
+       if (e /= PRESSRIDGE_OK) then
+          call abort_with(subname//' '//path//', cf_table: '//trim(pressridge_last_error_message()))
+          return
+       end if
+       call pressridge_options_set_cf_table(o, nml_cf_table)
+    end if
+    if (len_trim(mu_rdg_table) > 0) then
+       call pressridge_mu_rdg_table_open(trim(mu_rdg_table), friction, friction_water, &
+            nml_mu_rdg_table, e)
+       if (e /= PRESSRIDGE_OK) then
+          call abort_with(subname//' '//path//', mu_rdg_table: '// &
+               trim(pressridge_last_error_message()))
+          return
+       end if
+       call pressridge_options_set_mu_rdg_table(o, nml_mu_rdg_table)
+    end if
+    call pressridge_init_parameters(options=o)
+    config_ok = .true.
+    if (len_trim(cf_table) > 0) then
+       msg = 'C_f from '//trim(cf_table)
+    else
+       msg = 'C_f from Icepack''s Cf'
+    end if
+    if (len_trim(mu_rdg_table) > 0) then
+       msg = msg//', mu_rdg from '//trim(mu_rdg_table)
+    else
+       msg = msg//', mu_rdg from Icepack''s mu_rdg'
+    end if
+    write (*, '(a, f4.2, a, f4.2)') 'pressridge_icepack: '//path//': '//msg//' at mu = ', &
+         friction, ', mu_w = ', friction_water
+  end subroutine pressridge_icepack_configure
+
+  !> Reads `pressridge_in` of the run directory at the first call, if the host has not called
+  !> pressridge_icepack_configure (the caller holds the set-up's critical section);
+  !> whether no error was reported.
+  logical function configure_once() result(ok)
+    logical :: there
+    if (.not. configured) then
+       configured = .true.
+       inquire (file='pressridge_in', exist=there)
+       if (there) call pressridge_icepack_configure('pressridge_in')
+    end if
+    ok = config_ok
+  end function configure_once
 
   !> Makes the next call read Icepack's tracer flags, sizes and parameters again: for a host
   !> that changes them during the run (call it outside OpenMP regions).
@@ -142,11 +248,15 @@ contains
     real(c_double), intent(inout) :: strength
     type(pressridge_options) :: o
     integer :: e, kstrength, kp, kr
+    logical :: ok
     ! The options read from Icepack once (under a critical section: OpenMP threads may call
-    ! at once), then shared read-only: pressridge's defaults with Icepack's values.
+    ! at once), then shared read-only: pressridge's defaults (or pressridge_in's tables) with
+    ! Icepack's values.
+    ok = .true.
     if (.not. strength_current) then
        !$omp critical (pressridge_icepack_setup)
-       if (.not. strength_current) then
+       if (.not. strength_current) ok = configure_once()
+       if (ok .and. .not. strength_current) then
           call pressridge_get_parameters(o)
           call icepack_query_parameters(kstrength_out=kstrength, krdg_partic_out=kp, &
                krdg_redist_out=kr, mu_rdg_out=o%params%mu_rdg, Cf_out=o%cf, &
@@ -157,12 +267,14 @@ contains
           ! A mu_rdg table set through pressridge_init_parameters(options=) is kept: Icepack's
           ! krdg_redist (0 or 1) cannot say it.
           if (o%redistribution /= PRESSRIDGE_REDISTRIBUTION_TABLE) o%redistribution = kr
-          o%cf_source = PRESSRIDGE_CF_SOURCE_CONSTANT
+          ! So is a C_f table (pressridge_in, or pressridge_init_parameters(cf_table=)).
+          if (o%cf_source /= PRESSRIDGE_CF_SOURCE_TABLE) o%cf_source = PRESSRIDGE_CF_SOURCE_CONSTANT
           strength_options = o
           strength_current = .true.
        end if
        !$omp end critical (pressridge_icepack_setup)
     end if
+    if (.not. ok) return
     call pressridge_ice_strength(aice, vice, aice0, aicen, vicen, strength, e, &
          strength_options)
     if (e /= PRESSRIDGE_OK) call abort_with('(pressridge_icepack_ice_strength) '// &
@@ -284,6 +396,7 @@ contains
        call abort_with(subname//' more than 16 different ridging set-ups in one run')
        return
     end if
+    if (.not. configure_once()) return
     s = want
     call pressridge_get_parameters(o)
     o%participation = want%kp

@@ -10,7 +10,8 @@ program test_dropin
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
   use pressridge
   use pressridge_icepack, only: icepack_step_ridge => pressridge_icepack_step_ridge, &
-       icepack_ice_strength => pressridge_icepack_ice_strength, pressridge_icepack_refresh
+       icepack_ice_strength => pressridge_icepack_ice_strength, pressridge_icepack_refresh, &
+       icepack_configure => pressridge_icepack_configure
   use icepack_intfc, only: stub_flags, stub_sizes, stub_krdg_redist, stub_mu_rdg, &
        stub_ntrcr_o, stub_nt_fbri, stub_z_tracers, stub_bio_index
   use icepack_warnings, only: stub_aborted, stub_message
@@ -123,6 +124,51 @@ program test_dropin
     call pressridge_init_parameters(options=ot)
     call pressridge_icepack_refresh()
     call pressridge_mu_rdg_table_free(mt)
+  end block
+  ! The simulator's tables through a namelist file (pressridge_in's group): the strength
+  ! with C_f(h) of the shipped table at mu = 0.8, mu_w = 0.3 equals pressridge_ice_strength
+  ! with that table, and differs from Icepack's constant Cf; a table that cannot be opened
+  ! and an unknown name abort through Icepack's warnings, naming the file.
+  block
+    type(pressridge_cf_table) :: ct
+    type(pressridge_options) :: ot
+    character(len=1024) :: table, dir
+    real(c_double) :: p3
+    call get_command_argument(1, table)
+    call get_command_argument(2, dir)
+    call write_nml(trim(dir)//'/pressridge_in_good', "cf_table = '"//trim(table)// &
+         "', friction = 0.8, friction_water = 0.3")
+    call icepack_configure(trim(dir)//'/pressridge_in_good')
+    p2 = 0
+    call icepack_ice_strength(sum(a1), sum(v1), a01, a1, v1, p2)
+    call pressridge_cf_table_open_at_friction(trim(table), 0.8_c_double, 0.3_c_double, ct, e)
+    call pressridge_default_options(ot)
+    call pressridge_options_set_cf_table(ot, ct)
+    call pressridge_ice_strength(sum(a1), sum(v1), a01, a1, v1, p3, e, ot)
+    call check('namelist C_f table: strength = pressridge_ice_strength with the table', &
+         e == PRESSRIDGE_OK .and. p2 == p3 .and. p2 /= p1 .and. .not. stub_aborted)
+    call pressridge_cf_table_free(ct)
+    call write_nml(trim(dir)//'/pressridge_in_missing', "cf_table = '"//trim(dir)// &
+         "/no_such_table.nc'")
+    call icepack_configure(trim(dir)//'/pressridge_in_missing')
+    call check('namelist naming a missing table: an abort naming the file and the table', &
+         stub_aborted .and. index(stub_message, 'pressridge_in_missing, cf_table') > 0 .and. &
+         index(stub_message, 'no_such_table.nc') > 0)
+    stub_aborted = .false.
+    call write_nml(trim(dir)//'/pressridge_in_typo', "cf_tabel = 'x.nc'")
+    call icepack_configure(trim(dir)//'/pressridge_in_typo')
+    call check('namelist with an unknown name: an abort naming the file', &
+         stub_aborted .and. index(stub_message, 'pressridge_in_typo') > 0)
+    stub_aborted = .false.
+    p2 = -1
+    call icepack_ice_strength(sum(a1), sum(v1), a01, a1, v1, p2)
+    call check('after a refused namelist: no strength computed', p2 == -1)
+    call write_nml(trim(dir)//'/pressridge_in_none', "friction = 0.8")
+    call icepack_configure(trim(dir)//'/pressridge_in_none')
+    p2 = 0
+    call icepack_ice_strength(sum(a1), sum(v1), a01, a1, v1, p2)
+    call check('a namelist naming no table: Icepack''s constant Cf again', &
+         p2 == p1 .and. .not. stub_aborted)
   end block
   ! Biogeochemistry: the same layout with the brine fraction and two vertically resolved bio
   ! tracers (z_tracers, nblyr = 1: 4 tracers each) after Icepack's ntrcr_o tracers.
@@ -346,6 +392,15 @@ contains
          dvirdgndt=x0, araftn=x0, vraftn=x0, aice=ai, fsalt=fs3, first_ice=fi_, &
          flux_bio=fb3, Tf=-1.8_c_double)
   end subroutine cell_step
+
+  !> Writes a namelist file of one pressridge_nml group holding `body`.
+  subroutine write_nml(path, body)
+    character(len=*), intent(in) :: path, body
+    integer :: u
+    open (newunit=u, file=path, status='replace', action='write')
+    write (u, '(a)') '&pressridge_nml', '  '//body, '/'
+    close (u)
+  end subroutine write_nml
 
   subroutine check(what, ok)
     character(len=*), intent(in) :: what
