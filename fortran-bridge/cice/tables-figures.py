@@ -7,8 +7,8 @@ RUNS_DIR holds tables-CONFIG/history/iceh.*.nc (daily means) of each configurati
 into DIR (default docs/figures/cice):
   series.png       domain means against day: thickness, strength, ridged area and volume,
                    ice speed, one line per configuration
-  maps.png         the last day's mean thickness (m) and strength (kN/m) of each
-                   configuration, and their differences from stock CICE
+  maps.png         the last day's mean thickness, strength, ridged volume and ice speed of
+                   stock CICE, and each configuration's difference from it
   itd.png          the last day's thickness distribution: the domain's ice area and volume
                    per category
 and prints a Markdown table of the domain means over the last N days (default 10) with
@@ -100,31 +100,29 @@ def main():
     fig.savefig(os.path.join(a.out, "series.png"), dpi=120)
     plt.close(fig)
 
-    # Maps of the last day: thickness and strength, and differences from stock CICE.
+    # Maps of the last day: stock CICE's fields, and each configuration's difference from it.
     others = [c for c in configs if c != "cice"]
-    fig, axes = plt.subplots(2, len(configs) + len(others), figsize=(3.0 * (len(configs) + len(others)), 6.0),
-                             squeeze=False)
-    for row, (k, label, unit, s) in enumerate([SERIES[0], SERIES[1]]):
-        vmax = max(np.nanmax(s * data[c][k][n - 1]) for c in configs)
-        for j, c in enumerate(configs):
-            ax = axes[row, j]
-            im = ax.imshow(s * data[c][k][n - 1], origin="lower", vmin=0, vmax=vmax, cmap="viridis")
-            ax.set_title(f"{LABELS[c]}\n{label} ({unit})", fontsize=8)
-            ax.set_xticks([])
-            ax.set_yticks([])
-        fig.colorbar(im, ax=axes[row, : len(configs)].tolist(), shrink=0.8)
+    rows = [SERIES[0], SERIES[1], SERIES[3], SERIES[4]]
+    ncol = 1 + len(others)
+    fig, axes = plt.subplots(len(rows), ncol, figsize=(2.9 * ncol + 1.2, 2.7 * len(rows)), squeeze=False)
+    for r, (k, label, unit, s) in enumerate(rows):
+        ax = axes[r, 0]
+        im = ax.imshow(s * data["cice"][k][n - 1], origin="lower", cmap="viridis")
+        ax.set_title(f"{LABELS['cice']}\n{label} ({unit})", fontsize=8)
+        fig.colorbar(im, ax=ax, shrink=0.8)
         diffs = [s * (data[c][k][n - 1] - data["cice"][k][n - 1]) for c in others]
-        dmax = max(np.nanmax(np.abs(d)) for d in diffs) if diffs else 1.0
+        dmax = max((np.nanmax(np.abs(d)) for d in diffs), default=1.0) or 1.0
         for j, (c, d) in enumerate(zip(others, diffs)):
-            ax = axes[row, len(configs) + j]
+            ax = axes[r, 1 + j]
             im = ax.imshow(d, origin="lower", vmin=-dmax, vmax=dmax, cmap="RdBu_r")
             ax.set_title(f"{LABELS[c]} − CICE\n{label} ({unit})", fontsize=8)
-            ax.set_xticks([])
-            ax.set_yticks([])
         if others:
-            fig.colorbar(im, ax=axes[row, len(configs):].tolist(), shrink=0.8)
-    fig.suptitle(f"CICE gbox128, day {n}")
-    fig.savefig(os.path.join(a.out, "maps.png"), dpi=110)
+            fig.colorbar(im, ax=axes[r, 1:].tolist(), shrink=0.8)
+    for ax in axes.flat:
+        ax.set_xticks([])
+        ax.set_yticks([])
+    fig.suptitle(f"CICE gbox128, day {n}: stock CICE and the differences from it")
+    fig.savefig(os.path.join(a.out, "maps.png"), dpi=100)
     plt.close(fig)
 
     # Thickness distribution of the last day: area and volume per category over the domain.
@@ -148,24 +146,29 @@ def main():
     fig.savefig(os.path.join(a.out, "itd.png"), dpi=120)
     plt.close(fig)
 
-    # The summary: means over the last N days, differences from CICE, the drift.
+    # The summary: means over the last N days, differences from CICE then and over the N days
+    # before (whether a difference has settled), and CICE's own drift.
     last = max(1, min(a.last, n // 2))
-    print(f"Domain means over days {n - last + 1}-{n} of {n} (drift: the change from days "
-          f"{n - 2 * last + 1}-{n - last}):\n")
+    print(f"Domain means over days {n - last + 1}-{n} of {n}; in brackets the difference from "
+          f"stock CICE, then over days {n - 2 * last + 1}-{n - last} (stock CICE: the change "
+          f"of its mean between the two):\n")
     head = "| configuration | " + " | ".join(f"{lbl} ({u})" for _, lbl, u, _ in SERIES) + " |"
     print(head)
     print("|---" * (len(SERIES) + 1) + "|")
-    ref = {k: s * domain_mean(data["cice"][k][:n])[n - last:].mean() for k, _, _, s in SERIES}
+
+    def windows(c, k, s):
+        m = s * domain_mean(data[c][k][:n])
+        return m[n - last:].mean(), m[n - 2 * last:n - last].mean()
+
     for c in configs:
         cells = []
         for k, _, _, s in SERIES:
-            m = s * domain_mean(data[c][k][:n])
-            now, before = m[n - last:].mean(), m[n - 2 * last:n - last].mean()
-            cell = f"{now:.3g}"
-            if c != "cice" and ref[k] != 0:
-                cell += f" ({100 * (now / ref[k] - 1):+.1f} %)"
-            cell += f", drift {100 * (now / before - 1):+.1f} %" if before else ""
-            cells.append(cell)
+            now, before = windows(c, k, s)
+            if c == "cice":
+                cells.append(f"{now:.3g} (drift {100 * (now / before - 1):+.1f} %)")
+            else:
+                rn, rb = windows("cice", k, s)
+                cells.append(f"{now:.3g} ({100 * (now / rn - 1):+.1f} %; {100 * (before / rb - 1):+.1f} %)")
         print(f"| {LABELS[c]} | " + " | ".join(cells) + " |")
     print(f"\nfigures: {a.out}/series.png, maps.png, itd.png", file=sys.stderr)
 
