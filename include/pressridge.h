@@ -384,7 +384,7 @@ typedef struct PressridgeCellArrays {
 } PressridgeCellArrays;
 
 // Thermodynamic constants and clean-up thresholds of the ridging step (the fields of
-// `pressridge::itd::RidgeStepParams`; Icepack's defaults from
+// `pressridge::itd::details::RidgeStepParams`; Icepack's defaults from
 // [`pressridge_step_params_default`]).
 typedef struct PressridgeStepParams {
   // Snow density (kg/m³), Icepack `rhos` = 330.
