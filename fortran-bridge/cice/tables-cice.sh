@@ -30,6 +30,7 @@ CONFIGS=("$@")
 [ ${#CONFIGS[@]} -gt 0 ] || CONFIGS=(cice hibler cf mu_rdg tables)
 read -r MU MU_W <<< "${FRICTION:-1.0 0.6}"
 TABLE=$ROOT/data/ridging_table.nc
+COMMIT=$(git -C "$ROOT" rev-parse --short HEAD)$(git -C "$ROOT" diff --quiet HEAD -- . || echo "+changes")
 
 # The run length and its history: npt steps of an hour, daily means of the fields, and a
 # restart at the end only.
@@ -78,4 +79,4 @@ for name in "${CONFIGS[@]}"; do
     echo "$name: did not complete ($(tail -n 2 "$run"/cice.runlog.* 2> /dev/null | tr '\n' ' '))"
   fi
 done
-echo "tables-cice: $DAYS days of gbox128 in $WORK/runs/tables-{$(IFS=,; echo "${CONFIGS[*]}")} (CICE $(git -C "$SRC" rev-parse --short HEAD 2>/dev/null || echo '?'), pressridge $(git -C "$ROOT" rev-parse --short HEAD))"
+echo "tables-cice: $DAYS days of gbox128 in $WORK/runs/tables-{$(IFS=,; echo "${CONFIGS[*]}")} (CICE $(git -C "$SRC" rev-parse --short HEAD 2>/dev/null || echo '?'), pressridge $COMMIT)"

@@ -39,6 +39,7 @@ LABELS = {
 # Domain means: (history variable, label, unit, scale).
 SERIES = [
     ("hi", "mean thickness", "m", 1.0),
+    ("hi_max", "thickest cell", "m", 1.0),
     ("strength", "mean strength", "kN/m", 1e-3),
     ("ardg", "ridged area fraction", "1", 1.0),
     ("vrdg", "ridged volume", "m", 1.0),
@@ -62,6 +63,7 @@ def read_config(d):
                 out[k].append(var(k))
             u, v = var("uvel"), var("vvel")
             out["speed"].append(np.hypot(u, v))
+    out["hi_max"] = [np.full_like(h, np.nanmax(h)) for h in out["hi"]]
     return {k: np.array(v) for k, v in out.items()}, len(files)
 
 
@@ -102,7 +104,7 @@ def main():
 
     # Maps of the last day: stock CICE's fields, and each configuration's difference from it.
     others = [c for c in configs if c != "cice"]
-    rows = [SERIES[0], SERIES[1], SERIES[3], SERIES[4]]
+    rows = [SERIES[0], SERIES[2], SERIES[4], SERIES[5]]
     ncol = 1 + len(others)
     fig, axes = plt.subplots(len(rows), ncol, figsize=(2.9 * ncol + 1.2, 2.7 * len(rows)), squeeze=False)
     for r, (k, label, unit, s) in enumerate(rows):
@@ -122,7 +124,7 @@ def main():
         ax.set_xticks([])
         ax.set_yticks([])
     fig.suptitle(f"CICE gbox128, day {n}: stock CICE and the differences from it")
-    fig.savefig(os.path.join(a.out, "maps.png"), dpi=100)
+    fig.savefig(os.path.join(a.out, "maps.png"), dpi=80)
     plt.close(fig)
 
     # Thickness distribution of the last day: area and volume per category over the domain.
