@@ -46,41 +46,13 @@
 //!     full=crates/lab/records/speed-vs-error/chord-steps@numerics.time_step_safety=1.0
 //! ```
 
-use pressridge::campaign::read_campaign;
 use pressridge::record::RunRecord;
-use pressridge::table::ensemble::{Stat, quantity};
-use pressridge::table::rafting;
+use pressridge::table::ensemble::Stat;
+use pressridge_lab::equivalence::{
+    QUANTITIES, SEEDS as EQUIVALENCE_SEEDS, points as groups, shift, stat,
+};
 use std::collections::BTreeMap;
 use std::path::Path;
-
-/// The quantities compared: key of [`quantity`] (or `normal_contact_fraction`, Φ_i/W, eq
-/// (12)'s net normal contact work over W; `fracture_per_break`, the elastic energy released
-/// by cracks over the joints broken, J/m per joint; `rafted`, 1 for a run whose intact sheet
-/// rode over the floe by more than the rafting reach, 0 for one that broke at it, so that its
-/// mean is the share of runs that rafted), label, and whether the step's equivalence test
-/// judges it (W, ΔPE, W/ΔPE, Φ_i/W, L/h, joints broken, energy per break and the ride-over
-/// count).
-const QUANTITIES: [(&str, &str, bool); 11] = [
-    ("work", "W", true),
-    ("potential_energy", "ΔPE", true),
-    ("ratio_work_to_pe", "W/ΔPE", true),
-    ("normal_contact_fraction", "Φ_i/W", true),
-    ("friction_fraction", "Φ_f/W", false),
-    ("length_to_thickness", "L/h", true),
-    ("blocks_broken", "broken", true),
-    ("fracture_per_break", "E_f/break", true),
-    ("rafted", "rafted", true),
-    ("max_sail_height", "sail", false),
-    ("max_keel_depth", "keel", false),
-];
-
-/// The step's equivalence test (docs/speed-vs-error.md, "The equivalence test"): at least
-/// this many seeds per arm, and for every judged quantity a 95 % interval across zero with its
-/// centre within [`EQUIVALENCE_CENTRE`] of the reference's seed-to-seed σ.
-const EQUIVALENCE_SEEDS: usize = 41;
-
-/// The largest centre of a judged shift the test allows, in units of the reference's σ.
-const EQUIVALENCE_CENTRE: f64 = 0.3;
 
 type Groups = BTreeMap<String, Vec<RunRecord>>;
 
@@ -141,59 +113,6 @@ fn print_pieces(point: &str, configs: &[(String, Groups)], ref_runs: &[RunRecord
         }
         println!();
     }
-}
-
-/// The runs of campaign `dir` by point; with `only`, just the runs whose settings hold it,
-/// keyed without it.
-fn groups(dir: &Path, only: Option<&str>) -> Result<Groups, Box<dyn std::error::Error>> {
-    // A campaign still running is read as far as it got: the table gives n per row.
-    let c = read_campaign(dir, true)?;
-    if !c.missing.is_empty() {
-        eprintln!(
-            "{}: {} of {} runs so far",
-            dir.display(),
-            c.records.len(),
-            c.planned
-        );
-    }
-    let records = c.records;
-    let mut g = Groups::new();
-    for r in records {
-        let mut point = r.settings.clone();
-        if let Some(only) = only {
-            let Some(k) = point.iter().position(|s| s == only) else {
-                continue;
-            };
-            point.remove(k);
-        }
-        g.entry(point.join(", ")).or_default().push(r);
-    }
-    if let Some(only) = only
-        && g.is_empty()
-    {
-        return Err(format!("{}: no run has the setting {only}", dir.display()).into());
-    }
-    Ok(g)
-}
-
-fn stat(runs: &[RunRecord], key: &str) -> Stat {
-    let value = |r: &RunRecord| match key {
-        "normal_contact_fraction" => {
-            Some(quantity(r, "normal_contact_work")? / quantity(r, "work")?)
-        }
-        "fracture_per_break" => {
-            let n = quantity(r, "blocks_broken")?;
-            (n > 0.0).then_some(quantity(r, "fracture_dissipation")? / n)
-        }
-        "rafted" => match rafting::outcome(r, rafting::RAFTING_REACH) {
-            rafting::Outcome::Rafted(_) => Some(1.0),
-            rafting::Outcome::Ridged => Some(0.0),
-            rafting::Outcome::Unknown => None,
-        },
-        _ => quantity(r, key),
-    };
-    let xs: Vec<f64> = runs.iter().filter_map(value).collect();
-    Stat::of(&xs)
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -282,28 +201,16 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     print!(" — |");
                     continue;
                 }
-                let (d, h) = a.welch_difference(&b);
+                let sh = shift(&a, &b);
+                let (d, h, ok) = (sh.diff, sh.half, sh.passes);
                 // In % of the reference mean; the rafted share in percentage points (its
-                // reference mean may be zero).
+                // reference mean may be zero); and in units of the reference's σ.
                 let (pd, ph, unit) = if key == "rafted" {
                     (100.0 * d, 100.0 * h.abs(), "pp")
                 } else {
                     (100.0 * d / a.mean, 100.0 * (h / a.mean).abs(), "%")
                 };
-                // The shift in units of the reference's seed-to-seed σ (of both arms pooled
-                // where the reference's runs all agree, as every run ridging does), with its
-                // interval, judged by the step's test.
-                let sigma = if a.std > 0.0 {
-                    a.std
-                } else {
-                    (0.5 * (a.std.powi(2) + b.std.powi(2))).sqrt()
-                };
-                let (sd, sh) = if sigma > 0.0 {
-                    (d / sigma, (h / sigma).abs())
-                } else {
-                    (0.0, 0.0)
-                };
-                let ok = (sd - sh) <= 0.0 && (sd + sh) >= 0.0 && sd.abs() <= EQUIVALENCE_CENTRE;
+                let (sd, sh) = (sh.sigmas, sh.sigmas_half);
                 passes &= !judged || ok;
                 let flag = match (judged, ok) {
                     (false, _) => "",

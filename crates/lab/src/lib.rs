@@ -9,6 +9,8 @@
 //! - [`choices`] — the register of open modelling choices: each probe campaign's shift from
 //!   its baseline, with Welch's 95 % interval (`pressridge findings --choices`,
 //!   `docs/choices.md`);
+//! - [`equivalence`] — the step's equivalence test, shared by the programs that judge a
+//!   numerical change on ensembles;
 //! - the investigation programs behind `docs/` (`crates/lab/research/`, examples of this
 //!   crate: `cargo run --release --example NAME`);
 //! - the committed run records all of these read (`crates/lab/records/`, records-only
@@ -32,4 +34,5 @@
 #![warn(missing_docs)]
 
 pub mod choices;
+pub mod equivalence;
 pub mod findings;
