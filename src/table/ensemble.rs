@@ -65,6 +65,18 @@ impl Stat {
     /// (unequal variances, Welch–Satterthwaite degrees of freedom), in units of the quantity:
     /// how ensembles of two configurations are compared (docs/speed-vs-error.md).
     pub fn welch_difference(&self, other: &Stat) -> (f64, f64) {
+        self.welch_quantile(other, 0.975)
+    }
+
+    /// [`Stat::welch_difference`] with a two-sided interval of confidence `level` in (0, 1)
+    /// (dimensionless; 0.95 gives the 95 % interval).
+    pub fn welch_difference_at(&self, other: &Stat, level: f64) -> (f64, f64) {
+        self.welch_quantile(other, 0.5 + 0.5 * level)
+    }
+
+    /// The difference of means and the half-width of its Welch interval whose upper end is
+    /// Student's t quantile `p`.
+    fn welch_quantile(&self, other: &Stat, p: f64) -> (f64, f64) {
         let (va, vb) = (
             self.std.powi(2) / self.n as f64,
             other.std.powi(2) / other.n as f64,
@@ -75,7 +87,7 @@ impl Stat {
                 .max(1e-300);
         (
             other.mean - self.mean,
-            crate::table::fit::student_t_quantile(0.975, dof) * se,
+            crate::table::fit::student_t_quantile(p, dof) * se,
         )
     }
 }

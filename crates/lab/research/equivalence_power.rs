@@ -11,15 +11,19 @@
 //! ```sh
 //! cargo run --release --example equivalence_power -- \
 //!     crates/lab/records/speed-vs-error/r2-refine-load@numerics.time_step_safety=1.0 \
-//!     [--n 41] [--draws 4000] [--seed 1]
+//!     [--n 41] [--draws 4000] [--seed 1] [--rule standard|bonferroni|tost]
 //! ```
+//!
+//! `--rule` judges by the standing rule (default), by the same with Bonferroni intervals
+//! over all judged shifts at all points, or by two one-sided tests (the 90 % interval inside
+//! ±0.3 σ): the alternatives docs/speed-vs-error.md weighs.
 //!
 //! The draws are deterministic (xoshiro256++ from `--seed`). Resampling one ensemble of m
 //! runs stands for the seed-to-seed distribution by its m runs (the bootstrap's reading): the
 //! rates are estimates, each with a binomial 95 % interval of about ±2·√(p(1−p)/draws).
 
 use pressridge::table::ensemble::Stat;
-use pressridge_lab::equivalence::{QUANTITIES, SEEDS, points, shift, value};
+use pressridge_lab::equivalence::{QUANTITIES, Rule, SEEDS, points, shift_by, value};
 use rand_xoshiro::Xoshiro256PlusPlus;
 use rand_xoshiro::rand_core::{Rng, SeedableRng};
 use std::path::Path;
@@ -31,17 +35,19 @@ fn flag<T: std::str::FromStr>(args: &[String], name: &str, default: T) -> Result
         Some(i) => args
             .get(i + 1)
             .and_then(|v| v.parse().ok())
-            .ok_or_else(|| format!("{name} needs a positive whole number")),
+            .ok_or_else(|| format!("{name} needs a value")),
     }
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let usage = "usage: equivalence_power DIR[@SETTING] [--n N] [--draws D] [--seed S]";
+    let usage = "usage: equivalence_power DIR[@SETTING] [--n N] [--draws D] [--seed S] \
+                 [--rule standard|bonferroni|tost]";
     let spec = args.first().filter(|a| !a.starts_with("--")).ok_or(usage)?;
     let n: usize = flag(&args, "--n", SEEDS)?;
     let draws: usize = flag(&args, "--draws", 4000)?;
     let seed: u64 = flag(&args, "--seed", 1)?;
+    let rule_name: String = flag(&args, "--rule", "standard".to_string())?;
     if n < 2 || draws == 0 {
         return Err(format!("--n must be at least 2 and --draws at least 1 ({usage})").into());
     }
@@ -55,12 +61,23 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .filter(|q| q.2)
         .map(|q| (q.0, q.1))
         .collect();
+    let rule = match rule_name.as_str() {
+        "standard" => Rule::Standard,
+        // Every judged shift at every point: the family the test passes or fails.
+        "bonferroni" => Rule::Bonferroni(judged.len() * groups.len()),
+        "tost" => Rule::Tost,
+        other => {
+            return Err(
+                format!("--rule is standard, bonferroni or tost, not {other} ({usage})").into(),
+            );
+        }
+    };
     let mut rng = Xoshiro256PlusPlus::seed_from_u64(seed);
     // Per draw, whether every judged quantity passed at every point so far.
     let mut all_points = vec![true; draws];
     println!(
         "A/A draws of two arms of {n} runs (with replacement) from one configuration, {draws} \
-         draws: the share of draws in which the equivalence test passes.\n"
+         draws: the share of draws in which the equivalence test passes ({rule:?}).\n"
     );
     for (point, runs) in &groups {
         let values: Vec<Vec<Option<f64>>> = judged
@@ -81,7 +98,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     Stat::of(&xs)
                 };
                 let (sa, sb) = (arm(&a), arm(&b));
-                let ok = sa.n >= 2 && sb.n >= 2 && shift(&sa, &sb).passes;
+                let ok = sa.n >= 2 && sb.n >= 2 && shift_by(&sa, &sb, rule).passes;
                 pass[q] += usize::from(ok);
                 every &= ok;
             }

@@ -78,11 +78,37 @@ pub struct Shift {
     pub passes: bool,
 }
 
-/// The shift of `b` from the reference `a` (each with at least two values). σ is the
-/// reference's seed-to-seed spread, or both arms' pooled where the reference's values all
-/// agree (as every run ridging does).
+/// The shift of `b` from the reference `a` (each with at least two values), judged by the
+/// standing rule ([`Rule::Standard`]). σ is the reference's seed-to-seed spread, or both
+/// arms' pooled where the reference's values all agree (as every run ridging does).
 pub fn shift(a: &Stat, b: &Stat) -> Shift {
-    let (diff, half) = a.welch_difference(b);
+    shift_by(a, b, Rule::Standard)
+}
+
+/// Rules a shift can be judged by: the standing one and the two alternatives
+/// docs/speed-vs-error.md ("What the test can tell") weighs for the owner.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Rule {
+    /// The 95 % interval spans zero and its centre lies within [`CENTRE`] σ.
+    Standard,
+    /// The same with the interval at 1 − 0.05/m for `m` judged shifts (Bonferroni).
+    Bonferroni(usize),
+    /// Two one-sided tests at 5 %: the 90 % interval lies inside ±[`CENTRE`] σ.
+    Tost,
+}
+
+/// [`shift`] judged by `rule` (the interval reported is the one the rule reads).
+pub fn shift_by(a: &Stat, b: &Stat, rule: Rule) -> Shift {
+    let level = match rule {
+        Rule::Standard => 0.95,
+        Rule::Bonferroni(m) => 1.0 - 0.05 / m.max(1) as f64,
+        Rule::Tost => 0.90,
+    };
+    let (diff, half) = if rule == Rule::Standard {
+        a.welch_difference(b)
+    } else {
+        a.welch_difference_at(b, level)
+    };
     let sigma = if a.std > 0.0 {
         a.std
     } else {
@@ -93,8 +119,12 @@ pub fn shift(a: &Stat, b: &Stat) -> Shift {
     } else {
         (0.0, 0.0)
     };
-    let passes =
-        sigmas - sigmas_half <= 0.0 && sigmas + sigmas_half >= 0.0 && sigmas.abs() <= CENTRE;
+    let passes = match rule {
+        Rule::Standard | Rule::Bonferroni(_) => {
+            sigmas - sigmas_half <= 0.0 && sigmas + sigmas_half >= 0.0 && sigmas.abs() <= CENTRE
+        }
+        Rule::Tost => sigmas - sigmas_half >= -CENTRE && sigmas + sigmas_half <= CENTRE,
+    };
     Shift {
         diff,
         half,
