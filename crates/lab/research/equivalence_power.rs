@@ -2,7 +2,9 @@
 //! (docs/speed-vs-error.md, "What the test can tell").
 //!
 //! Draws two arms of `n` runs each, with replacement, from the runs of one configuration (so
-//! both arms come from one distribution: an A/A comparison), judges every quantity the test
+//! both arms come from one distribution: an A/A comparison) or, given a second
+//! configuration, the second arm from its runs (A/B: how often the test passes that
+//! configuration's true shift), judges every quantity the test
 //! judges (`pressridge_lab::equivalence`) and counts the draws that pass, per quantity, per
 //! point of the campaign's axis and at all points at once. With the test's 41 seeds this is
 //! the chance that a change as good as its reference passes; `--n` asks how many seeds a
@@ -22,6 +24,7 @@
 //! runs stands for the seed-to-seed distribution by its m runs (the bootstrap's reading): the
 //! rates are estimates, each with a binomial 95 % interval of about ±2·√(p(1−p)/draws).
 
+use pressridge::record::RunRecord;
 use pressridge::table::ensemble::Stat;
 use pressridge_lab::equivalence::{QUANTITIES, Rule, SEEDS, points, shift_by, value};
 use rand_xoshiro::Xoshiro256PlusPlus;
@@ -41,9 +44,10 @@ fn flag<T: std::str::FromStr>(args: &[String], name: &str, default: T) -> Result
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let usage = "usage: equivalence_power DIR[@SETTING] [--n N] [--draws D] [--seed S] \
-                 [--rule standard|bonferroni|tost]";
+    let usage = "usage: equivalence_power DIR[@SETTING] [OTHER_DIR[@SETTING]] [--n N] \
+                 [--draws D] [--seed S] [--rule standard|bonferroni|tost]";
     let spec = args.first().filter(|a| !a.starts_with("--")).ok_or(usage)?;
+    let other = args.get(1).filter(|a| !a.starts_with("--"));
     let n: usize = flag(&args, "--n", SEEDS)?;
     let draws: usize = flag(&args, "--draws", 4000)?;
     let seed: u64 = flag(&args, "--seed", 1)?;
@@ -51,11 +55,20 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     if n < 2 || draws == 0 {
         return Err(format!("--n must be at least 2 and --draws at least 1 ({usage})").into());
     }
-    let (dir, only) = match spec.split_once('@') {
-        Some((d, s)) => (d, Some(s)),
-        None => (spec.as_str(), None),
+    let read = |spec: &str| {
+        let (dir, only) = match spec.split_once('@') {
+            Some((d, s)) => (d, Some(s)),
+            None => (spec, None),
+        };
+        points(Path::new(dir), only)
     };
-    let groups = points(Path::new(dir), only)?;
+    let groups = read(spec)?;
+    // The second arm's runs: the same configuration's (A/A), or another's (A/B: how often
+    // the test passes that configuration's true shift).
+    let groups_b = match other {
+        Some(o) => read(o)?,
+        None => groups.clone(),
+    };
     let judged: Vec<(&str, &str)> = QUANTITIES
         .iter()
         .filter(|q| q.2)
@@ -76,28 +89,35 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     // Per draw, whether every judged quantity passed at every point so far.
     let mut all_points = vec![true; draws];
     println!(
-        "A/A draws of two arms of {n} runs (with replacement) from one configuration, {draws} \
-         draws: the share of draws in which the equivalence test passes ({rule:?}).\n"
+        "{} draws of two arms of {n} runs (with replacement), {draws} draws: the share of draws \
+         in which the equivalence test passes ({rule:?}).\n",
+        if other.is_some() { "A/B" } else { "A/A" }
     );
-    for (point, runs) in &groups {
-        let values: Vec<Vec<Option<f64>>> = judged
+    let values = |runs: &[RunRecord]| -> Vec<Vec<Option<f64>>> {
+        judged
             .iter()
             .map(|(k, _)| runs.iter().map(|r| value(r, k)).collect())
-            .collect();
+            .collect()
+    };
+    for (point, runs) in &groups {
+        let Some(runs_b) = groups_b.get(point) else {
+            return Err(format!("{point}: no runs of the second configuration there").into());
+        };
+        let (va, vb) = (values(runs), values(runs_b));
         let mut pass = vec![0usize; judged.len()];
         let mut pass_all = 0usize;
-        let m = runs.len() as u64;
+        let (ma, mb) = (runs.len() as u64, runs_b.len() as u64);
         for ok_all in all_points.iter_mut() {
             let mut pick =
-                || -> Vec<usize> { (0..n).map(|_| (rng.next_u64() % m) as usize).collect() };
-            let (a, b) = (pick(), pick());
+                |m: u64| -> Vec<usize> { (0..n).map(|_| (rng.next_u64() % m) as usize).collect() };
+            let (a, b) = (pick(ma), pick(mb));
             let mut every = true;
-            for (q, vals) in values.iter().enumerate() {
-                let arm = |idx: &[usize]| {
+            for (q, (xa, xb)) in va.iter().zip(&vb).enumerate() {
+                let arm = |vals: &[Option<f64>], idx: &[usize]| {
                     let xs: Vec<f64> = idx.iter().filter_map(|&i| vals[i]).collect();
                     Stat::of(&xs)
                 };
-                let (sa, sb) = (arm(&a), arm(&b));
+                let (sa, sb) = (arm(xa, &a), arm(xb, &b));
                 let ok = sa.n >= 2 && sb.n >= 2 && shift_by(&sa, &sb, rule).passes;
                 pass[q] += usize::from(ok);
                 every &= ok;
@@ -105,7 +125,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             pass_all += usize::from(every);
             *ok_all &= every;
         }
-        println!("### {point} ({} runs drawn from)\n", runs.len());
+        println!(
+            "### {point} ({} and {} runs drawn from)\n",
+            runs.len(),
+            runs_b.len()
+        );
         println!("| quantity | passes |\n|---|---|");
         for ((_, label), p) in judged.iter().zip(&pass) {
             println!("| {label} | {:.1} % |", 100.0 * *p as f64 / draws as f64);
