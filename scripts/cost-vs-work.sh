@@ -7,7 +7,7 @@
 # per run (crates/lab/research/cost_vs_work.rs) into OUT_DIR.
 #   scripts/cost-vs-work.sh OUT_DIR [CONFIG ...]
 #   CONFIG: a name and its settings, e.g. half:numerics.time_step_safety=0.5
-#           refined:numerics.time_step_safety=1.0,experimental.refine_window=0.05
+#           refined:numerics.time_step_safety=1.0,numerics.refine_window=0.05
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:?output directory}; shift

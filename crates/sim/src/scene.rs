@@ -25,8 +25,8 @@ use pressridge_column::limits::Range;
 mod build;
 mod sections;
 pub use sections::{
-    ExperimentalSection, FloeSection, IceSection, JointSection, NOSE_SLOPE, NumericsSection,
-    OutputSection, PileSection, SheetSection, WallSection, WaterSection,
+    FloeSection, IceSection, JointSection, NOSE_SLOPE, NumericsSection, OutputSection, PileSection,
+    SheetSection, WallSection, WaterSection,
 };
 mod validate;
 
@@ -72,23 +72,6 @@ pub enum SceneLoadError {
     Scene(#[from] SceneError),
 }
 
-/// The error for a scene that sets an experimental option at the key it had before it moved
-/// to `[experimental]` (e.g. `numerics.joint_dashpot`), or `None`.
-fn moved_experimental_key(text: &str) -> Option<SceneError> {
-    let doc: toml::Table = toml::from_str(text).ok()?;
-    ExperimentalSection::KEYS.iter().find_map(|(section, key)| {
-        let set = doc.get(*section)?.as_table()?.contains_key(*key);
-        set.then(|| {
-            SceneError::Invalid(
-                format!("{section}.{key}"),
-                format!(
-                    "this experimental option moved to the `[experimental]` section: write `experimental.{key}`"
-                ),
-            )
-        })
-    })
-}
-
 /// A complete scene.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
@@ -123,10 +106,6 @@ pub struct Scene {
     /// A rubble pile, if any.
     #[serde(default)]
     pub pile: Option<PileSection>,
-    /// Experimental options, off by default and outside the supported format; absent from
-    /// a written scene when none is set.
-    #[serde(default, skip_serializing_if = "ExperimentalSection::is_unset")]
-    pub experimental: ExperimentalSection,
 }
 
 impl Default for Scene {
@@ -147,7 +126,6 @@ impl Default for Scene {
             floe: Some(FloeSection::default()),
             wall: None,
             pile: None,
-            experimental: ExperimentalSection::default(),
         }
     }
 }
@@ -194,9 +172,7 @@ impl Scene {
     /// # Ok::<(), pressridge_sim::scene::SceneError>(())
     /// ```
     pub fn from_toml(text: &str) -> Result<Scene, SceneError> {
-        let s: Scene = toml::from_str(text).map_err(|e| {
-            moved_experimental_key(text).unwrap_or_else(|| SceneError::Parse(e.to_string()))
-        })?;
+        let s: Scene = toml::from_str(text).map_err(|e| SceneError::Parse(e.to_string()))?;
         s.validate()?;
         Ok(s)
     }

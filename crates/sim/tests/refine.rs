@@ -1,4 +1,4 @@
-//! The step refined around fracture (`experimental.refine_window`, docs/speed-vs-error.md):
+//! The step refined around fracture (`numerics.refine_window`, docs/speed-vs-error.md):
 //! off, nothing changes; at a fraction of 1 it is the one step to the bit (the kick
 //! ½·(Δt + Δt) is Δt exactly); on, the run takes more steps where the sheet breaks, its
 //! ledger still closes to round-off, and its distance pushed is the time run times U.
@@ -17,10 +17,7 @@ fn run(sets: &[&str]) -> RunOutput {
 #[test]
 fn a_refined_step_of_the_whole_step_changes_no_bit() {
     let plain = run(&[]);
-    let same = run(&[
-        "experimental.refine_window=0.02",
-        "experimental.refine_fraction=1",
-    ]);
+    let same = run(&["numerics.refine_window=0.02", "numerics.refine_fraction=1"]);
     assert!(plain.summary.blocks_broken > 0, "no break to refine around");
     assert_eq!(plain.summary.steps, same.summary.steps);
     assert_eq!(
@@ -36,7 +33,7 @@ fn a_refined_step_of_the_whole_step_changes_no_bit() {
 #[test]
 fn a_refined_step_takes_more_steps_and_its_ledger_closes() {
     let plain = run(&[]);
-    let refined = run(&["experimental.refine_window=0.02"]);
+    let refined = run(&["numerics.refine_window=0.02"]);
     let (p, r) = (&plain.summary, &refined.summary);
     assert!(r.blocks_broken > 0);
     // Each break refines at least the 20 ms after it to a quarter of the step: 3 extra
@@ -64,16 +61,10 @@ fn a_refined_step_takes_more_steps_and_its_ledger_closes() {
 #[test]
 fn a_refined_step_is_checked() {
     for (set, key) in [
-        (
-            "experimental.refine_window=-1",
-            "experimental.refine_window",
-        ),
-        ("experimental.refine_load=0", "experimental.refine_load"),
-        ("experimental.refine_load=1.5", "experimental.refine_load"),
-        (
-            "experimental.refine_fraction=0.5",
-            "experimental.refine_fraction",
-        ),
+        ("numerics.refine_window=-1", "numerics.refine_window"),
+        ("numerics.refine_load=0", "numerics.refine_load"),
+        ("numerics.refine_load=1.5", "numerics.refine_load"),
+        ("numerics.refine_fraction=0.5", "numerics.refine_fraction"),
     ] {
         let e = Scene::default()
             .with_overrides(&[set])
@@ -84,13 +75,13 @@ fn a_refined_step_is_checked() {
     }
     let e = Scene::default()
         .with_overrides(&[
-            "experimental.refine_window=0.02",
-            "experimental.refine_fraction=1.5",
+            "numerics.refine_window=0.02",
+            "numerics.refine_fraction=1.5",
         ])
         .and_then(|s| s.validate().map(|_| s))
         .unwrap_err()
         .to_string();
-    assert!(e.contains("experimental.refine_fraction"), "{e}");
+    assert!(e.contains("numerics.refine_fraction"), "{e}");
 }
 
 #[test]
@@ -100,8 +91,8 @@ fn a_restart_inside_a_refined_window_repeats_the_bits() {
         .with_overrides(&[
             "duration=8",
             "numerics.time_step_safety=1.0",
-            "experimental.refine_window=0.02",
-            "experimental.refine_load=0.9",
+            "numerics.refine_window=0.02",
+            "numerics.refine_load=0.9",
         ])
         .unwrap();
     let mut w = scene.build().unwrap();
@@ -129,11 +120,8 @@ fn a_restart_inside_a_refined_window_repeats_the_bits() {
 
 #[test]
 fn a_step_refined_ahead_of_fracture_refines_where_a_joint_nears_its_strength() {
-    let window = run(&["experimental.refine_window=0.02"]);
-    let ahead = run(&[
-        "experimental.refine_window=0.02",
-        "experimental.refine_load=0.8",
-    ]);
+    let window = run(&["numerics.refine_window=0.02"]);
+    let ahead = run(&["numerics.refine_window=0.02", "numerics.refine_load=0.8"]);
     let (w, a) = (&window.summary, &ahead.summary);
     // The sheet is loaded towards its strength before its first break (about 5.6 s): the
     // steps there are refined too.
@@ -150,10 +138,7 @@ fn a_step_refined_ahead_of_fracture_refines_where_a_joint_nears_its_strength() {
     );
     assert!((a.time - 8.0).abs() < w.dt);
     // At a load of 1 nothing is refined before a crack starts: the window's run exactly.
-    let none = run(&[
-        "experimental.refine_window=0.02",
-        "experimental.refine_load=1",
-    ]);
+    let none = run(&["numerics.refine_window=0.02", "numerics.refine_load=1"]);
     assert_eq!(none.summary.steps, w.steps);
     assert_eq!(
         serde_json::to_string(&none.final_state.bodies).unwrap(),

@@ -91,7 +91,7 @@ pub(crate) struct StepNumerics {
     pub joint_dashpot: Dashpot,
     /// Incubation time of crack initiation (s), or `None` (the paper's instantaneous start).
     pub incubation_time: Option<f64>,
-    /// Fracture tested on the mean stress of the last two poses (experimental).
+    /// Fracture tested on the mean stress of the last two poses (`numerics.fracture_step_mean`).
     pub fracture_step_mean: bool,
     /// Keep the largest tested stress over strength of the intact joints
     /// ([`crate::dem::WorldParams::refine_load`]).

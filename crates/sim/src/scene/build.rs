@@ -18,11 +18,11 @@ impl Scene {
             ice_density: self.ice.density,
             contact,
             crack_speed: self.joint.crack_speed,
-            incubation_time: self.experimental.incubation_time,
-            fracture_step_mean: self.experimental.fracture_step_mean,
-            refine_window: self.experimental.refine_window,
-            refine_load: self.experimental.refine_load,
-            refine_fraction: self.experimental.refine_fraction,
+            incubation_time: self.joint.incubation_time,
+            fracture_step_mean: self.numerics.fracture_step_mean,
+            refine_window: self.numerics.refine_window,
+            refine_load: self.numerics.refine_load,
+            refine_fraction: self.numerics.refine_fraction,
             water: self.water.enabled.then_some(WaterParams {
                 level: self.water.level,
                 density: self.water.density,
@@ -34,9 +34,9 @@ impl Scene {
             time_step_safety: self.numerics.time_step_safety,
             time_step: (self.numerics.time_step > 0.0).then_some(self.numerics.time_step),
             contact_dashpot: self.numerics.contact_dashpot,
-            joint_dashpot: self.experimental.joint_dashpot,
-            contact_onset: self.experimental.contact_onset,
-            contact_dashpot_sweeps: self.experimental.contact_dashpot_sweeps,
+            joint_dashpot: self.numerics.joint_dashpot,
+            contact_onset: self.numerics.contact_onset,
+            contact_dashpot_sweeps: self.numerics.contact_dashpot_sweeps,
             ..WorldParams::default()
         }
     }

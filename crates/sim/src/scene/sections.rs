@@ -1,5 +1,5 @@
 //! The sections of a scene file (`[ice]`, `[water]`, `[numerics]`, `[sheet]`, `[floe]`,
-//! `[wall]`, `[pile]`, `[joint]`, `[output]`, `[experimental]`): every key with its unit,
+//! `[wall]`, `[pile]`, `[joint]`, `[output]`): every key with its unit,
 //! default and reason.
 //! Re-exported by `scene`, their one public path.
 
@@ -84,15 +84,73 @@ pub struct NumericsSection {
     /// Interval between samples of the energy budget and the ridging force (s).
     /// Default 0.2 s, the paper's force sampling interval (Figure 6).
     pub sample_interval: f64,
+    /// Time discretisation of the joints' viscous stress of eq (1): "explicit" (default,
+    /// the paper's form, at the half-step velocities) or "implicit" (centred in time per
+    /// joint; raises the joints' stable limit 1.18× for 27 % more instructions per step and
+    /// breaks as many joints: docs/model.md, "Joint dashpot in time"). Written only when
+    /// set. See [`crate::dem::WorldParams::joint_dashpot`].
+    #[serde(skip_serializing_if = "Dashpot::is_explicit")]
+    pub joint_dashpot: Dashpot,
+    /// How a new contact reads its first overlap rate in eq (3): "area" (default, the
+    /// paper's Aⁿ/Δt) or "velocity" (the chord times the approach speed; restitution of a
+    /// collision 0.8 % against 6.0 % too high at the default step, every trajectory changed:
+    /// docs/model.md, "A new contact's first rate"). Written only when set. See
+    /// [`crate::dem::ContactOnset`].
+    #[serde(skip_serializing_if = "ContactOnset::is_area")]
+    pub contact_onset: ContactOnset,
+    /// Gauss–Seidel sweeps of the centred contact dashpot over the contacts (count, 0–50):
+    /// 0 (default) solves each contact alone, n couples a block's contacts (a pressed block's
+    /// viscous force to 2.5e-3 of the coupled solution after 3 sweeps; docs/model.md,
+    /// "Several contacts on one block"). Written only when set. See
+    /// [`crate::dem::WorldParams::contact_dashpot_sweeps`].
+    #[serde(skip_serializing_if = "crate::dem::is_zero")]
+    pub contact_dashpot_sweeps: u32,
+    /// Test crack initiation on the mean elastic surface stress of the last two poses,
+    /// (σⁿ⁻¹ + σⁿ)/2, instead of σⁿ (dimensionless switch). Default false: the stress of the
+    /// pose, the paper's test. The leapfrog scheme makes a suddenly loaded mode of phase θ
+    /// per step swing 1/cos(θ/2) times too far; the two-pose mean swings as far as the exact
+    /// motion of the same energy. On the ensembles it does not take away the step's shift of
+    /// fracture (docs/speed-vs-error.md). Not with `joint.incubation_time`. Written only
+    /// when set.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub fracture_step_mean: bool,
+    /// A step refined around fracture (s), or none (default: one step throughout). While
+    /// a joint is cracking, and for this long after a joint severs, the world steps by
+    /// `refine_fraction` of its step, the leapfrog's kick the mean of the two steps where
+    /// the step changes (docs/model.md, "A step refined around fracture"). A saved state
+    /// carries the window's clock, so a run restarted inside a window repeats the bits of
+    /// an unbroken run. Written only when set.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub refine_window: Option<f64>,
+    /// A step refined ahead of fracture (dimensionless, in (0, 1]), or none (default):
+    /// while some intact joint's tested stress exceeds this fraction of its strength, the
+    /// world steps by `refine_fraction` of its step (at the full limit 0.9 adds 2.7 % of the
+    /// steps, 0.8 adds 17 %). With `refine_window` it refines the loading that leads to a
+    /// crack as well as the cascade after it. Written only when set.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub refine_load: Option<f64>,
+    /// The refined step as a fraction of the step (dimensionless, in (0, 1]), with
+    /// `refine_window` or `refine_load`; none: a quarter. Written only when set.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub refine_fraction: Option<f64>,
 }
 
 impl Default for NumericsSection {
+    /// The world's defaults ([`crate::dem::WorldParams`]) where the world holds the choice.
     fn default() -> Self {
+        let w = crate::dem::WorldParams::default();
         Self {
             time_step_safety: crate::dem::DEFAULT_TIME_STEP_SAFETY,
             time_step: 0.0,
             contact_dashpot: Dashpot::default(),
             sample_interval: 0.2,
+            joint_dashpot: w.joint_dashpot,
+            contact_onset: w.contact_onset,
+            contact_dashpot_sweeps: w.contact_dashpot_sweeps,
+            fracture_step_mean: w.fracture_step_mean,
+            refine_window: w.refine_window,
+            refine_load: w.refine_load,
+            refine_fraction: w.refine_fraction,
         }
     }
 }
@@ -437,6 +495,16 @@ pub struct JointSection {
     /// default Δt, and is of the order of measured crack speeds in sea ice (tens to hundreds
     /// of m/s) while staying slow against the ~0.1 s flexural response of the sheet.
     pub crack_speed: f64,
+    /// Incubation time τ of crack initiation (s), or none. Default none: the paper's test,
+    /// a crack starts the first step the elastic surface stress exceeds the strength. With
+    /// τ the stress compared is the elastic stress filtered by dσ_f/dt = (σ − σ_f)/τ, so a
+    /// stress must last about τ to break ice: the dynamic-fracture "incubation time" idea.
+    /// At 2 ms it took away the step dependence of fracture on the former model but moved
+    /// the finest step's count of broken joints by +38 % (docs/model.md, "Incubation
+    /// time"). Not with
+    /// `numerics.fracture_step_mean`. Written only when set.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub incubation_time: Option<f64>,
 }
 
 impl Default for JointSection {
@@ -444,6 +512,7 @@ impl Default for JointSection {
         Self {
             damping_fraction: 0.1,
             crack_speed: 50.0,
+            incubation_time: None,
         }
     }
 }
@@ -467,100 +536,5 @@ impl Default for OutputSection {
             snapshot_interval: 50.0,
             frame: [-14.0, 6.0, -8.0, 4.0],
         }
-    }
-}
-
-/// `[experimental]`: options kept for the studies of
-/// docs/notes/speed-vs-error-former-model.md, each off by default and **not part of the
-/// supported scene format** (they may change or go without notice). A written scene holds
-/// only the options that are set, and no `[experimental]` section when none is, so the
-/// digests of the runs made without them are unchanged.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct ExperimentalSection {
-    /// Time discretisation of the joints' viscous stress of eq (1): "explicit" (default,
-    /// the paper's form) or "implicit" (centred in time). See
-    /// [`crate::dem::WorldParams::joint_dashpot`].
-    #[serde(skip_serializing_if = "Dashpot::is_explicit")]
-    pub joint_dashpot: Dashpot,
-    /// How a new contact reads its first overlap rate in eq (3): "area" (default, the
-    /// paper's) or "velocity". See [`crate::dem::ContactOnset`].
-    #[serde(skip_serializing_if = "ContactOnset::is_area")]
-    pub contact_onset: ContactOnset,
-    /// Gauss–Seidel sweeps of the implicit contact dashpot over the contacts (count, 0–50):
-    /// 0 (default) solves each contact alone. See
-    /// [`crate::dem::WorldParams::contact_dashpot_sweeps`].
-    #[serde(skip_serializing_if = "crate::dem::is_zero")]
-    pub contact_dashpot_sweeps: u32,
-    /// Incubation time τ of crack initiation (s), or none. Default none: the paper's test,
-    /// a crack starts the first step the elastic surface stress exceeds the strength. With
-    /// τ the stress compared is the elastic stress filtered by dσ_f/dt = (σ − σ_f)/τ, so a
-    /// stress must last about τ to break ice: the dynamic-fracture "incubation time" idea,
-    /// here to keep fracture from reading the leapfrog's high-frequency error
-    /// (docs/notes/speed-vs-error-former-model.md, "Fracture and the time step").
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub incubation_time: Option<f64>,
-    /// Test crack initiation on the mean elastic surface stress of the last two poses,
-    /// (σⁿ⁻¹ + σⁿ)/2, instead of σⁿ. Default false: the stress of the pose. The leapfrog
-    /// scheme makes a suddenly loaded mode of phase θ per step swing 1/cos(θ/2) times too
-    /// far (its peak from rest +33 % too high at 0.8 of the stable limit for a mode at the
-    /// bound); the two-pose mean swings as far as the exact motion of the same energy. On
-    /// the ensembles it does not take away the step's shift of fracture
-    /// (docs/speed-vs-error.md, "One reading of the cause was tested and does not hold").
-    /// Not with `incubation_time`.
-    #[serde(skip_serializing_if = "std::ops::Not::not")]
-    pub fracture_step_mean: bool,
-    /// A step refined around fracture (s), or none (default: one step throughout). While
-    /// a joint is cracking, and for this long after a joint severs, the world steps by
-    /// `refine_fraction` of its step, the leapfrog's kick the mean of the two steps where
-    /// the step changes. A probe of the step study's finding that the breaks a larger step
-    /// adds come within 10 ms after another break (docs/speed-vs-error.md, "When the added
-    /// breaks happen"). A saved state carries the window's clock, so a run restarted
-    /// inside a window repeats the bits of an unbroken run.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub refine_window: Option<f64>,
-    /// A step refined ahead of fracture (dimensionless, in (0, 1]), or none (default):
-    /// while some intact joint's tested stress exceeds this fraction of its strength, the
-    /// world steps by `refine_fraction` of its step. With `refine_window` it refines the
-    /// loading that leads to a crack as well as the cascade after it.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub refine_load: Option<f64>,
-    /// The refined step as a fraction of the step (dimensionless, in (0, 1]), with
-    /// `refine_window` or `refine_load`; none: a quarter.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub refine_fraction: Option<f64>,
-}
-
-impl Default for ExperimentalSection {
-    /// The world's defaults ([`crate::dem::WorldParams`]): every option off.
-    fn default() -> Self {
-        let w = crate::dem::WorldParams::default();
-        Self {
-            joint_dashpot: w.joint_dashpot,
-            contact_onset: w.contact_onset,
-            contact_dashpot_sweeps: w.contact_dashpot_sweeps,
-            incubation_time: w.incubation_time,
-            fracture_step_mean: w.fracture_step_mean,
-            refine_window: w.refine_window,
-            refine_load: w.refine_load,
-            refine_fraction: w.refine_fraction,
-        }
-    }
-}
-
-impl ExperimentalSection {
-    /// The keys of this section (the dotted key of each is `experimental.<key>`); before
-    /// they moved here they were `numerics.<key>` or, for the incubation time, `joint.<key>`.
-    pub(crate) const KEYS: [(&'static str, &'static str); 4] = [
-        ("numerics", "joint_dashpot"),
-        ("numerics", "contact_onset"),
-        ("numerics", "contact_dashpot_sweeps"),
-        ("joint", "incubation_time"),
-    ];
-
-    /// True when no experimental option is set (a serde skip test: the section is then not
-    /// written).
-    pub(crate) fn is_unset(&self) -> bool {
-        *self == Self::default()
     }
 }

@@ -72,18 +72,18 @@ fn invalid_values_are_named() {
     let e = Scene::from_toml("duration = nan").unwrap_err().to_string();
     assert!(e.contains("duration"), "{e}");
     let e = Scene::default()
-        .with_overrides(&["experimental.incubation_time=0"])
+        .with_overrides(&["joint.incubation_time=0"])
         .unwrap_err()
         .to_string();
-    assert!(e.contains("experimental.incubation_time"), "{e}");
+    assert!(e.contains("joint.incubation_time"), "{e}");
     let e = Scene::default()
         .with_overrides(&[
-            "experimental.incubation_time=0.002",
-            "experimental.fracture_step_mean=true",
+            "joint.incubation_time=0.002",
+            "numerics.fracture_step_mean=true",
         ])
         .unwrap_err()
         .to_string();
-    assert!(e.contains("experimental.fracture_step_mean"), "{e}");
+    assert!(e.contains("numerics.fracture_step_mean"), "{e}");
 }
 
 /// The incubation time is absent unless set, and then absent from the scene's TOML too,
@@ -91,23 +91,20 @@ fn invalid_values_are_named() {
 #[test]
 fn incubation_time_is_optional_and_not_written_when_absent() {
     let s = Scene::default();
-    assert_eq!(s.experimental.incubation_time, None);
+    assert_eq!(s.joint.incubation_time, None);
     assert!(!s.to_toml().contains("incubation_time"));
-    let s = s
-        .with_overrides(&["experimental.incubation_time=0.002"])
-        .unwrap();
-    assert_eq!(s.experimental.incubation_time, Some(0.002));
+    let s = s.with_overrides(&["joint.incubation_time=0.002"]).unwrap();
+    assert_eq!(s.joint.incubation_time, Some(0.002));
     assert_eq!(s.world_params().incubation_time, Some(0.002));
     assert_eq!(Scene::from_toml(&s.to_toml()).unwrap(), s);
 }
 
-/// An experimental scene option: absent from the default scene's TOML (`key` not in it);
+/// A scene option off by default: absent from the default scene's TOML (`key` not in it);
 /// `key=value` set gives a scene that round-trips through TOML (returned), and each of
 /// `bad` values is refused, at parsing or at building, with a message naming `key`.
 fn option_absent_unless_set(key: &str, value: &str, bad: &[&str]) -> Scene {
     let name = key.rsplit('.').next().unwrap();
     assert!(!Scene::default().to_toml().contains(name));
-    assert!(!Scene::default().to_toml().contains("experimental"));
     let s = Scene::default()
         .with_overrides(&[format!("{key}={value}")])
         .unwrap();
@@ -127,11 +124,8 @@ fn option_absent_unless_set(key: &str, value: &str, bad: &[&str]) -> Scene {
 /// "implicit" reaches the world; a misspelt value is refused naming the key.
 #[test]
 fn joint_dashpot_is_explicit_unless_set_and_not_written_then() {
-    assert_eq!(
-        Scene::default().experimental.joint_dashpot,
-        Dashpot::Explicit
-    );
-    let s = option_absent_unless_set("experimental.joint_dashpot", "implicit", &["centered"]);
+    assert_eq!(Scene::default().numerics.joint_dashpot, Dashpot::Explicit);
+    let s = option_absent_unless_set("numerics.joint_dashpot", "implicit", &["centered"]);
     assert_eq!(s.world_params().joint_dashpot, Dashpot::Implicit);
 }
 
@@ -139,11 +133,8 @@ fn joint_dashpot_is_explicit_unless_set_and_not_written_then() {
 /// "velocity" reaches the world.
 #[test]
 fn contact_onset_is_the_area_rate_unless_set_and_not_written_then() {
-    assert_eq!(
-        Scene::default().experimental.contact_onset,
-        ContactOnset::Area
-    );
-    let s = option_absent_unless_set("experimental.contact_onset", "velocity", &["speed"]);
+    assert_eq!(Scene::default().numerics.contact_onset, ContactOnset::Area);
+    let s = option_absent_unless_set("numerics.contact_onset", "velocity", &["speed"]);
     assert_eq!(s.world_params().contact_onset, ContactOnset::Velocity);
 }
 
@@ -174,32 +165,25 @@ fn the_withdrawn_tangential_reference_is_refused_by_name() {
 /// from the scene's TOML; a count reaches the world, and too many are refused by name.
 #[test]
 fn contact_dashpot_sweeps_are_off_unless_set() {
-    assert_eq!(Scene::default().experimental.contact_dashpot_sweeps, 0);
-    let s = option_absent_unless_set("experimental.contact_dashpot_sweeps", "4", &["51", "-1"]);
+    assert_eq!(Scene::default().numerics.contact_dashpot_sweeps, 0);
+    let s = option_absent_unless_set("numerics.contact_dashpot_sweeps", "4", &["51", "-1"]);
     assert_eq!(s.world_params().contact_dashpot_sweeps, 4);
 }
 
-/// The experimental options live in `[experimental]` only: the keys they had before
-/// (`numerics.joint_dashpot`, …, `joint.incubation_time`) are refused, in a file and in
-/// `--set`, with a message that names the key and where it went.
+/// The numerics options once kept in an `[experimental]` section are read at their keys in
+/// `[numerics]` (the incubation time in `[joint]`); a scene or `--set` that still names the
+/// section is refused, the section named.
 #[test]
-fn experimental_options_are_refused_at_their_former_keys_with_their_new_ones() {
-    for (section, key) in ExperimentalSection::KEYS {
-        let value = if key == "incubation_time" || key == "contact_dashpot_sweeps" {
-            "2"
-        } else {
-            "\"implicit\""
-        };
-        let e = Scene::from_toml(&format!("[{section}]\n{key} = {value}\n"))
-            .unwrap_err()
-            .to_string();
-        assert!(e.contains(&format!("experimental.{key}")), "{e}");
-        let e = Scene::default()
-            .with_overrides(&[format!("{section}.{key}={value}")])
-            .unwrap_err()
-            .to_string();
-        assert!(e.contains(&format!("experimental.{key}")), "{e}");
-    }
+fn the_former_experimental_section_is_refused_by_name() {
+    let e = Scene::from_toml("[experimental]\ncontact_onset = \"velocity\"\n")
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("experimental"), "{e}");
+    let e = Scene::default()
+        .with_overrides(&["experimental.contact_onset=velocity".to_string()])
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("experimental"), "{e}");
 }
 
 /// One parser for `--set`: the key trimmed, the value as given, `None` without `=`; and

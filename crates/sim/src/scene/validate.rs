@@ -94,45 +94,41 @@ impl Scene {
         if !(self.joint.crack_speed > 0.0 && self.joint.crack_speed.is_finite()) {
             return bad("joint.crack_speed", "must be positive (m/s)");
         }
-        if let Some(t) = self.experimental.incubation_time
+        if let Some(t) = self.joint.incubation_time
             && !(t > 0.0 && t.is_finite())
         {
+            return bad("joint.incubation_time", "must be positive (s) when given");
+        }
+        if self.numerics.fracture_step_mean && self.joint.incubation_time.is_some() {
             return bad(
-                "experimental.incubation_time",
-                "must be positive (s) when given",
+                "numerics.fracture_step_mean",
+                "filters the tested stress as joint.incubation_time does: set one of them",
             );
         }
-        if self.experimental.fracture_step_mean && self.experimental.incubation_time.is_some() {
-            return bad(
-                "experimental.fracture_step_mean",
-                "filters the tested stress as experimental.incubation_time does: set one of them",
-            );
-        }
-        if let Some(w) = self.experimental.refine_window
+        if let Some(w) = self.numerics.refine_window
             && !(w >= 0.0 && w.is_finite())
         {
             return bad(
-                "experimental.refine_window",
+                "numerics.refine_window",
                 "must be non-negative (s) when given",
             );
         }
-        if let Some(f) = self.experimental.refine_load
+        if let Some(f) = self.numerics.refine_load
             && !(f > 0.0 && f <= 1.0)
         {
             return bad(
-                "experimental.refine_load",
+                "numerics.refine_load",
                 "must be in (0, 1] (a fraction of the joints' strength) when given",
             );
         }
-        if let Some(f) = self.experimental.refine_fraction {
+        if let Some(f) = self.numerics.refine_fraction {
             if !(f > 0.0 && f <= 1.0) {
-                return bad("experimental.refine_fraction", "must be in (0, 1]");
+                return bad("numerics.refine_fraction", "must be in (0, 1]");
             }
-            if self.experimental.refine_window.is_none() && self.experimental.refine_load.is_none()
-            {
+            if self.numerics.refine_window.is_none() && self.numerics.refine_load.is_none() {
                 return bad(
-                    "experimental.refine_fraction",
-                    "refines the step only with experimental.refine_window or refine_load: set one",
+                    "numerics.refine_fraction",
+                    "refines the step only with numerics.refine_window or refine_load: set one",
                 );
             }
         }

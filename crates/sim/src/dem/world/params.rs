@@ -31,10 +31,8 @@ pub struct WorldParams {
     pub contact_dashpot: Dashpot,
     /// How the joints' viscous stress of eq (1) is advanced in time. Default
     /// [`Dashpot::Explicit`] (the paper's form, at the half-step velocities); `Implicit`
-    /// centres it at the mid-step velocities (experimental; see `Joint::apply_viscous`
-    /// and docs/notes/speed-vs-error-former-model.md, "Fracture and the time step"). Absent
-    /// from states and
-    /// scenes when explicit.
+    /// centres it at the mid-step velocities (see `Joint::apply_viscous` and
+    /// docs/model.md, "Joint dashpot in time"). Absent from states and scenes when explicit.
     #[serde(
         default = "Dashpot::explicit",
         skip_serializing_if = "Dashpot::is_explicit"
@@ -49,32 +47,31 @@ pub struct WorldParams {
     /// with the other contacts' viscous and friction forces left out (a Jacobi step, as
     /// [`Dashpot::Implicit`] describes); n ≥ 1 sweeps the contacts n times in order, each
     /// seeing the others' latest viscous and friction forces, towards the coupled solution
-    /// for a block with several contacts. Experimental
-    /// (docs/notes/speed-vs-error-former-model.md, "Fracture
-    /// and the time step"); absent from states and scenes when 0.
+    /// for a block with several contacts (docs/model.md, "Several contacts on one block");
+    /// absent from states and scenes when 0.
     #[serde(default, skip_serializing_if = "is_zero")]
     pub contact_dashpot_sweeps: u32,
     /// Speed at which a crack crosses a joint (m/s). Default 50 m/s; see
     /// docs/model.md ("Fracture").
     pub crack_speed: f64,
     /// Incubation time of crack initiation (s), or `None` for the paper's instantaneous
-    /// test; see [`crate::scene::ExperimentalSection::incubation_time`].
+    /// test; see [`crate::scene::JointSection::incubation_time`].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub incubation_time: Option<f64>,
     /// Test fracture on the mean of the elastic stresses of the last two poses instead of
-    /// the last one; see [`crate::scene::ExperimentalSection::fracture_step_mean`].
+    /// the last one; see [`crate::scene::NumericsSection::fracture_step_mean`].
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub fracture_step_mean: bool,
     /// A refined step around fracture: while a joint is cracking, and for this long (s)
     /// after a joint severs, the world steps by [`WorldParams::refine_fraction`] of its
     /// step; `None` (default) steps by the one step throughout. See
-    /// [`crate::scene::ExperimentalSection::refine_window`].
+    /// [`crate::scene::NumericsSection::refine_window`].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub refine_window: Option<f64>,
     /// A refined step ahead of fracture: while some intact joint's tested stress exceeds this
     /// fraction of its strength (dimensionless, in (0, 1]) the world steps by
     /// [`WorldParams::refine_fraction`] of its step; `None` (default): no such refinement.
-    /// See [`crate::scene::ExperimentalSection::refine_load`].
+    /// See [`crate::scene::NumericsSection::refine_load`].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub refine_load: Option<f64>,
     /// The refined step as a fraction of the step (dimensionless, in (0, 1]), with
