@@ -32,7 +32,7 @@
 !> pressridge_icepack_configure(path) before its first step. Without the file the drop-in is
 !> Icepack, bit for bit.
 module pressridge_icepack
-  use, intrinsic :: iso_c_binding, only: c_double, c_int32_t
+  use, intrinsic :: iso_c_binding, only: c_associated, c_double, c_int32_t
   use, intrinsic :: iso_fortran_env, only: int64
   use pressridge
   use icepack_intfc, only: icepack_query_tracer_flags, icepack_query_tracer_sizes, &
@@ -90,6 +90,8 @@ contains
     character(len=1024) :: cf_table, mu_rdg_table
     real(c_double) :: friction, friction_water
     type(pressridge_options) :: o
+    type(pressridge_cf_table) :: cf_new
+    type(pressridge_mu_rdg_table) :: mu_new
     integer :: u, ios, e
     character(len=512) :: iom
     character(len=:), allocatable :: msg
@@ -119,24 +121,31 @@ contains
          o%redistribution = PRESSRIDGE_REDISTRIBUTION_EXPONENTIAL
     if (len_trim(cf_table) > 0) then
        call pressridge_cf_table_open_at_friction(trim(cf_table), friction, friction_water, &
-            nml_cf_table, e)
+            cf_new, e)
        if (e /= PRESSRIDGE_OK) then
           call abort_with(subname//' '//path//', cf_table: '//trim(pressridge_last_error_message()))
           return
        end if
-       call pressridge_options_set_cf_table(o, nml_cf_table)
+       call pressridge_options_set_cf_table(o, cf_new)
     end if
     if (len_trim(mu_rdg_table) > 0) then
        call pressridge_mu_rdg_table_open(trim(mu_rdg_table), friction, friction_water, &
-            nml_mu_rdg_table, e)
+            mu_new, e)
        if (e /= PRESSRIDGE_OK) then
+          if (c_associated(cf_new%ptr)) call pressridge_cf_table_free(cf_new)
           call abort_with(subname//' '//path//', mu_rdg_table: '// &
                trim(pressridge_last_error_message()))
           return
        end if
-       call pressridge_options_set_mu_rdg_table(o, nml_mu_rdg_table)
+       call pressridge_options_set_mu_rdg_table(o, mu_new)
     end if
     call pressridge_init_parameters(options=o)
+    ! The options no longer name an earlier call's tables: release them (a host that
+    ! configures again, or a test, leaks nothing).
+    if (c_associated(nml_cf_table%ptr)) call pressridge_cf_table_free(nml_cf_table)
+    if (c_associated(nml_mu_rdg_table%ptr)) call pressridge_mu_rdg_table_free(nml_mu_rdg_table)
+    nml_cf_table = cf_new
+    nml_mu_rdg_table = mu_new
     config_ok = .true.
     if (len_trim(cf_table) > 0) then
        msg = 'C_f from '//trim(cf_table)
