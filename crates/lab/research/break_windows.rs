@@ -3,7 +3,8 @@
 //! with its step's safety factor, seed, time and the pieces it leaves) and splits each run's
 //! breaks by whether another joint of the same run severed within `WINDOW` seconds before it
 //! ("after": the second and later breaks of a cascade) or not ("alone"), and by whether the
-//! smaller piece it leaves is a single block. Prints, per class, the reference's mean per run
+//! smaller piece it leaves is a single block; a second table splits them by where the joint
+//! was (the sheet, the rubble, the floe). Prints, per class, the reference's mean per run
 //! (the first safety factor of the log, or `REF`) and each other factor's difference with its
 //! 95 % Welch interval; and the share of the run's time that windows from `LEAD` seconds before
 //! each break to `WINDOW` after it cover (what a step refined only there would cost).
@@ -25,10 +26,37 @@
 use pressridge::table::fit::student_t_quantile;
 use std::collections::BTreeMap;
 
-/// One severed joint: its time (s) and whether it leaves a single block.
+/// One severed joint: its time (s), whether it leaves a single block, and where it was
+/// (sheet, floe or rubble, as the log names it).
 struct Break {
     time: f64,
     single: bool,
+    place: String,
+}
+
+/// The classes of the second table: where the joint was and what it leaves.
+const PLACES: [&str; 5] = [
+    "sheet, single block",
+    "sheet, longer",
+    "rubble, single block",
+    "rubble, longer",
+    "floe",
+];
+
+/// Per-run counts of each class of `PLACES`.
+fn by_place(run: &[Break]) -> [f64; 5] {
+    let mut n = [0.0; 5];
+    for b in run {
+        let k = match (b.place.as_str(), b.single) {
+            ("sheet", true) => 0,
+            ("sheet", false) => 1,
+            ("rubble", true) => 2,
+            ("rubble", false) => 3,
+            _ => 4,
+        };
+        n[k] += 1.0;
+    }
+    n
 }
 
 /// The classes of a run's breaks, in print order.
@@ -107,11 +135,12 @@ fn read_log(
             .position(|h| *h == c)
             .ok_or(format!("{path}: no column {c}"))
     };
-    let (c_safety, c_seed, c_time, c_small) = (
+    let (c_safety, c_seed, c_time, c_small, c_place) = (
         col("safety")?,
         col("seed")?,
         col("time_s")?,
         col("small_side")?,
+        col("place")?,
     );
     for line in lines.filter(|l| !l.trim().is_empty()) {
         let f: Vec<&str> = line.split(',').collect();
@@ -124,6 +153,7 @@ fn read_log(
             .push(Break {
                 time: f[c_time].parse()?,
                 single: f[c_small] == "1",
+                place: f[c_place].to_string(),
             });
     }
     Ok(())
@@ -154,11 +184,16 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let last = runs.values().flatten().map(|b| b.time).fold(0.0, f64::max);
     let duration = last.max(400.0);
     let mut per: BTreeMap<String, (Vec<[f64; 5]>, Vec<f64>)> = BTreeMap::new();
+    let mut places: BTreeMap<String, Vec<[f64; 5]>> = BTreeMap::new();
     for ((safety, _), run) in runs.iter_mut() {
         let (n, share) = classify(run, window, lead, duration);
         let e = per.entry(safety.clone()).or_default();
         e.0.push(n);
         e.1.push(share);
+        places
+            .entry(safety.clone())
+            .or_default()
+            .push(by_place(run));
     }
     println!(
         "breaks per run, by whether another severed within {:.0} ms before (after) or not \
@@ -191,8 +226,32 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         println!(" {:.2} % |", mean_var(share).0);
     }
     println!();
+    println!("breaks per run, by where the joint was and whether it leaves a single block");
+    println!();
+    print!("| safety | runs |");
+    for c in PLACES {
+        print!(" {c} |");
+    }
+    println!();
+    println!("|---|---|{}", "---|".repeat(PLACES.len()));
+    let rp = &places[&reference];
+    print!("| {reference} | {} |", rp.len());
+    for k in 0..PLACES.len() {
+        let (m, v) = mean_var(&cell(rp, k));
+        print!(" {m:.1} ± {:.1} |", v.sqrt());
+    }
+    println!();
+    for s in order.iter().filter(|s| **s != reference) {
+        let n = &places[s];
+        print!("| {s} | {} |", n.len());
+        for k in 0..PLACES.len() {
+            print!(" {} |", welch(&cell(rp, k), &cell(n, k)));
+        }
+        println!();
+    }
+    println!();
     println!(
-        "Reference row: mean ± standard deviation over its runs; other rows: difference of \
+        "Reference rows: mean ± standard deviation over its runs; other rows: difference of \
          the means per run with its 95 % Welch interval."
     );
     Ok(())
