@@ -145,3 +145,37 @@ fn a_step_refined_ahead_of_fracture_refines_where_a_joint_nears_its_strength() {
         serde_json::to_string(&window.final_state.bodies).unwrap()
     );
 }
+
+/// An impact refines the step like a break: with `numerics.refine_impact` below the speed at
+/// which the first blocks meet, the run takes more steps than the window alone, its ledger
+/// still closes; above every approach speed it changes no bit. A speed without the window,
+/// or not positive, is refused by name.
+#[test]
+fn an_impact_refines_the_step_for_the_window() {
+    let window = run(&["numerics.refine_window=0.02"]);
+    let impacts = run(&["numerics.refine_window=0.02", "numerics.refine_impact=0.05"]);
+    let never = run(&["numerics.refine_window=0.02", "numerics.refine_impact=1000"]);
+    assert!(
+        impacts.summary.steps > window.summary.steps,
+        "{} steps with impacts against {}",
+        impacts.summary.steps,
+        window.summary.steps
+    );
+    assert!(impacts.summary.max_relative_residual < 1e-9);
+    assert_eq!(never.summary.steps, window.summary.steps);
+    assert_eq!(
+        serde_json::to_string(&never.final_state.bodies).unwrap(),
+        serde_json::to_string(&window.final_state.bodies).unwrap()
+    );
+    for set in [
+        &["numerics.refine_impact=0.1"][..],
+        &["numerics.refine_window=0.02", "numerics.refine_impact=0"][..],
+    ] {
+        let e = Scene::default()
+            .with_overrides(set)
+            .and_then(|s| s.validate().map(|_| s))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("numerics.refine_impact"), "{set:?}: {e}");
+    }
+}

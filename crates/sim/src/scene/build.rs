@@ -22,6 +22,7 @@ impl Scene {
             fracture_step_mean: self.numerics.fracture_step_mean,
             refine_window: self.numerics.refine_window,
             refine_load: self.numerics.refine_load,
+            refine_impact: self.numerics.refine_impact,
             refine_fraction: self.numerics.refine_fraction,
             water: self.water.enabled.then_some(WaterParams {
                 level: self.water.level,

@@ -121,6 +121,20 @@ impl Scene {
                 "must be in (0, 1] (a fraction of the joints' strength) when given",
             );
         }
+        if let Some(v) = self.numerics.refine_impact {
+            if !(v > 0.0 && v.is_finite()) {
+                return bad(
+                    "numerics.refine_impact",
+                    "must be positive (m/s) when given",
+                );
+            }
+            if self.numerics.refine_window.is_none() {
+                return bad(
+                    "numerics.refine_impact",
+                    "refines for numerics.refine_window after an impact: set the window too",
+                );
+            }
+        }
         if let Some(f) = self.numerics.refine_fraction {
             if !(f > 0.0 && f <= 1.0) {
                 return bad("numerics.refine_fraction", "must be in (0, 1]");

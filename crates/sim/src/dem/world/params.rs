@@ -74,6 +74,12 @@ pub struct WorldParams {
     /// See [`crate::scene::NumericsSection::refine_load`].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub refine_load: Option<f64>,
+    /// A refined step after impacts: with [`WorldParams::refine_window`], a contact born
+    /// with an approach speed above this (m/s) refines the step for that window as a
+    /// severed joint does; `None` (default): no such refinement. See
+    /// [`crate::scene::NumericsSection::refine_impact`].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub refine_impact: Option<f64>,
     /// The refined step as a fraction of the step (dimensionless, in (0, 1]), with
     /// [`WorldParams::refine_window`] or [`WorldParams::refine_load`]; `None`: a quarter
     /// (0.25, the step study's reference at the full limit).
@@ -102,6 +108,7 @@ impl Default for WorldParams {
             fracture_step_mean: false,
             refine_window: None,
             refine_load: None,
+            refine_impact: None,
             refine_fraction: None,
             global_damping: 0.0,
         }
@@ -265,6 +272,16 @@ impl WorldParams {
                 f,
                 "must be at most 1 (a fraction of the joints' strength)",
             )?;
+        }
+        if let Some(v) = self.refine_impact {
+            pos("refine_impact", v)?;
+            if self.refine_window.is_none() {
+                return Err(WorldError::Param {
+                    name: "refine_impact",
+                    value: v,
+                    why: "refines for refine_window after an impact: set refine_window too",
+                });
+            }
         }
         if let Some(f) = self.refine_fraction {
             fraction(
