@@ -455,20 +455,10 @@ impl World {
         };
         self.contacts
             .update(b, pairs, &law, num, &mut self.acc.contact, pool);
-        // An impact (a contact born this step approaching faster than refine_impact)
-        // refines the step for the window after it, as a severed joint does.
-        if let (Some(v), Some(w)) = (self.params.refine_impact, self.params.refine_window)
-            && self
-                .contacts
-                .contacts()
-                .iter()
-                .any(|c| c.steps == 1 && c.approach > v)
-        {
-            self.refine_until = self.refine_until.max(self.time + w);
-        }
         if num.joint_dashpot == Dashpot::Implicit {
             self.joints.apply_viscous(b, num.kick);
         }
+        self.note_impacts();
     }
 
     /// Leapfrog velocities, eq (5), over the kick `dt` (s; [`StepNumerics::kick`]); prescribed degrees of freedom take their value and the

@@ -1,6 +1,6 @@
 //! The time step of a [`World`]: the stable limit of the leapfrog scheme from the joints
 //! and contacts present (docs/model.md, "Time step"), its safety factor, a fixed step
-//! checked against the limit, and the step refined around fracture.
+//! checked against the limit, and the step refined around fracture and impacts.
 
 use super::*;
 
@@ -17,6 +17,21 @@ impl World {
             self.dt * p.refine_fraction.unwrap_or(params::DEFAULT_REFINE_FRACTION)
         } else {
             self.dt
+        }
+    }
+
+    /// With [`WorldParams::refine_impact`]: an impact (a contact born this step, its blocks
+    /// approaching faster than that) refines the step for [`WorldParams::refine_window`]
+    /// after it, as a severed joint does.
+    pub(super) fn note_impacts(&mut self) {
+        if let (Some(v), Some(w)) = (self.params.refine_impact, self.params.refine_window)
+            && self
+                .contacts
+                .contacts()
+                .iter()
+                .any(|c| c.steps == 1 && c.approach > v)
+        {
+            self.refine_until = self.refine_until.max(self.time + w);
         }
     }
 
