@@ -65,18 +65,13 @@ impl Stat {
     /// (unequal variances, Welch–Satterthwaite degrees of freedom), in units of the quantity:
     /// how ensembles of two configurations are compared (docs/speed-vs-error.md).
     pub fn welch_difference(&self, other: &Stat) -> (f64, f64) {
-        self.welch_quantile(other, 0.975)
+        self.welch_difference_at(other, 0.95)
     }
 
     /// [`Stat::welch_difference`] with a two-sided interval of confidence `level` in (0, 1)
-    /// (dimensionless; 0.95 gives the 95 % interval).
+    /// (dimensionless; 0.95 gives the 95 % interval, its t quantile at 0.5 + 0.5·0.95, which
+    /// is 0.975 to the bit).
     pub fn welch_difference_at(&self, other: &Stat, level: f64) -> (f64, f64) {
-        self.welch_quantile(other, 0.5 + 0.5 * level)
-    }
-
-    /// The difference of means and the half-width of its Welch interval whose upper end is
-    /// Student's t quantile `p`.
-    fn welch_quantile(&self, other: &Stat, p: f64) -> (f64, f64) {
         let (va, vb) = (
             self.std.powi(2) / self.n as f64,
             other.std.powi(2) / other.n as f64,
@@ -87,7 +82,7 @@ impl Stat {
                 .max(1e-300);
         (
             other.mean - self.mean,
-            crate::table::fit::student_t_quantile(p, dof) * se,
+            crate::table::fit::student_t_quantile(0.5 + 0.5 * level, dof) * se,
         )
     }
 }
@@ -293,6 +288,18 @@ mod tests {
         let (d, h) = a.welch_difference(&b);
         assert_eq!(d, 2.5);
         assert!((h - 2.228139 * (2.0f64 / 6.0).sqrt()).abs() < 1e-5, "{h}");
+        // At 90 %: t₀.₉₅,₁₀ = 1.812461; the 95 % call is the general one at 0.95, bit for bit.
+        let (_, h90) = a.welch_difference_at(&b, 0.90);
+        assert!(
+            (h90 - 1.812461 * (2.0f64 / 6.0).sqrt()).abs() < 1e-5,
+            "{h90}"
+        );
+        let (_, h95) = a.welch_difference_at(&b, 0.95);
+        assert_eq!(h95.to_bits(), h.to_bits());
+        assert_eq!(
+            h.to_bits(),
+            (crate::table::fit::student_t_quantile(0.975, 10.0) * (2.0f64 / 6.0).sqrt()).to_bits()
+        );
         assert!((a.half_width_95() - 2.570582 / 6f64.sqrt()).abs() < 1e-5);
         assert!(
             Stat {

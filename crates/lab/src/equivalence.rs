@@ -104,11 +104,7 @@ pub fn shift_by(a: &Stat, b: &Stat, rule: Rule) -> Shift {
         Rule::Bonferroni(m) => 1.0 - 0.05 / m.max(1) as f64,
         Rule::Tost => 0.90,
     };
-    let (diff, half) = if rule == Rule::Standard {
-        a.welch_difference(b)
-    } else {
-        a.welch_difference_at(b, level)
-    };
+    let (diff, half) = a.welch_difference_at(b, level);
     let sigma = if a.std > 0.0 {
         a.std
     } else {
