@@ -29,6 +29,12 @@
 //! configuration adds: a joint severed in the sheet or in a long piece moves several classes,
 //! one that chips a single block off a piece's end adds to the first.
 //!
+//! A third table per thickness splits Φ_i/W into its parts and gives the other sinks, each
+//! per W (not judged): the viscous part, the elastic part (the normal contact forces' net
+//! elastic work), the contact hysteresis (elastic work left at separation: zero for a
+//! conservative contact law, so a step that integrates the contact spring less exactly shows
+//! here), and the joint, boundary and drag dissipation. It says where a shift of Φ_i/W sits.
+//!
 //! ```sh
 //! cargo run --release --example speed_vs_error -- \
 //!     reference=runs/sve-reference implicit-0.8=runs/sve-implicit-0.8 > table.md
@@ -47,7 +53,7 @@
 //! ```
 
 use pressridge::record::RunRecord;
-use pressridge::table::ensemble::Stat;
+use pressridge::table::ensemble::{Stat, quantity};
 use pressridge_lab::equivalence::{
     QUANTITIES, SEEDS as EQUIVALENCE_SEEDS, points as groups, shift, stat,
 };
@@ -82,6 +88,56 @@ fn piece_counts(r: &RunRecord) -> Option<[f64; PIECE_CLASSES.len() + 1]> {
         n[PIECE_CLASSES.len()] += 1.0;
     }
     Some(n)
+}
+
+/// The ledger terms of the sinks table (a key of [`quantity`], its label), each per W.
+const SINKS: [(&str, &str); 6] = [
+    ("viscous_dissipation", "Φ_i viscous"),
+    ("normal_elastic_work", "Φ_i elastic"),
+    ("contact_hysteresis", "contact hysteresis"),
+    ("joint_dissipation", "joints"),
+    ("boundary_dissipation", "boundaries"),
+    ("drag_dissipation", "drag"),
+];
+
+/// The sinks table of one point: see the module's doc.
+fn print_sinks(point: &str, configs: &[(String, Groups)], ref_runs: &[RunRecord]) {
+    let column = |runs: &[RunRecord], key: &str| {
+        let xs: Vec<f64> = runs
+            .iter()
+            .filter_map(|r| Some(quantity(r, key)? / quantity(r, "work")?))
+            .collect();
+        Stat::of(&xs)
+    };
+    println!("\nSinks per W (Φ_i/W in its parts and the others), {point}:\n");
+    print!("| configuration | runs |");
+    for (_, label) in SINKS {
+        print!(" {label} |");
+    }
+    println!();
+    println!("|{}", "---|".repeat(2 + SINKS.len()));
+    for (name, g) in configs {
+        let Some(runs) = g.get(point) else { continue };
+        print!("| {name} | {} |", runs.len());
+        for (key, _) in SINKS {
+            let (a, b) = (column(ref_runs, key), column(runs, key));
+            if std::ptr::eq(runs.as_slice(), ref_runs) {
+                print!(" {:.5} ± {:.5} |", a.mean, a.std);
+            } else if a.n < 2 || b.n < 2 {
+                print!(" — |");
+            } else {
+                let (d, h) = a.welch_difference(&b);
+                print!(
+                    " {:+.1} % [{:+.1}, {:+.1}]; {:+.2} σ |",
+                    100.0 * d / a.mean,
+                    100.0 * (d - h.abs()) / a.mean,
+                    100.0 * (d + h.abs()) / a.mean,
+                    d / a.std
+                );
+            }
+        }
+        println!();
+    }
 }
 
 /// The pieces table of one point: see the module's doc.
@@ -243,6 +299,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             println!("\n{v}.");
         }
         print_pieces(point, &configs, ref_runs);
+        print_sinks(point, &configs, ref_runs);
     }
     println!(
         "\nReference row: mean ± standard deviation σ over seeds (W, ΔPE in J/m; E_f/break, \
@@ -255,7 +312,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
          centre lies within ±0.3 σ, ✗: not; a configuration is equivalent when every judged \
          quantity passes with at least 41 seeds in each arm. Pieces tables: the reference's \
          mean ± σ of the pieces per run, the others' difference in pieces per run with its \
-         95 % Welch interval."
+         95 % Welch interval. Sinks tables: each sink over W, the reference's mean ± σ, the \
+         others' difference in % of the reference mean with its 95 % Welch interval and in \
+         units of the reference's σ."
     );
     Ok(())
 }
