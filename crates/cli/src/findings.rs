@@ -4,6 +4,7 @@
 use crate::BoxError;
 use pressridge::campaign::{read_campaign, read_pooled};
 use pressridge::record::RunRecord;
+use pressridge::scene::StepScheme;
 use pressridge_lab::choices::effects;
 use pressridge_lab::findings::{Register, evidence, findings, markdown, records_step};
 use std::path::{Path, PathBuf};
@@ -18,8 +19,9 @@ pub struct Args {
     /// A key of the Figure 5 scene moved for the model whose findings are tested, e.g.
     /// `--set floe.length=20` for the records of the former 20-m floe (repeatable; the
     /// paper's points then move only their friction, modulus or speed from it). The step
-    /// (`numerics.time_step_safety`) is the one the records at the Figure 5 point were made
-    /// with unless set here; records of two steps there are refused.
+    /// (`numerics.time_step_safety` and the `numerics.refine_*` keys) is the one the records
+    /// at the Figure 5 point were made with unless set here; records of two steps there are
+    /// refused.
     #[arg(long = "set", value_name = "KEY=VALUE", conflicts_with = "choices")]
     set: Vec<String>,
     /// The fewest runs an ensemble may have (the paper's sets have seven).
@@ -120,7 +122,11 @@ pub fn run(a: Args) -> Result<(), BoxError> {
     // The records' own step, unless --set names one (records_step).
     let mut step = String::new();
     let chosen = a.set.iter().any(|s| {
-        pressridge::scene::split_override(s).is_some_and(|(k, _)| k == "numerics.time_step_safety")
+        pressridge::scene::split_override(s).is_some_and(|(k, _)| {
+            StepScheme::KEYS
+                .iter()
+                .any(|n| k.strip_prefix("numerics.") == Some(n))
+        })
     });
     let inferred = if chosen {
         None
@@ -128,13 +134,13 @@ pub fn run(a: Args) -> Result<(), BoxError> {
         records_step(&records, &base).map_err(|e| format!("findings: {e}"))?
     };
     if let Some(v) = inferred
-        && v != base.numerics.time_step_safety
+        && v != base.numerics.step_scheme()
     {
-        base.numerics.time_step_safety = v;
+        base.numerics.set_step_scheme(v);
         step = format!(
-            " Read at the step the records were made with, {v} of the stable limit \
-             (`numerics.time_step_safety`; the default is now {}).",
-            pressridge::dem::DEFAULT_TIME_STEP_SAFETY
+            " Read at the step the records were made with, {v} (`numerics.time_step_safety` \
+             and `numerics.refine_*`; the default is now {}).",
+            pressridge::scene::NumericsSection::default().step_scheme()
         );
     }
     let rows = findings(&records, a.min_seeds, &base)?;

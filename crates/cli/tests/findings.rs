@@ -165,11 +165,22 @@ fn records_of_two_steps_are_refused_naming_them() {
     assert!(!o.status.success());
     let e = String::from_utf8_lossy(&o.stderr);
     assert!(
-        e.contains("2 steps (0.5, 0.8)") && e.contains("--set numerics.time_step_safety="),
+        e.contains("2 steps (0.5 of the stable limit; 0.8 of the stable limit)")
+            && e.contains("--set numerics.time_step_safety="),
         "{e}"
     );
     // One step chosen: its Figure 5 runs are found, and the friction points are missing.
-    let o = findings(&[&both[..], &["--set", "numerics.time_step_safety=0.8"]].concat());
+    let step = [
+        "--set",
+        "numerics.time_step_safety=0.8",
+        "--set",
+        "numerics.refine_window=off",
+        "--set",
+        "numerics.refine_load=off",
+        "--set",
+        "numerics.refine_impact=off",
+    ];
+    let o = findings(&[&both[..], &step[..]].concat());
     assert!(!o.status.success());
     let e = String::from_utf8_lossy(&o.stderr);
     assert!(

@@ -19,7 +19,7 @@
 use crate::choices::{other_sinks_fraction, phi_i};
 use pressridge::energy::EnergyBudget;
 use pressridge::record::RunRecord;
-use pressridge::scene::Scene;
+use pressridge::scene::{Scene, StepScheme};
 use pressridge::table::ensemble::Stat;
 use pressridge::table::fit::student_t_quantile;
 use pressridge::table::rafting::{Outcome, RAFTING_REACH, outcome};
@@ -195,38 +195,42 @@ impl Point {
     }
 }
 
-/// The step of `records` at the Figure 5 point of `base` (`numerics.time_step_safety`,
-/// dimensionless): the table tests the model at the step its records were made with, and
-/// every point is then read at that step. `Ok(None)` when no run is at the point (the table
-/// then names the missing runs); an error naming the steps when the runs there were made at
-/// more than one, since an ensemble must not mix steps (docs/speed-vs-error.md).
-pub fn records_step(records: &[RunRecord], base: &Scene) -> Result<Option<f64>, String> {
+/// The step scheme of `records` at the Figure 5 point of `base` (`numerics.time_step_safety`
+/// and the refinements, [`StepScheme`]): the table tests the model at the step its records
+/// were made with, and every point is then read at that step. `Ok(None)` when no run is at
+/// the point (the table then names the missing runs); an error naming the schemes when the
+/// runs there were made at more than one, since an ensemble must not mix steps
+/// (docs/speed-vs-error.md).
+pub fn records_step(records: &[RunRecord], base: &Scene) -> Result<Option<StepScheme>, String> {
     let without_step = |s: &Scene| {
         let mut v = physics(s);
         if let Some(n) = v.get_mut("numerics").and_then(|n| n.as_object_mut()) {
-            n.remove("time_step_safety");
+            for k in StepScheme::KEYS {
+                n.remove(k);
+            }
         }
         v
     };
     let want = without_step(&FIGURE5.with(base));
-    let mut steps: Vec<f64> = records
-        .iter()
-        .filter(|r| without_step(&r.scene) == want)
-        .map(|r| r.scene.numerics.time_step_safety)
-        .collect();
-    steps.sort_by(f64::total_cmp);
-    steps.dedup();
+    let mut steps: Vec<StepScheme> = Vec::new();
+    for r in records.iter().filter(|r| without_step(&r.scene) == want) {
+        let s = r.scene.numerics.step_scheme();
+        if !steps.contains(&s) {
+            steps.push(s);
+        }
+    }
+    steps.sort_by(|a, b| a.time_step_safety.total_cmp(&b.time_step_safety));
     match steps.as_slice() {
         [] => Ok(None),
         [one] => Ok(Some(*one)),
         many => Err(format!(
             "the runs at the Figure 5 point were made at {} steps ({}); choose one with \
-             --set numerics.time_step_safety=VALUE",
+             --set numerics.time_step_safety=VALUE (and the numerics.refine_* keys)",
             many.len(),
             many.iter()
                 .map(|v| v.to_string())
                 .collect::<Vec<_>>()
-                .join(", ")
+                .join("; ")
         )),
     }
 }

@@ -28,6 +28,8 @@ pub use sections::{
     FloeSection, IceSection, JointSection, NOSE_SLOPE, NumericsSection, OutputSection, PileSection,
     SheetSection, WallSection, WaterSection,
 };
+mod step;
+pub use step::StepScheme;
 mod validate;
 
 /// An error in a scene.

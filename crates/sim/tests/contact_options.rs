@@ -11,7 +11,11 @@ const K_NE: f64 = 1e8;
 mod support;
 
 /// Two 1 m × 0.3 m blocks 2 cm apart face to face, closing at 0.5 m/s each, without gravity,
-/// water or friction, with the contact parameters `contact`.
+/// water or friction, with the contact parameters `contact`, at one step of half the stable
+/// limit: the accuracy these checks were made at. (At the default step, the full limit
+/// refined for the impact, the capped contact's plastic work comes out 1.7 % low; at half
+/// the limit refined after the impact, the area law's hysteresis across the step change is
+/// 0.6 % of it.)
 fn face_on_pair(contact: ContactParams) -> World {
     support::pair::face_on_pair(
         WorldParams {
@@ -20,6 +24,8 @@ fn face_on_pair(contact: ContactParams) -> World {
                 mu_water: 0.0,
                 ..contact
             },
+            time_step_safety: 0.5,
+            refine_impact: None,
             ..WorldParams::default()
         },
         0.0,

@@ -1,14 +1,23 @@
 //! The step refined around fracture (`numerics.refine_window`, docs/speed-vs-error.md):
 //! off, nothing changes; at a fraction of 1 it is the one step to the bit (the kick
 //! ½·(Δt + Δt) is Δt exactly); on, the run takes more steps where the sheet breaks, its
-//! ledger still closes to round-off, and its distance pushed is the time run times U.
+//! ledger still closes to round-off, and its distance pushed is the time run times U. The
+//! default refines (window, load and impacts on); "off" switches each off, in TOML, JSON and
+//! `--set` alike.
 
 use pressridge_sim::scene::Scene;
 use pressridge_sim::simulation::{self, RunOutput};
 
-/// 8 s of the Figure 5 scene at the full limit: its first breaks come after about 5.6 s.
+/// 8 s of the Figure 5 scene at the full limit, every refinement off unless `sets` turns it
+/// on: its first breaks come after about 5.6 s.
 fn run(sets: &[&str]) -> RunOutput {
-    let mut all = vec!["duration=8", "numerics.time_step_safety=1.0"];
+    let mut all = vec![
+        "duration=8",
+        "numerics.time_step_safety=1.0",
+        "numerics.refine_window=off",
+        "numerics.refine_load=off",
+        "numerics.refine_impact=off",
+    ];
     all.extend_from_slice(sets);
     let scene = Scene::default().with_overrides(&all).unwrap();
     simulation::run(&scene, &mut |_| true).unwrap()
@@ -64,7 +73,8 @@ fn a_refined_step_is_checked() {
         ("numerics.refine_window=-1", "numerics.refine_window"),
         ("numerics.refine_load=0", "numerics.refine_load"),
         ("numerics.refine_load=1.5", "numerics.refine_load"),
-        ("numerics.refine_fraction=0.5", "numerics.refine_fraction"),
+        ("numerics.refine_window=of", "numerics.refine_window"),
+        ("numerics.refine_load=\"none\"", "numerics.refine_load"),
     ] {
         let e = Scene::default()
             .with_overrides(&[set])
@@ -73,6 +83,17 @@ fn a_refined_step_is_checked() {
             .to_string();
         assert!(e.contains(key), "{set}: {e}");
     }
+    let e = Scene::default()
+        .with_overrides(&[
+            "numerics.refine_window=off",
+            "numerics.refine_load=off",
+            "numerics.refine_impact=off",
+            "numerics.refine_fraction=0.5",
+        ])
+        .and_then(|s| s.validate().map(|_| s))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("numerics.refine_fraction"), "{e}");
     let e = Scene::default()
         .with_overrides(&[
             "numerics.refine_window=0.02",
@@ -168,7 +189,7 @@ fn an_impact_refines_the_step_for_the_window() {
         serde_json::to_string(&window.final_state.bodies).unwrap()
     );
     for set in [
-        &["numerics.refine_impact=0.1"][..],
+        &["numerics.refine_window=off", "numerics.refine_impact=0.1"][..],
         &["numerics.refine_window=0.02", "numerics.refine_impact=0"][..],
     ] {
         let e = Scene::default()
@@ -178,4 +199,41 @@ fn an_impact_refines_the_step_for_the_window() {
             .to_string();
         assert!(e.contains("numerics.refine_impact"), "{set:?}: {e}");
     }
+}
+
+/// The default step is the full limit refined around fracture and impacts, and the scene
+/// says so: its TOML and JSON name every refinement, "off" where one is switched off, and
+/// read back to the same scene.
+#[test]
+fn the_default_step_refines_and_says_so() {
+    use pressridge_sim::dem::{
+        DEFAULT_REFINE_IMPACT, DEFAULT_REFINE_LOAD, DEFAULT_REFINE_WINDOW, DEFAULT_TIME_STEP_SAFETY,
+    };
+    let d = Scene::default();
+    assert_eq!(d.numerics.time_step_safety, DEFAULT_TIME_STEP_SAFETY);
+    assert_eq!(d.numerics.refine_window, Some(DEFAULT_REFINE_WINDOW));
+    assert_eq!(d.numerics.refine_load, Some(DEFAULT_REFINE_LOAD));
+    assert_eq!(d.numerics.refine_impact, Some(DEFAULT_REFINE_IMPACT));
+    let toml = d.to_toml();
+    assert!(toml.contains("refine_window = 0.05"), "{toml}");
+    // A scene file that does not name the numerics gets the default step.
+    let bare = Scene::from_toml("name = \"bare\"").unwrap();
+    assert_eq!(bare.numerics, d.numerics);
+    let off = d
+        .with_overrides(&[
+            "numerics.refine_window=off",
+            "numerics.refine_load=off",
+            "numerics.refine_impact=off",
+        ])
+        .unwrap();
+    assert_eq!(off.numerics.refine_window, None);
+    let toml = off.to_toml();
+    for k in ["refine_window", "refine_load", "refine_impact"] {
+        assert!(toml.contains(&format!("{k} = \"off\"")), "{toml}");
+    }
+    assert_eq!(Scene::from_toml(&toml).unwrap(), off);
+    let json = serde_json::to_string(&off).unwrap();
+    assert!(json.contains("\"refine_load\":\"off\""), "{json}");
+    assert_eq!(serde_json::from_str::<Scene>(&json).unwrap(), off);
+    off.validate().unwrap();
 }

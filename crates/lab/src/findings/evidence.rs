@@ -9,7 +9,7 @@ use super::{
 };
 use crate::choices::{at, by_setting, other_sinks_fraction, rafted_count};
 use pressridge::record::RunRecord;
-use pressridge::scene::Scene;
+use pressridge::scene::{Scene, StepScheme};
 use pressridge::table::ensemble::Stat;
 use pressridge::table::rafting::{Outcome, RAFTING_REACH, outcome};
 use std::fmt::Write as _;
@@ -67,7 +67,9 @@ pub fn evidence(
             .any(|r| r.item == item && r.verdict == Verdict::Disagree && r.ours.starts_with(prefix))
     };
     let mut reg_base = base.clone();
-    reg_base.numerics.time_step_safety = records_step(reg.baseline, base).ok().flatten()?;
+    reg_base
+        .numerics
+        .set_step_scheme(records_step(reg.baseline, base).ok().flatten()?);
     select(reg.baseline, &reg_base, FIGURE5, 2).ok()?;
     let mut lines = Vec::new();
     if disagrees("a", "") {
@@ -87,10 +89,7 @@ pub fn evidence(
          the register (`docs/choices.md`) moved alone on this model, at μ = 0.4 and μ = 1.0 \
          (μ_w = 0.6), from the records in `{source}`.{step} Left out, because they take \
          the experiment apart: ",
-        step = step_note(
-            reg_base.numerics.time_step_safety,
-            base.numerics.time_step_safety
-        )
+        step = step_note(reg_base.numerics.step_scheme(), base.numerics.step_scheme())
     );
     let left_out: Vec<String> = NOT_CHOICES
         .iter()
@@ -107,14 +106,14 @@ pub fn evidence(
 
 /// The sentence saying that the register was made at another step than the table's runs
 /// (both as fractions of the stable limit), or nothing when they agree.
-fn step_note(register: f64, table: f64) -> String {
+fn step_note(register: StepScheme, table: StepScheme) -> String {
     if register == table {
         return String::new();
     }
     format!(
-        " The register's runs (its baseline and its probes) were made at {register} of the \
-         stable limit, the table's above at {table}: where a row reads the register, its \
-         default and its closest choice are both runs at {register} \
+        " The register's runs (its baseline and its probes) were made at {register}, the \
+         table's above at {table}: where a row reads the register, its default and its \
+         closest choice are both runs at that step \
          (`docs/notes/choices-revision1.md`, \"At which step\")."
     )
 }

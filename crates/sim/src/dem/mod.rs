@@ -24,7 +24,7 @@ mod geometry;
 mod joint;
 pub(crate) mod lanes;
 pub(crate) mod ledger;
-mod numerics;
+pub(crate) mod numerics;
 mod water;
 mod world;
 
@@ -35,8 +35,9 @@ pub use joint::{Joint, JointMaterial, SurfaceStress};
 pub use numerics::{ContactOnset, Dashpot};
 pub use water::{DragBodies, WaterParams};
 pub use world::{
-    BodyState, DEFAULT_TIME_STEP_SAFETY, Handovers, MAX_CONTACT_DASHPOT_SWEEPS, Snapshot, World,
-    WorldError, WorldParams,
+    BodyState, DEFAULT_REFINE_FRACTION, DEFAULT_REFINE_IMPACT, DEFAULT_REFINE_LOAD,
+    DEFAULT_REFINE_WINDOW, DEFAULT_TIME_STEP_SAFETY, Handovers, MAX_CONTACT_DASHPOT_SWEEPS,
+    Snapshot, World, WorldError, WorldParams,
 };
 
 /// The contact geometry, public and hidden from the docs only for the benchmarks

@@ -97,3 +97,37 @@ pub(crate) struct StepNumerics {
     /// ([`crate::dem::WorldParams::refine_load`]).
     pub track_load: bool,
 }
+
+/// Serde form of a threshold that a scene may switch off (`numerics.refine_window`,
+/// `refine_load`, `refine_impact`): a number in the threshold's unit, or the string `"off"`
+/// for `None`. Always written, so a scene or record says whether it refines.
+pub(crate) mod off_or_number {
+    use serde::de::Error;
+    use serde::{Deserialize, Deserializer, Serializer};
+
+    /// The word that switches a threshold off.
+    pub const OFF: &str = "off";
+
+    pub fn serialize<S: Serializer>(v: &Option<f64>, s: S) -> Result<S::Ok, S::Error> {
+        match v {
+            Some(x) => s.serialize_f64(*x),
+            None => s.serialize_str(OFF),
+        }
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Option<f64>, D::Error> {
+        #[derive(Deserialize)]
+        #[serde(untagged)]
+        enum Form {
+            Number(f64),
+            Word(String),
+        }
+        match Form::deserialize(d) {
+            Ok(Form::Number(x)) => Ok(Some(x)),
+            Ok(Form::Word(w)) if w == OFF => Ok(None),
+            _ => Err(D::Error::custom(format!(
+                "expected a number or \"{OFF}\" (the threshold switched off)"
+            ))),
+        }
+    }
+}

@@ -33,7 +33,10 @@ mod snapshot;
 mod timestep;
 
 pub(crate) use params::is_zero;
-pub use params::{DEFAULT_TIME_STEP_SAFETY, MAX_CONTACT_DASHPOT_SWEEPS, WorldError, WorldParams};
+pub use params::{
+    DEFAULT_REFINE_FRACTION, DEFAULT_REFINE_IMPACT, DEFAULT_REFINE_LOAD, DEFAULT_REFINE_WINDOW,
+    DEFAULT_TIME_STEP_SAFETY, MAX_CONTACT_DASHPOT_SWEEPS, WorldError, WorldParams,
+};
 pub use snapshot::{BodyState, Snapshot};
 
 /// A set of blocks in a vertical plane with water, stepping in time.

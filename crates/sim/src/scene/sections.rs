@@ -73,7 +73,8 @@ impl Default for WaterSection {
 #[serde(deny_unknown_fields, default)]
 pub struct NumericsSection {
     /// Safety factor on the stable time step (dimensionless, in (0, 1]). Default
-    /// [`crate::dem::DEFAULT_TIME_STEP_SAFETY`]; see docs/speed-vs-error.md.
+    /// [`crate::dem::DEFAULT_TIME_STEP_SAFETY`], the full limit, refined around fracture and
+    /// impacts by the `refine_*` options; see docs/speed-vs-error.md.
     pub time_step_safety: f64,
     /// Fixed time step (s); 0 derives it from the stiffest element. Default 0. A value
     /// above the scene's stable limit is refused before the run, with the limit.
@@ -114,27 +115,30 @@ pub struct NumericsSection {
     /// when set.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub fracture_step_mean: bool,
-    /// A step refined around fracture (s), or none (default: one step throughout). While
-    /// a joint is cracking, and for this long after a joint severs, the world steps by
+    /// A step refined around fracture (s), or "off" (one step throughout). Default
+    /// [`crate::dem::DEFAULT_REFINE_WINDOW`], 0.05 s. While a joint is cracking, and for this
+    /// long after a joint severs (or an impact, `refine_impact`), the world steps by
     /// `refine_fraction` of its step, the leapfrog's kick the mean of the two steps where
     /// the step changes (docs/model.md, "A step refined around fracture"). A saved state
     /// carries the window's clock, so a run restarted inside a window repeats the bits of
-    /// an unbroken run. Written only when set.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    /// an unbroken run.
+    #[serde(with = "crate::dem::numerics::off_or_number")]
     pub refine_window: Option<f64>,
-    /// A step refined ahead of fracture (dimensionless, in (0, 1]), or none (default):
-    /// while some intact joint's tested stress exceeds this fraction of its strength, the
-    /// world steps by `refine_fraction` of its step (at the full limit 0.9 adds 2.7 % of the
-    /// steps, 0.8 adds 17 %). With `refine_window` it refines the loading that leads to a
-    /// crack as well as the cascade after it. Written only when set.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    /// A step refined ahead of fracture (dimensionless, in (0, 1]), or "off". Default
+    /// [`crate::dem::DEFAULT_REFINE_LOAD`], 0.9: while some intact joint's tested stress
+    /// exceeds this fraction of its strength, the world steps by `refine_fraction` of its
+    /// step (at the full limit 0.9 adds 2.7 % of the steps, 0.8 adds 17 %). With
+    /// `refine_window` it refines the loading that leads to a crack as well as the cascade
+    /// after it.
+    #[serde(with = "crate::dem::numerics::off_or_number")]
     pub refine_load: Option<f64>,
-    /// A step refined after impacts (m/s), or none (default): with `refine_window`, a
-    /// contact born approaching faster than this refines the step for that window, as a
-    /// severed joint does, so that a block striking a rubble piece loads its joints in
-    /// refined steps. A probe of the step study's finding that the refined step's excess
-    /// breaks at 0.45 m are in the rubble (docs/speed-vs-error.md). Written only when set.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    /// A step refined after impacts (m/s), or "off". Default
+    /// [`crate::dem::DEFAULT_REFINE_IMPACT`], 0.6 m/s: with `refine_window`, a contact born
+    /// approaching faster than this refines the step for that window, as a severed joint
+    /// does, so that a block striking a rubble piece loads its joints in refined steps
+    /// (without it the 0.45-m sheet's rubble breaks into more single blocks at the full
+    /// limit; docs/speed-vs-error.md).
+    #[serde(with = "crate::dem::numerics::off_or_number")]
     pub refine_impact: Option<f64>,
     /// The refined step as a fraction of the step (dimensionless, in (0, 1]), with
     /// `refine_window` or `refine_load`; none: a quarter. Written only when set.

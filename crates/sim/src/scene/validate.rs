@@ -131,7 +131,7 @@ impl Scene {
             if self.numerics.refine_window.is_none() {
                 return bad(
                     "numerics.refine_impact",
-                    "refines for numerics.refine_window after an impact: set the window too",
+                    "refines for numerics.refine_window after an impact: set the window, or switch the impacts off (\"off\")",
                 );
             }
         }
@@ -142,7 +142,7 @@ impl Scene {
             if self.numerics.refine_window.is_none() && self.numerics.refine_load.is_none() {
                 return bad(
                     "numerics.refine_fraction",
-                    "refines the step only with numerics.refine_window or refine_load: set one",
+                    "refines the step only with numerics.refine_window or refine_load: set one (both are \"off\")",
                 );
             }
         }
