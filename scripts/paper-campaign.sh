@@ -1,29 +1,31 @@
 #!/usr/bin/env bash
-# The paper's whole experiment campaign (issue 14; Hopkins 1994, Table 1): every set of
-# data/campaigns/ — thickness, friction, modulus, floe, speed, the lookup table's
-# extension to 0.10-6.00 m (thickness-scaled: the scene scaled with the sheet above the
-# paper's range, thickness-scaled-thick its 4-6 m with the floe at half the ratio,
-# thickness-thin) and the checks of rafting and of the floe (thickness-thick
-# with the 2 m floe, sheet-length, thickness-thick-floe, thickness-scaled-floe), the
-# friction pairs at 0.20 and 0.45 m (friction-thickness) — seven seeds each, one after
-# the other on all cores, into runs/paper2/<set>/. Resumable: finished runs are kept and
-# re-running continues where it stopped (a run cut off mid-way starts again), also on another
-# machine from the records committed under crates/lab/records/paper2/<set> (the decided model of issue 30:
-# k_te per contact, the 40-m floe; crates/lab/records/paper/ holds the former model's records, which no
-# longer match the scenes and would be refused). Each set's
-# progress goes to runs/paper2/<set>.log. Most of a day on two cores with the binary of
-# 2026-11-23 (docs/tables.md); run it under nohup:
-#   nohup scripts/paper-campaign.sh [THREADS] [OUT_ROOT] > runs/paper2.log 2>&1 &
+# The paper's whole experiment campaign (Hopkins 1994, Table 1): every set of
+# data/campaigns/ — thickness, friction, modulus, floe, speed, the lookup table's extension
+# to 0.10-6.00 m (thickness-scaled: the scene scaled with the sheet above the paper's range,
+# thickness-scaled-thick its 4-6 m with the floe at half the ratio, thickness-thin), the
+# checks of rafting and of the floe (thickness-thick with the 2 m floe, sheet-length,
+# thickness-thick-floe, thickness-scaled-floe) and the friction pairs at 0.20 and 0.45 m
+# (friction-thickness) — seven seeds each (twelve for friction), one set after the other on
+# all cores, at today's model and step, into OUT_ROOT/<set>/ (default runs/paper5).
+# Resumable: finished runs are kept and re-running continues where it stopped (a run cut off
+# mid-way starts again), also on another machine from the records committed under
+# PAPER_RECORDS/<set> (default crates/lab/records/paper5, the decided model at the refined
+# full step; older archives under crates/lab/records/ hold former models or steps, whose
+# scenes differ, and are refused). Each set's progress goes to OUT_ROOT/<set>.log. About
+# ten CPU-hours for the whole list (docs/performance.md); run it under nohup:
+#   nohup scripts/paper-campaign.sh [THREADS] [OUT_ROOT] > runs/paper5.log 2>&1 &
 # PAPER_SETS="friction modulus" runs only those sets (in that order). PAPER_EXTRA names more
-# archives to take finished runs from (space-separated), e.g. a probe of the register whose
-# setting is now the default: a run of the same scene and seed is taken whatever its id.
-# Then tabulate a set with `pressridge tabulate --campaign runs/paper2/<set> ...`
+# archives to take finished runs from (space-separated; one not made yet is skipped), e.g.
+# runs/paper5/thickness for the friction set, whose default pair at 0.30 m is the thickness
+# set's: a run of the same scene and seed is taken whatever its id. PRESSRIDGE_BIN names a
+# built binary (a copy, so that rebuilding does not change a running campaign).
+# Then tabulate a set with `pressridge tabulate --campaign runs/paper5/<set> ...`
 # (crates/lab/records/README.md gives the commands behind each committed archive and report).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 threads=${1:-$(nproc)}
-root=${2:-runs/paper2}
-records=${PAPER_RECORDS:-data/paper2}
+root=${2:-runs/paper5}
+records=${PAPER_RECORDS:-crates/lab/records/paper5}
 bin=${PRESSRIDGE_BIN:-./target/release/pressridge}
 [ -n "${PRESSRIDGE_BIN:-}" ] || cargo build --release --bin pressridge
 mkdir -p "$root"
@@ -41,7 +43,13 @@ for set in $sets; do
   # are taken, not run again.
   resume=()
   [ -d "$records/$set" ] && resume=(--resume-from "$records/$set")
-  for extra in ${PAPER_EXTRA:-}; do resume+=(--resume-from "$extra"); done
+  # An extra archive that does not exist yet (a set this campaign has still to run) or is
+  # this set's own output is skipped.
+  for extra in ${PAPER_EXTRA:-}; do
+    if [ -f "$extra/plan.json" ] && [ "$extra" != "$root/$set" ]; then
+      resume+=(--resume-from "$extra")
+    fi
+  done
   "$bin" campaign --spec "data/campaigns/$set.toml" --out "$root/$set" "${resume[@]}" \
     --threads "$threads" --progress-interval 60 2> "$root/$set.log"
 done
