@@ -100,75 +100,88 @@ const SINKS: [(&str, &str); 6] = [
     ("drag_dissipation", "drag"),
 ];
 
-/// The sinks table of one point: see the module's doc.
-fn print_sinks(point: &str, configs: &[(String, Groups)], ref_runs: &[RunRecord]) {
-    let column = |runs: &[RunRecord], key: &str| {
-        let xs: Vec<f64> = runs
-            .iter()
-            .filter_map(|r| Some(quantity(r, key)? / quantity(r, "work")?))
-            .collect();
-        Stat::of(&xs)
-    };
-    println!("\nSinks per W (Φ_i/W in its parts and the others), {point}:\n");
+/// One table of a point: a row per configuration, a column per quantity that `column`
+/// gives for a set of runs (by index, `headers.len()` of them); the reference's row holds
+/// `reference(stat)`, the others `shifted(reference, difference, half-width)` of Welch's
+/// 95 % interval, or — where an arm has fewer than two runs.
+fn print_table(
+    title: &str,
+    headers: &[&str],
+    (configs, ref_runs): (&[(String, Groups)], &[RunRecord]),
+    point: &str,
+    column: impl Fn(&[RunRecord], usize) -> Stat,
+    reference: impl Fn(&Stat) -> String,
+    shifted: impl Fn(&Stat, f64, f64) -> String,
+) {
+    println!("\n{title}, {point}:\n");
     print!("| configuration | runs |");
-    for (_, label) in SINKS {
+    for label in headers {
         print!(" {label} |");
     }
     println!();
-    println!("|{}", "---|".repeat(2 + SINKS.len()));
+    println!("|{}", "---|".repeat(2 + headers.len()));
     for (name, g) in configs {
         let Some(runs) = g.get(point) else { continue };
         print!("| {name} | {} |", runs.len());
-        for (key, _) in SINKS {
-            let (a, b) = (column(ref_runs, key), column(runs, key));
+        for k in 0..headers.len() {
+            let (a, b) = (column(ref_runs, k), column(runs, k));
             if std::ptr::eq(runs.as_slice(), ref_runs) {
-                print!(" {:.5} ± {:.5} |", a.mean, a.std);
+                print!(" {} |", reference(&a));
             } else if a.n < 2 || b.n < 2 {
                 print!(" — |");
             } else {
                 let (d, h) = a.welch_difference(&b);
-                print!(
-                    " {:+.1} % [{:+.1}, {:+.1}]; {:+.2} σ |",
-                    100.0 * d / a.mean,
-                    100.0 * (d - h.abs()) / a.mean,
-                    100.0 * (d + h.abs()) / a.mean,
-                    d / a.std
-                );
+                print!(" {} |", shifted(&a, d, h.abs()));
             }
         }
         println!();
     }
 }
 
+/// The sinks table of one point: see the module's doc.
+fn print_sinks(point: &str, configs: &[(String, Groups)], ref_runs: &[RunRecord]) {
+    let labels: Vec<&str> = SINKS.iter().map(|&(_, label)| label).collect();
+    print_table(
+        "Sinks per W (Φ_i/W in its parts and the others)",
+        &labels,
+        (configs, ref_runs),
+        point,
+        |runs, k| {
+            let xs: Vec<f64> = runs
+                .iter()
+                .filter_map(|r| Some(quantity(r, SINKS[k].0)? / quantity(r, "work")?))
+                .collect();
+            Stat::of(&xs)
+        },
+        |a| format!("{:.5} ± {:.5}", a.mean, a.std),
+        |a, d, h| {
+            format!(
+                "{:+.1} % [{:+.1}, {:+.1}]; {:+.2} σ",
+                100.0 * d / a.mean,
+                100.0 * (d - h) / a.mean,
+                100.0 * (d + h) / a.mean,
+                d / a.std
+            )
+        },
+    );
+}
+
 /// The pieces table of one point: see the module's doc.
 fn print_pieces(point: &str, configs: &[(String, Groups)], ref_runs: &[RunRecord]) {
-    let column = |runs: &[RunRecord], k: usize| {
-        let xs: Vec<f64> = runs.iter().filter_map(piece_counts).map(|n| n[k]).collect();
-        Stat::of(&xs)
-    };
-    println!("\nRubble pieces per run by length in blocks, {point}:\n");
-    print!("| configuration | runs |");
-    for (_, _, label) in PIECE_CLASSES {
-        print!(" {label} |");
-    }
-    println!(" all |");
-    println!("|{}", "---|".repeat(3 + PIECE_CLASSES.len()));
-    for (name, g) in configs {
-        let Some(runs) = g.get(point) else { continue };
-        print!("| {name} | {} |", runs.len());
-        for k in 0..=PIECE_CLASSES.len() {
-            let (a, b) = (column(ref_runs, k), column(runs, k));
-            if std::ptr::eq(runs.as_slice(), ref_runs) {
-                print!(" {:.1} ± {:.1} |", a.mean, a.std);
-            } else if a.n < 2 || b.n < 2 {
-                print!(" — |");
-            } else {
-                let (d, h) = a.welch_difference(&b);
-                print!(" {d:+.1} [{:+.1}, {:+.1}] |", d - h.abs(), d + h.abs());
-            }
-        }
-        println!();
-    }
+    let mut labels: Vec<&str> = PIECE_CLASSES.iter().map(|&(_, _, label)| label).collect();
+    labels.push("all");
+    print_table(
+        "Rubble pieces per run by length in blocks",
+        &labels,
+        (configs, ref_runs),
+        point,
+        |runs, k| {
+            let xs: Vec<f64> = runs.iter().filter_map(piece_counts).map(|n| n[k]).collect();
+            Stat::of(&xs)
+        },
+        |a| format!("{:.1} ± {:.1}", a.mean, a.std),
+        |_, d, h| format!("{d:+.1} [{:+.1}, {:+.1}]", d - h, d + h),
+    );
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
