@@ -16,6 +16,11 @@ point's value of a scene key (e.g. --key "h (m)=sheet.thickness"); rows are sort
 
 re-runs every command of this script in the page's ```sh blocks and checks that the table
 after each is its output (scripts/test.sh runs it).
+
+    scripts/validation-tables.py --write docs/validation.md
+
+replaces each such table by its command's output, so that a page whose commands now name
+new records (say paper5 for paper3) is made again in one step.
 """
 import argparse
 import math
@@ -127,15 +132,15 @@ def parser():
     ap.add_argument("--cols", default=",".join(COLUMNS))
     ap.add_argument("--check", metavar="PAGE",
                     help="check that every table of PAGE after a command of this script is its output")
+    ap.add_argument("--write", metavar="PAGE",
+                    help="replace every table of PAGE after a command of this script by its output")
     ap.add_argument("reports", nargs="*")
     return ap
 
 
-def check(page):
-    """Re-runs each ```sh block of `page` that calls this script and compares its output
-    with the table that follows the block; exits non-zero naming the first table that differs."""
-    lines = open(page, encoding="utf-8").read().split("\n")
-    checked = 0
+def made_tables(lines, page):
+    """Each table of `lines` that follows a ```sh block calling this script, as
+    (first line, end line, command, that command's output)."""
     i = 0
     while i < len(lines):
         if lines[i].strip() != "```sh":
@@ -156,9 +161,17 @@ def check(page):
         end = k
         while end < len(lines) and lines[end].startswith("|"):
             end += 1
-        want = table(parser().parse_args(shlex.split(command)[1:]))
-        got = "\n".join(lines[k:end])
-        if got != want:
+        yield k, end, command, table(parser().parse_args(shlex.split(command)[1:]))
+        i = end
+
+
+def check(page):
+    """Re-runs each ```sh block of `page` that calls this script and compares its output
+    with the table that follows the block; exits non-zero naming the first table that differs."""
+    lines = open(page, encoding="utf-8").read().split("\n")
+    checked = 0
+    for k, end, command, want in made_tables(lines, page):
+        if "\n".join(lines[k:end]) != want:
             sys.exit(f"validation-tables: {page}, line {k + 1}: the table is not the output of\n"
                      f"  {command}\nexpected:\n{want}")
         checked += 1
@@ -167,10 +180,27 @@ def check(page):
     print(f"validation-tables: {checked} tables of {page} are the reports' numbers")
 
 
+def write(page):
+    """Replaces each table of `page` that follows a command of this script by that command's
+    output (the text around the tables is the author's to keep true)."""
+    lines = open(page, encoding="utf-8").read().split("\n")
+    made = list(made_tables(lines, page))
+    if not made:
+        sys.exit(f"validation-tables: {page} has no table made by this script")
+    for k, end, _, want in reversed(made):
+        lines[k:end] = want.split("\n")
+    with open(page, "w", encoding="utf-8") as f:
+        f.write("\n".join(lines))
+    print(f"validation-tables: {len(made)} tables of {page} written from the reports")
+
+
 def main():
     a = parser().parse_args()
     if a.check:
         check(a.check)
+        return
+    if a.write:
+        write(a.write)
         return
     if not a.reports:
         sys.exit("validation-tables: no REPORT given")
