@@ -24,6 +24,7 @@ new records (say paper5 for paper3) is made again in one step.
 """
 import argparse
 import math
+import os
 import re
 import shlex
 import sys
@@ -140,7 +141,8 @@ def parser():
 
 def made_tables(lines, page):
     """Each table of `lines` that follows a ```sh block calling this script, as
-    (first line, end line, command, that command's output)."""
+    (first line, end line, command, that command's output); exits when there is none."""
+    made = []
     i = 0
     while i < len(lines):
         if lines[i].strip() != "```sh":
@@ -161,36 +163,42 @@ def made_tables(lines, page):
         end = k
         while end < len(lines) and lines[end].startswith("|"):
             end += 1
-        yield k, end, command, table(parser().parse_args(shlex.split(command)[1:]))
+        made.append((k, end, command, table(parser().parse_args(shlex.split(command)[1:]))))
         i = end
+    if not made:
+        sys.exit(f"validation-tables: {page} has no table made by this script")
+    return made
 
 
 def check(page):
     """Re-runs each ```sh block of `page` that calls this script and compares its output
     with the table that follows the block; exits non-zero naming the first table that differs."""
     lines = open(page, encoding="utf-8").read().split("\n")
-    checked = 0
-    for k, end, command, want in made_tables(lines, page):
+    made = made_tables(lines, page)
+    for k, end, command, want in made:
         if "\n".join(lines[k:end]) != want:
             sys.exit(f"validation-tables: {page}, line {k + 1}: the table is not the output of\n"
                      f"  {command}\nexpected:\n{want}")
-        checked += 1
-    if checked == 0:
-        sys.exit(f"validation-tables: {page} has no table made by this script")
-    print(f"validation-tables: {checked} tables of {page} are the reports' numbers")
+    print(f"validation-tables: {len(made)} tables of {page} are the reports' numbers")
 
 
 def write(page):
     """Replaces each table of `page` that follows a command of this script by that command's
-    output (the text around the tables is the author's to keep true)."""
+    output (the text around the tables is the author's to keep true). Every table is made
+    before the page is touched, and the page is replaced whole (a temporary file renamed over
+    it), so a failed command or a kill leaves it as it was."""
     lines = open(page, encoding="utf-8").read().split("\n")
-    made = list(made_tables(lines, page))
-    if not made:
-        sys.exit(f"validation-tables: {page} has no table made by this script")
+    made = made_tables(lines, page)
     for k, end, _, want in reversed(made):
         lines[k:end] = want.split("\n")
-    with open(page, "w", encoding="utf-8") as f:
-        f.write("\n".join(lines))
+    tmp = f"{page}.tmp-{os.getpid()}"
+    try:
+        with open(tmp, "w", encoding="utf-8") as f:
+            f.write("\n".join(lines))
+        os.replace(tmp, page)
+    finally:
+        if os.path.exists(tmp):
+            os.remove(tmp)
     print(f"validation-tables: {len(made)} tables of {page} written from the reports")
 
 
