@@ -26,6 +26,13 @@ if cmp -s "$page_copy" docs/validation.md; then echo "test.sh: the row was not t
 python3 scripts/validation-tables.py --write "$page_copy"
 cmp "$page_copy" docs/validation.md
 rm "$page_copy"
+# The friction slopes docs/validation.md quotes use `pressridge findings`' method: on the
+# records docs/findings.md reads, they are its d1 rows (W at μ_w = 0.6, W/ΔPE at 0.3).
+slopes=$(python3 scripts/friction-slopes.py --thickness 0.3 crates/lab/records/paper4/friction)
+for row in "W: -342.7 [-683.5, -1.8]" "W/ΔPE: +3.8 [+1.0, +6.6]"; do
+  grep -qF -- "$row" <<< "$slopes" || { echo "test.sh: friction-slopes.py lacks '$row'" >&2; exit 1; }
+done
+grep -qF -- "-342.7 [-683.5, -1.8]" docs/findings.md
 # One build for everything below: the `ci` profile (Cargo.toml) serves the Rust tests, the
 # Fortran/C bridge, the command line and the Python extension.
 export PRESSRIDGE_PROFILE=ci
