@@ -265,8 +265,8 @@ impl RidgeTable {
                 "mu_rdg",
                 S2,
                 "m^0.5",
-                "ensemble mean of Lipscomb's e-folding parameter fitted to the ridged ice, (mean thickness - min(2h, h + 1 m))/sqrt(h)",
-                ridged(&|e| e.mu_rdg.mean),
+                "ensemble mean of Lipscomb's e-folding parameter fitted to the ridged ice, (mean thickness - min(2h, h + 1 m))/sqrt(h); NaN where that mean is not positive (ridged ice on average no thicker than min(2h, h + 1 m): no exponential from there has its mean)",
+                ridged(&|e| e.host_mu_rdg().unwrap_or(f64::NAN)),
             ),
             (
                 "mu_rdg_std",

@@ -286,6 +286,15 @@ impl RidgedEnsemble {
 }
 
 impl RidgedEnsemble {
+    /// The μ_rdg a host can redistribute with (m^½): the mean over the runs' own fits where it
+    /// is positive, `None` where it is not. An exponential that starts at H_min has a mean above
+    /// H_min, so ridged ice whose mean is no thicker than H_min (at the thick end, where one
+    /// or two layers of blocks spread the ridge wide) has no Lipscomb shape of its mean; the
+    /// table writes NaN there, and a host's table lookup takes the thicknesses that have one.
+    pub fn host_mu_rdg(&self) -> Option<f64> {
+        (self.mu_rdg.mean > 0.0).then_some(self.mu_rdg.mean)
+    }
+
     /// The ensemble as named numbers, the faces' one spelling (Python's `redistribution`):
     /// `runs`, `strips`; for `width` (m), `mean_thickness` (m), `porosity`, `lambda` (m),
     /// `mu_rdg` (m^½) and `h_star` (m) the mean over the runs' own fits, `<name>_std` and

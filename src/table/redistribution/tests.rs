@@ -127,6 +127,20 @@ fn an_ensemble_pools_strips_and_spreads_run_fits() {
     assert!(RidgedEnsemble::of(&[]).is_none());
 }
 
+/// Ridged ice no thicker on average than H_min has no Lipscomb shape of its mean: the host's
+/// μ_rdg is absent there (NaN in the table), present and the runs' mean elsewhere.
+#[test]
+fn ridged_ice_thinner_than_h_min_gives_no_host_mu_rdg() {
+    // h = 4 m: H_min = h + 1 m = 5 m; strips of 4.5 and 5.3 m average 4.9 m.
+    let thin = RidgedIce::of(&profile(&[4.5, 5.3], 0.1), 4.0).unwrap();
+    let e = RidgedEnsemble::of(&[thin.clone(), thin]).unwrap();
+    assert!(e.mu_rdg.mean < 0.0, "{:?}", e.mu_rdg);
+    assert_eq!(e.host_mu_rdg(), None);
+    let a = RidgedIce::of(&profile(&[1.0, 2.0], 0.2), 0.25).unwrap();
+    let e = RidgedEnsemble::of(&[a.clone(), a]).unwrap();
+    assert_eq!(e.host_mu_rdg(), Some(e.mu_rdg.mean));
+}
+
 /// The table's bins are in units of h; a strip beyond 20h lands in the last bin.
 #[test]
 fn table_histogram_is_in_units_of_h_and_catches_the_tail() {
