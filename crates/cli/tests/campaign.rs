@@ -363,8 +363,13 @@ fn tiny_campaign_is_resumable_and_complete() {
             let hi = t.thickness.iter().position(|&h| h == k.thickness).unwrap();
             let got = t.ridged[[0, hi]].as_ref().unwrap();
             assert_eq!(got.mu_rdg, e.mu_rdg);
+            // The table's μ_rdg is the ensemble's where positive, NaN where the ridged ice is
+            // on average no thicker than H_min (as these short runs' thin rubble may be).
             let f = disk.field("mu_rdg").unwrap();
-            assert_eq!(f.data.iter().filter(|x| **x == e.mu_rdg.mean).count(), 1);
+            match e.host_mu_rdg() {
+                Some(m) => assert_eq!(f.data.iter().filter(|x| **x == m).count(), 1),
+                None => assert!(e.mu_rdg.mean <= 0.0 && f.data.iter().any(|x| x.is_nan())),
+            }
             let n = disk.field("ridged_runs").unwrap();
             assert!(n.data.iter().any(|x| *x == e.lambda.n as f64));
         }
