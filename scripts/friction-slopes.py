@@ -67,7 +67,8 @@ def main():
         for d, _, files in sorted(os.walk(root)):
             if "run.json" not in files:
                 continue
-            r = json.load(open(os.path.join(d, "run.json"), encoding="utf-8"))
+            with open(os.path.join(d, "run.json"), encoding="utf-8") as f:
+                r = json.load(f)
             s = r["scene"]
             if abs(s["sheet"]["thickness"] - a.thickness) > 1e-9:
                 continue
